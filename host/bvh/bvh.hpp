@@ -1,0 +1,46 @@
+// Bounding volume hierarchy over a triangle soup: a binned SAH build on the host,
+// flattened into the layout of kernels/shared/bvh.h for the traversal kernel.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "shared/bvh.h"
+
+namespace facet {
+
+struct BvhOptions {
+    int bins = 16;            // SAH bins per axis
+    int max_leaf_size = 8;    // a leaf never holds more triangles than this
+    float traversal_cost = 1.0f;      // SAH cost of visiting a node, relative to...
+    float intersection_cost = 1.0f;   // ...the cost of one ray/triangle test
+};
+
+struct BvhStats {
+    std::size_t triangles = 0;
+    std::size_t nodes = 0;      // FcBvhNode count (each holds two children)
+    std::size_t leaves = 0;
+    int max_depth = 0;
+    int max_leaf_size = 0;
+    double sah_cost = 0.0;      // expected cost per ray, normalised by the root's surface area
+    double build_seconds = 0.0;
+    std::size_t device_bytes = 0;   // nodes + triangles as uploaded
+};
+
+struct Bvh {
+    std::vector<FcBvhNode> nodes;      // nodes[0] is the root
+    std::vector<FcTriangle> triangles; // reordered; FcTriangle::prim is the input index
+    BvhStats stats;
+};
+
+// Builds the tree over `vertices`, three consecutive entries per triangle
+// (vertices.size() must be a multiple of 3). Degenerate (zero-area) and non-finite
+// triangles are kept out of the tree (they can never be hit) and counted in
+// `skipped` when it is not null. An empty input gives a tree whose root has two
+// empty leaves, which every ray misses.
+Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options = {},
+              std::size_t* skipped = nullptr);
+
+}  // namespace facet

@@ -1,0 +1,386 @@
+#include "bvh/sah_builder.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace facet::bvh_detail {
+namespace {
+
+// Four-float SIMD values (GCC/Clang vector extensions); lane 3 is kept at zero.
+typedef float f4 __attribute__((vector_size(16)));
+typedef std::int32_t i4 __attribute__((vector_size(16)));
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+inline f4 vmin(f4 a, f4 b) { return a < b ? a : b; }
+inline f4 vmax(f4 a, f4 b) { return a > b ? a : b; }
+inline f4 load3(const float* p) {   // p[0..2] and zero; p[3] may be an integer
+    f4 v;
+    std::memcpy(&v, p, sizeof v);
+    v[3] = 0.0f;
+    return v;
+}
+inline f4 lo_of(const PrimRef& r) { return load3(r.lo); }
+inline f4 hi_of(const PrimRef& r) { return load3(r.hi); }
+// Every pass computes centroids and bin positions with these same operations, so the
+// partition agrees with the binning bit for bit.
+inline f4 centroid(const PrimRef& r) { return (lo_of(r) + hi_of(r)) * 0.5f; }
+
+struct Box {
+    f4 lo = {kInf, kInf, kInf, 0.0f};
+    f4 hi = {-kInf, -kInf, -kInf, 0.0f};
+    void grow(f4 l, f4 h) { lo = vmin(lo, l); hi = vmax(hi, h); }
+    void grow(const Box& b) { grow(b.lo, b.hi); }
+    // Half the surface area; 0 for an empty box.
+    float half_area() const {
+        f4 d = hi - lo;
+        if (!(d[0] >= 0.0f && d[1] >= 0.0f && d[2] >= 0.0f)) return 0.0f;
+        return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+    }
+};
+
+// Ranges up to this size get the exact SAH sweep instead of binning.
+constexpr int kExactMax = 16;
+
+int ceil_log2(std::uint32_t n) { return n <= 1 ? 0 : 32 - std::countl_zero(n - 1); }
+
+void set_child(FcBvhNode& node, int side, const Box& box) {
+    float* lo = side == 0 ? node.a_min : node.b_min;
+    float* hi = side == 0 ? node.a_max : node.b_max;
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = box.lo[a];
+        hi[a] = box.hi[a];
+    }
+}
+
+void set_ref(FcBvhNode& node, int side, std::uint32_t index, std::uint32_t count) {
+    (side == 0 ? node.a_index : node.b_index) = static_cast<fc_int>(index);
+    (side == 0 ? node.a_count : node.b_count) = static_cast<fc_int>(count);
+}
+
+// A range of references still to be built, and the child slot that refers to it.
+struct Task {
+    std::uint32_t begin, end;
+    int depth;     // nodes above this range
+    int parent;    // node whose child slot `side` refers to this range; -1 for the root
+    int side;
+    Box box;       // bounds of the primitives
+    Box cbox;      // bounds of their centroids
+};
+
+struct Split {
+    std::uint32_t mid;
+    Box lbox, rbox, lcbox, rcbox;
+};
+
+class Builder {
+public:
+    Builder(std::vector<PrimRef>& refs, const BvhOptions& opt)
+        : refs_(refs), opt_(opt), nb_(std::clamp(opt.bins, 2, 256)),
+          max_leaf_(static_cast<std::uint32_t>(std::max(opt.max_leaf_size, 1))),
+          bins_(3 * nb_), counts_(3 * nb_), right_area_(nb_), right_count_(nb_) {}
+
+    BuildOutput run();
+
+private:
+    bool decide(const Task& t, Split& s);
+    bool sah_split(const Task& t, Split& s, float& cost);
+    bool exact_split(const Task& t, Split& s, float& cost);
+    void median_split(const Task& t, Split& s);
+    void bounds(std::uint32_t begin, std::uint32_t end, Box& box, Box& cbox) const;
+
+    std::vector<PrimRef>& refs_;
+    const BvhOptions& opt_;
+    int nb_;
+    std::uint32_t max_leaf_;
+    std::vector<Box> bins_;               // [axis * nb_ + bin]
+    std::vector<std::uint32_t> counts_;
+    std::vector<float> right_area_;
+    std::vector<std::uint32_t> right_count_;
+};
+
+void Builder::bounds(std::uint32_t begin, std::uint32_t end, Box& box, Box& cbox) const {
+    box = cbox = Box{};
+    for (std::uint32_t i = begin; i < end; ++i) {
+        box.grow(lo_of(refs_[i]), hi_of(refs_[i]));
+        f4 c = centroid(refs_[i]);
+        cbox.grow(c, c);
+    }
+}
+
+// Bins the centroids along all three axes, sweeps the bin boundaries for the lowest
+// sum(area * count) and partitions the range in place at the best one
+// (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies").
+bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
+    const int nb = nb_;
+    const float last = static_cast<float>(nb - 1);
+    const f4 origin = t.cbox.lo;
+    f4 scale = {0.0f, 0.0f, 0.0f, 0.0f};
+    for (int a = 0; a < 3; ++a) {
+        float extent = t.cbox.hi[a] - t.cbox.lo[a];
+        if (extent > 0.0f && std::isfinite(extent))
+            scale[a] = static_cast<float>(nb) * (1.0f - 1e-6f) / extent;
+    }
+    const f4 zero = {0.0f, 0.0f, 0.0f, 0.0f}, top = {last, last, last, 0.0f};
+    auto bin_of = [&](f4 c) {   // NaN (0 * inf) lands in bin 0
+        f4 f = vmin(vmax((c - origin) * scale, zero), top);
+        return __builtin_convertvector(f, i4);
+    };
+
+    std::fill(bins_.begin(), bins_.end(), Box{});
+    std::fill(counts_.begin(), counts_.end(), 0u);
+    for (std::uint32_t i = t.begin; i < t.end; ++i) {
+        const PrimRef& r = refs_[i];
+        f4 lo = lo_of(r), hi = hi_of(r);
+        i4 b = bin_of((lo + hi) * 0.5f);
+        for (int a = 0; a < 3; ++a) {
+            bins_[a * nb + b[a]].grow(lo, hi);
+            ++counts_[a * nb + b[a]];
+        }
+    }
+
+    int best_axis = -1, best_bin = 0;
+    best_cost = kInf;
+    for (int a = 0; a < 3; ++a) {
+        if (scale[a] == 0.0f) continue;
+        const Box* bins = &bins_[a * nb];
+        const std::uint32_t* counts = &counts_[a * nb];
+        Box acc;
+        std::uint32_t count = 0;
+        for (int i = nb - 1; i > 0; --i) {
+            acc.grow(bins[i]);
+            count += counts[i];
+            right_area_[i] = acc.half_area();
+            right_count_[i] = count;
+        }
+        acc = Box{};
+        count = 0;
+        for (int i = 1; i < nb; ++i) {
+            acc.grow(bins[i - 1]);
+            count += counts[i - 1];
+            if (count == 0 || right_count_[i] == 0) continue;
+            float cost = acc.half_area() * static_cast<float>(count) +
+                         right_area_[i] * static_cast<float>(right_count_[i]);
+            if (cost < best_cost) {
+                best_cost = cost;
+                best_axis = a;
+                best_bin = i;
+            }
+        }
+    }
+    if (best_axis < 0) return false;
+
+    // Partition with the same mapping (bin < best_bin <=> position < best_bin; NaN
+    // positions were binned to 0, so they go left too), gathering the children's bounds.
+    const float o = origin[best_axis], sc = scale[best_axis];
+    const float split_at = static_cast<float>(best_bin);
+    Box lbox, rbox, lcbox, rcbox;
+    std::uint32_t l = t.begin, r = t.end;
+    PrimRef* refs = refs_.data();
+    while (l < r) {
+        PrimRef& p = refs[l];
+        f4 lo = lo_of(p), hi = hi_of(p);
+        f4 c = (lo + hi) * 0.5f;
+        if (!((c[best_axis] - o) * sc >= split_at)) {
+            lbox.grow(lo, hi);
+            lcbox.grow(c, c);
+            ++l;
+        } else {
+            rbox.grow(lo, hi);
+            rcbox.grow(c, c);
+            std::swap(p, refs[--r]);
+        }
+    }
+    s.lbox = lbox;
+    s.rbox = rbox;
+    s.lcbox = lcbox;
+    s.rcbox = rcbox;
+    s.mid = l;
+    return s.mid > t.begin && s.mid < t.end;
+}
+
+// For small ranges: sorts the centroids on each axis and evaluates every split
+// between consecutive references (the full SAH sweep), cheaper here than binning.
+bool Builder::exact_split(const Task& t, Split& s, float& best_cost) {
+    const int n = static_cast<int>(t.end - t.begin);
+    PrimRef* p = &refs_[t.begin];
+    if (n == 2) {   // one way to split two
+        s.lbox = s.lcbox = s.rbox = s.rcbox = Box{};
+        f4 c0 = centroid(p[0]), c1 = centroid(p[1]);
+        s.lbox.grow(lo_of(p[0]), hi_of(p[0]));
+        s.rbox.grow(lo_of(p[1]), hi_of(p[1]));
+        s.lcbox.grow(c0, c0);
+        s.rcbox.grow(c1, c1);
+        s.mid = t.begin + 1;
+        best_cost = s.lbox.half_area() + s.rbox.half_area();
+        return true;
+    }
+    f4 lo[kExactMax], hi[kExactMax], c[kExactMax];
+    for (int i = 0; i < n; ++i) {
+        lo[i] = lo_of(p[i]);
+        hi[i] = hi_of(p[i]);
+        c[i] = (lo[i] + hi[i]) * 0.5f;
+    }
+    int order[3][kExactMax];
+    float right_area[kExactMax];
+    int best_axis = 0, best_i = 0;
+    best_cost = kInf;
+    for (int a = 0; a < 3; ++a) {
+        int* o = order[a];
+        for (int i = 0; i < n; ++i) {   // insertion sort on the centroid
+            int j = i;
+            for (; j > 0 && c[o[j - 1]][a] > c[i][a]; --j) o[j] = o[j - 1];
+            o[j] = i;
+        }
+        Box acc;
+        for (int i = n - 1; i > 0; --i) {
+            acc.grow(lo[o[i]], hi[o[i]]);
+            right_area[i] = acc.half_area();
+        }
+        acc = Box{};
+        for (int i = 1; i < n; ++i) {
+            acc.grow(lo[o[i - 1]], hi[o[i - 1]]);
+            float cost = acc.half_area() * static_cast<float>(i) + right_area[i] * static_cast<float>(n - i);
+            if (cost < best_cost) {
+                best_cost = cost;
+                best_axis = a;
+                best_i = i;
+            }
+        }
+    }
+    if (best_i == 0) return false;   // only NaN costs
+    PrimRef tmp[kExactMax];
+    s.lbox = s.rbox = s.lcbox = s.rcbox = Box{};
+    for (int i = 0; i < n; ++i) {
+        int k = order[best_axis][i];
+        tmp[i] = p[k];
+        Box& box = i < best_i ? s.lbox : s.rbox;
+        Box& cbox = i < best_i ? s.lcbox : s.rcbox;
+        box.grow(lo[k], hi[k]);
+        cbox.grow(c[k], c[k]);
+    }
+    std::copy(tmp, tmp + n, p);
+    s.mid = t.begin + static_cast<std::uint32_t>(best_i);
+    return true;
+}
+
+// Object median along the centroids' largest axis; halves in input order when every
+// centroid coincides.
+void Builder::median_split(const Task& t, Split& s) {
+    f4 ext = t.cbox.hi - t.cbox.lo;
+    int axis = 0;
+    if (ext[1] > ext[axis]) axis = 1;
+    if (ext[2] > ext[axis]) axis = 2;
+    s.mid = t.begin + (t.end - t.begin) / 2;
+    if (ext[axis] > 0.0f)
+        std::nth_element(refs_.begin() + t.begin, refs_.begin() + s.mid, refs_.begin() + t.end,
+                         [axis](const PrimRef& x, const PrimRef& y) {
+                             return centroid(x)[axis] < centroid(y)[axis];
+                         });
+    bounds(t.begin, s.mid, s.lbox, s.lcbox);
+    bounds(s.mid, t.end, s.rbox, s.rcbox);
+}
+
+// True when the range becomes a leaf; otherwise fills `s` with the split.
+bool Builder::decide(const Task& t, Split& s) {
+    const std::uint32_t n = t.end - t.begin;
+    if (n <= 1) return true;
+    const bool fits = n <= max_leaf_;
+    if (t.depth + ceil_log2(n) >= kMaxLeafDepth) {   // too deep for the SAH: halve
+        if (fits) return true;
+        median_split(t, s);
+        return false;
+    }
+    // Leaf or split by the SAH (MacDonald & Booth 1990): C_i*n against
+    // C_t + C_i*(A_l*n_l + A_r*n_r)/A.
+    float cost = 0.0f;
+    if (n <= kExactMax ? exact_split(t, s, cost) : sah_split(t, s, cost)) {
+        float area = t.box.half_area();
+        float split_cost = opt_.traversal_cost + opt_.intersection_cost * (area > 0.0f ? cost / area : 0.0f);
+        return fits && opt_.intersection_cost * static_cast<float>(n) <= split_cost;
+    }
+    if (fits) return true;   // all centroids coincide: nothing to gain from splitting
+    median_split(t, s);
+    return false;
+}
+
+BuildOutput Builder::run() {
+    BuildOutput out;
+    const std::uint32_t n = static_cast<std::uint32_t>(refs_.size());
+    out.nodes.reserve(n / 2 + 1);
+    out.nodes.emplace_back();
+    if (n == 0) {
+        set_empty_child(out.nodes[0], 0);
+        set_empty_child(out.nodes[0], 1);
+        return out;
+    }
+    Task root{0, n, 0, -1, 0, {}, {}};
+    bounds(0, n, root.box, root.cbox);
+    double inner_sum = 0.0, leaf_sum = 0.0;   // sums of half areas
+
+    std::vector<Task> stack;
+    stack.reserve(2 * kMaxLeafDepth + 2);
+    stack.push_back(root);
+    Split s;
+    while (!stack.empty()) {
+        Task t = stack.back();
+        stack.pop_back();
+        const double area = static_cast<double>(t.box.half_area());
+        if (decide(t, s)) {
+            const std::uint32_t count = t.end - t.begin;
+            int depth = t.depth;
+            if (t.parent < 0) {   // the whole input is one leaf: root = {leaf, empty}
+                set_child(out.nodes[0], 0, t.box);
+                set_ref(out.nodes[0], 0, t.begin, count);
+                set_empty_child(out.nodes[0], 1);
+                inner_sum += area;
+                depth = 1;
+            } else {
+                set_ref(out.nodes[t.parent], t.side, t.begin, count);
+            }
+            ++out.leaves;
+            out.max_depth = std::max(out.max_depth, depth);
+            out.max_leaf_size = std::max(out.max_leaf_size, static_cast<int>(count));
+            leaf_sum += area * count;
+            continue;
+        }
+        int index = 0;
+        if (t.parent >= 0) {
+            index = static_cast<int>(out.nodes.size());
+            out.nodes.emplace_back();
+            set_ref(out.nodes[t.parent], t.side, static_cast<std::uint32_t>(index), 0);
+        }
+        set_child(out.nodes[index], 0, s.lbox);
+        set_child(out.nodes[index], 1, s.rbox);
+        inner_sum += area;
+        // Right first, so the left child is built next and lands right after its parent.
+        stack.push_back(Task{s.mid, t.end, t.depth + 1, index, 1, s.rbox, s.rcbox});
+        stack.push_back(Task{t.begin, s.mid, t.depth + 1, index, 0, s.lbox, s.lcbox});
+    }
+    const double root_area = static_cast<double>(root.box.half_area());
+    if (root_area > 0.0)
+        out.sah_cost = (static_cast<double>(opt_.traversal_cost) * inner_sum +
+                        static_cast<double>(opt_.intersection_cost) * leaf_sum) / root_area;
+    return out;
+}
+
+}  // namespace
+
+void set_empty_child(FcBvhNode& node, int side) {
+    float* lo = side == 0 ? node.a_min : node.b_min;
+    float* hi = side == 0 ? node.a_max : node.b_max;
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = kInf;
+        hi[a] = -kInf;
+    }
+    set_ref(node, side, 0, 0);
+}
+
+BuildOutput build_sah(std::vector<PrimRef>& refs, const BvhOptions& options) {
+    return Builder(refs, options).run();
+}
+
+}  // namespace facet::bvh_detail

@@ -1,0 +1,33 @@
+// Kernel sources: embedded in the binary at build time (cmake/embed_kernels.cmake),
+// or read from disk when FACET_KERNEL_DIR names a kernels/ folder (for development:
+// edit a .cl file and rerun without rebuilding). assemble_program() resolves
+// #include "..." itself, so the OpenCL compiler sees one self-contained source whose
+// #line directives name the real files.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace facet {
+
+struct EmbeddedFile {
+    const char* path;     // relative to the repository root, e.g. "kernels/trace/bvh.cl"
+    const char* content;
+};
+
+const std::vector<EmbeddedFile>& embedded_kernel_files();
+
+struct AssembledSource {
+    std::string text;                   // the whole program
+    std::vector<std::string> files;     // every file it took in, in order
+    std::string origin;                 // "embedded" or the directory read from
+};
+
+// Assembles the program rooted at `entry` (a path such as "kernels/integrator/path.cl"),
+// after the given preprocessor lines (e.g. "#define FC_FEATURE_X 1"). Throws
+// facet::Error naming the file and line of an include that cannot be found.
+AssembledSource assemble_program(const std::string& entry,
+                                 const std::vector<std::string>& prelude = {});
+
+}  // namespace facet

@@ -1,0 +1,180 @@
+// Device discovery, selection and program builds.
+#include "cl/runtime.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+
+#include <fmt/format.h>
+
+#include "error.hpp"
+
+namespace facet {
+namespace {
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+}
+
+std::string trimmed(std::string s) {
+    while (!s.empty() && (s.back() == '\0' || std::isspace(static_cast<unsigned char>(s.back())))) s.pop_back();
+    return s;
+}
+
+struct Found {
+    DeviceDesc desc;
+    cl::Device device;
+};
+
+std::vector<Found> discover() {
+    std::vector<cl::Platform> platforms;
+    cl_int status = cl::Platform::get(&platforms);   // returns an error code for "no ICD"
+    if (status != CL_SUCCESS || platforms.empty())
+        throw Error(fmt::format(
+            "No OpenCL platform found ({}): install an OpenCL driver, e.g. `apt-get install "
+            "pocl-opencl-icd` for the CPU",
+            cl_error_name(status)));
+    std::vector<Found> found;
+    for (const cl::Platform& platform : platforms) {
+        std::vector<cl::Device> devices;
+        try {
+            platform.getDevices(CL_DEVICE_TYPE_ALL, &devices);
+        } catch (const cl::Error&) {
+            continue;   // a platform without devices (CL_DEVICE_NOT_FOUND)
+        }
+        for (const cl::Device& d : devices) {
+            Found f;
+            f.device = d;
+            DeviceDesc& desc = f.desc;
+            desc.index = static_cast<int>(found.size());
+            desc.platform = trimmed(platform.getInfo<CL_PLATFORM_NAME>());
+            desc.name = trimmed(d.getInfo<CL_DEVICE_NAME>());
+            desc.vendor = trimmed(d.getInfo<CL_DEVICE_VENDOR>());
+            desc.version = trimmed(d.getInfo<CL_DEVICE_VERSION>());
+            desc.c_version = trimmed(d.getInfo<CL_DEVICE_OPENCL_C_VERSION>());
+            desc.driver = trimmed(d.getInfo<CL_DRIVER_VERSION>());
+            desc.type = d.getInfo<CL_DEVICE_TYPE>();
+            desc.global_mem = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
+            desc.max_alloc = d.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+            desc.compute_units = d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
+            found.push_back(std::move(f));
+        }
+    }
+    if (found.empty()) throw Error("OpenCL platforms are installed but none has a device");
+    return found;
+}
+
+std::string device_list(const std::vector<Found>& found) {
+    std::string s;
+    for (const Found& f : found)
+        s += fmt::format("\n  [{}] {} / {} ({})", f.desc.index, f.desc.platform, f.desc.name, f.desc.type_name());
+    return s;
+}
+
+const Found& select(const std::vector<Found>& found, const std::string& selector) {
+    if (selector.empty()) {
+        for (cl_device_type want : {cl_device_type(CL_DEVICE_TYPE_GPU), cl_device_type(CL_DEVICE_TYPE_CPU)})
+            for (const Found& f : found)
+                if (f.desc.type & want) return f;
+        return found.front();
+    }
+    bool numeric = std::all_of(selector.begin(), selector.end(), [](unsigned char c) { return std::isdigit(c); });
+    if (numeric) {
+        std::size_t index = std::stoul(selector.substr(0, 9));
+        if (index < found.size()) return found[index];
+        throw Error(fmt::format("--device {}: no device with that index; devices are:{}", selector,
+                                device_list(found)));
+    }
+    std::string needle = lower(selector);
+    for (const Found& f : found)
+        if (lower(f.desc.platform + " " + f.desc.name).find(needle) != std::string::npos) return f;
+    throw Error(fmt::format("--device '{}': no device name contains it; devices are:{}", selector,
+                            device_list(found)));
+}
+
+// Keeps a failed program's source where the user can read it; returns the path.
+std::string keep_source(const std::string& text) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::path dir = fs::temp_directory_path(ec);
+    if (ec) dir = ".";
+    fs::path path = dir / fmt::format("facet-failed-{:016x}.cl", std::hash<std::string>{}(text));
+    std::ofstream(path) << text;
+    return path.string();
+}
+
+}  // namespace
+
+std::string DeviceDesc::type_name() const {
+    if (type & CL_DEVICE_TYPE_GPU) return "GPU";
+    if (type & CL_DEVICE_TYPE_CPU) return "CPU";
+    if (type & CL_DEVICE_TYPE_ACCELERATOR) return "accelerator";
+    return "other";
+}
+
+std::vector<DeviceDesc> list_devices() {
+    return cl_call("listing OpenCL devices", [] {
+        std::vector<DeviceDesc> out;
+        for (Found& f : discover()) out.push_back(f.desc);
+        return out;
+    });
+}
+
+ClContext ClContext::create(const std::string& selector) {
+    return cl_call("creating the OpenCL context", [&] {
+        std::vector<Found> found = discover();
+        const Found& f = select(found, selector);
+        ClContext ctx;
+        ctx.device_ = f.device;
+        ctx.desc_ = f.desc;
+        ctx.context_ = cl::Context(f.device);
+        ctx.queue_ = cl::CommandQueue(ctx.context_, f.device);
+        return ctx;
+    });
+}
+
+std::string default_build_options() {
+    // Strict IEEE behaviour on purpose: NaN/Inf checks must survive (no fast/finite math).
+    return "-cl-std=CL1.2";
+}
+
+ProgramBuild build_program(const ClContext& ctx, const std::string& entry,
+                           const std::vector<std::string>& prelude, const std::string& extra_options) {
+    ProgramBuild build;
+    build.source = assemble_program(entry, prelude);
+    build.options = default_build_options();
+    if (!extra_options.empty()) build.options += " " + extra_options;
+    auto start = std::chrono::steady_clock::now();
+    cl_int status = CL_SUCCESS;
+    try {
+        build.program = cl::Program(ctx.context(), build.source.text);
+        status = build.program.build({ctx.device()}, build.options.c_str());
+    } catch (const cl::BuildError& e) {
+        status = e.err();
+    } catch (const cl::Error& e) {
+        status = e.err();
+    }
+    build.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (status != CL_SUCCESS) {
+        std::string log;
+        try {
+            log = build.program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(ctx.device());
+        } catch (const cl::Error&) {
+            log = "(no build log available)";
+        }
+        std::string kept = keep_source(build.source.text);
+        throw Error(fmt::format(
+            "kernel build failed ({}) for {}\n  device: {} / {} ({})\n  options: {}\n  source: {} "
+            "(assembled from {}, kept at {})\n--- build log ---\n{}",
+            cl_error_name(status), entry, ctx.desc().platform, ctx.desc().name, ctx.desc().driver,
+            build.options, entry, build.source.origin, kept, trimmed(log)));
+    }
+    return build;
+}
+
+}  // namespace facet

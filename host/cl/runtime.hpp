@@ -1,0 +1,92 @@
+// The OpenCL runtime layer: device discovery and selection, one context and queue,
+// program builds from the assembled kernel sources, and OpenCL errors reported by
+// name together with the call that failed.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <CL/opencl.hpp>
+
+#include "cl/kernel_source.hpp"
+
+namespace facet {
+
+struct DeviceDesc {
+    int index = 0;                 // position in list_devices(), the number --device takes
+    std::string platform;
+    std::string name;
+    std::string vendor;
+    std::string version;           // CL_DEVICE_VERSION
+    std::string c_version;         // CL_DEVICE_OPENCL_C_VERSION
+    std::string driver;            // CL_DRIVER_VERSION
+    cl_device_type type = 0;
+    std::uint64_t global_mem = 0;
+    std::uint64_t max_alloc = 0;
+    std::uint32_t compute_units = 0;
+    std::string type_name() const;   // "GPU", "CPU", "accelerator", ...
+};
+
+// Every device of every platform, in a stable order. Throws facet::Error when no
+// OpenCL platform is installed.
+std::vector<DeviceDesc> list_devices();
+
+// The symbolic name of an OpenCL error code ("CL_OUT_OF_RESOURCES"), or "CL_ERROR_<n>".
+const char* cl_error_name(cl_int code);
+
+// Runs `f`, turning a cl::Error into facet::Error("OpenCL error CL_X (n) in clCall while
+// <what>"). Use around host code that calls the C++ bindings.
+template <typename F>
+auto cl_call(const char* what, F&& f) -> decltype(f());
+
+class ClContext {
+public:
+    // `selector`: empty for the default (the first GPU, else the first CPU, else the
+    // first device), a number (index in list_devices()), or a case-insensitive
+    // substring of "platform device" names. Throws facet::Error listing the devices
+    // when nothing matches.
+    static ClContext create(const std::string& selector = "");
+
+    const cl::Context& context() const { return context_; }
+    const cl::Device& device() const { return device_; }
+    cl::CommandQueue& queue() { return queue_; }
+    const DeviceDesc& desc() const { return desc_; }
+
+private:
+    cl::Context context_;
+    cl::Device device_;
+    cl::CommandQueue queue_;
+    DeviceDesc desc_;
+};
+
+struct ProgramBuild {
+    cl::Program program;
+    AssembledSource source;
+    std::string options;
+    double seconds = 0.0;     // wall time of clBuildProgram
+};
+
+// The options every facet program is built with (no fast or finite math).
+std::string default_build_options();
+
+// Assembles `entry` after `prelude` and builds it for the context's device. On failure
+// throws facet::Error with the device, the options, the full build log and the path
+// where the assembled source was kept.
+ProgramBuild build_program(const ClContext& ctx, const std::string& entry,
+                           const std::vector<std::string>& prelude = {},
+                           const std::string& extra_options = "");
+
+// ---- implementation of the template above ----
+[[noreturn]] void throw_cl_error(const char* what, const cl::Error& e);
+
+template <typename F>
+auto cl_call(const char* what, F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const cl::Error& e) {
+        throw_cl_error(what, e);
+    }
+}
+
+}  // namespace facet

@@ -1,0 +1,40 @@
+// `facet info SCENE`: what the scene holds and what it will need on the device.
+#include <fmt/format.h>
+
+#include "bvh/bvh.hpp"
+#include "cli/commands.hpp"
+#include "scene/load.hpp"
+
+namespace facet {
+
+int run_info(const InfoOptions& opt) {
+    Scene scene = load_scene(opt.scene);
+    for (const std::string& w : scene.warnings) fmt::print(stderr, "facet: warning: {}\n", w);
+    Bvh bvh = build_bvh(scene.vertices);
+    const BvhStats& b = bvh.stats;
+    std::size_t shading_bytes = scene.shading.size() * sizeof(FcTriShading) +
+                                scene.materials.size() * sizeof(FcMaterial) +
+                                scene.lights.size() * sizeof(FcLight) + scene.light_cdf.size() * sizeof(float);
+    std::size_t film_bytes = std::size_t(scene.settings.width) * scene.settings.height * 16;
+    fmt::print("scene       {}\n", scene.source_path);
+    fmt::print("triangles   {}\n", scene.triangle_count());
+    fmt::print("materials   {}\n", scene.materials.size());
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const FcMaterial& m = scene.materials[i];
+        bool emits = m.emission[0] > 0 || m.emission[1] > 0 || m.emission[2] > 0;
+        fmt::print("  [{}] {:<20} lambert diffuse ({:.3f}, {:.3f}, {:.3f}){}\n", i, scene.material_names[i],
+                   m.diffuse[0], m.diffuse[1], m.diffuse[2],
+                   emits ? fmt::format(" emission ({:.3f}, {:.3f}, {:.3f})", m.emission[0], m.emission[1], m.emission[2]) : "");
+    }
+    fmt::print("lights      {} area (emitting triangles)\n", scene.lights.size());
+    fmt::print("bvh         {} nodes, {} leaves, depth {}, max leaf {}, SAH cost {:.2f}, built in {:.3f} s\n",
+               b.nodes, b.leaves, b.max_depth, b.max_leaf_size, b.sah_cost, b.build_seconds);
+    fmt::print("image       {}x{}, {} spp, max depth {}\n", scene.settings.width, scene.settings.height,
+               scene.settings.spp, scene.settings.max_depth);
+    fmt::print("device mem  {:.2f} MiB (bvh {:.2f}, shading {:.2f}, film {:.2f})\n",
+               double(b.device_bytes + shading_bytes + film_bytes) / (1 << 20), double(b.device_bytes) / (1 << 20),
+               double(shading_bytes) / (1 << 20), double(film_bytes) / (1 << 20));
+    return kExitOk;
+}
+
+}  // namespace facet

@@ -1,0 +1,41 @@
+// Image files through OpenImageIO: linear EXR with metadata, and a tone-mapped sRGB
+// PNG for viewing. Writes are atomic (a temporary file renamed into place), so a
+// snapshot never leaves a half-written image behind.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace facet {
+
+struct ImageMetadata {
+    std::vector<std::pair<std::string, std::string>> strings;   // e.g. {"facet:device", "..."}
+    std::vector<std::pair<std::string, float>> floats;          // e.g. {"facet:render_seconds", 1.5}
+    std::vector<std::pair<std::string, int>> ints;              // e.g. {"facet:spp", 64}
+};
+
+// Writes linear RGB floats (3 per pixel, top row first) as a 32-bit float EXR, so that
+// images can serve as references at full precision.
+void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb,
+               const ImageMetadata& meta = {});
+
+// Writes an 8-bit sRGB PNG: radiance times 2^exposure, clamped to [0, 1], encoded with
+// the sRGB transfer function (IEC 61966-2-1).
+void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb,
+               float exposure = 0.0f);
+
+struct ImageRGB {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb;   // 3 floats a pixel, top row first
+};
+
+// Reads any image OpenImageIO can (EXR, HDR, PNG...) as linear RGB floats. Throws
+// facet::Error naming the file on failure.
+ImageRGB read_image(const std::string& path);
+
+// The path with its extension replaced ("out/a.exr", ".png" -> "out/a.png").
+std::string replace_extension(const std::string& path, const std::string& ext);
+
+}  // namespace facet

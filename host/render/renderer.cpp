@@ -1,0 +1,116 @@
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "error.hpp"
+
+namespace facet {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// A read-only buffer holding `v` (OpenCL forbids empty buffers: at least one element).
+template <typename T>
+cl::Buffer upload(const cl::Context& ctx, const std::vector<T>& v) {
+    std::vector<T> copy = v.empty() ? std::vector<T>(1) : v;
+    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, copy.size() * sizeof(T), copy.data());
+}
+
+}  // namespace
+
+Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
+    : ctx_(ctx), width_(scene.settings.width), height_(scene.settings.height) {
+    if (width_ < 1 || height_ < 1) throw Error(fmt::format("invalid image size {}x{}", width_, height_));
+    params_.camera = make_camera(scene.camera, float(width_) / float(height_));
+    params_.width = std::uint32_t(width_);
+    params_.height = std::uint32_t(height_);
+    params_.seed = scene.settings.seed;
+    params_.max_depth = std::uint32_t(scene.settings.max_depth);
+    params_.rr_depth = std::uint32_t(scene.settings.rr_depth);
+    params_.light_count = std::uint32_t(scene.lights.size());
+
+    ProgramBuild build = build_program(ctx, "kernels/integrator/path.cl");
+    stats_.compile_seconds = build.seconds;
+    program_ = build.program;
+
+    auto start = Clock::now();
+    cl_call("uploading the scene", [&] {
+        const cl::Context& c = ctx.context();
+        kernel_ = cl::Kernel(program_, "render_pass");
+        params_buf_ = cl::Buffer(c, CL_MEM_READ_ONLY, sizeof(FcRenderParams));
+        nodes_ = upload(c, bvh.nodes);
+        tris_ = upload(c, bvh.triangles);
+        shading_ = upload(c, scene.shading);
+        materials_ = upload(c, scene.materials);
+        lights_ = upload(c, scene.lights);
+        light_cdf_ = upload(c, scene.light_cdf);
+        accum_ = cl::Buffer(c, CL_MEM_READ_WRITE, std::size_t(width_) * height_ * sizeof(cl_float4));
+        kernel_.setArg(0, params_buf_);
+        kernel_.setArg(1, nodes_);
+        kernel_.setArg(2, tris_);
+        kernel_.setArg(3, shading_);
+        kernel_.setArg(4, materials_);
+        kernel_.setArg(5, lights_);
+        kernel_.setArg(6, light_cdf_);
+        kernel_.setArg(7, accum_);
+    });
+    reset();
+    stats_.upload_seconds = seconds_since(start);
+}
+
+void Renderer::reset() {
+    cl_call("clearing the image", [&] {
+        ctx_.queue().enqueueFillBuffer(accum_, cl_float4{{0.0f, 0.0f, 0.0f, 0.0f}}, 0,
+                                       std::size_t(width_) * height_ * sizeof(cl_float4));
+        ctx_.queue().finish();
+    });
+    stats_.samples_per_pixel = 0;
+    stats_.render_seconds = 0.0;
+}
+
+void Renderer::render(std::uint32_t count, std::uint32_t max_rows_per_launch) {
+    if (count == 0) return;
+    auto start = Clock::now();
+    std::uint32_t rows = max_rows_per_launch ? std::min<std::uint32_t>(max_rows_per_launch, params_.height)
+                                             : params_.height;
+    cl_call("rendering a pass", [&] {
+        for (std::uint32_t row = 0; row < params_.height; row += rows) {
+            FcRenderParams p = params_;
+            p.sample_begin = std::uint32_t(stats_.samples_per_pixel);
+            p.sample_count = count;
+            p.row_begin = row;
+            p.row_count = std::min(rows, params_.height - row);
+            // Blocking write: `p` lives on the stack.
+            ctx_.queue().enqueueWriteBuffer(params_buf_, CL_TRUE, 0, sizeof p, &p);
+            ctx_.queue().enqueueNDRangeKernel(kernel_, cl::NullRange,
+                                              cl::NDRange(std::size_t(p.row_count) * params_.width));
+        }
+        ctx_.queue().finish();
+    });
+    stats_.samples_per_pixel += count;
+    stats_.render_seconds += seconds_since(start);
+}
+
+std::vector<float> Renderer::image(double* rejected_samples) const {
+    std::size_t n = std::size_t(width_) * height_;
+    std::vector<cl_float4> sums(n);
+    cl_call("reading the image back", [&] {
+        ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, n * sizeof(cl_float4), sums.data());
+    });
+    std::vector<float> rgb(3 * n);
+    double rejected = 0.0;
+    float inv = stats_.samples_per_pixel ? 1.0f / float(stats_.samples_per_pixel) : 0.0f;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c) rgb[3 * i + c] = sums[i].s[c] * inv;
+        rejected += double(sums[i].s[3]);
+    }
+    if (rejected_samples) *rejected_samples = rejected;
+    return rgb;
+}
+
+}  // namespace facet

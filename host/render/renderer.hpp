@@ -1,0 +1,55 @@
+// The progressive renderer: the scene and its BVH uploaded once, the render program
+// built once, and passes of samples added to a float accumulation buffer on the device.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bvh/bvh.hpp"
+#include "cl/runtime.hpp"
+#include "scene/scene.hpp"
+
+namespace facet {
+
+struct RenderStats {
+    std::uint64_t samples_per_pixel = 0;   // samples added to every pixel so far
+    double compile_seconds = 0.0;          // building the render program
+    double upload_seconds = 0.0;
+    double render_seconds = 0.0;           // time inside render passes
+};
+
+class Renderer {
+public:
+    // Uploads `scene` (with its `bvh`) and builds the render program. The image size,
+    // depth and seed come from scene.settings.
+    Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh);
+
+    // Adds `count` samples to every pixel, split into launches of at most
+    // `max_rows_per_launch` rows (0: the whole image) so no launch runs too long.
+    void render(std::uint32_t count, std::uint32_t max_rows_per_launch = 0);
+
+    // The mean radiance so far, linear RGB, row-major from the top row, 3 floats a
+    // pixel. `rejected_samples` receives the number of samples the kernel dropped as
+    // NaN, infinite or negative (0 for a correct renderer).
+    std::vector<float> image(double* rejected_samples = nullptr) const;
+
+    // Clears the accumulated samples.
+    void reset();
+
+    const RenderStats& stats() const { return stats_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const ClContext& context() const { return ctx_; }
+
+private:
+    ClContext& ctx_;
+    int width_;
+    int height_;
+    FcRenderParams params_{};
+    cl::Program program_;
+    cl::Kernel kernel_;
+    cl::Buffer params_buf_, nodes_, tris_, shading_, materials_, lights_, light_cdf_, accum_;
+    RenderStats stats_;
+};
+
+}  // namespace facet

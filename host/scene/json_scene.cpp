@@ -1,0 +1,293 @@
+#include "scene/json_scene.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+
+#include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "error.hpp"
+#include "scene/json_schema.hpp"
+#include "scene/load.hpp"
+#include "scene/text_parse.hpp"
+
+namespace facet {
+namespace {
+
+// Material models by name; later models join this table.
+struct ModelEntry {
+    std::string_view name;
+    int model;
+};
+constexpr ModelEntry kModels[] = {{"lambert", FC_MODEL_LAMBERT}};
+
+// "'a', 'b', 'c'" (or "none").
+template <typename Range, typename Name>
+std::string quoted_list(const Range& items, Name name) {
+    std::string out;
+    for (const auto& item : items) {
+        if (!out.empty()) out.append(", ");
+        out.append(fmt::format("'{}'", name(item)));
+    }
+    return out.empty() ? std::string("none") : out;
+}
+
+struct Loader {
+    JsonReader r;
+    std::string dir;
+    Scene& scene;
+    std::map<std::string, int> materials;  // JSON material name -> scene index
+    int default_index = -1;
+
+    int material_ref(const Json& v, const std::string& path) {
+        const std::string name = r.string(v, path);
+        auto it = materials.find(name);
+        if (it == materials.end()) {
+            const std::string known = quoted_list(materials, [](const auto& m) { return m.first; });
+            r.fail(path, fmt::format("unknown material '{}' (defined: {})", name, known));
+        }
+        return it->second;
+    }
+
+    int optional_material(const Json& obj, const std::string& path) {
+        if (obj.contains("material"))
+            return material_ref(obj["material"], JsonReader::key(path, "material"));
+        if (default_index < 0) default_index = add_material(scene, default_material(), "default");
+        return default_index;
+    }
+
+    void camera(const Json& v, const std::string& path) {
+        r.object(v, path, {"eye", "target", "up", "fov", "projection", "height"});
+        CameraDesc& c = scene.camera;
+        auto k = [&](const char* name) { return JsonReader::key(path, name); };
+        if (v.contains("eye")) c.eye = r.vec3(v["eye"], k("eye"));
+        if (v.contains("target")) c.target = r.vec3(v["target"], k("target"));
+        if (v.contains("up")) c.up = r.vec3(v["up"], k("up"));
+        if (v.contains("fov"))
+            c.fov_y_degrees = r.number_in(v["fov"], k("fov"), 0, 180, true, true);
+        if (v.contains("height")) {
+            c.ortho_height = r.number_in(v["height"], k("height"), 0, 1e30, true);
+        }
+        if (v.contains("projection")) {
+            const std::string p = r.string(v["projection"], k("projection"));
+            if (p == "perspective")
+                c.projection = FC_PROJECTION_PERSPECTIVE;
+            else if (p == "orthographic")
+                c.projection = FC_PROJECTION_ORTHOGRAPHIC;
+            else
+                r.fail(k("projection"), fmt::format("unknown projection '{}' (expected "
+                                                    "'perspective' or 'orthographic')",
+                                                    p));
+        }
+        const glm::vec3 forward = c.target - c.eye;
+        if (!(glm::length(forward) > 0.0f)) r.fail(path, "eye and target are the same point");
+        if (!(glm::length(glm::cross(glm::normalize(forward), c.up)) > 1e-6f)) {
+            r.fail(k("up"), "must be non-zero and not parallel to the view direction");
+        }
+    }
+
+    void render(const Json& v, const std::string& path) {
+        r.object(v, path, {"width", "height", "spp", "max_depth", "rr_depth", "seed"});
+        RenderSettings& s = scene.settings;
+        auto k = [&](const char* name) { return JsonReader::key(path, name); };
+        auto get = [&](const char* name, std::int64_t lo, std::int64_t hi, auto& out) {
+            if (v.contains(name))
+                out = static_cast<std::decay_t<decltype(out)>>(r.integer(v[name], k(name), lo, hi));
+        };
+        get("width", 1, 16384, s.width);
+        get("height", 1, 16384, s.height);
+        get("spp", 1, std::int64_t{1} << 24, s.spp);
+        get("max_depth", 1, 1024, s.max_depth);
+        get("rr_depth", 0, 1024, s.rr_depth);
+        get("seed", 0, 0xffffffffLL, s.seed);
+    }
+
+    void material(const std::string& name, const Json& v, const std::string& path) {
+        r.object(
+            v, path,
+            {"model", "diffuse", "specular", "roughness", "ior", "emission", "two_sided_emission"});
+        FcMaterial m = default_material();
+        auto k = [&](const char* key) { return JsonReader::key(path, key); };
+        auto put = [](float out[3], glm::vec3 c) {
+            out[0] = c.x;
+            out[1] = c.y;
+            out[2] = c.z;
+        };
+        if (v.contains("model")) {
+            const std::string model = r.string(v["model"], k("model"));
+            bool found = false;
+            for (const ModelEntry& e : kModels) {
+                if (e.name == model) {
+                    m.model = e.model;
+                    found = true;
+                }
+            }
+            if (!found) {
+                const std::string known =
+                    quoted_list(kModels, [](const ModelEntry& e) { return e.name; });
+                r.fail(k("model"), fmt::format("unknown model '{}' (known: {})", model, known));
+            }
+        }
+        if (v.contains("diffuse")) put(m.diffuse, r.color(v["diffuse"], k("diffuse")));
+        if (v.contains("specular")) put(m.specular, r.color(v["specular"], k("specular")));
+        if (v.contains("emission")) put(m.emission, r.color(v["emission"], k("emission")));
+        if (v.contains("roughness")) {
+            m.roughness = r.number_in(v["roughness"], k("roughness"), 0, 1);
+            m.alpha_x = m.alpha_y = m.roughness;
+        }
+        if (v.contains("ior")) m.ior = r.number_in(v["ior"], k("ior"), 0, 100, true);
+        if (v.contains("two_sided_emission") &&
+            r.boolean(v["two_sided_emission"], k("two_sided_emission"))) {
+            m.flags |= FC_MAT_TWO_SIDED_EMISSION;
+        }
+        for (int c = 0; c < 3; ++c) {
+            if (m.diffuse[c] > 1.0f || m.specular[c] > 1.0f) {
+                scene.warnings.push_back(
+                    fmt::format("{}: {}: a reflectance above 1 creates energy", r.file(), path));
+                break;
+            }
+        }
+        materials[name] = add_material(scene, m, name);
+    }
+
+    glm::mat4 transform(const Json& v, const std::string& path) {
+        r.object(v, path, {"scale", "rotate", "translate"});
+        glm::vec3 scale(1.0f);
+        if (v.contains("scale")) {
+            const std::string p = JsonReader::key(path, "scale");
+            scale = v["scale"].is_number() ? glm::vec3(static_cast<float>(r.number(v["scale"], p)))
+                                           : r.vec3(v["scale"], p);
+            if (scale.x == 0.0f || scale.y == 0.0f || scale.z == 0.0f)
+                r.fail(p, "must not be zero");
+        }
+        glm::mat4 rotation(1.0f);
+        if (v.contains("rotate")) {
+            const Json& rot = v["rotate"];
+            const std::string p = JsonReader::key(path, "rotate");
+            const bool list = rot.is_array() && !rot.empty() && rot[0].is_array();
+            const std::size_t n = list ? rot.size() : 1;
+            for (std::size_t i = 0; i < n; ++i) {
+                const Json& one = list ? rot[i] : rot;
+                const std::string pi = list ? JsonReader::index(p, i) : p;
+                if (!one.is_array() || one.size() != 4) {
+                    r.fail(pi,
+                           "expected [angle_degrees, axis_x, axis_y, axis_z] (or a list of them)");
+                }
+                const float angle = static_cast<float>(r.number(one[0], JsonReader::index(pi, 0)));
+                glm::vec3 axis;
+                for (int a = 0; a < 3; ++a) {
+                    const auto ai = static_cast<std::size_t>(a + 1);
+                    axis[a] = static_cast<float>(r.number(one[ai], JsonReader::index(pi, ai)));
+                }
+                if (!(glm::length(axis) > 0.0f)) r.fail(pi, "rotation axis is zero");
+                rotation = glm::rotate(glm::mat4(1.0f), glm::radians(angle), glm::normalize(axis)) *
+                           rotation;
+            }
+        }
+        glm::vec3 translate(0.0f);
+        if (v.contains("translate"))
+            translate = r.vec3(v["translate"], JsonReader::key(path, "translate"));
+        return glm::translate(glm::mat4(1.0f), translate) * rotation *
+               glm::scale(glm::mat4(1.0f), scale);
+    }
+
+    void mesh(const Json& v, const std::string& path) {
+        r.object(v, path, {"file", "material", "materials", "transform"});
+        r.require(v, path, "file");
+        const std::string file = r.string(v["file"], JsonReader::key(path, "file"));
+        const std::string full = text::join_path(dir, file);
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(full, ec)) {
+            r.fail(JsonReader::key(path, "file"),
+                   fmt::format("mesh file '{}' not found (looked for '{}')", file, full));
+        }
+        ObjLoadOptions options;
+        if (v.contains("material"))
+            options.material_override =
+                material_ref(v["material"], JsonReader::key(path, "material"));
+        if (v.contains("materials")) {
+            const std::string p = JsonReader::key(path, "materials");
+            if (!v["materials"].is_object())
+                r.fail(p, "expected an object {\"mtl name\": \"material\"}");
+            for (const auto& item : v["materials"].items()) {
+                options.material_map[item.key()] =
+                    material_ref(item.value(), JsonReader::key(p, item.key()));
+            }
+        }
+        if (v.contains("transform"))
+            options.transform = transform(v["transform"], JsonReader::key(path, "transform"));
+        try {
+            load_obj(full, scene, options);
+        } catch (const Error& e) {
+            throw Error(fmt::format("{}: {}: {}", r.file(), path, e.what()));
+        }
+    }
+
+    void shape(const Json& v, const std::string& path) {
+        if (!v.is_object()) r.fail(path, "expected an object");
+        r.require(v, path, "type");
+        const std::string type = r.string(v["type"], JsonReader::key(path, "type"));
+        auto k = [&](const char* key) { return JsonReader::key(path, key); };
+        if (type == "sphere") {
+            r.object(v, path, {"type", "center", "radius", "subdivisions", "material", "inward"});
+            r.require(v, path, "center");
+            r.require(v, path, "radius");
+            const glm::vec3 center = r.vec3(v["center"], k("center"));
+            const float radius = r.number_in(v["radius"], k("radius"), 0, 1e30, true);
+            int subdivisions = 3;
+            if (v.contains("subdivisions"))
+                subdivisions =
+                    static_cast<int>(r.integer(v["subdivisions"], k("subdivisions"), 0, 8));
+            const bool inward = v.contains("inward") && r.boolean(v["inward"], k("inward"));
+            add_sphere(scene, center, radius, subdivisions, optional_material(v, path), inward);
+        } else if (type == "quad") {
+            r.object(v, path, {"type", "corner", "edge1", "edge2", "material"});
+            for (const char* key : {"corner", "edge1", "edge2"}) r.require(v, path, key);
+            const glm::vec3 corner = r.vec3(v["corner"], k("corner"));
+            const glm::vec3 e1 = r.vec3(v["edge1"], k("edge1"));
+            const glm::vec3 e2 = r.vec3(v["edge2"], k("edge2"));
+            if (!(glm::length(glm::cross(e1, e2)) > 0.0f))
+                r.fail(path, "edge1 and edge2 span no area");
+            add_quad(scene, corner, e1, e2, optional_material(v, path));
+        } else {
+            r.fail(k("type"),
+                   fmt::format("unknown shape type '{}' (expected 'sphere' or 'quad')", type));
+        }
+    }
+
+    template <typename F>
+    void array(const Json& root, const char* name, F each) {
+        if (!root.contains(name)) return;
+        const Json& a = root[name];
+        if (!a.is_array()) r.fail(name, "expected an array");
+        for (std::size_t i = 0; i < a.size(); ++i) each(a[i], JsonReader::index(name, i));
+    }
+};
+
+}  // namespace
+
+bool load_json_scene(const std::string& path, Scene& scene) {
+    const Json root = parse_json(path, text::read_file(path, "scene file"));
+    Loader l{JsonReader(path), text::directory_of(path), scene, {}, -1};
+    l.r.object(root, "", {"camera", "render", "materials", "meshes", "shapes"});
+    if (root.contains("render")) l.render(root["render"], "render");
+    if (root.contains("materials")) {
+        const Json& mats = root["materials"];
+        if (!mats.is_object()) l.r.fail("materials", "expected an object {\"name\": {...}}");
+        for (const auto& item : mats.items()) {
+            l.material(item.key(), item.value(), JsonReader::key("materials", item.key()));
+        }
+    }
+    l.array(root, "meshes", [&](const Json& v, const std::string& p) { l.mesh(v, p); });
+    l.array(root, "shapes", [&](const Json& v, const std::string& p) { l.shape(v, p); });
+    if (scene.triangle_count() == 0) {
+        throw Error(fmt::format("{}: the scene has no geometry (no 'meshes' or 'shapes')", path));
+    }
+    const bool has_camera = root.contains("camera");
+    if (has_camera) l.camera(root["camera"], "camera");
+    return has_camera;
+}
+
+}  // namespace facet

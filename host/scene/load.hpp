@@ -1,0 +1,35 @@
+// Loading scenes from files. Every function throws facet::Error with a message that
+// names the file (and the line where there is one) and says what is wrong.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include <glm/mat4x4.hpp>
+
+#include "scene/scene.hpp"
+
+namespace facet {
+
+// Loads a JSON scene (*.json) or a mesh (*.obj, framed by a default camera and lit
+// by a default light). Calls build_lights() before returning.
+Scene load_scene(const std::string& path);
+
+// Appends the triangles and materials of an OBJ (and its MTL) to `scene`.
+// `transform` is applied to positions (its inverse transpose to normals);
+// `material_override`, when >= 0, is an index into scene.materials that replaces
+// every material of the mesh.
+void load_obj(const std::string& path, Scene& scene, const glm::mat4& transform = glm::mat4(1.0f),
+              int material_override = -1);
+
+struct ObjLoadOptions {
+    glm::mat4 transform{1.0f};
+    int material_override = -1;               // as above
+    std::map<std::string, int> material_map;  // MTL material name -> scene material index
+};
+
+// As above, with a per-MTL-material override (`material_map`); a name in the map
+// that the MTL does not define is an error.
+void load_obj(const std::string& path, Scene& scene, const ObjLoadOptions& options);
+
+}  // namespace facet

@@ -1,0 +1,144 @@
+#include "scene/mtl_material.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "error.hpp"
+#include "scene/scene.hpp"
+#include "scene/text_parse.hpp"
+
+namespace facet {
+namespace {
+
+struct MtlLine {
+    const std::string& path;
+    int line;
+    const std::vector<std::string_view>& f;
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw Error(fmt::format("{}:{}: {}", path, line, what));
+    }
+
+    float number(std::size_t i) const {
+        float v = 0.0f;
+        if (!text::parse_float(f[i], v)) {
+            fail(fmt::format("'{}': '{}' is not a valid number", f[0], f[i]));
+        }
+        if (!std::isfinite(v)) fail(fmt::format("'{}': '{}' is not finite", f[0], f[i]));
+        return v;
+    }
+
+    // One number, within [lo, hi].
+    float scalar(float lo, float hi) const {
+        if (f.size() != 2) fail(fmt::format("'{}' takes one number, found {}", f[0], f.size() - 1));
+        const float v = number(1);
+        if (v < lo || v > hi)
+            fail(fmt::format("'{}' must be in [{}, {}], got {}", f[0], lo, hi, v));
+        return v;
+    }
+
+    // "Kd r g b" or "Kd r" (grey); colours must not be negative.
+    void color(float out[3]) const {
+        if (f.size() >= 2 && (f[1] == "spectral" || f[1] == "xyz")) {
+            fail(fmt::format("'{} {}' is not supported; give linear RGB numbers", f[0], f[1]));
+        }
+        if (f.size() != 2 && f.size() != 4) {
+            fail(fmt::format("'{}' takes 3 numbers (or 1 for grey), found {}", f[0], f.size() - 1));
+        }
+        for (int c = 0; c < 3; ++c) {
+            out[c] = number(f.size() == 2 ? 1 : 1 + c);
+            if (out[c] < 0.0f) fail(fmt::format("'{}': negative colour {}", f[0], out[c]));
+        }
+    }
+};
+
+bool is_texture_statement(std::string_view kw) {
+    return kw.substr(0, 4) == "map_" || kw == "bump" || kw == "disp" || kw == "decal" ||
+           kw == "refl" || kw == "norm";
+}
+
+struct Pending {
+    MtlMaterial m;
+    bool has_pr = false;
+    bool has_ns = false;
+    float ns = 0.0f;
+};
+
+MtlMaterial finish(Pending& p) {
+    MtlMaterial m = p.m;
+    FcMaterial& mat = m.material;
+    if (!p.has_pr && p.has_ns) mat.roughness = std::sqrt(2.0f / (p.ns + 2.0f));
+    mat.alpha_x = mat.roughness;
+    mat.alpha_y = mat.roughness;
+    return m;
+}
+
+}  // namespace
+
+std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view content,
+                                   std::vector<std::string>& warnings) {
+    std::vector<MtlMaterial> out;
+    std::vector<Pending> list;
+    const std::string dir = text::directory_of(path);
+    const auto lines = text::split_lines(content);
+    for (std::size_t li = 0; li < lines.size(); ++li) {
+        const auto f = text::split_fields(lines[li]);
+        if (f.empty()) continue;
+        const MtlLine l{path, static_cast<int>(li + 1), f};
+        const std::string_view kw = f[0];
+        if (kw == "newmtl") {
+            if (f.size() < 2) l.fail("'newmtl' without a name");
+            Pending p;
+            p.m.name = std::string(text::rest_after_keyword(lines[li]));
+            p.m.material = default_material();
+            list.push_back(p);
+            continue;
+        }
+        const bool known = kw == "Kd" || kw == "Ks" || kw == "Ke" || kw == "Ns" || kw == "Ni" ||
+                           kw == "d" || kw == "illum" || kw == "Pr" || kw == "Pm";
+        if (!known && !is_texture_statement(kw)) continue;  // Ka, Tf, Tr, ...: not used
+        if (list.empty()) l.fail(fmt::format("'{}' before any 'newmtl'", kw));
+        Pending& p = list.back();
+        FcMaterial& mat = p.m.material;
+        if (kw == "Kd")
+            l.color(mat.diffuse);
+        else if (kw == "Ks")
+            l.color(mat.specular);
+        else if (kw == "Ke")
+            l.color(mat.emission);
+        else if (kw == "Ns") {
+            p.ns = l.scalar(0.0f, 1e9f);
+            p.has_ns = true;
+        } else if (kw == "Ni")
+            mat.ior = l.scalar(1e-3f, 100.0f);
+        else if (kw == "d")
+            p.m.dissolve = l.scalar(0.0f, 1.0f);
+        else if (kw == "Pr") {
+            mat.roughness = l.scalar(0.0f, 1.0f);
+            p.has_pr = true;
+        } else if (kw == "Pm")
+            p.m.metallic = l.scalar(0.0f, 1.0f);
+        else if (kw == "illum") {
+            const float v = l.scalar(0.0f, 10.0f);
+            if (v != std::floor(v)) l.fail(fmt::format("'illum' must be an integer, got {}", v));
+            p.m.illum = static_cast<int>(v);
+        } else {
+            // Texture: the file name is the last field (options such as -bm 1 come first).
+            if (f.size() < 2) l.fail(fmt::format("'{}' without a file name", kw));
+            const std::string file(f.back());
+            std::error_code ec;
+            const bool exists = std::filesystem::exists(text::join_path(dir, file), ec);
+            warnings.push_back(fmt::format(
+                "{}:{}: texture '{}' ({}) of material '{}' ignored: textures are not supported "
+                "yet{}",
+                path, l.line, file, kw, p.m.name, exists ? "" : " (and the file is missing)"));
+        }
+    }
+    out.reserve(list.size());
+    for (Pending& p : list) out.push_back(finish(p));
+    return out;
+}
+
+}  // namespace facet

@@ -1,0 +1,137 @@
+#include "scene/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace facet {
+
+FcMaterial default_material() {
+    FcMaterial m{};
+    for (int c = 0; c < 3; ++c) {
+        m.diffuse[c] = 0.8f;
+        m.specular[c] = 0.0f;
+        m.emission[c] = 0.0f;
+    }
+    m.model = FC_MODEL_LAMBERT;
+    m.roughness = 0.5f;
+    m.alpha_x = 0.5f;
+    m.alpha_y = 0.5f;
+    m.ior = 1.5f;
+    m.flags = 0u;
+    return m;
+}
+
+static void store(float out[3], glm::vec3 v) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+}
+
+FcCamera make_camera(const CameraDesc& desc, float aspect) {
+    const glm::vec3 forward = glm::normalize(desc.target - desc.eye);
+    const glm::vec3 right_unit = glm::normalize(glm::cross(forward, desc.up));
+    const glm::vec3 up_unit = glm::cross(right_unit, forward);
+    // Half the image plane: at distance 1 (perspective) or in world units (orthographic).
+    const float half_height = desc.projection == FC_PROJECTION_ORTHOGRAPHIC
+                                  ? 0.5f * desc.ortho_height
+                                  : std::tan(0.5f * glm::radians(desc.fov_y_degrees));
+    FcCamera cam{};
+    store(cam.eye, desc.eye);
+    store(cam.forward, forward);
+    store(cam.right, right_unit * (half_height * aspect));
+    store(cam.up, up_unit * half_height);
+    cam.projection = desc.projection;
+    return cam;
+}
+
+int add_material(Scene& scene, const FcMaterial& material, const std::string& name) {
+    scene.materials.push_back(material);
+    scene.material_names.push_back(name);
+    return static_cast<int>(scene.materials.size() - 1);
+}
+
+CameraDesc frame_camera(const Scene& scene) {
+    constexpr float fov = 40.0f;
+    glm::vec3 lo(std::numeric_limits<float>::max());
+    glm::vec3 hi(-std::numeric_limits<float>::max());
+    for (const glm::vec3& v : scene.vertices) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    CameraDesc cam;
+    cam.fov_y_degrees = fov;
+    if (scene.vertices.empty()) return cam;
+    const glm::vec3 center = 0.5f * (lo + hi);
+    float radius = 0.5f * glm::length(hi - lo);
+    if (!(radius > 0.0f)) radius = 1.0f;
+    // The bounding sphere fits the vertical fov at this distance.
+    const float distance = radius / std::sin(0.5f * glm::radians(fov));
+    cam.target = center;
+    cam.eye = center + distance * glm::normalize(glm::vec3(0.0f, 0.25f, 1.0f));
+    cam.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    return cam;
+}
+
+static double luminance(const float rgb[3]) {
+    // Rec. 709 / linear sRGB luminance weights.
+    return 0.2126 * double(rgb[0]) + 0.7152 * double(rgb[1]) + 0.0722 * double(rgb[2]);
+}
+
+// The area light of triangle t: edges ordered so that cross(e1, e2) points to the
+// side its shading normals face (the emitting side).
+static FcLight triangle_light(const Scene& scene, std::size_t t, float area) {
+    const glm::vec3* v = &scene.vertices[3 * t];
+    const FcTriShading& sh = scene.shading[t];
+    glm::vec3 e1 = v[1] - v[0], e2 = v[2] - v[0];
+    const glm::vec3 shading_n = glm::vec3(sh.n0[0], sh.n0[1], sh.n0[2]) +
+                                glm::vec3(sh.n1[0], sh.n1[1], sh.n1[2]) +
+                                glm::vec3(sh.n2[0], sh.n2[1], sh.n2[2]);
+    if (glm::dot(glm::cross(e1, e2), shading_n) < 0.0f) std::swap(e1, e2);
+    FcLight light{};
+    store(light.p0, v[0]);
+    store(light.e1, e1);
+    store(light.e2, e2);
+    light.type = FC_LIGHT_AREA_TRIANGLE;
+    light.prim = static_cast<fc_int>(t);
+    light.area = area;
+    return light;
+}
+
+void build_lights(Scene& scene) {
+    scene.lights.clear();
+    std::vector<double> power;
+    for (std::size_t t = 0; t < scene.shading.size(); ++t) {
+        FcTriShading& sh = scene.shading[t];
+        sh.light = -1;
+        if (sh.material < 0 || static_cast<std::size_t>(sh.material) >= scene.materials.size()) {
+            continue;
+        }
+        const FcMaterial& m = scene.materials[static_cast<std::size_t>(sh.material)];
+        const double lum = luminance(m.emission);
+        if (!(lum > 0.0)) continue;
+        const glm::vec3* v = &scene.vertices[3 * t];
+        const float area = 0.5f * glm::length(glm::cross(v[1] - v[0], v[2] - v[0]));
+        if (!(area > 0.0f) || !std::isfinite(area)) continue;
+        const double sides = (m.flags & FC_MAT_TWO_SIDED_EMISSION) ? 2.0 : 1.0;
+        sh.light = static_cast<fc_int>(scene.lights.size());
+        scene.lights.push_back(triangle_light(scene, t, area));
+        power.push_back(double(area) * lum * sides);
+    }
+    double total = 0.0;
+    for (double p : power) total += p;
+    scene.light_cdf.assign(1, 0.0f);
+    double running = 0.0;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        scene.lights[i].pick_pdf = static_cast<float>(power[i] / total);
+        running += power[i];
+        scene.light_cdf.push_back(static_cast<float>(running / total));
+    }
+    if (!scene.lights.empty()) scene.light_cdf.back() = 1.0f;
+}
+
+}  // namespace facet

@@ -1,0 +1,83 @@
+// The scene as the host holds it: a triangle soup with per-triangle shading data,
+// materials, lights, a camera and render settings. Loaded from a JSON scene file
+// or directly from an OBJ (host/scene/scene_file.cpp, host/scene/obj_loader.cpp).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "shared/scene.h"
+#include "shared/render.h"
+
+namespace facet {
+
+struct CameraDesc {
+    glm::vec3 eye{0.0f, 0.0f, 5.0f};
+    glm::vec3 target{0.0f, 0.0f, 0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    int projection = FC_PROJECTION_PERSPECTIVE;
+    float fov_y_degrees = 40.0f;     // perspective: vertical field of view
+    float ortho_height = 2.0f;       // orthographic: world-space height of the image
+};
+
+struct RenderSettings {
+    int width = 512;
+    int height = 512;
+    int spp = 64;
+    int max_depth = 16;        // path vertices after the camera; 1 = direct light only
+    int rr_depth = 3;          // Russian roulette starts after this many bounces
+    std::uint32_t seed = 0;
+};
+
+struct Scene {
+    std::vector<glm::vec3> vertices;         // 3 per triangle
+    std::vector<FcTriShading> shading;       // 1 per triangle
+    std::vector<FcMaterial> materials;
+    std::vector<std::string> material_names; // parallel to materials
+    std::vector<FcLight> lights;             // built by build_lights()
+    std::vector<float> light_cdf;            // light_count + 1 entries, cdf[0] = 0, cdf[n] = 1
+    CameraDesc camera;
+    RenderSettings settings;
+    std::string source_path;                 // the file it was loaded from
+    std::vector<std::string> warnings;       // non-fatal problems met while loading
+
+    std::size_t triangle_count() const { return shading.size(); }
+};
+
+// A material with Lambertian defaults (diffuse 0.8 grey, no emission).
+FcMaterial default_material();
+
+// Camera parameters as the kernels see them, for an image of the given aspect ratio.
+FcCamera make_camera(const CameraDesc& desc, float aspect);
+
+// Fills scene.lights and scene.light_cdf from the emissive triangles: one area
+// light per triangle with non-zero emission and area, picked in proportion to its
+// power (area x luminance of emission, doubled when two-sided).
+void build_lights(Scene& scene);
+
+// Shapes made on the host (host/scene/shapes.cpp), appended to `scene` with
+// `material` (an index into scene.materials) and flat face normals.
+// An icosphere: the icosahedron split `subdivisions` times (20 * 4^subdivisions
+// triangles), vertices on the sphere. Faces point outward, or inward (winding and
+// normals flipped) when `inward` is set, e.g. for an emitting furnace enclosure.
+void add_sphere(Scene& scene, glm::vec3 center, float radius, int subdivisions, int material,
+                bool inward);
+// A parallelogram corner, corner + e1, corner + e1 + e2, corner + e2 as two
+// triangles facing normalize(cross(e1, e2)).
+void add_quad(Scene& scene, glm::vec3 corner, glm::vec3 e1, glm::vec3 e2, int material);
+
+// Appends one triangle with per-vertex normals (normalised here) and a material.
+void add_triangle(Scene& scene, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 n0,
+                  glm::vec3 n1, glm::vec3 n2, int material);
+
+// A camera that frames the scene's bounding box: looking at its centre from +z and
+// slightly above, far enough that the bounding sphere fits a 40 degree vertical fov.
+CameraDesc frame_camera(const Scene& scene);
+
+// Appends a material (with its name) and returns its index.
+int add_material(Scene& scene, const FcMaterial& material, const std::string& name);
+
+}  // namespace facet

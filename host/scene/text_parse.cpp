@@ -1,0 +1,98 @@
+#include "scene/text_parse.hpp"
+
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "error.hpp"
+
+namespace facet::text {
+
+std::string read_file(const std::string& path, const char* what) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        throw Error(fmt::format("{} '{}': is a directory, not a file", what, path));
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(fmt::format("{} '{}': cannot open (does it exist?)", what, path));
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) throw Error(fmt::format("{} '{}': read error", what, path));
+    return ss.str();
+}
+
+std::vector<std::string_view> split_lines(std::string_view text) {
+    std::vector<std::string_view> lines;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] != '\n' && text[i] != '\r') continue;
+        lines.push_back(text.substr(start, i - start));
+        if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+        start = i + 1;
+    }
+    if (start < text.size()) lines.push_back(text.substr(start));
+    return lines;
+}
+
+static bool is_space(char c) {
+    return c == ' ' || c == '\t' || c == '\v' || c == '\f';
+}
+
+std::vector<std::string_view> split_fields(std::string_view line) {
+    std::vector<std::string_view> fields;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && is_space(line[i])) ++i;
+        if (i >= line.size() || line[i] == '#') break;
+        std::size_t start = i;
+        while (i < line.size() && !is_space(line[i]) && line[i] != '#') ++i;
+        fields.push_back(line.substr(start, i - start));
+    }
+    return fields;
+}
+
+std::string_view rest_after_keyword(std::string_view line) {
+    std::size_t i = 0;
+    while (i < line.size() && is_space(line[i])) ++i;
+    while (i < line.size() && !is_space(line[i])) ++i;
+    while (i < line.size() && is_space(line[i])) ++i;
+    std::size_t end = line.size();
+    while (end > i && is_space(line[end - 1])) --end;
+    return line.substr(i, end - i);
+}
+
+bool parse_float(std::string_view field, float& out) {
+    if (field.empty()) return false;
+    const char* first = field.data();
+    const char* last = field.data() + field.size();
+    if (*first == '+') ++first;  // from_chars rejects a leading '+', OBJ writers emit it
+    if (first == last) return false;
+    auto [ptr, ec] = std::from_chars(first, last, out);
+    if (ec == std::errc::result_out_of_range) return false;
+    return ec == std::errc() && ptr == last;
+}
+
+bool parse_int(std::string_view field, long& out) {
+    if (field.empty()) return false;
+    const char* first = field.data();
+    const char* last = field.data() + field.size();
+    if (*first == '+') ++first;
+    if (first == last) return false;
+    auto [ptr, ec] = std::from_chars(first, last, out);
+    return ec == std::errc() && ptr == last;
+}
+
+std::string directory_of(const std::string& path) {
+    return std::filesystem::path(path).parent_path().string();
+}
+
+std::string join_path(const std::string& dir, const std::string& rel) {
+    std::filesystem::path p(rel);
+    if (p.is_absolute() || dir.empty()) return p.string();
+    return (std::filesystem::path(dir) / p).string();
+}
+
+}  // namespace facet::text

@@ -1,0 +1,150 @@
+/* Unidirectional path tracing with next-event estimation.
+ *
+ * Each work-item renders samples [sample_begin, sample_begin + sample_count) of one
+ * pixel and adds their sum to the accumulation buffer. At every surface vertex the
+ * light is estimated twice, by sampling a light (next-event estimation) and by
+ * sampling the BSDF and hitting an emitter, and the two are combined by multiple
+ * importance sampling with the power heuristic (Veach 1997, ch. 9). Paths end at
+ * max_depth bounces or by Russian roulette after rr_depth bounces (survival
+ * probability = the path throughput's largest channel, pbrt-v4's rule).
+ *
+ * Samples whose radiance is NaN, infinite or negative are not added; they are
+ * counted in the accumulation buffer's w channel so that tests can demand zero. */
+#ifndef FACET_INTEGRATOR_PATH_CL
+#define FACET_INTEGRATOR_PATH_CL
+
+#include "surface.cl"
+#include "../camera/camera.cl"
+#include "../lights/area.cl"
+#include "../bsdf/lambert.cl"
+#include "../util/rng.cl"
+
+typedef struct {
+    __constant const FcRenderParams* params;
+    __global const FcBvhNode* nodes;
+    __global const FcTriangle* tris;
+    __global const FcTriShading* shading;
+    __global const FcMaterial* materials;
+    __global const FcLight* lights;
+    __global const float* light_cdf;
+} SceneView;
+
+/* Next-event estimation at surface `s` seen from direction wo: one light sample
+ * weighted against the BSDF's density. Returns its contribution before throughput. */
+inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* frame,
+                            __global const FcMaterial* m, float3 wo_local, Rng* rng) {
+    float u_pick = rng_float(rng);
+    float2 u_point = rng_float2(rng);
+    uint light_count = sc->params->light_count;
+    if (light_count == 0u) return (float3)(0.0f);
+    LightSample ls = sample_area_light(sc->lights, sc->light_cdf, light_count, u_pick, u_point);
+    float3 to_light = ls.p - s->p;
+    float dist2 = dot(to_light, to_light);
+    if (!(dist2 > 0.0f)) return (float3)(0.0f);
+    float dist = sqrt(dist2);
+    float3 wi = to_light / dist;
+    if (dot(s->ng, wi) <= 0.0f) return (float3)(0.0f);
+
+    __global const FcLight* light = &sc->lights[ls.light];
+    __global const FcMaterial* lm = &sc->materials[sc->shading[light->prim].material];
+    float3 le = area_light_radiance(load3(lm->emission), lm->flags, ls.n, -wi);
+    if (is_black(le)) return (float3)(0.0f);
+
+    float3 wi_local = frame_to_local(frame, wi);
+    float3 f = lambert_eval(load3(m->diffuse), wo_local, wi_local);
+    if (is_black(f)) return (float3)(0.0f);
+
+    /* Shadow ray between the two offset points, so neither end hits itself. */
+    float3 o = offset_ray_origin(s->p, s->ng);
+    float3 target = offset_ray_origin(ls.p, dot(ls.n, wi) < 0.0f ? ls.n : -ls.n);
+    float3 seg = target - o;
+    float seg_len = length(seg);
+    if (!(seg_len > 0.0f)) return (float3)(0.0f);
+    if (trace_any(sc->nodes, sc->tris, o, seg / seg_len, seg_len)) return (float3)(0.0f);
+
+    float light_pdf = area_light_pdf_solid_angle(light, dist, dot(ls.n, wi));
+    if (!(light_pdf > 0.0f)) return (float3)(0.0f);
+    float bsdf_pdf = lambert_pdf(wo_local, wi_local);
+    float w = power_heuristic(light_pdf, bsdf_pdf);
+    return f * le * (wi_local.z * w / light_pdf);
+}
+
+inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
+    __constant const FcRenderParams* P = sc->params;
+    float3 radiance = (float3)(0.0f);
+    float3 throughput = (float3)(1.0f);
+    float prev_bsdf_pdf = 0.0f;   /* density of the sampled direction; 0 for camera rays */
+    for (uint depth = 0;; ++depth) {
+        Hit hit;
+        if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) break;
+        Surface s = surface_at(sc->tris, sc->shading, &hit);
+        __global const FcMaterial* m = &sc->materials[s.material];
+        float3 wo = -d;
+
+        /* Emission reached by the camera ray or by BSDF sampling (MIS-weighted). */
+        float3 le = area_light_radiance(load3(m->emission), m->flags, s.ng, wo);
+        if (!is_black(le) && s.light >= 0) {
+            float w = 1.0f;
+            if (depth > 0u) {
+                float light_pdf = area_light_pdf_solid_angle(&sc->lights[s.light], hit.t, dot(s.ng, wo));
+                w = power_heuristic(prev_bsdf_pdf, light_pdf);
+            }
+            radiance += throughput * le * w;
+        }
+        if (depth >= P->max_depth) break;
+
+        /* Two-sided shading: work on the side the ray arrived from. */
+        if (dot(s.ng, wo) < 0.0f) {
+            s.ng = -s.ng;
+            s.ns = -s.ns;
+        }
+        Frame frame = frame_from_normal(s.ns);
+        float3 wo_local = frame_to_local(&frame, wo);
+
+        radiance += throughput * sample_direct(sc, &s, &frame, m, wo_local, rng);
+
+        float3 wi_local;
+        float pdf;
+        float3 f = lambert_sample(load3(m->diffuse), wo_local, rng_float2(rng), &wi_local, &pdf);
+        if (!(pdf > 0.0f) || is_black(f)) break;
+        float3 wi = frame_to_world(&frame, wi_local);
+        if (dot(s.ng, wi) <= 0.0f) break;   /* the shading normal points below the surface */
+        throughput *= f * (wi_local.z / pdf);
+        prev_bsdf_pdf = pdf;
+
+        if (depth + 1u >= P->rr_depth) {
+            float survive = fmin(max3(throughput), 0.95f);
+            if (rng_float(rng) >= survive) break;
+            throughput /= survive;
+        }
+        o = offset_ray_origin(s.p, s.ng);
+        d = wi;
+    }
+    return radiance;
+}
+
+__kernel void render_pass(__constant const FcRenderParams* params, __global const FcBvhNode* nodes,
+                          __global const FcTriangle* tris, __global const FcTriShading* shading,
+                          __global const FcMaterial* materials, __global const FcLight* lights,
+                          __global const float* light_cdf, __global float4* accum) {
+    uint gid = get_global_id(0);
+    uint x = gid % params->width;
+    uint y = params->row_begin + gid / params->width;
+    if (gid / params->width >= params->row_count || y >= params->height) return;
+    SceneView sc = {params, nodes, tris, shading, materials, lights, light_cdf};
+    uint pixel = y * params->width + x;
+    float4 sum = (float4)(0.0f);
+    for (uint i = 0; i < params->sample_count; ++i) {
+        Rng rng = rng_init(params->seed, pixel, params->sample_begin + i);
+        float2 jitter = rng_float2(&rng);
+        float3 o, d;
+        camera_ray(&params->camera, (float)x + jitter.x, (float)y + jitter.y, params->width,
+                   params->height, &o, &d);
+        float3 l = path_radiance(&sc, o, d, &rng);
+        if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) sum.xyz += l;
+        else sum.w += 1.0f;
+    }
+    accum[pixel] += sum;
+}
+
+#endif

@@ -1,0 +1,34 @@
+/* Every shared struct and field, as an X-macro list, so the host (static_assert and
+ * tests/layout_test.cpp) and a kernel (kernels/test/layout_kernels.cl) compute
+ * sizeof/offsetof over exactly the same list. Add new structs and fields here. */
+#ifndef FACET_SHARED_LAYOUT_FIELDS_H
+#define FACET_SHARED_LAYOUT_FIELDS_H
+
+#define FC_LAYOUT_STRUCTS(S) \
+    S(FcBvhNode)             \
+    S(FcTriangle)            \
+    S(FcTriShading)          \
+    S(FcMaterial)            \
+    S(FcLight)               \
+    S(FcCamera)              \
+    S(FcRenderParams)
+
+#define FC_LAYOUT_FIELDS(F)                                                                       \
+    F(FcBvhNode, a_min) F(FcBvhNode, a_index) F(FcBvhNode, a_max) F(FcBvhNode, a_count)           \
+    F(FcBvhNode, b_min) F(FcBvhNode, b_index) F(FcBvhNode, b_max) F(FcBvhNode, b_count)           \
+    F(FcTriangle, v0) F(FcTriangle, prim) F(FcTriangle, v1) F(FcTriangle, v2)                     \
+    F(FcTriShading, n0) F(FcTriShading, material) F(FcTriShading, n1) F(FcTriShading, light)      \
+    F(FcTriShading, n2)                                                                           \
+    F(FcMaterial, diffuse) F(FcMaterial, model) F(FcMaterial, specular) F(FcMaterial, roughness) \
+    F(FcMaterial, emission) F(FcMaterial, ior) F(FcMaterial, alpha_x) F(FcMaterial, alpha_y)      \
+    F(FcMaterial, flags)                                                                          \
+    F(FcLight, p0) F(FcLight, type) F(FcLight, e1) F(FcLight, prim) F(FcLight, e2)                \
+    F(FcLight, area) F(FcLight, pick_pdf)                                                         \
+    F(FcCamera, eye) F(FcCamera, projection) F(FcCamera, forward) F(FcCamera, right)              \
+    F(FcCamera, up)                                                                               \
+    F(FcRenderParams, camera) F(FcRenderParams, width) F(FcRenderParams, height)                  \
+    F(FcRenderParams, sample_begin) F(FcRenderParams, sample_count) F(FcRenderParams, seed)       \
+    F(FcRenderParams, max_depth) F(FcRenderParams, rr_depth) F(FcRenderParams, light_count)       \
+    F(FcRenderParams, row_begin) F(FcRenderParams, row_count)
+
+#endif

@@ -1,0 +1,49 @@
+/* Camera and per-pass render parameters, passed to the kernels as one __constant
+ * struct (kernels/integrator/path.cl). */
+#ifndef FACET_SHARED_RENDER_H
+#define FACET_SHARED_RENDER_H
+
+#include "types.h"
+
+#define FC_PROJECTION_PERSPECTIVE 0
+#define FC_PROJECTION_ORTHOGRAPHIC 1
+
+/* A pinhole or orthographic camera. `right` and `up` span half the image plane:
+ * for a perspective camera at distance 1 along `forward` (so |up| = tan(fov_y / 2)),
+ * for an orthographic camera in world units. Image x grows along `right`, image y
+ * (row 0 at the top) against `up`. */
+typedef struct FcCamera {
+    float eye[3];
+    fc_int projection;
+    float forward[3];
+    float pad0;
+    float right[3];
+    float pad1;
+    float up[3];
+    float pad2;
+} FcCamera;
+
+/* Parameters of one render pass. A pass adds samples [sample_begin, sample_begin +
+ * sample_count) of every pixel to the accumulation buffer; the random stream of a
+ * sample depends only on (seed, pixel, sample index), so an image does not depend
+ * on how samples are split into passes. */
+typedef struct FcRenderParams {
+    FcCamera camera;
+    fc_uint width;
+    fc_uint height;
+    fc_uint sample_begin;
+    fc_uint sample_count;
+    fc_uint seed;
+    fc_uint max_depth;
+    fc_uint rr_depth;
+    fc_uint light_count;
+    fc_uint row_begin;
+    fc_uint row_count;
+    fc_uint pad0;
+    fc_uint pad1;
+} FcRenderParams;
+
+FC_STATIC_ASSERT(sizeof(FcCamera) == 64, "FcCamera is 64 bytes");
+FC_STATIC_ASSERT(sizeof(FcRenderParams) == 112, "FcRenderParams is 112 bytes");
+
+#endif

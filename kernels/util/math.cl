@@ -1,0 +1,42 @@
+/* Small math helpers shared by every kernel. */
+#ifndef FACET_UTIL_MATH_CL
+#define FACET_UTIL_MATH_CL
+
+#include "../shared/types.h"
+
+#define FC_PI 3.14159265358979323846f
+#define FC_INV_PI 0.31830988618379067154f
+#define FC_ONE_MINUS_EPSILON 0x1.fffffep-1f
+
+inline float3 load3(const __global float* p) { return (float3)(p[0], p[1], p[2]); }
+inline float3 load3c(const __constant float* p) { return (float3)(p[0], p[1], p[2]); }
+
+/* Rec. 709 / linear sRGB luminance. */
+inline float luminance(float3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+inline float max3(float3 c) { return fmax(c.x, fmax(c.y, c.z)); }
+
+inline bool is_black(float3 c) { return c.x == 0.0f && c.y == 0.0f && c.z == 0.0f; }
+
+inline bool all_finite(float3 c) { return isfinite(c.x) && isfinite(c.y) && isfinite(c.z); }
+
+inline float sqr(float x) { return x * x; }
+
+inline float safe_sqrt(float x) { return sqrt(fmax(x, 0.0f)); }
+
+/* Normalises v, or returns `fallback` when v has zero or non-finite length. */
+inline float3 normalize_or(float3 v, float3 fallback) {
+    float len2 = dot(v, v);
+    return (len2 > 0.0f && isfinite(len2)) ? v * rsqrt(len2) : fallback;
+}
+
+/* Veach's power heuristic with beta = 2, for two strategies with one sample each
+ * (Veach 1997, section 9.2.4). Safe for infinite pdfs (delta lobes) and zeros. */
+inline float power_heuristic(float pdf_a, float pdf_b) {
+    if (isinf(pdf_a)) return 1.0f;
+    float a = pdf_a * pdf_a;
+    float b = pdf_b * pdf_b;
+    return (a + b > 0.0f) ? a / (a + b) : 0.0f;
+}
+
+#endif

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# End-to-end tests of the facet command, as a user runs it: exit statuses, messages,
+# files written. Needs FACET (the binary) and SCENES (the scenes folder).
+set -u
+: "${FACET:?}" "${SCENES:?}"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0
+failed=0
+
+ok() { passed=$((passed + 1)); echo "PASS $1"; }
+bad() { failed=$((failed + 1)); echo "FAIL $1"; [ -f "$tmp/err" ] && sed 's/^/    /' "$tmp/err"; }
+
+# expect NAME STATUS PATTERN -- command...: exit status and a pattern in stdout+stderr.
+expect() {
+    local name=$1 status=$2 pattern=$3
+    shift 4
+    "$@" >"$tmp/err" 2>&1
+    local got=$?
+    if [ "$got" -ne "$status" ]; then bad "$name (exit $got, wanted $status)"; return; fi
+    if ! grep -qE -- "$pattern" "$tmp/err"; then bad "$name (output lacks /$pattern/)"; return; fi
+    ok "$name"
+}
+
+small=(--width 24 --height 24 --spp 2 --quiet)
+
+expect help 0 "render" -- "$FACET" --help
+expect render-help 0 "--spp" -- "$FACET" render --help
+expect devices 0 "\[0\]" -- "$FACET" devices
+expect render-cornell 0 "wrote" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --out "$tmp/cb.exr"
+[ -s "$tmp/cb.exr" ] && [ -s "$tmp/cb.png" ] && ok "exr-and-png-written" || bad "exr-and-png-written"
+[ ! -e "$tmp/.tmp-cb.exr" ] && ok "no-temporary-left" || bad "no-temporary-left"
+expect info 0 "triangles" -- "$FACET" info "$SCENES/cornell_box.json"
+
+# A bare OBJ renders with a default camera and light.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$tmp/tet.obj"
+expect render-obj 0 "wrote" -- "$FACET" render "$tmp/tet.obj" "${small[@]}" --out "$tmp/tet.exr"
+
+# Bad input: a clear message naming the file or option, a non-zero exit, no crash.
+expect missing-scene 1 "nope\.json" -- "$FACET" render "$tmp/nope.json" "${small[@]}"
+printf '{ "camera": { "eye": [0, 0, 1], }\n' >"$tmp/broken.json"
+expect malformed-json 1 "broken\.json:1" -- "$FACET" render "$tmp/broken.json" "${small[@]}"
+printf 'v 0 0 0\nv 1 zero 0\nv 0 1 0\nf 1 2 3\n' >"$tmp/broken.obj"
+expect malformed-obj 1 "broken\.obj:2" -- "$FACET" render "$tmp/broken.obj" "${small[@]}"
+expect bad-spp 2 "spp" -- "$FACET" render "$SCENES/cornell_box.json" --spp 0
+expect bad-device 1 "no device" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --device no-such-device
+expect unknown-option 2 "--frobnicate" -- "$FACET" render "$SCENES/cornell_box.json" --frobnicate
+expect unwritable-output 1 "cb\.exr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --out /proc/cb.exr
+
+# Interruption keeps the finished work: SIGINT after the first passes writes the image.
+"$FACET" render "$SCENES/cornell_box.json" --width 64 --height 64 --spp 1000000 --out "$tmp/int.exr" >"$tmp/err" 2>&1 &
+pid=$!
+for _ in $(seq 1 300); do grep -q "pass" "$tmp/err" && break; sleep 0.1; done
+kill -INT "$pid"
+wait "$pid"
+status=$?
+if [ "$status" -eq 130 ] && [ -s "$tmp/int.exr" ] && grep -q "interrupted" "$tmp/err"; then ok "sigint-writes-image"; else bad "sigint-writes-image (exit $status)"; fi
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

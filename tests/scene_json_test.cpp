@@ -1,0 +1,186 @@
+// Scene.*: JSON scene files, their schema checks and error messages.
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "scene/load.hpp"
+#include "scene_test_util.hpp"
+
+namespace facet {
+namespace {
+
+using test::expect_error;
+using test::TempDir;
+
+const std::string kTri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+const std::string kQuadShape =
+    R"({"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]})";
+
+// A scene file `name` with `body` inside the top-level braces.
+std::string scene(const TempDir& d, const std::string& name, const std::string& body) {
+    return d.write(name, "{\n" + body + "\n}\n");
+}
+
+TEST(Scene, JsonFullSceneLoads) {
+    TempDir d;
+    d.write("m.mtl", "newmtl red\nKd 1 0 0\n");
+    d.write("mesh.obj", "mtllib m.mtl\nusemtl red\n" + kTri);
+    const auto p = scene(d, "s.json", R"(
+  "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0], "fov": 30,
+             "projection": "orthographic", "height": 3},
+  "render": {"width": 64, "height": 32, "spp": 4, "max_depth": 5, "rr_depth": 2, "seed": 7},
+  "materials": {"lamp": {"model": "lambert", "diffuse": [0, 0, 0], "emission": [2, 2, 2],
+                         "two_sided_emission": true},
+                "blue": {"diffuse": [0, 0, 1], "roughness": 0.3, "ior": 1.4}},
+  "meshes": [{"file": "mesh.obj", "transform": {"scale": 2, "rotate": [90, 0, 0, 1],
+                                               "translate": [10, 0, 0]}},
+             {"file": "mesh.obj", "materials": {"red": "blue"}}],
+  "shapes": [{"type": "sphere", "center": [0, 5, 0], "radius": 0.5, "subdivisions": 1,
+              "material": "lamp"},
+             {"type": "quad", "corner": [0, 0, -1], "edge1": [1, 0, 0], "edge2": [0, 1, 0]}])");
+    const Scene s = load_scene(p);
+    EXPECT_TRUE(s.warnings.empty());
+    ASSERT_EQ(s.triangle_count(), 1u + 1u + 80u + 2u);
+    EXPECT_EQ(s.camera.projection, FC_PROJECTION_ORTHOGRAPHIC);
+    EXPECT_FLOAT_EQ(s.camera.ortho_height, 3.0f);
+    EXPECT_FLOAT_EQ(s.camera.fov_y_degrees, 30.0f);
+    EXPECT_EQ(s.settings.width, 64);
+    EXPECT_EQ(s.settings.height, 32);
+    EXPECT_EQ(s.settings.seed, 7u);
+    EXPECT_EQ(s.settings.rr_depth, 2);
+    // Scale 2, then 90 degrees about z, then +10 in x: (1,0,0) -> (2,0,0) -> (0,2,0) -> (10,2,0).
+    EXPECT_NEAR(glm::length(s.vertices[1] - glm::vec3(10, 2, 0)), 0.0f, 1e-5f);
+    EXPECT_EQ(s.material_names[static_cast<std::size_t>(s.shading[0].material)], "red");
+    EXPECT_EQ(s.material_names[static_cast<std::size_t>(s.shading[1].material)], "blue");
+    EXPECT_EQ(s.lights.size(), 80u);
+    auto material = [&](const std::string& name) {
+        for (std::size_t i = 0; i < s.materials.size(); ++i) {
+            if (s.material_names[i] == name) return s.materials[i];
+        }
+        ADD_FAILURE() << "no material " << name;
+        return FcMaterial{};
+    };
+    EXPECT_TRUE(material("lamp").flags & FC_MAT_TWO_SIDED_EMISSION);
+    EXPECT_FLOAT_EQ(material("blue").alpha_y, 0.3f);
+    EXPECT_FLOAT_EQ(material("blue").ior, 1.4f);
+}
+
+TEST(Scene, JsonSyntaxErrorNamesLineAndColumn) {
+    TempDir d;
+    const auto p = d.write("broken.json", "{\n  \"render\": {\"width\": 64\n  \"spp\": 4}\n}\n");
+    expect_error([&] { load_scene(p); }, {"broken.json:3:", "syntax error"});
+    const auto q = d.write("trunc.json", "{\"render\": ");
+    expect_error([&] { load_scene(q); }, {"trunc.json:1:"});
+}
+
+TEST(Scene, JsonUnknownKeys) {
+    TempDir d;
+    expect_error([&] { load_scene(scene(d, "a.json", R"("materails": {})")); },
+                 {"a.json", "unknown key 'materails' at top level", "did you mean 'materials'"});
+    expect_error(
+        [&] {
+            load_scene(
+                scene(d, "b.json", R"("camera": {"fvo": 30}, "shapes": [)" + kQuadShape + "]"));
+        },
+        {"b.json", "'fvo'", "camera", "'fov'"});
+    expect_error(
+        [&] {
+            load_scene(scene(
+                d, "c.json",
+                R"("shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1,0,0], "edge2": [0,1,0], "colour": 1}])"));
+        },
+        {"c.json", "'colour'", "shapes[0]"});
+}
+
+TEST(Scene, JsonBadTypesAndValues) {
+    TempDir d;
+    const std::string shapes = R"(, "shapes": [)" + kQuadShape + "]";
+    struct Case {
+        std::string body, path;
+    };
+    const Case cases[] = {
+        {R"("camera": {"fov": "wide"})", "camera.fov"},
+        {R"("camera": {"fov": 200})", "camera.fov"},
+        {R"("camera": {"fov": 0})", "camera.fov"},
+        {R"("camera": {"eye": [1, 2]})", "camera.eye"},
+        {R"("camera": {"projection": "fisheye"})", "camera.projection"},
+        {R"("camera": {"eye": [0, 0, 0], "target": [0, 0, 0]})", "camera"},
+        {R"("render": {"width": 0})", "render.width"},
+        {R"("render": {"height": 20000})", "render.height"},
+        {R"("render": {"spp": 0})", "render.spp"},
+        {R"("render": {"spp": 2.5})", "render.spp"},
+        {R"("render": {"max_depth": 2000})", "render.max_depth"},
+        {R"("render": 5)", "render"},
+        {R"("materials": {"m": {"diffuse": [0.5, -0.1, 0.5]}})", "materials.m.diffuse"},
+        {R"("materials": {"m": {"emission": [1, 1, "x"]}})", "materials.m.emission[2]"},
+        {R"("materials": {"m": {"model": "phong"}})", "materials.m.model"},
+        {R"("materials": {"m": {"two_sided_emission": 1}})", "materials.m.two_sided_emission"},
+        {R"("materials": {"m": {"roughness": 1.5}})", "materials.m.roughness"},
+        {R"("meshes": {"file": "x.obj"})", "meshes"},
+    };
+    int i = 0;
+    for (const Case& c : cases) {
+        const std::string name = "bad" + std::to_string(i++) + ".json";
+        expect_error([&] { load_scene(scene(d, name, c.body + shapes)); }, {name + ": " + c.path});
+    }
+    expect_error(
+        [&] {
+            load_scene(scene(d, "r.json",
+                             R"("shapes": [{"type": "sphere", "center": [0,0,0], "radius": -1}])"));
+        },
+        {"r.json: shapes[0].radius"});
+    expect_error([&] { load_scene(scene(d, "s.json", R"("shapes": [{"type": "cone"}])")); },
+                 {"s.json: shapes[0].type", "cone"});
+    expect_error(
+        [&] {
+            load_scene(scene(
+                d, "t.json",
+                R"("shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1,0,0], "edge2": [2,0,0]}])"));
+        },
+        {"t.json: shapes[0]"});
+    expect_error([&] { load_scene(scene(d, "u.json", R"("render": {"spp": 4})")); },
+                 {"u.json", "no geometry"});
+}
+
+TEST(Scene, JsonUnknownMaterial) {
+    TempDir d;
+    d.write("tri.obj", kTri);
+    expect_error(
+        [&] {
+            load_scene(scene(
+                d, "a.json",
+                R"("materials": {"white": {}}, "meshes": [{"file": "tri.obj", "material": "whte"}])"));
+        },
+        {"a.json: meshes[0].material", "'whte'", "'white'"});
+    expect_error(
+        [&] {
+            load_scene(scene(
+                d, "b.json",
+                R"("shapes": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "x"}])"));
+        },
+        {"b.json: shapes[0].material", "'x'"});
+}
+
+TEST(Scene, JsonMissingMeshFile) {
+    TempDir d;
+    expect_error(
+        [&] { load_scene(scene(d, "a.json", R"("meshes": [{"file": "models/gone.obj"}])")); },
+        {"a.json", "meshes[0].file", "models/gone.obj"});
+    d.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
+    expect_error([&] { load_scene(scene(d, "b.json", R"("meshes": [{"file": "bad.obj"}])")); },
+                 {"b.json", "meshes[0]", "bad.obj:4:"});
+}
+
+TEST(Scene, JsonWithoutCameraFramesTheScene) {
+    TempDir d;
+    const Scene s = load_scene(scene(d, "a.json", R"("shapes": [)" + kQuadShape + "]"));
+    EXPECT_EQ(s.camera.target, glm::vec3(0.5f, 0.5f, 0.0f));
+    EXPECT_TRUE(test::contains(s.warnings, "no emitters"));
+}
+
+TEST(Scene, UnknownExtensionIsError) {
+    TempDir d;
+    expect_error([&] { load_scene(d.write("scene.xml", "<scene/>")); }, {"scene.xml", ".xml"});
+}
+
+}  // namespace
+}  // namespace facet

@@ -1,0 +1,232 @@
+// Scene.*: OBJ and MTL loading, normals, and the errors malformed files give.
+#include <random>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/load.hpp"
+#include "scene_test_util.hpp"
+
+namespace facet {
+namespace {
+
+using test::expect_error;
+using test::TempDir;
+using test::vec;
+
+Scene load(const std::string& path) {
+    Scene s;
+    load_obj(path, s);
+    return s;
+}
+
+TEST(Scene, ObjBadNumberNamesLine) {
+    TempDir d;
+    const auto p = d.write("bad.obj", "# comment\nv 0 0 0\nv 1 abc 0\nv 0 1 0\nf 1 2 3\n");
+    expect_error([&] { load(p); }, {"bad.obj:3:", "abc"});
+    const auto q = d.write("short.obj", "v 0 0 0\nv 1 0\nf 1 2 1\n");
+    expect_error([&] { load(q); }, {"short.obj:2:", "3 numbers"});
+    const auto r = d.write("vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 x1\nf 1 2 3\n");
+    expect_error([&] { load(r); }, {"vn.obj:4:"});
+}
+
+TEST(Scene, ObjBadIndicesNameLine) {
+    TempDir d;
+    const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    expect_error([&] { load(d.write("a.obj", verts + "f 1 2 4\n")); },
+                 {"a.obj:4:", "out of range"});
+    expect_error([&] { load(d.write("b.obj", verts + "f 0 1 2\n")); }, {"b.obj:4:", "index 0"});
+    expect_error([&] { load(d.write("c.obj", verts + "f 1 2\n")); }, {"c.obj:4:", "at least 3"});
+    expect_error([&] { load(d.write("d.obj", verts + "f -4 -3 -2\n")); },
+                 {"d.obj:4:", "out of range"});
+    expect_error([&] { load(d.write("e.obj", verts + "f 1//2 2//2 3//2\n")); },
+                 {"e.obj:4:", "normal"});
+    expect_error([&] { load(d.write("f.obj", verts + "f 1/x 2 3\n")); },
+                 {"f.obj:4:", "not an integer"});
+    expect_error([&] { load(d.write("g.obj", verts + "f 1/1/1/1 2 3\n")); }, {"g.obj:4:"});
+}
+
+TEST(Scene, ObjEmptyOrNonFiniteIsError) {
+    TempDir d;
+    expect_error([&] { load(d.write("empty.obj", "")); }, {"empty.obj", "no faces"});
+    expect_error([&] { load(d.write("verts.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n")); },
+                 {"verts.obj", "no faces"});
+    expect_error([&] { load(d.write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n")); },
+                 {"nan.obj:2:"});
+    expect_error([&] { load(d.write("inf.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n")); },
+                 {"inf.obj:3:"});
+    expect_error([&] { load(d.path("does_not_exist.obj")); }, {"does_not_exist.obj"});
+}
+
+TEST(Scene, ObjCrlfQuadsNegativeIndices) {
+    TempDir d;
+    const auto p = d.write("q.obj",
+                           "v 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\nf -4 -3 -2 -1\r\n"
+                           "v 5 0 0\r\nv 6 0 0\r\nv 5 1 0\r\nf 5 -2 -1\r\n");
+    const Scene s = load(p);
+    ASSERT_EQ(s.triangle_count(), 3u);
+    for (std::size_t t = 0; t < 3; ++t) EXPECT_NEAR(test::face_normal(s, t).z, 1.0f, 1e-6f);
+    EXPECT_EQ(s.vertices[6], glm::vec3(5, 0, 0));
+    EXPECT_EQ(s.vertices[8], glm::vec3(5, 1, 0));
+    // Line numbers count CRLF lines correctly.
+    expect_error([&] { load(d.write("bad.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 9\r\n")); },
+                 {"bad.obj:4:"});
+}
+
+TEST(Scene, ObjSmoothNormalsWhenMissing) {
+    TempDir d;
+    // Triangle A (area 0.5) faces +z, triangle B (area 1) faces +y; they share vertices 1 and 2.
+    const auto p = d.write("fold.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 2\nf 1 2 3\nf 1 4 2\n");
+    const Scene s = load(p);
+    ASSERT_EQ(s.triangle_count(), 2u);
+    const glm::vec3 shared = glm::normalize(glm::vec3(0, 2, 1));  // area-weighted sum
+    EXPECT_NEAR(glm::length(vec(s.shading[0].n0) - shared), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(vec(s.shading[0].n1) - shared), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(vec(s.shading[0].n2) - glm::vec3(0, 0, 1)), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(vec(s.shading[1].n1) - glm::vec3(0, 1, 0)), 0.0f, 1e-5f);
+}
+
+TEST(Scene, ObjNormalsUsedWhenPresent) {
+    TempDir d;
+    const auto p = d.write("n.obj",
+                           "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1 0 1\nvn 0 0 0\n"
+                           "f 1//1 2//1 3//2\n");
+    const Scene s = load(p);
+    EXPECT_NEAR(glm::length(vec(s.shading[0].n0) - glm::normalize(glm::vec3(1, 0, 1))), 0.0f,
+                1e-5f);
+    EXPECT_NEAR(glm::length(vec(s.shading[0].n1) - glm::normalize(glm::vec3(1, 0, 1))), 0.0f,
+                1e-5f);
+    EXPECT_NEAR(glm::length(vec(s.shading[0].n2) - glm::vec3(0, 0, 1)), 0.0f,
+                1e-5f);  // zero: face normal
+}
+
+TEST(Scene, ObjTransformAndMirror) {
+    TempDir d;
+    const auto p = d.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    Scene s;
+    load_obj(p, s,
+             glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)) *
+                 glm::scale(glm::mat4(1.0f), glm::vec3(2.0f)));
+    EXPECT_EQ(s.vertices[1], glm::vec3(3, 2, 3));
+    Scene m;
+    load_obj(p, m, glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, -1)));  // a mirror along z
+    const glm::vec3 n = test::face_normal(m, 0);
+    EXPECT_NEAR(n.z, -1.0f, 1e-6f);
+    EXPECT_NEAR(glm::dot(vec(m.shading[0].n0), n), 1.0f, 1e-6f);  // front face kept consistent
+}
+
+TEST(Scene, MtlMaterialsMapped) {
+    TempDir d;
+    d.write("m.mtl",
+            "newmtl shiny\nKd 0.1 0.2 0.3\nKs 0.5 0.5 0.5\nNs 98\nNi 1.33\n"
+            "newmtl rough\nKd 0.7\nPr 0.25\nKe 1 2 3\nd 0.5\nillum 2\nPm 1\n");
+    const auto p = d.write("m.obj",
+                           "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl shiny\nf 1 2 3\n"
+                           "usemtl rough\nf 1 2 3\n");
+    const Scene s = load(p);
+    EXPECT_TRUE(s.warnings.empty());
+    ASSERT_EQ(s.triangle_count(), 2u);
+    const FcMaterial& a = s.materials[static_cast<std::size_t>(s.shading[0].material)];
+    const FcMaterial& b = s.materials[static_cast<std::size_t>(s.shading[1].material)];
+    EXPECT_FLOAT_EQ(a.diffuse[2], 0.3f);
+    EXPECT_FLOAT_EQ(a.specular[0], 0.5f);
+    EXPECT_FLOAT_EQ(a.ior, 1.33f);
+    EXPECT_NEAR(a.roughness, std::sqrt(2.0f / 100.0f), 1e-6f);
+    EXPECT_FLOAT_EQ(a.alpha_x, a.roughness);
+    EXPECT_EQ(a.model, FC_MODEL_LAMBERT);
+    EXPECT_FLOAT_EQ(b.diffuse[1], 0.7f);
+    EXPECT_FLOAT_EQ(b.roughness, 0.25f);
+    EXPECT_FLOAT_EQ(b.emission[2], 3.0f);
+    EXPECT_FLOAT_EQ(b.ior, 1.5f);
+}
+
+TEST(Scene, MtlBadNumberNamesLine) {
+    TempDir d;
+    d.write("bad.mtl", "newmtl a\nKd 0.5 abc 0.5\n");
+    const auto p = d.write("x.obj", "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    expect_error([&] { load(p); }, {"bad.mtl:2:", "abc"});
+    d.write("neg.mtl", "newmtl a\n\nKe 1 -1 1\n");
+    const auto q = d.write("y.obj", "mtllib neg.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    expect_error([&] { load(q); }, {"neg.mtl:3:", "negative"});
+    d.write("orphan.mtl", "Kd 1 1 1\n");
+    const auto r = d.write("z.obj", "mtllib orphan.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    expect_error([&] { load(r); }, {"orphan.mtl:1:", "newmtl"});
+}
+
+TEST(Scene, MissingMtlIsWarning) {
+    TempDir d;
+    const auto p =
+        d.write("lonely.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n");
+    const Scene s = load(p);
+    ASSERT_EQ(s.triangle_count(), 1u);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("lonely.obj"), std::string::npos);
+    EXPECT_NE(s.warnings[0].find("gone.mtl"), std::string::npos);
+    EXPECT_FLOAT_EQ(s.materials[static_cast<std::size_t>(s.shading[0].material)].diffuse[0], 0.8f);
+}
+
+TEST(Scene, MissingTextureIsWarning) {
+    TempDir d;
+    d.write("t.mtl", "newmtl a\nKd 1 1 1\nmap_Kd -bm 1 textures/wood.png\n");
+    const auto p = d.write("t.obj", "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
+    const Scene s = load(p);
+    ASSERT_EQ(s.triangle_count(), 1u);
+    EXPECT_TRUE(test::contains(s.warnings, "t.mtl:3:"));
+    EXPECT_TRUE(test::contains(s.warnings, "wood.png"));
+    EXPECT_TRUE(test::contains(s.warnings, "missing"));
+}
+
+TEST(Scene, MaterialOverrides) {
+    TempDir d;
+    d.write("o.mtl", "newmtl a\nKd 0.1 0.1 0.1\nnewmtl b\nKd 0.2 0.2 0.2\n");
+    const auto p = d.write("o.obj",
+                           "mtllib o.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n"
+                           "usemtl b\nf 1 2 3\n");
+    Scene s;
+    const int mine = add_material(s, default_material(), "mine");
+    ObjLoadOptions opt;
+    opt.material_map["b"] = mine;
+    load_obj(p, s, opt);
+    EXPECT_NE(s.shading[0].material, mine);
+    EXPECT_EQ(s.shading[1].material, mine);
+    Scene all;
+    load_obj(p, all, glm::mat4(1.0f), 0);
+    EXPECT_EQ(all.shading[0].material, 0);
+    EXPECT_EQ(all.shading[1].material, 0);
+    opt.material_map["nope"] = mine;
+    expect_error(
+        [&] {
+            Scene t;
+            load_obj(p, t, opt);
+        },
+        {"o.obj", "'nope'"});
+}
+
+// Mangled files load or give facet::Error, never another exception or a crash.
+TEST(Scene, MangledObjNeverCrashes) {
+    const std::string base =
+        "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\n"
+        "usemtl a\nf 1/1/1 2/1/1 3/1/1 4/1/1\nf -1 -2 -3\n";
+    const std::string mtl = "newmtl a\nKd 0.5 0.5 0.5\nNs 10\nmap_Kd x.png\n";
+    const std::string noise = "/-0 .e#\n\rv f9x";
+    std::mt19937 rng(1234);
+    TempDir d;
+    for (int i = 0; i < 300; ++i) {
+        std::string obj = base, m = mtl;
+        std::string& target = (i % 3 == 0) ? m : obj;
+        for (int k = 0; k < 3; ++k) {
+            const std::size_t at = rng() % target.size();
+            target[at] = noise[rng() % noise.size()];
+        }
+        d.write("m.mtl", m);
+        const auto p = d.write("mangled.obj", obj);
+        try {
+            load(p);
+        } catch (const Error&) {
+        }
+    }
+}
+
+}  // namespace
+}  // namespace facet

@@ -1,0 +1,82 @@
+// Helpers for the Scene.* tests: a temporary directory to write small scene files
+// into, and expectations on facet::Error messages.
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "error.hpp"
+#include "scene/scene.hpp"
+
+namespace facet::test {
+
+class TempDir {
+public:
+    TempDir() {
+        static std::atomic<int> counter{0};
+        dir_ = std::filesystem::temp_directory_path() /
+               ("facet_scene_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+        std::filesystem::create_directories(dir_);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        std::filesystem::remove_all(dir_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    // Writes `content` byte for byte and returns the file's path.
+    std::string write(const std::string& name, const std::string& content) const {
+        const auto path = dir_ / name;
+        std::ofstream(path, std::ios::binary) << content;
+        return path.string();
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+private:
+    std::filesystem::path dir_;
+};
+
+// Runs `f`, expecting a facet::Error whose message contains every one of `parts`.
+template <typename F>
+void expect_error(F f, std::initializer_list<std::string> parts) {
+    try {
+        f();
+        ADD_FAILURE() << "no facet::Error thrown";
+    } catch (const Error& e) {
+        const std::string msg = e.what();
+        for (const std::string& p : parts) {
+            EXPECT_NE(msg.find(p), std::string::npos) << "message: " << msg << "\nmissing: " << p;
+        }
+    }
+}
+
+inline glm::vec3 vec(const float v[3]) {
+    return glm::vec3(v[0], v[1], v[2]);
+}
+
+inline glm::vec3 face_normal(const Scene& s, std::size_t t) {
+    const glm::vec3* v = &s.vertices[3 * t];
+    return glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0]));
+}
+
+inline glm::vec3 centroid(const Scene& s, std::size_t t) {
+    const glm::vec3* v = &s.vertices[3 * t];
+    return (v[0] + v[1] + v[2]) / 3.0f;
+}
+
+inline bool contains(const std::vector<std::string>& list, const std::string& part) {
+    for (const std::string& s : list) {
+        if (s.find(part) != std::string::npos) return true;
+    }
+    return false;
+}
+
+}  // namespace facet::test
