@@ -11,7 +11,7 @@ CMAKE_FLAGS ?=
 PACKAGES := build-essential cmake pkg-config \
 	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
 	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
-	libgtest-dev
+	libgtest-dev clang
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 

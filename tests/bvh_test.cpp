@@ -250,7 +250,10 @@ TEST(Bvh, MatchesBruteForceOnMesh) {
     Bvh bvh = build_bvh(torus);
     Result r = expect_agreement(bvh, torus, random_rays(torus, 100000, 1.6f, 1));
     EXPECT_GT(std::count_if(r.any.begin(), r.any.end(), [](int a) { return a != 0; }), 30000);
+}
 
+// The Stanford bunny from ../shared/assets, when present.
+TEST(Bvh, MatchesBruteForceOnBunny) {
     const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
     if (!std::filesystem::exists(bunny)) GTEST_SKIP() << bunny << " not found";
     std::vector<glm::vec3> soup = test::load_obj_soup(bunny);

@@ -47,14 +47,37 @@ expect bad-device 1 "no device" -- "$FACET" render "$SCENES/cornell_box.json" "$
 expect unknown-option 2 "--frobnicate" -- "$FACET" render "$SCENES/cornell_box.json" --frobnicate
 expect unwritable-output 1 "cb\.exr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --out /proc/cb.exr
 
-# Interruption keeps the finished work: SIGINT after the first passes writes the image.
+# Error against run time: a report (CSV + JSON + SVG) beside the image, with and
+# without a reference; compare and plot commands.
+[ -s "$tmp/cb.csv" ] && [ -s "$tmp/cb.json" ] && [ -s "$tmp/cb.svg" ] && ok "report-written" || bad "report-written"
+expect render-with-reference 0 "wrote" -- "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 8 \
+    --quiet --reference "$tmp/cb.exr" --out "$tmp/ref_run.exr" --report "$tmp/ref_run_report.csv"
+if awk -F, 'NR > 1 && $7 == "" { bad = 1 } END { exit bad || NR < 2 }' "$tmp/ref_run_report.csv"; then
+    ok "report-has-rmse"; else bad "report-has-rmse"; fi
+grep -q '"final_error"' "$tmp/ref_run_report.json" && ok "summary-has-final-error" || bad "summary-has-final-error"
+expect compare 0 "rmse" -- "$FACET" compare "$tmp/ref_run.exr" "$tmp/cb.exr"
+expect plot 0 "wrote" -- "$FACET" plot "$tmp/ref_run_report.csv" --out "$tmp/plot.svg"
+[ -s "$tmp/plot.svg" ] && ok "plot-written" || bad "plot-written"
+expect reference-wrong-size 1 "reference .*cb\.exr.*24x24.*32x32" -- "$FACET" render "$SCENES/cornell_box.json" \
+    --width 32 --height 32 --spp 2 --quiet --reference "$tmp/cb.exr" --out "$tmp/x.exr"
+expect reference-missing 1 "nothere\.exr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" \
+    --reference "$tmp/nothere.exr" --out "$tmp/x.exr"
+
+# Interruption keeps the finished work: SIGINT after the first passes writes the image,
+# whose metadata holds the samples it has, and a complete report.
 "$FACET" render "$SCENES/cornell_box.json" --width 64 --height 64 --spp 1000000 --out "$tmp/int.exr" >"$tmp/err" 2>&1 &
 pid=$!
 for _ in $(seq 1 300); do grep -q "pass" "$tmp/err" && break; sleep 0.1; done
+sleep 1
 kill -INT "$pid"
 wait "$pid"
 status=$?
 if [ "$status" -eq 130 ] && [ -s "$tmp/int.exr" ] && grep -q "interrupted" "$tmp/err"; then ok "sigint-writes-image"; else bad "sigint-writes-image (exit $status)"; fi
+spp_csv=$(tail -n 1 "$tmp/int.csv" | cut -d, -f2)
+spp_exr=$("$FACET" compare "$tmp/int.exr" "$tmp/int.exr" | sed -n 's/.*int\.exr: 64x64, \([0-9]*\) spp.*/\1/p' | head -n 1)
+if [ -n "$spp_exr" ] && [ "$spp_exr" = "$spp_csv" ] && grep -q '"interrupted": true' "$tmp/int.json"; then
+    ok "sigint-metadata-and-report ($spp_exr spp)"; else bad "sigint-metadata-and-report (exr '$spp_exr', csv '$spp_csv')"; fi
+expect compare-size-mismatch 1 "64x64.*24x24" -- "$FACET" compare "$tmp/int.exr" "$tmp/cb.exr"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -132,11 +132,17 @@ TEST(Scene, MtlMaterialsMapped) {
     EXPECT_FLOAT_EQ(a.diffuse[2], 0.3f);
     EXPECT_FLOAT_EQ(a.specular[0], 0.5f);
     EXPECT_FLOAT_EQ(a.ior, 1.33f);
-    EXPECT_NEAR(a.roughness, std::sqrt(2.0f / 100.0f), 1e-6f);
-    EXPECT_FLOAT_EQ(a.alpha_x, a.roughness);
-    EXPECT_EQ(a.model, FC_MODEL_LAMBERT);
-    EXPECT_FLOAT_EQ(b.diffuse[1], 0.7f);
-    EXPECT_FLOAT_EQ(b.roughness, 0.25f);
+    EXPECT_NEAR(a.alpha_x, std::sqrt(2.0f / 100.0f), 1e-6f);
+    EXPECT_FLOAT_EQ(a.alpha_y, a.alpha_x);
+    // Ks + Ns: normalized Blinn-Phong. Pr/Pm: GGX, metallic 1 -> no diffuse, F0 = Kd,
+    // alpha = Pr^2 (perceptual roughness).
+    EXPECT_EQ(a.specular_model, FC_SPECULAR_BLINN_PHONG_NORMALIZED);
+    EXPECT_FLOAT_EQ(a.exponent_x, 98.0f);
+    EXPECT_EQ(b.specular_model, FC_SPECULAR_MICROFACET);
+    EXPECT_EQ(b.ndf, FC_NDF_GGX);
+    EXPECT_FLOAT_EQ(b.diffuse[1], 0.0f);
+    EXPECT_FLOAT_EQ(b.specular[1], 0.7f);
+    EXPECT_FLOAT_EQ(b.alpha_x, 0.0625f);
     EXPECT_FLOAT_EQ(b.emission[2], 3.0f);
     EXPECT_FLOAT_EQ(b.ior, 1.5f);
 }

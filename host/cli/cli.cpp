@@ -36,8 +36,22 @@ int run_cli(int argc, char** argv) {
     render->add_option("--seed", opt.seed, "Seed of the random stream (same seed and settings give the same image)");
     render->add_option("--device", opt.device, "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU)");
     render->add_option("--out", opt.out, "Output EXR (a tone-mapped PNG is written beside it); default out/<scene>.exr");
+    render->add_option("--snapshot", opt.snapshot, "Write the image so far (and the report) every SECONDS")
+        ->check(CLI::PositiveNumber);
+    render->add_option("--reference", opt.reference, "Reference image (EXR/HDR) to measure the error against, per pass");
+    render->add_option("--report", opt.report, "Error-against-time report (CSV; .json summary and .svg plot beside it); default beside --out");
     render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops")->check(CLI::Range(-30.0f, 30.0f));
     render->add_flag("--quiet,-q", opt.quiet, "Print only errors and the final summary");
+
+    CompareOptions cmp;
+    CLI::App* compare = app.add_subcommand("compare", "Error metrics (MSE, RMSE, relMSE) of an image against a reference");
+    compare->add_option("image", cmp.image, "Image (EXR, HDR, ...)")->required();
+    compare->add_option("reference", cmp.reference, "Reference image of the same size")->required();
+
+    PlotOptions plot;
+    CLI::App* plot_cmd = app.add_subcommand("plot", "Plot a render report's error against time (log-log SVG)");
+    plot_cmd->add_option("report", plot.report, "CSV report written by `facet render`")->required();
+    plot_cmd->add_option("--out", plot.out, "Output SVG (default: the report with .svg)");
 
     try {
         app.parse(argc, argv);
@@ -49,6 +63,8 @@ int run_cli(int argc, char** argv) {
         if (*devices) return run_devices();
         if (*info) return run_info(info_opt);
         if (*render) return run_render(opt);
+        if (*compare) return run_compare(cmp);
+        if (*plot_cmd) return run_plot(plot);
     } catch (const Error& e) {
         std::fflush(stdout);
         std::cerr << "facet: error: " << e.what() << "\n";

@@ -14,8 +14,19 @@ struct RenderOptions {
     std::optional<double> time_limit;
     std::string device;
     std::string out;
+    std::string report;      // CSV; summary .json and plot .svg beside it
+    std::string reference;   // image to measure the error against
+    std::optional<double> snapshot;   // seconds between snapshots of the image so far
     float exposure = 0.0f;
     bool quiet = false;
+};
+
+struct CompareOptions {
+    std::string image, reference;
+};
+
+struct PlotOptions {
+    std::string report, out;
 };
 
 struct InfoOptions {
@@ -31,5 +42,7 @@ constexpr int kExitInterrupted = 130;   // stopped by SIGINT/SIGTERM; the image 
 int run_devices();
 int run_info(const InfoOptions& opt);
 int run_render(const RenderOptions& opt);
+int run_compare(const CompareOptions& opt);
+int run_plot(const PlotOptions& opt);
 
 }  // namespace facet

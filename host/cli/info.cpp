@@ -4,6 +4,7 @@
 #include "bvh/bvh.hpp"
 #include "cli/commands.hpp"
 #include "scene/load.hpp"
+#include "scene/material.hpp"
 
 namespace facet {
 
@@ -22,8 +23,7 @@ int run_info(const InfoOptions& opt) {
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         const FcMaterial& m = scene.materials[i];
         bool emits = m.emission[0] > 0 || m.emission[1] > 0 || m.emission[2] > 0;
-        fmt::print("  [{}] {:<20} lambert diffuse ({:.3f}, {:.3f}, {:.3f}){}\n", i, scene.material_names[i],
-                   m.diffuse[0], m.diffuse[1], m.diffuse[2],
+        fmt::print("  [{}] {:<20} {}{}\n", i, scene.material_names[i], describe_material(m),
                    emits ? fmt::format(" emission ({:.3f}, {:.3f}, {:.3f})", m.emission[0], m.emission[1], m.emission[2]) : "");
     }
     fmt::print("lights      {} area (emitting triangles)\n", scene.lights.size());

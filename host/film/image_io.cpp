@@ -97,11 +97,24 @@ ImageRGB read_image(const std::string& path) {
     ImageRGB img;
     img.width = spec.width;
     img.height = spec.height;
+    img.spp = spec.get_int_attribute("facet:spp", -1);
     img.rgb.resize(std::size_t(spec.width) * spec.height * 3);
     for (std::size_t i = 0; i < std::size_t(spec.width) * spec.height; ++i)
         for (int c = 0; c < 3; ++c)
             img.rgb[3 * i + c] = all[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
     return img;
+}
+
+ImageRGB read_reference(const std::string& path, int width, int height) {
+    ImageRGB ref = read_image(path);
+    if (ref.width != width || ref.height != height)
+        throw Error(fmt::format("reference {}: the reference is {}x{} but the render is {}x{}", path, ref.width,
+                                ref.height, width, height));
+    for (std::size_t i = 0; i < ref.rgb.size(); ++i)
+        if (!std::isfinite(ref.rgb[i]))
+            throw Error(fmt::format("reference {}: channel {} of pixel ({}, {}) is not finite", path, i % 3,
+                                    (i / 3) % std::size_t(width), (i / 3) / std::size_t(width)));
+    return ref;
 }
 
 std::string replace_extension(const std::string& path, const std::string& ext) {

@@ -29,11 +29,17 @@ struct ImageRGB {
     int width = 0;
     int height = 0;
     std::vector<float> rgb;   // 3 floats a pixel, top row first
+    int spp = -1;             // facet:spp metadata, when the file has it
 };
 
-// Reads any image OpenImageIO can (EXR, HDR, PNG...) as linear RGB floats. Throws
-// facet::Error naming the file on failure.
+// Reads any image OpenImageIO can (EXR, HDR, PNG...) as RGB floats (values as stored:
+// EXR and HDR are linear, 8-bit formats are not converted). A one-channel image is
+// replicated to grey. Throws facet::Error naming the file on failure.
 ImageRGB read_image(const std::string& path);
+
+// Reads a reference image for a render of width x height: the size must match and
+// every texel must be finite, else facet::Error names the file and the problem.
+ImageRGB read_reference(const std::string& path, int width, int height);
 
 // The path with its extension replaced ("out/a.exr", ".png" -> "out/a.png").
 std::string replace_extension(const std::string& path, const std::string& ext);

@@ -42,6 +42,8 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
     cl_call("uploading the scene", [&] {
         const cl::Context& c = ctx.context();
         kernel_ = cl::Kernel(program_, "render_pass");
+        std::size_t max_wg = kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(ctx.device());
+        local_size_ = std::max<std::size_t>(1, std::min<std::size_t>(64, max_wg));
         params_buf_ = cl::Buffer(c, CL_MEM_READ_ONLY, sizeof(FcRenderParams));
         nodes_ = upload(c, bvh.nodes);
         tris_ = upload(c, bvh.triangles);
@@ -49,7 +51,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
         materials_ = upload(c, scene.materials);
         lights_ = upload(c, scene.lights);
         light_cdf_ = upload(c, scene.light_cdf);
-        accum_ = cl::Buffer(c, CL_MEM_READ_WRITE, std::size_t(width_) * height_ * sizeof(cl_float4));
+        accum_ = cl::Buffer(c, CL_MEM_READ_WRITE, 2 * pixel_count() * sizeof(cl_float4));
         kernel_.setArg(0, params_buf_);
         kernel_.setArg(1, nodes_);
         kernel_.setArg(2, tris_);
@@ -66,7 +68,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
 void Renderer::reset() {
     cl_call("clearing the image", [&] {
         ctx_.queue().enqueueFillBuffer(accum_, cl_float4{{0.0f, 0.0f, 0.0f, 0.0f}}, 0,
-                                       std::size_t(width_) * height_ * sizeof(cl_float4));
+                                       2 * pixel_count() * sizeof(cl_float4));
         ctx_.queue().finish();
     });
     stats_.samples_per_pixel = 0;
@@ -87,8 +89,11 @@ void Renderer::render(std::uint32_t count, std::uint32_t max_rows_per_launch) {
             p.row_count = std::min(rows, params_.height - row);
             // Blocking write: `p` lives on the stack.
             ctx_.queue().enqueueWriteBuffer(params_buf_, CL_TRUE, 0, sizeof p, &p);
-            ctx_.queue().enqueueNDRangeKernel(kernel_, cl::NullRange,
-                                              cl::NDRange(std::size_t(p.row_count) * params_.width));
+            // A fixed work-group size and a global size rounded up to it: drivers that
+            // specialise kernels per launch geometry (PoCL does) then build them once.
+            std::size_t items = std::size_t(p.row_count) * params_.width;
+            std::size_t global = (items + local_size_ - 1) / local_size_ * local_size_;
+            ctx_.queue().enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global), cl::NDRange(local_size_));
         }
         ctx_.queue().finish();
     });
@@ -96,20 +101,38 @@ void Renderer::render(std::uint32_t count, std::uint32_t max_rows_per_launch) {
     stats_.render_seconds += seconds_since(start);
 }
 
-std::vector<float> Renderer::image(double* rejected_samples) const {
-    std::size_t n = std::size_t(width_) * height_;
-    std::vector<cl_float4> sums(n);
+Renderer::Halves Renderer::halves() const {
+    std::size_t n = pixel_count();
+    std::vector<cl_float4> sums(2 * n);
     cl_call("reading the image back", [&] {
-        ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, n * sizeof(cl_float4), sums.data());
+        ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(cl_float4), sums.data());
     });
-    std::vector<float> rgb(3 * n);
-    double rejected = 0.0;
-    float inv = stats_.samples_per_pixel ? 1.0f / float(stats_.samples_per_pixel) : 0.0f;
-    for (std::size_t i = 0; i < n; ++i) {
-        for (int c = 0; c < 3; ++c) rgb[3 * i + c] = sums[i].s[c] * inv;
-        rejected += double(sums[i].s[3]);
+    // Sample i goes to half i % 2: the even half holds ceil(spp / 2) samples.
+    std::uint64_t spp = stats_.samples_per_pixel;
+    Halves h;
+    h.samples[0] = (spp + 1) / 2;
+    h.samples[1] = spp / 2;
+    for (int k = 0; k < 2; ++k) {
+        h.rgb[k].resize(3 * n);
+        float inv = h.samples[k] ? 1.0f / float(h.samples[k]) : 0.0f;
+        for (std::size_t i = 0; i < n; ++i) {
+            const cl_float4& v = sums[k * n + i];
+            for (int c = 0; c < 3; ++c) h.rgb[k][3 * i + c] = v.s[c] * inv;
+            h.rejected += double(v.s[3]);
+        }
     }
-    if (rejected_samples) *rejected_samples = rejected;
+    return h;
+}
+
+std::vector<float> Renderer::image(double* rejected_samples) const {
+    Halves h = halves();
+    std::uint64_t spp = h.samples[0] + h.samples[1];
+    std::vector<float> rgb(h.rgb[0].size(), 0.0f);
+    if (spp > 0) {
+        float w0 = float(h.samples[0]) / float(spp), w1 = float(h.samples[1]) / float(spp);
+        for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = w0 * h.rgb[0][i] + w1 * h.rgb[1][i];
+    }
+    if (rejected_samples) *rejected_samples = h.rejected;
     return rgb;
 }
 

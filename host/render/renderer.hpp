@@ -33,6 +33,15 @@ public:
     // NaN, infinite or negative (0 for a correct renderer).
     std::vector<float> image(double* rejected_samples = nullptr) const;
 
+    // The two independent half-images: samples with even index and with odd index,
+    // each averaged over its own count (for error estimation without a reference).
+    struct Halves {
+        std::vector<float> rgb[2];
+        std::uint64_t samples[2] = {0, 0};
+        double rejected = 0.0;
+    };
+    Halves halves() const;
+
     // Clears the accumulated samples.
     void reset();
 
@@ -40,12 +49,14 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     const ClContext& context() const { return ctx_; }
+    std::size_t pixel_count() const { return std::size_t(width_) * std::size_t(height_); }
 
 private:
     ClContext& ctx_;
     int width_;
     int height_;
     FcRenderParams params_{};
+    std::size_t local_size_ = 64;   // work-group size of every launch
     cl::Program program_;
     cl::Kernel kernel_;
     cl::Buffer params_buf_, nodes_, tris_, shading_, materials_, lights_, light_cdf_, accum_;

@@ -2,7 +2,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <algorithm>
 #include <map>
+#include <optional>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -10,18 +12,12 @@
 
 #include "error.hpp"
 #include "scene/json_schema.hpp"
+#include "scene/material.hpp"
 #include "scene/load.hpp"
 #include "scene/text_parse.hpp"
 
 namespace facet {
 namespace {
-
-// Material models by name; later models join this table.
-struct ModelEntry {
-    std::string_view name;
-    int model;
-};
-constexpr ModelEntry kModels[] = {{"lambert", FC_MODEL_LAMBERT}};
 
 // "'a', 'b', 'c'" (or "none").
 template <typename Range, typename Name>
@@ -104,51 +100,95 @@ struct Loader {
         get("seed", 0, 0xffffffffLL, s.seed);
     }
 
+    // A material: a named model's preset (material.hpp), then its parameters. One
+    // "roughness" knob serves every model: microfacet alpha, Phong-style exponent
+    // (through the lecture's m = sqrt(2 / (2 + s))) and Oren-Nayar's sigma.
     void material(const std::string& name, const Json& v, const std::string& path) {
-        r.object(
-            v, path,
-            {"model", "diffuse", "specular", "roughness", "ior", "emission", "two_sided_emission"});
-        FcMaterial m = default_material();
+        r.object(v, path,
+                 {"model", "diffuse", "specular", "f0", "emission", "two_sided_emission", "roughness",
+                  "roughness_x", "roughness_y", "shininess", "shininess_x", "shininess_y", "sigma", "ior",
+                  "eta", "k", "diffuse_model", "specular_model", "ndf", "geometry", "fresnel", "sampling"});
         auto k = [&](const char* key) { return JsonReader::key(path, key); };
         auto put = [](float out[3], glm::vec3 c) {
             out[0] = c.x;
             out[1] = c.y;
             out[2] = c.z;
         };
-        if (v.contains("model")) {
-            const std::string model = r.string(v["model"], k("model"));
-            bool found = false;
-            for (const ModelEntry& e : kModels) {
-                if (e.name == model) {
-                    m.model = e.model;
-                    found = true;
-                }
-            }
-            if (!found) {
-                const std::string known =
-                    quoted_list(kModels, [](const ModelEntry& e) { return e.name; });
-                r.fail(k("model"), fmt::format("unknown model '{}' (known: {})", model, known));
-            }
+        std::string model = v.contains("model") ? r.string(v["model"], k("model")) : "lambert";
+        std::optional<FcMaterial> preset = material_preset(model);
+        if (!preset) {
+            std::string known;
+            for (std::string_view n : material_model_names()) known += (known.empty() ? "'" : ", '") + std::string(n) + "'";
+            r.fail(k("model"), fmt::format("unknown model '{}' (known: {})", model, known));
         }
+        FcMaterial m = *preset;
         if (v.contains("diffuse")) put(m.diffuse, r.color(v["diffuse"], k("diffuse")));
         if (v.contains("specular")) put(m.specular, r.color(v["specular"], k("specular")));
+        if (v.contains("f0")) {
+            if (v["f0"].is_string()) {
+                std::string preset_name = r.string(v["f0"], k("f0"));
+                std::optional<std::array<float, 3>> f0 = f0_preset(preset_name);
+                if (!f0) {
+                    std::string known;
+                    for (std::string_view n : f0_preset_names()) known += (known.empty() ? "" : ", ") + std::string(n);
+                    r.fail(k("f0"), fmt::format("unknown F0 preset '{}' (known: {})", preset_name, known));
+                }
+                for (int c = 0; c < 3; ++c) m.specular[c] = (*f0)[c];
+            } else {
+                put(m.specular, r.color(v["f0"], k("f0")));
+            }
+        }
         if (v.contains("emission")) put(m.emission, r.color(v["emission"], k("emission")));
+        auto set_roughness = [&](float rough, float& alpha, float& exponent) {
+            alpha = rough;
+            exponent = shininess_from_roughness(rough);
+        };
         if (v.contains("roughness")) {
-            m.roughness = r.number_in(v["roughness"], k("roughness"), 0, 1);
-            m.alpha_x = m.alpha_y = m.roughness;
+            float rough = r.number_in(v["roughness"], k("roughness"), 0, 1);
+            set_roughness(rough, m.alpha_x, m.exponent_x);
+            set_roughness(rough, m.alpha_y, m.exponent_y);
+            m.roughness = rough;
         }
-        if (v.contains("ior")) m.ior = r.number_in(v["ior"], k("ior"), 0, 100, true);
-        if (v.contains("two_sided_emission") &&
-            r.boolean(v["two_sided_emission"], k("two_sided_emission"))) {
+        if (v.contains("roughness_x")) set_roughness(r.number_in(v["roughness_x"], k("roughness_x"), 0, 1), m.alpha_x, m.exponent_x);
+        if (v.contains("roughness_y")) set_roughness(r.number_in(v["roughness_y"], k("roughness_y"), 0, 1), m.alpha_y, m.exponent_y);
+        auto set_shininess = [&](float s, float& exponent, float& alpha) {
+            exponent = s;
+            alpha = roughness_from_shininess(s);
+        };
+        if (v.contains("shininess")) {
+            float s = r.number_in(v["shininess"], k("shininess"), 0, 1e6);
+            set_shininess(s, m.exponent_x, m.alpha_x);
+            set_shininess(s, m.exponent_y, m.alpha_y);
+        }
+        if (v.contains("shininess_x")) set_shininess(r.number_in(v["shininess_x"], k("shininess_x"), 0, 1e6), m.exponent_x, m.alpha_x);
+        if (v.contains("shininess_y")) set_shininess(r.number_in(v["shininess_y"], k("shininess_y"), 0, 1e6), m.exponent_y, m.alpha_y);
+        if (v.contains("sigma")) m.roughness = r.number_in(v["sigma"], k("sigma"), 0, 1.5707963);
+        if (v.contains("ior")) m.ior = r.number_in(v["ior"], k("ior"), 1e-3, 100);
+        if (v.contains("eta")) put(m.eta, r.color(v["eta"], k("eta")));
+        if (v.contains("k")) put(m.k, r.color(v["k"], k("k")));
+        auto choice = [&](const char* key, MaterialEnum kind, fc_int& field) {
+            if (!v.contains(key)) return;
+            std::string value = r.string(v[key], k(key));
+            std::optional<int> e = enum_from_name(kind, value);
+            if (!e) r.fail(k(key), fmt::format("unknown {} '{}' (expected {})", enum_kind_name(kind), value, enum_name_list(kind)));
+            field = *e;
+        };
+        choice("diffuse_model", MaterialEnum::Diffuse, m.diffuse_model);
+        choice("specular_model", MaterialEnum::Specular, m.specular_model);
+        choice("ndf", MaterialEnum::Ndf, m.ndf);
+        choice("geometry", MaterialEnum::Geometry, m.geometry);
+        choice("fresnel", MaterialEnum::Fresnel, m.fresnel);
+        choice("sampling", MaterialEnum::Sampling, m.sampling);
+        if (v.contains("two_sided_emission") && r.boolean(v["two_sided_emission"], k("two_sided_emission")))
             m.flags |= FC_MAT_TWO_SIDED_EMISSION;
-        }
         for (int c = 0; c < 3; ++c) {
             if (m.diffuse[c] > 1.0f || m.specular[c] > 1.0f) {
-                scene.warnings.push_back(
-                    fmt::format("{}: {}: a reflectance above 1 creates energy", r.file(), path));
+                scene.warnings.push_back(fmt::format("{}: {}: a reflectance above 1 creates energy", r.file(), path));
                 break;
             }
         }
+        for (int c = 0; c < 3; ++c) m.diffuse[c] = std::min(m.diffuse[c], 1.0f), m.specular[c] = std::min(m.specular[c], 1.0f);
+        if (std::string problem = validate_material(m); !problem.empty()) r.fail(path, problem);
         materials[name] = add_material(scene, m, name);
     }
 

@@ -1,11 +1,13 @@
 #include "scene/mtl_material.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
 
 #include "error.hpp"
+#include "scene/material.hpp"
 #include "scene/scene.hpp"
 #include "scene/text_parse.hpp"
 
@@ -62,16 +64,49 @@ bool is_texture_statement(std::string_view kw) {
 struct Pending {
     MtlMaterial m;
     bool has_pr = false;
+    bool has_pm = false;
+    float pr = 0.0f;
     bool has_ns = false;
     float ns = 0.0f;
 };
 
+// Chooses the model from what the MTL gives (docs/scene-format.md, "MTL materials"):
+// - the PBR extension (Pr or Pm): GGX with height-correlated Smith; base colour Kd,
+//   metallic Pm: diffuse = Kd (1 - Pm), F0 = lerp(F0(Ni), Kd, Pm); alpha = Pr^2 (Pr is
+//   perceptual roughness, as in glTF and Disney 2012); no Pr: alpha from Ns;
+// - a specular colour (Ks > 0) with illum 2 or more: normalized Blinn-Phong with Ks
+//   and exponent Ns (the energy-normalised form of MTL's Phong highlight);
+// - otherwise Lambert with Kd.
 MtlMaterial finish(Pending& p) {
     MtlMaterial m = p.m;
     FcMaterial& mat = m.material;
-    if (!p.has_pr && p.has_ns) mat.roughness = std::sqrt(2.0f / (p.ns + 2.0f));
-    mat.alpha_x = mat.roughness;
-    mat.alpha_y = mat.roughness;
+    const float shininess = p.has_ns ? p.ns : 10.0f;
+    const bool pbr = p.has_pr || p.has_pm;
+    const bool has_ks = mat.specular[0] > 0.0f || mat.specular[1] > 0.0f || mat.specular[2] > 0.0f;
+    FcMaterial base = mat;
+    if (pbr) {
+        mat = make_material("ggx");
+        float alpha = p.has_pr ? std::max(p.pr * p.pr, 1e-3f) : roughness_from_shininess(shininess);
+        float f0 = ((base.ior - 1.0f) / (base.ior + 1.0f)) * ((base.ior - 1.0f) / (base.ior + 1.0f));
+        for (int c = 0; c < 3; ++c) {
+            mat.diffuse[c] = base.diffuse[c] * (1.0f - m.metallic);
+            mat.specular[c] = f0 + (base.diffuse[c] - f0) * m.metallic;
+        }
+        mat.diffuse_model = FC_DIFFUSE_LAMBERT;
+        mat.alpha_x = mat.alpha_y = alpha;
+        mat.exponent_x = mat.exponent_y = shininess_from_roughness(alpha);
+    } else if (has_ks && m.illum >= 2) {
+        mat = make_material("blinn_phong_normalized");
+        for (int c = 0; c < 3; ++c) mat.diffuse[c] = base.diffuse[c], mat.specular[c] = base.specular[c];
+        mat.exponent_x = mat.exponent_y = shininess;
+        mat.alpha_x = mat.alpha_y = roughness_from_shininess(shininess);
+    } else {
+        mat = make_material("lambert");
+        for (int c = 0; c < 3; ++c) mat.diffuse[c] = base.diffuse[c], mat.specular[c] = base.specular[c];
+    }
+    for (int c = 0; c < 3; ++c) mat.emission[c] = base.emission[c];
+    mat.ior = base.ior;
+    mat.flags = base.flags;
     return m;
 }
 
@@ -116,7 +151,7 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
         else if (kw == "d")
             p.m.dissolve = l.scalar(0.0f, 1.0f);
         else if (kw == "Pr") {
-            mat.roughness = l.scalar(0.0f, 1.0f);
+            p.pr = l.scalar(0.0f, 1.0f);
             p.has_pr = true;
         } else if (kw == "Pm")
             p.m.metallic = l.scalar(0.0f, 1.0f);

@@ -19,10 +19,9 @@ struct MtlMaterial {
     int illum = 2;
 };
 
-// Parses the MTL text of `path`. Mapping: Kd -> diffuse, Ks -> specular, Ke ->
-// emission, Ni -> ior (default 1.5); roughness = Pr when given, else converted from
-// the Blinn-Phong exponent Ns as sqrt(2 / (Ns + 2)) (Walter et al. 2007, eq. 36's
-// inverse, Beckmann alpha); alpha_x = alpha_y = roughness; model Lambert for now.
+// Parses the MTL text of `path`. Kd, Ks, Ke (emission), Ns, Ni (ior, default 1.5),
+// illum and the PBR extension's Pr/Pm choose the model: GGX for Pr/Pm, normalized
+// Blinn-Phong for Ks > 0 with illum >= 2, Lambert otherwise (mtl_material.cpp, finish()).
 // Texture statements (map_Kd, bump, ...) add a warning to `warnings`: textures are
 // not supported yet and are ignored (the warning also says when the file is missing).
 // Throws facet::Error "file.mtl:LINE: ..." on malformed numbers or misplaced statements.

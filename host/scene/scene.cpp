@@ -17,11 +17,22 @@ FcMaterial default_material() {
         m.specular[c] = 0.0f;
         m.emission[c] = 0.0f;
     }
-    m.model = FC_MODEL_LAMBERT;
-    m.roughness = 0.5f;
+    m.diffuse_model = FC_DIFFUSE_LAMBERT;
+    m.specular_model = FC_SPECULAR_NONE;
+    m.ndf = FC_NDF_GGX;
+    m.geometry = FC_G_SMITH_CORRELATED;
+    m.fresnel = FC_FRESNEL_SCHLICK;
+    m.sampling = FC_SAMPLE_VISIBLE;
     m.alpha_x = 0.5f;
     m.alpha_y = 0.5f;
+    m.exponent_x = 6.0f;   // 2 / alpha^2 - 2 (Walter 2007)
+    m.exponent_y = 6.0f;
+    m.roughness = 0.0f;
     m.ior = 1.5f;
+    for (int c = 0; c < 3; ++c) {
+        m.eta[c] = 1.5f;
+        m.k[c] = 0.0f;
+    }
     m.flags = 0u;
     return m;
 }

@@ -16,7 +16,7 @@
 #include "surface.cl"
 #include "../camera/camera.cl"
 #include "../lights/area.cl"
-#include "../bsdf/lambert.cl"
+#include "../bsdf/bsdf.cl"
 #include "../util/rng.cl"
 
 typedef struct {
@@ -32,7 +32,7 @@ typedef struct {
 /* Next-event estimation at surface `s` seen from direction wo: one light sample
  * weighted against the BSDF's density. Returns its contribution before throughput. */
 inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* frame,
-                            __global const FcMaterial* m, float3 wo_local, Rng* rng) {
+                            const FcMaterial* m, float3 wo_local, Rng* rng) {
     float u_pick = rng_float(rng);
     float2 u_point = rng_float2(rng);
     uint light_count = sc->params->light_count;
@@ -51,7 +51,7 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
     if (is_black(le)) return (float3)(0.0f);
 
     float3 wi_local = frame_to_local(frame, wi);
-    float3 f = lambert_eval(load3(m->diffuse), wo_local, wi_local);
+    float3 f = bsdf_eval(m, wo_local, wi_local);
     if (is_black(f)) return (float3)(0.0f);
 
     /* Shadow ray between the two offset points, so neither end hits itself. */
@@ -64,8 +64,7 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
 
     float light_pdf = area_light_pdf_solid_angle(light, dist, dot(ls.n, wi));
     if (!(light_pdf > 0.0f)) return (float3)(0.0f);
-    float bsdf_pdf = lambert_pdf(wo_local, wi_local);
-    float w = power_heuristic(light_pdf, bsdf_pdf);
+    float w = power_heuristic(light_pdf, bsdf_pdf(m, wo_local, wi_local));
     return f * le * (wi_local.z * w / light_pdf);
 }
 
@@ -73,16 +72,17 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
     __constant const FcRenderParams* P = sc->params;
     float3 radiance = (float3)(0.0f);
     float3 throughput = (float3)(1.0f);
-    float prev_bsdf_pdf = 0.0f;   /* density of the sampled direction; 0 for camera rays */
+    float prev_bsdf_pdf = INFINITY;   /* density of the sampled direction; camera rays: a delta */
     for (uint depth = 0;; ++depth) {
         Hit hit;
         if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) break;
         Surface s = surface_at(sc->tris, sc->shading, &hit);
-        __global const FcMaterial* m = &sc->materials[s.material];
+        const FcMaterial mat = sc->materials[s.material];
+        const FcMaterial* m = &mat;
         float3 wo = -d;
 
         /* Emission reached by the camera ray or by BSDF sampling (MIS-weighted). */
-        float3 le = area_light_radiance(load3(m->emission), m->flags, s.ng, wo);
+        float3 le = area_light_radiance(load3p(m->emission), m->flags, s.ng, wo);
         if (!is_black(le) && s.light >= 0) {
             float w = 1.0f;
             if (depth > 0u) {
@@ -100,17 +100,21 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
         }
         Frame frame = frame_from_normal(s.ns);
         float3 wo_local = frame_to_local(&frame, wo);
+        /* A shading normal facing away from the viewer: shade with the geometric one. */
+        if (wo_local.z <= 0.0f) {
+            frame = frame_from_normal(s.ng);
+            wo_local = frame_to_local(&frame, wo);
+        }
 
-        radiance += throughput * sample_direct(sc, &s, &frame, m, wo_local, rng);
+        if (!bsdf_is_delta(m)) radiance += throughput * sample_direct(sc, &s, &frame, m, wo_local, rng);
 
-        float3 wi_local;
-        float pdf;
-        float3 f = lambert_sample(load3(m->diffuse), wo_local, rng_float2(rng), &wi_local, &pdf);
-        if (!(pdf > 0.0f) || is_black(f)) break;
-        float3 wi = frame_to_world(&frame, wi_local);
-        if (dot(s.ng, wi) <= 0.0f) break;   /* the shading normal points below the surface */
-        throughput *= f * (wi_local.z / pdf);
-        prev_bsdf_pdf = pdf;
+        float3 u = (float3)(rng_float2(rng), rng_float(rng));
+        BsdfSample bs;
+        if (!bsdf_sample(m, wo_local, u, &bs)) break;
+        float3 wi = frame_to_world(&frame, bs.wi);
+        if (dot(s.ng, wi) <= 0.0f) break;   /* the shading normal sends the path below the surface */
+        throughput *= bs.weight;
+        prev_bsdf_pdf = bs.delta ? INFINITY : bs.pdf;
 
         if (depth + 1u >= P->rr_depth) {
             float survive = fmin(max3(throughput), 0.95f);
@@ -123,6 +127,10 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
     return radiance;
 }
 
+/* Adds samples [sample_begin, sample_begin + sample_count) of each pixel of rows
+ * [row_begin, row_begin + row_count). The accumulation buffer holds two images:
+ * accum[pixel] sums the even-numbered samples, accum[width * height + pixel] the odd
+ * ones, so the host can estimate the error from the two independent halves. */
 __kernel void render_pass(__constant const FcRenderParams* params, __global const FcBvhNode* nodes,
                           __global const FcTriangle* tris, __global const FcTriShading* shading,
                           __global const FcMaterial* materials, __global const FcLight* lights,
@@ -133,18 +141,20 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
     if (gid / params->width >= params->row_count || y >= params->height) return;
     SceneView sc = {params, nodes, tris, shading, materials, lights, light_cdf};
     uint pixel = y * params->width + x;
-    float4 sum = (float4)(0.0f);
+    float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
     for (uint i = 0; i < params->sample_count; ++i) {
-        Rng rng = rng_init(params->seed, pixel, params->sample_begin + i);
+        uint index = params->sample_begin + i;
+        Rng rng = rng_init(params->seed, pixel, index);
         float2 jitter = rng_float2(&rng);
         float3 o, d;
         camera_ray(&params->camera, (float)x + jitter.x, (float)y + jitter.y, params->width,
                    params->height, &o, &d);
         float3 l = path_radiance(&sc, o, d, &rng);
-        if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) sum.xyz += l;
-        else sum.w += 1.0f;
+        if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) sum[index & 1u].xyz += l;
+        else sum[index & 1u].w += 1.0f;
     }
-    accum[pixel] += sum;
+    accum[pixel] += sum[0];
+    accum[params->width * params->height + pixel] += sum[1];
 }
 
 #endif

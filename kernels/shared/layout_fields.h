@@ -19,9 +19,11 @@
     F(FcTriangle, v0) F(FcTriangle, prim) F(FcTriangle, v1) F(FcTriangle, v2)                     \
     F(FcTriShading, n0) F(FcTriShading, material) F(FcTriShading, n1) F(FcTriShading, light)      \
     F(FcTriShading, n2)                                                                           \
-    F(FcMaterial, diffuse) F(FcMaterial, model) F(FcMaterial, specular) F(FcMaterial, roughness) \
-    F(FcMaterial, emission) F(FcMaterial, ior) F(FcMaterial, alpha_x) F(FcMaterial, alpha_y)      \
-    F(FcMaterial, flags)                                                                          \
+    F(FcMaterial, diffuse) F(FcMaterial, diffuse_model) F(FcMaterial, specular)                \
+    F(FcMaterial, specular_model) F(FcMaterial, emission) F(FcMaterial, ndf) F(FcMaterial, eta)   \
+    F(FcMaterial, geometry) F(FcMaterial, k) F(FcMaterial, fresnel) F(FcMaterial, alpha_x)       \
+    F(FcMaterial, alpha_y) F(FcMaterial, exponent_x) F(FcMaterial, exponent_y) F(FcMaterial, ior) \
+    F(FcMaterial, roughness) F(FcMaterial, flags) F(FcMaterial, sampling)                         \
     F(FcLight, p0) F(FcLight, type) F(FcLight, e1) F(FcLight, prim) F(FcLight, e2)                \
     F(FcLight, area) F(FcLight, pick_pdf)                                                         \
     F(FcCamera, eye) F(FcCamera, projection) F(FcCamera, forward) F(FcCamera, right)              \

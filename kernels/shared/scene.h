@@ -4,6 +4,7 @@
 #define FACET_SHARED_SCENE_H
 
 #include "types.h"
+#include "material.h"
 
 /* Per-triangle shading data: vertex normals (equal to the face normal for flat
  * meshes), the material, and the triangle's index in the light array (-1 if the
@@ -16,28 +17,6 @@ typedef struct FcTriShading {
     float n2[3];
     fc_int pad0;
 } FcTriShading;
-
-/* Material models (FcMaterial.model). */
-#define FC_MODEL_LAMBERT 0
-
-/* Material flags (FcMaterial.flags). */
-#define FC_MAT_TWO_SIDED_EMISSION 1u
-
-/* A material. Colours are linear RGB reflectances in [0, 1]; emission is radiance
- * in the scene's units (W sr^-1 m^-2 per channel, up to the scene's scale).
- * Fields beyond the diffuse model are kept for the microfacet models. */
-typedef struct FcMaterial {
-    float diffuse[3];
-    fc_int model;
-    float specular[3];
-    float roughness;
-    float emission[3];
-    float ior;
-    float alpha_x;
-    float alpha_y;
-    fc_uint flags;
-    fc_int pad0;
-} FcMaterial;
 
 /* Light types (FcLight.type). */
 #define FC_LIGHT_AREA_TRIANGLE 0
@@ -59,7 +38,6 @@ typedef struct FcLight {
 } FcLight;
 
 FC_STATIC_ASSERT(sizeof(FcTriShading) == 48, "FcTriShading is 48 bytes");
-FC_STATIC_ASSERT(sizeof(FcMaterial) == 64, "FcMaterial is 64 bytes");
 FC_STATIC_ASSERT(sizeof(FcLight) == 64, "FcLight is 64 bytes");
 
 #endif

@@ -10,7 +10,7 @@
 #ifndef FACET_SHARED_TYPES_H
 #define FACET_SHARED_TYPES_H
 
-#ifdef __OPENCL_VERSION__
+#if defined(__OPENCL_VERSION__) || defined(__OPENCL_C_VERSION__)
 typedef int fc_int;
 typedef uint fc_uint;
 #define FC_STATIC_ASSERT(cond, msg)

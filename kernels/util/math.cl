@@ -10,6 +10,7 @@
 
 inline float3 load3(const __global float* p) { return (float3)(p[0], p[1], p[2]); }
 inline float3 load3c(const __constant float* p) { return (float3)(p[0], p[1], p[2]); }
+inline float3 load3p(const float* p) { return (float3)(p[0], p[1], p[2]); }
 
 /* Rec. 709 / linear sRGB luminance. */
 inline float luminance(float3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }

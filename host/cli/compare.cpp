@@ -1,0 +1,40 @@
+// `facet compare A B` and `facet plot REPORT.csv`.
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "error.hpp"
+#include "film/error_metrics.hpp"
+#include "film/image_io.hpp"
+#include "report/report.hpp"
+
+namespace facet {
+
+int run_compare(const CompareOptions& opt) {
+    ImageRGB a = read_image(opt.image);
+    ImageRGB b = read_image(opt.reference);
+    if (a.width != b.width || a.height != b.height)
+        throw Error(fmt::format("{} is {}x{} but {} is {}x{}", opt.image, a.width, a.height, opt.reference, b.width,
+                                b.height));
+    for (std::size_t i = 0; i < a.rgb.size(); ++i)
+        if (!std::isfinite(a.rgb[i]))
+            throw Error(fmt::format("{}: texel {} (pixel {}) is not finite", opt.image, i % 3, i / 3));
+    ErrorMetrics m = compare_images(a.rgb, b.rgb, opt.reference);
+    for (const auto& [path, img] : {std::pair{opt.image, &a}, std::pair{opt.reference, &b}})
+        fmt::print("{}: {}x{}{}\n", path, img->width, img->height,
+                   img->spp >= 0 ? fmt::format(", {} spp", img->spp) : std::string());
+    fmt::print("mse     {:.6e}\nrmse    {:.6e}\nrelmse  {:.6e}\n", m.mse, m.rmse, m.relmse);
+    return kExitOk;
+}
+
+int run_plot(const PlotOptions& opt) {
+    std::vector<PassRecord> passes = read_report_csv(opt.report);
+    std::string out = opt.out.empty() ? replace_extension(opt.report, ".svg") : opt.out;
+    write_error_plot_svg(out, passes, opt.report);
+    fmt::print("wrote    {}\n", out);
+    return kExitOk;
+}
+
+}  // namespace facet

@@ -1,0 +1,149 @@
+#include "report/report.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "error.hpp"
+
+namespace facet {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string(); }
+
+const char* kHeader = "pass,spp,wall_s,render_s,compile_s,mse,rmse,relmse,est_mse,est_rmse,est_relmse";
+
+}  // namespace
+
+void write_text_atomically(const std::string& path, const std::string& text) {
+    fs::path target(path);
+    std::error_code ec;
+    if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
+    fs::path tmp = target.parent_path() / (".tmp-" + target.filename().string());
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        out << text;
+        if (!out) throw Error(fmt::format("{}: cannot write", path));
+    }
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        throw Error(fmt::format("{}: cannot move into place: {}", path, ec.message()));
+    }
+}
+
+void fit_convergence(const std::vector<PassRecord>& passes, ReportSummary& summary) {
+    std::vector<double> t, e;
+    bool with_reference = !passes.empty() && passes.back().reference.has_value();
+    // The first passes carry launch overheads, and with very few samples the
+    // half-buffer estimate of heavy-tailed pixels runs low: fit from 8 spp on.
+    const std::uint64_t min_spp = with_reference ? 4 : 8;
+    std::uint64_t first_spp = 0, last_spp = 0;
+    for (const PassRecord& p : passes) {
+        if (p.spp < min_spp) continue;
+        if (first_spp == 0) first_spp = p.spp;
+        last_spp = p.spp;
+        t.push_back(p.render_s);
+        e.push_back(with_reference ? p.reference->rmse : p.estimate.rmse);
+    }
+    summary.slope_source = with_reference ? "reference" : "estimate";
+    summary.slope = loglog_slope(t, e);
+    summary.slope_warning.clear();
+    summary.slope_judged = std::isfinite(summary.slope) && last_spp >= 10 * first_spp;
+    if (!summary.slope_judged) return;   // too short a run to judge the rate
+    if (summary.slope > -0.35 || summary.slope < -0.65) {
+        summary.slope_warning = fmt::format(
+            "RMSE falls as time^{:.2f}, far from the time^-0.5 of an unbiased estimator: {}", summary.slope,
+            summary.slope > -0.35 ? (with_reference ? "the render may be biased against the reference (or it is wrong)"
+                                                    : "a sampler may be broken")
+                                  : "convergence faster than Monte Carlo: check the reference or the run length");
+    }
+}
+
+void write_report_csv(const std::string& path, const std::vector<PassRecord>& passes) {
+    std::string text = std::string(kHeader) + "\n";
+    for (const PassRecord& p : passes) {
+        const double nan = std::nan("");
+        ErrorMetrics r = p.reference.value_or(ErrorMetrics{nan, nan, nan});
+        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", p.pass, p.spp, num(p.wall_s), num(p.render_s),
+                            num(p.compile_s), num(r.mse), num(r.rmse), num(r.relmse), num(p.estimate.mse),
+                            num(p.estimate.rmse), num(p.estimate.relmse));
+    }
+    write_text_atomically(path, text);
+}
+
+void write_report_json(const std::string& path, const ReportSummary& s, const std::vector<PassRecord>& passes) {
+    nlohmann::json j;
+    j["scene"] = s.scene;
+    j["device"] = s.device;
+    j["image"] = s.image;
+    j["reference"] = s.reference;
+    j["width"] = s.width;
+    j["height"] = s.height;
+    j["spp"] = s.spp;
+    j["passes"] = passes.size();
+    j["wall_s"] = s.wall_s;
+    j["render_s"] = s.render_s;
+    j["compile_s"] = s.compile_s;
+    j["interrupted"] = s.interrupted;
+    j["rejected_samples"] = s.rejected_samples;
+    auto metrics = [](const ErrorMetrics& m) {
+        return nlohmann::json{{"mse", m.mse}, {"rmse", m.rmse}, {"relmse", m.relmse}};
+    };
+    if (!passes.empty()) {
+        if (passes.back().reference) j["final_error"] = metrics(*passes.back().reference);
+        j["final_estimate"] = metrics(passes.back().estimate);
+    }
+    j["rmse_time_slope"] = std::isfinite(s.slope) ? nlohmann::json(s.slope) : nlohmann::json();
+    j["rmse_time_slope_source"] = s.slope_source;
+    j["rmse_time_slope_judged"] = s.slope_judged;
+    j["estimator"] = "half-buffer: (a - b)^2 n_a n_b / n^2 per pixel, unbiased for the variance of the image";
+    if (!s.slope_warning.empty()) j["warning"] = s.slope_warning;
+    write_text_atomically(path, j.dump(2) + "\n");
+}
+
+std::vector<PassRecord> read_report_csv(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(fmt::format("{}: cannot open", path));
+    std::string line;
+    if (!std::getline(in, line) || line.rfind("pass,spp,wall_s", 0) != 0)
+        throw Error(fmt::format("{}:1: not a facet report (expected the header '{}')", path, kHeader));
+    std::vector<PassRecord> out;
+    int number = 1;
+    while (std::getline(in, line)) {
+        ++number;
+        if (line.empty()) continue;
+        std::vector<std::string> f;
+        std::stringstream ss(line);
+        std::string cell;
+        while (std::getline(ss, cell, ',')) f.push_back(cell);
+        while (f.size() < 11) f.push_back("");
+        auto val = [&](int i) {
+            if (f[i].empty()) return std::nan("");
+            try {
+                std::size_t used = 0;
+                double v = std::stod(f[i], &used);
+                if (used != f[i].size()) throw std::invalid_argument(f[i]);
+                return v;
+            } catch (const std::exception&) {
+                throw Error(fmt::format("{}:{}: column {} is not a number: '{}'", path, number, i + 1, f[i]));
+            }
+        };
+        PassRecord p;
+        p.pass = int(val(0));
+        p.spp = std::uint64_t(val(1));
+        p.wall_s = val(2), p.render_s = val(3), p.compile_s = val(4);
+        if (!f[6].empty()) p.reference = ErrorMetrics{val(5), val(6), val(7)};
+        p.estimate = ErrorMetrics{val(8), val(9), val(10)};
+        out.push_back(p);
+    }
+    return out;
+}
+
+}  // namespace facet

@@ -1,0 +1,57 @@
+// The error-against-time report of a progressive render: one row per pass, written
+// as CSV (atomically, after every pass), a JSON summary beside it, and a log-log
+// plot as SVG (plot_svg.cpp).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "film/error_metrics.hpp"
+
+namespace facet {
+
+struct PassRecord {
+    int pass = 0;
+    std::uint64_t spp = 0;
+    double wall_s = 0.0;      // since the command started, kernel build included
+    double render_s = 0.0;    // inside render passes only
+    double compile_s = 0.0;   // the kernel build
+    std::optional<ErrorMetrics> reference;   // against --reference
+    ErrorMetrics estimate;                   // from the two half-buffers
+};
+
+struct ReportSummary {
+    std::string scene, device, image, reference;
+    std::uint64_t spp = 0;
+    int width = 0, height = 0;
+    double wall_s = 0.0, render_s = 0.0, compile_s = 0.0;
+    bool interrupted = false;
+    double rejected_samples = 0.0;
+    double slope = 0.0;         // fitted log-log slope of RMSE against render time
+    std::string slope_source;   // "reference" or "estimate"
+    std::string slope_warning;  // empty when the slope is near -1/2 (or not judged)
+    bool slope_judged = false;  // the fit spans at least a decade of samples per pixel
+};
+
+// The fitted slope of RMSE against render time over the passes (reference RMSE when
+// there is one, else the estimate), and a warning when it is far from -1/2 over a
+// run that spans at least a decade of samples per pixel.
+void fit_convergence(const std::vector<PassRecord>& passes, ReportSummary& summary);
+
+void write_report_csv(const std::string& path, const std::vector<PassRecord>& passes);
+void write_report_json(const std::string& path, const ReportSummary& summary,
+                       const std::vector<PassRecord>& passes);
+
+// Log-log plot of RMSE (reference and estimate) against render time, as SVG.
+void write_error_plot_svg(const std::string& path, const std::vector<PassRecord>& passes,
+                          const std::string& title);
+
+// Reads a CSV written by write_report_csv (for `facet plot`). Throws facet::Error
+// naming the file and line on malformed input.
+std::vector<PassRecord> read_report_csv(const std::string& path);
+
+// Writes `text` to `path` through a temporary file and a rename.
+void write_text_atomically(const std::string& path, const std::string& text);
+
+}  // namespace facet

@@ -1,0 +1,294 @@
+#include "scene/material.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "error.hpp"
+
+namespace facet {
+namespace {
+
+constexpr float kExponentMax = 1e6f;   // FC_PHONG_EXPONENT_MAX in kernels/bsdf/blinn_phong.cl
+constexpr float kDefaultAlpha = 0.3f;
+
+void set3(float* dst, float v) { dst[0] = dst[1] = dst[2] = v; }
+
+FcMaterial base_material() {
+    FcMaterial m{};
+    set3(m.diffuse, 0.5f);
+    set3(m.specular, 0.04f);
+    set3(m.eta, 1.5f);
+    set3(m.k, 0.0f);
+    m.diffuse_model = FC_DIFFUSE_LAMBERT;
+    m.specular_model = FC_SPECULAR_NONE;
+    m.ndf = FC_NDF_GGX;
+    m.geometry = FC_G_SMITH_CORRELATED;
+    m.fresnel = FC_FRESNEL_SCHLICK;
+    m.alpha_x = m.alpha_y = kDefaultAlpha;
+    m.exponent_x = m.exponent_y = 2.0f / (kDefaultAlpha * kDefaultAlpha) - 2.0f;
+    m.ior = 1.5f;
+    m.roughness = 0.3f;
+    m.flags = 0;
+    m.sampling = FC_SAMPLE_VISIBLE;
+    return m;
+}
+
+struct Preset {
+    std::string_view name;
+    int diffuse, specular, ndf, geometry;
+};
+// kernels/shared/material.h's table; microfacet is ggx's lobes with any D, G, F.
+constexpr Preset kPresets[] = {
+    {"lambert", FC_DIFFUSE_LAMBERT, FC_SPECULAR_NONE, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
+    {"oren_nayar", FC_DIFFUSE_OREN_NAYAR, FC_SPECULAR_NONE, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
+    {"cook_torrance", FC_DIFFUSE_LAMBERT, FC_SPECULAR_MICROFACET, FC_NDF_BECKMANN, FC_G_COOK_TORRANCE},
+    {"blinn_phong", FC_DIFFUSE_LAMBERT, FC_SPECULAR_BLINN_PHONG, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
+    {"blinn_phong_normalized", FC_DIFFUSE_LAMBERT, FC_SPECULAR_BLINN_PHONG_NORMALIZED, FC_NDF_GGX,
+     FC_G_SMITH_CORRELATED},
+    {"ashikhmin_shirley", FC_DIFFUSE_ASHIKHMIN_SHIRLEY, FC_SPECULAR_ASHIKHMIN_SHIRLEY, FC_NDF_GGX,
+     FC_G_SMITH_CORRELATED},
+    {"ggx", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
+    {"microfacet", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
+};
+
+const std::vector<EnumName> kDiffuse = {{"none", FC_DIFFUSE_NONE}, {"lambert", FC_DIFFUSE_LAMBERT},
+    {"lambert_1mf0", FC_DIFFUSE_LAMBERT_1MF0}, {"oren_nayar", FC_DIFFUSE_OREN_NAYAR},
+    {"ashikhmin_shirley", FC_DIFFUSE_ASHIKHMIN_SHIRLEY}};
+const std::vector<EnumName> kSpecular = {{"none", FC_SPECULAR_NONE}, {"microfacet", FC_SPECULAR_MICROFACET},
+    {"blinn_phong", FC_SPECULAR_BLINN_PHONG}, {"blinn_phong_normalized", FC_SPECULAR_BLINN_PHONG_NORMALIZED},
+    {"ashikhmin_shirley", FC_SPECULAR_ASHIKHMIN_SHIRLEY}};
+const std::vector<EnumName> kNdf = {
+    {"beckmann", FC_NDF_BECKMANN}, {"ggx", FC_NDF_GGX}, {"blinn_phong", FC_NDF_BLINN_PHONG}};
+const std::vector<EnumName> kGeometry = {{"implicit", FC_G_IMPLICIT}, {"cook_torrance", FC_G_COOK_TORRANCE},
+    {"smith_separable", FC_G_SMITH_SEPARABLE}, {"smith_correlated", FC_G_SMITH_CORRELATED},
+    {"smith_schlick", FC_G_SMITH_SCHLICK}, {"smith_walter", FC_G_SMITH_WALTER}};
+const std::vector<EnumName> kFresnel = {{"one", FC_FRESNEL_ONE}, {"schlick", FC_FRESNEL_SCHLICK},
+    {"schlick_ior", FC_FRESNEL_SCHLICK_IOR}, {"dielectric", FC_FRESNEL_DIELECTRIC},
+    {"conductor", FC_FRESNEL_CONDUCTOR}};
+const std::vector<EnumName> kSampling = {{"visible", FC_SAMPLE_VISIBLE}, {"all", FC_SAMPLE_ALL}};
+
+struct F0Row {
+    std::string_view name;
+    std::array<float, 3> f0;
+};
+// Linear column of the table (Hoffman 2013, from Real-Time Rendering 3rd ed.;
+// the lecture prints it too): its sRGB column decodes to these within 0.015.
+constexpr F0Row kF0[] = {
+    {"water", {0.02f, 0.02f, 0.02f}},        {"plastic_low", {0.03f, 0.03f, 0.03f}},
+    {"plastic", {0.03f, 0.03f, 0.03f}},      {"glass_low", {0.03f, 0.03f, 0.03f}},
+    {"glass", {0.03f, 0.03f, 0.03f}},        {"plastic_high", {0.05f, 0.05f, 0.05f}},
+    {"glass_high", {0.08f, 0.08f, 0.08f}},   {"ruby", {0.08f, 0.08f, 0.08f}},
+    {"diamond", {0.17f, 0.17f, 0.17f}},      {"iron", {0.56f, 0.57f, 0.58f}},
+    {"copper", {0.95f, 0.64f, 0.54f}},       {"gold", {1.00f, 0.71f, 0.29f}},
+    {"aluminium", {0.91f, 0.92f, 0.92f}},    {"aluminum", {0.91f, 0.92f, 0.92f}},
+    {"silver", {0.95f, 0.93f, 0.88f}},
+};
+
+std::string lower(std::string_view s) {
+    std::string r(s);
+    std::transform(r.begin(), r.end(), r.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return r;
+}
+
+std::string rgb(const float* c) { return fmt::format("({:g}, {:g}, {:g})", c[0], c[1], c[2]); }
+
+}  // namespace
+
+const std::vector<std::string_view>& material_model_names() {
+    static const std::vector<std::string_view> names = [] {
+        std::vector<std::string_view> v;
+        for (const Preset& p : kPresets) v.push_back(p.name);
+        return v;
+    }();
+    return names;
+}
+
+std::optional<FcMaterial> material_preset(std::string_view model) {
+    for (const Preset& p : kPresets) {
+        if (p.name != model) continue;
+        FcMaterial m = base_material();
+        m.diffuse_model = p.diffuse;
+        m.specular_model = p.specular;
+        m.ndf = p.ndf;
+        m.geometry = p.geometry;
+        return m;
+    }
+    return std::nullopt;
+}
+
+FcMaterial make_material(const std::string& model) {
+    if (auto m = material_preset(model)) return *m;
+    std::string list;
+    for (std::string_view n : material_model_names()) list += (list.empty() ? "" : ", ") + std::string(n);
+    throw Error(fmt::format("unknown material model '{}' (expected one of {})", model, list));
+}
+
+std::string material_model_of(const FcMaterial& m) {
+    for (const Preset& p : kPresets) {
+        if (p.name == "microfacet" || m.diffuse_model != p.diffuse || m.specular_model != p.specular) continue;
+        bool microfacet = p.specular == FC_SPECULAR_MICROFACET;
+        if (microfacet && (m.ndf != p.ndf || m.geometry != p.geometry || m.fresnel != FC_FRESNEL_SCHLICK))
+            continue;
+        return std::string(p.name);
+    }
+    return m.specular_model == FC_SPECULAR_MICROFACET ? "microfacet" : "custom";
+}
+
+const std::vector<EnumName>& enum_names(MaterialEnum kind) {
+    switch (kind) {
+        case MaterialEnum::Diffuse: return kDiffuse;
+        case MaterialEnum::Specular: return kSpecular;
+        case MaterialEnum::Ndf: return kNdf;
+        case MaterialEnum::Geometry: return kGeometry;
+        case MaterialEnum::Fresnel: return kFresnel;
+        case MaterialEnum::Sampling: return kSampling;
+    }
+    return kSampling;
+}
+
+std::optional<int> enum_from_name(MaterialEnum kind, std::string_view name) {
+    std::string n = lower(name);
+    for (const EnumName& e : enum_names(kind))
+        if (e.name == n) return e.value;
+    return std::nullopt;
+}
+
+std::string enum_to_name(MaterialEnum kind, int value) {
+    for (const EnumName& e : enum_names(kind))
+        if (e.value == value) return std::string(e.name);
+    return fmt::format("invalid({})", value);
+}
+
+std::string_view enum_kind_name(MaterialEnum kind) {
+    switch (kind) {
+        case MaterialEnum::Diffuse: return "diffuse model";
+        case MaterialEnum::Specular: return "specular model";
+        case MaterialEnum::Ndf: return "ndf";
+        case MaterialEnum::Geometry: return "geometry";
+        case MaterialEnum::Fresnel: return "fresnel";
+        case MaterialEnum::Sampling: return "sampling";
+    }
+    return "?";
+}
+
+std::string enum_name_list(MaterialEnum kind) {
+    const auto& names = enum_names(kind);
+    std::string r;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        r += (i == 0 ? "" : (i + 1 == names.size() ? " or " : ", ")) + std::string(names[i].name);
+    return r;
+}
+
+float shininess_from_roughness(float m) {
+    if (std::isnan(m)) return 2.0f / (kDefaultAlpha * kDefaultAlpha) - 2.0f;
+    m = std::clamp(m, 1e-3f, 1.0f);
+    return std::clamp(2.0f / (m * m) - 2.0f, 0.0f, kExponentMax);
+}
+
+float roughness_from_shininess(float s) {
+    if (std::isnan(s)) return kDefaultAlpha;
+    s = std::clamp(s, 0.0f, kExponentMax);
+    return std::clamp(std::sqrt(2.0f / (2.0f + s)), 1e-3f, 1.0f);
+}
+
+std::optional<std::array<float, 3>> f0_preset(std::string_view name) {
+    std::string n = lower(name);
+    for (const F0Row& r : kF0)
+        if (r.name == n) return r.f0;
+    return std::nullopt;
+}
+
+std::vector<std::string_view> f0_preset_names() {
+    std::vector<std::string_view> v;
+    for (const F0Row& r : kF0) v.push_back(r.name);
+    return v;
+}
+
+float srgb_to_linear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+std::string validate_material(const FcMaterial& m) {
+    auto bad = [](float v, bool ok) { return !std::isfinite(v) || !ok; };
+    const struct { const char* name; const float* v; float hi; } colours[] = {
+        {"diffuse", m.diffuse, 1.0f}, {"specular", m.specular, 1.0f}, {"emission", m.emission, INFINITY},
+        {"k", m.k, INFINITY}};
+    for (const auto& c : colours)
+        for (int i = 0; i < 3; ++i)
+            if (bad(c.v[i], c.v[i] >= 0.0f && c.v[i] <= c.hi))
+                return fmt::format("{} must be finite numbers >= 0{} (got {})", c.name,
+                                   std::isinf(c.hi) ? "" : " and <= 1", rgb(c.v));
+    for (int i = 0; i < 3; ++i)
+        if (bad(m.eta[i], m.eta[i] > 0.0f)) return fmt::format("eta must be finite numbers > 0 (got {})", rgb(m.eta));
+    const struct { const char* name; float v; } scalars[] = {{"alpha_x", m.alpha_x}, {"alpha_y", m.alpha_y},
+        {"exponent_x", m.exponent_x}, {"exponent_y", m.exponent_y}, {"roughness", m.roughness}};
+    for (const auto& s : scalars)
+        if (bad(s.v, s.v >= 0.0f)) return fmt::format("{} must be a finite number >= 0 (got {:g})", s.name, s.v);
+    if (bad(m.ior, m.ior > 0.0f)) return fmt::format("ior must be a finite number > 0 (got {:g})", m.ior);
+    const struct { MaterialEnum kind; int v; } enums[] = {{MaterialEnum::Diffuse, m.diffuse_model},
+        {MaterialEnum::Specular, m.specular_model}, {MaterialEnum::Ndf, m.ndf}, {MaterialEnum::Geometry, m.geometry},
+        {MaterialEnum::Fresnel, m.fresnel}, {MaterialEnum::Sampling, m.sampling}};
+    for (const auto& e : enums)
+        if (e.v < 0 || e.v >= int(enum_names(e.kind).size()))
+            return fmt::format("{} {} is out of range (expected {})", enum_kind_name(e.kind), e.v,
+                               enum_name_list(e.kind));
+    return {};
+}
+
+void clamp_material(FcMaterial& m) {
+    auto clampf = [](float& v, float lo, float hi) {
+        if (!std::isnan(v)) v = std::clamp(v, lo, hi);
+    };
+    for (int i = 0; i < 3; ++i) {
+        clampf(m.diffuse[i], 0.0f, INFINITY);
+        clampf(m.specular[i], 0.0f, INFINITY);
+        clampf(m.emission[i], 0.0f, INFINITY);
+        clampf(m.k[i], 0.0f, INFINITY);
+    }
+    clampf(m.exponent_x, 0.0f, kExponentMax);
+    clampf(m.exponent_y, 0.0f, kExponentMax);
+    clampf(m.alpha_x, 0.0f, 10.0f);
+    clampf(m.alpha_y, 0.0f, 10.0f);
+    clampf(m.roughness, 0.0f, std::numbers::pi_v<float> / 2.0f);
+}
+
+std::string describe_material(const FcMaterial& m) {
+    std::string s = material_model_of(m) + ":";
+    if (m.diffuse_model != FC_DIFFUSE_NONE) {
+        s += fmt::format(" diffuse {} {}", enum_to_name(MaterialEnum::Diffuse, m.diffuse_model), rgb(m.diffuse));
+        if (m.diffuse_model == FC_DIFFUSE_OREN_NAYAR) s += fmt::format(" sigma={:g}", m.roughness);
+    }
+    switch (m.specular_model) {
+        case FC_SPECULAR_MICROFACET:
+            s += fmt::format(" specular microfacet D={} G={} F={}", enum_to_name(MaterialEnum::Ndf, m.ndf),
+                             enum_to_name(MaterialEnum::Geometry, m.geometry),
+                             enum_to_name(MaterialEnum::Fresnel, m.fresnel));
+            if (m.fresnel == FC_FRESNEL_SCHLICK) s += " F0=" + rgb(m.specular);
+            if (m.fresnel == FC_FRESNEL_SCHLICK_IOR || m.fresnel == FC_FRESNEL_DIELECTRIC)
+                s += fmt::format(" ior={:g}", m.ior);
+            if (m.fresnel == FC_FRESNEL_CONDUCTOR) s += " eta=" + rgb(m.eta) + " k=" + rgb(m.k);
+            if (m.ndf == FC_NDF_BLINN_PHONG) s += fmt::format(" exponent={:g}", m.exponent_x);
+            else s += fmt::format(" alpha=({:g}, {:g})", m.alpha_x, m.alpha_y);
+            s += " sampling=" + enum_to_name(MaterialEnum::Sampling, m.sampling);
+            break;
+        case FC_SPECULAR_BLINN_PHONG:
+        case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
+            s += fmt::format(" specular {} Ks={} exponent={:g}", enum_to_name(MaterialEnum::Specular, m.specular_model),
+                             rgb(m.specular), m.exponent_x);
+            break;
+        case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
+            s += fmt::format(" specular ashikhmin_shirley F0={} nu={:g} nv={:g}", rgb(m.specular), m.exponent_x,
+                             m.exponent_y);
+            break;
+        default:
+            if (m.specular_model != FC_SPECULAR_NONE) s += fmt::format(" specular invalid({})", m.specular_model);
+    }
+    if (m.emission[0] > 0.0f || m.emission[1] > 0.0f || m.emission[2] > 0.0f) s += " emission=" + rgb(m.emission);
+    return s;
+}
+
+}  // namespace facet

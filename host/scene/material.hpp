@@ -1,0 +1,91 @@
+// The host side of materials (kernels/shared/material.h holds the layout and enums):
+// the named models of the source documents as presets, the name tables the scene
+// parser and `facet info` use, roughness <-> shininess conversions, normal-incidence
+// Fresnel presets, and validation. docs/brdf.md describes every model.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "shared/material.h"
+
+namespace facet {
+
+// --- named models ---------------------------------------------------------------------
+// "lambert", "oren_nayar", "cook_torrance", "blinn_phong", "blinn_phong_normalized",
+// "ashikhmin_shirley", "ggx" (the default) and "microfacet", in that order.
+const std::vector<std::string_view>& material_model_names();
+inline constexpr std::string_view kDefaultMaterialModel = "ggx";
+
+// The preset of a named model with facet's defaults: diffuse 0.5 grey, specular
+// (F0 / Ks) 0.04, alpha 0.3 (exponents 2/0.3^2 - 2 = 20.2), Oren-Nayar sigma 0.3 rad,
+// ior 1.5, no emission, visible-normal sampling. nullopt for an unknown name.
+std::optional<FcMaterial> material_preset(std::string_view model);
+// The same, throwing facet::Error ("unknown material model 'x' (expected one of ...)").
+FcMaterial make_material(const std::string& model);
+// The named model whose lobe choices (diffuse/specular model, and for microfacet
+// presets D, G, F) a material has; "microfacet" for other microfacet combinations,
+// "custom" otherwise.
+std::string material_model_of(const FcMaterial& m);
+
+// --- enum name tables (string <-> FC_* value) ------------------------------------------
+enum class MaterialEnum { Diffuse, Specular, Ndf, Geometry, Fresnel, Sampling };
+
+struct EnumName {
+    std::string_view name;
+    int value;
+};
+// Every name of the enum in value order (each value has exactly one name):
+//  Diffuse:  none lambert lambert_1mf0 oren_nayar ashikhmin_shirley
+//  Specular: none microfacet blinn_phong blinn_phong_normalized ashikhmin_shirley
+//  Ndf:      beckmann ggx blinn_phong
+//  Geometry: implicit cook_torrance smith_separable smith_correlated smith_schlick smith_walter
+//  Fresnel:  one schlick schlick_ior dielectric conductor
+//  Sampling: visible all
+const std::vector<EnumName>& enum_names(MaterialEnum kind);
+std::optional<int> enum_from_name(MaterialEnum kind, std::string_view name);
+// The name of a value; "invalid(<n>)" when out of range.
+std::string enum_to_name(MaterialEnum kind, int value);
+// "diffuse model", "specular model", "ndf", "geometry", "fresnel", "sampling".
+std::string_view enum_kind_name(MaterialEnum kind);
+// "a, b or c": for messages such as "expected one of ...".
+std::string enum_name_list(MaterialEnum kind);
+
+// --- roughness <-> shininess ----------------------------------------------------------
+// One relation, given three times: the lecture's m = sqrt(2/(2 + s)), the blog's
+// s = 2/m^2 - 2 and Walter et al. 2007's alpha_p = 2 alpha_b^-2 - 2 (Phong exponent s
+// vs Beckmann roughness m). Shininess is clamped to [0, 1e6] (the kernels' cap),
+// roughness to [1e-3, 1] (s = 0 <-> m = 1). NaN gives the respective default 20.2 / 0.3.
+float shininess_from_roughness(float m);
+float roughness_from_shininess(float s);
+
+// --- Fresnel at normal incidence ------------------------------------------------------
+// Linear-RGB F0 of the table in Hoffman's "Physics and Math of Shading" (from Real-Time
+// Rendering 3rd ed.; the PV227 lecture prints it with both columns): water, plastic_low
+// (= plastic), glass_low (= glass), plastic_high, glass_high, ruby, diamond, iron, copper,
+// gold, aluminium (= aluminum), silver. Names are case-insensitive.
+std::optional<std::array<float, 3>> f0_preset(std::string_view name);
+std::vector<std::string_view> f0_preset_names();
+// The sRGB transfer function's inverse (IEC 61966-2-1), for colours given in sRGB.
+float srgb_to_linear(float c);
+
+// --- validation -----------------------------------------------------------------------
+// Empty when every field is usable, else a message naming the first bad field, e.g.
+// "alpha_x must be a finite number >= 0 (got nan)". Checks: colours finite and >= 0
+// (diffuse and specular also <= 1), enums in range, alpha_x/alpha_y/exponents/roughness
+// finite and >= 0, ior, eta finite and > 0, k finite and >= 0.
+std::string validate_material(const FcMaterial& m);
+// Brings finite values into the kernels' working ranges (exponents to [0, 1e6], alpha to
+// [0, 10], sigma to [0, pi/2], colours to >= 0): what the kernels would do anyway, made
+// visible to `facet info`. Leaves NaN alone (validate_material reports it).
+void clamp_material(FcMaterial& m);
+
+// One line for `facet info`, e.g. "ggx: diffuse lambert_1mf0 (0.5, 0.5, 0.5), specular
+// microfacet D=ggx G=smith_correlated F=schlick F0=(0.04, 0.04, 0.04) alpha=(0.3, 0.3)
+// sampling=visible".
+std::string describe_material(const FcMaterial& m);
+
+}  // namespace facet

@@ -1,0 +1,65 @@
+/* A material's BSDF: its diffuse lobe plus its specular lobe.
+ *
+ * eval returns f(wo, wi) (1/sr, no cosine); pdf the solid-angle density with which
+ * sample() produces wi; sample() picks the specular lobe with probability
+ * specular_probability(wo) (the lobes' estimated albedos), samples it, and reports
+ * the value and density of the whole BSDF (one-sample MIS over the lobes, Veach
+ * 1997 section 9.2.4), so weight = f cos / pdf. Directions in the local frame
+ * (n = +z), pointing away from the surface; wo below the surface gives 0. */
+#ifndef FACET_BSDF_BSDF_CL
+#define FACET_BSDF_BSDF_CL
+
+#include "bsdf_sample.cl"
+#include "diffuse.cl"
+#include "specular.cl"
+
+inline float specular_probability(const FcMaterial* m, float3 wo) {
+    if (m->specular_model == FC_SPECULAR_NONE) return 0.0f;
+    if (m->diffuse_model == FC_DIFFUSE_NONE) return 1.0f;
+    float s = specular_weight(m, wo);
+    float d = diffuse_weight(m);
+    return (s + d > 0.0f) ? clamp(s / (s + d), 0.05f, 0.95f) : 0.5f;
+}
+
+inline float3 bsdf_eval(const FcMaterial* m, float3 wo, float3 wi) {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
+    return diffuse_eval(m, wo, wi) + specular_eval(m, wo, wi);
+}
+
+inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    float p = specular_probability(m, wo);
+    float pdf = 0.0f;
+    if (p < 1.0f) pdf += (1.0f - p) * cosine_hemisphere_pdf(wo, wi);
+    if (p > 0.0f) pdf += p * specular_pdf(m, wo, wi);
+    return pdf;
+}
+
+/* Whether every lobe of the BSDF is a delta (next-event estimation is useless). */
+inline bool bsdf_is_delta(const FcMaterial* m) {
+    return m->diffuse_model == FC_DIFFUSE_NONE && specular_is_delta(m);
+}
+
+/* u.z chooses the lobe, u.xy sample it. Returns false when no direction was made. */
+inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s) {
+    s->delta = 0;
+    if (wo.z <= 0.0f) return false;
+    float p = specular_probability(m, wo);
+    if (u.z < p) {
+        if (!specular_sample(m, wo, u.xy, s)) return false;
+        if (s->delta) {
+            s->weight /= p;   /* the mirror was chosen with probability p */
+            return all_finite(s->weight);
+        }
+    } else {
+        s->wi = square_to_cosine_hemisphere(u.xy);
+    }
+    if (s->wi.z <= 0.0f) return false;
+    s->f = bsdf_eval(m, wo, s->wi);
+    s->pdf = bsdf_pdf(m, wo, s->wi);
+    if (!(s->pdf > 0.0f) || !isfinite(s->pdf)) return false;
+    s->weight = s->f * (s->wi.z / s->pdf);
+    return all_finite(s->weight);
+}
+
+#endif

@@ -1,0 +1,40 @@
+/* The diffuse lobe of a material (FcMaterial.diffuse_model). Every diffuse lobe is
+ * sampled with cosine-weighted directions (lambert.cl). */
+#ifndef FACET_BSDF_DIFFUSE_CL
+#define FACET_BSDF_DIFFUSE_CL
+
+#include "../shared/material.h"
+#include "ashikhmin_shirley.cl"
+#include "fresnel.cl"
+#include "lambert.cl"
+#include "oren_nayar.cl"
+
+inline float3 material_diffuse(const FcMaterial* m) {
+    return (float3)(m->diffuse[0], m->diffuse[1], m->diffuse[2]);
+}
+
+inline float3 diffuse_eval(const FcMaterial* m, float3 wo, float3 wi) {
+    switch (m->diffuse_model) {
+        case FC_DIFFUSE_LAMBERT:
+            return lambert_eval(material_diffuse(m), wo, wi);
+        case FC_DIFFUSE_LAMBERT_1MF0:
+            return lambert_eval(material_diffuse(m) * ((float3)(1.0f) - fresnel_f0(m)), wo, wi);
+        case FC_DIFFUSE_OREN_NAYAR:
+            return oren_nayar_eval(m, wo, wi);
+        case FC_DIFFUSE_ASHIKHMIN_SHIRLEY:
+            return ashikhmin_shirley_diffuse_eval(m, wo, wi);
+        default:
+            return (float3)(0.0f);
+    }
+}
+
+/* A cheap estimate of the lobe's albedo, used only to choose between lobes. */
+inline float diffuse_weight(const FcMaterial* m) {
+    if (m->diffuse_model == FC_DIFFUSE_NONE) return 0.0f;
+    float w = luminance(material_diffuse(m));
+    if (m->diffuse_model == FC_DIFFUSE_LAMBERT_1MF0 || m->diffuse_model == FC_DIFFUSE_ASHIKHMIN_SHIRLEY)
+        w *= 1.0f - luminance(fresnel_f0(m));
+    return fmax(w, 0.0f);
+}
+
+#endif

@@ -1,0 +1,97 @@
+/* Fresnel reflectance.
+ *
+ * - Schlick's approximation from the reflectance at normal incidence F0
+ *   (Schlick 1994): F = F0 + (1 - F0)(1 - cos)^5, and F0 from a real index of
+ *   refraction, F0 = ((n - 1)/(n + 1))^2 (Hoffman 2010).
+ * - The exact unpolarised Fresnel equations of a dielectric interface (relative
+ *   index eta = n_transmitted / n_incident) and of a conductor with complex index
+ *   eta + i k (per RGB channel; the real-arithmetic form of pbrt-v3, section 8.2.1).
+ * All functions take the cosine between the direction and the (micro)normal; they
+ * return values in [0, 1] for every input, including cosines outside [0, 1]. */
+#ifndef FACET_BSDF_FRESNEL_CL
+#define FACET_BSDF_FRESNEL_CL
+
+#include "../shared/material.h"
+#include "../util/math.cl"
+
+inline float pow5(float x) {
+    float x2 = x * x;
+    return x2 * x2 * x;
+}
+
+inline float3 fresnel_schlick(float3 f0, float cos_theta) {
+    float c = clamp(cos_theta, 0.0f, 1.0f);
+    return f0 + ((float3)(1.0f) - f0) * pow5(1.0f - c);
+}
+
+inline float f0_from_ior(float n) {
+    float r = (n - 1.0f) / (n + 1.0f);
+    return r * r;
+}
+
+/* Exact dielectric reflectance for light arriving at cosine cos_i on the side the
+ * normal points to (cos_i < 0: from the other side, where the relative index is
+ * 1/eta). Total internal reflection gives 1. */
+inline float fresnel_dielectric(float cos_i, float eta) {
+    if (cos_i < 0.0f) {
+        eta = 1.0f / eta;
+        cos_i = -cos_i;
+    }
+    cos_i = fmin(cos_i, 1.0f);
+    float sin2_t = (1.0f - cos_i * cos_i) / (eta * eta);
+    if (sin2_t >= 1.0f) return 1.0f;
+    float cos_t = sqrt(1.0f - sin2_t);
+    float rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    float rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    float f = 0.5f * (rs * rs + rp * rp);
+    return isfinite(f) ? clamp(f, 0.0f, 1.0f) : 1.0f;
+}
+
+/* Exact conductor reflectance of one channel, index eta + i k, from the outside. */
+inline float fresnel_conductor1(float cos_i, float eta, float k) {
+    float c = clamp(cos_i, 0.0f, 1.0f);
+    float cos2 = c * c;
+    float sin2 = 1.0f - cos2;
+    float eta2 = eta * eta;
+    float k2 = k * k;
+    float t0 = eta2 - k2 - sin2;
+    float a2b2 = sqrt(fmax(t0 * t0 + 4.0f * eta2 * k2, 0.0f));
+    float t1 = a2b2 + cos2;
+    float a = safe_sqrt(0.5f * (a2b2 + t0));
+    float t2 = 2.0f * c * a;
+    if (!(t1 + t2 > 0.0f)) return 1.0f;
+    float rs = (t1 - t2) / (t1 + t2);
+    float t3 = cos2 * a2b2 + sin2 * sin2;
+    float t4 = t2 * sin2;
+    float rp = (t3 + t4 > 0.0f) ? rs * (t3 - t4) / (t3 + t4) : rs;
+    float f = 0.5f * (rp + rs);
+    return isfinite(f) ? clamp(f, 0.0f, 1.0f) : 1.0f;
+}
+
+inline float3 fresnel_conductor(float cos_i, float3 eta, float3 k) {
+    return (float3)(fresnel_conductor1(cos_i, eta.x, k.x), fresnel_conductor1(cos_i, eta.y, k.y),
+                    fresnel_conductor1(cos_i, eta.z, k.z));
+}
+
+/* The material's Fresnel term at cosine cos_d between the direction and the
+ * microfacet normal. */
+inline float3 fresnel_eval(const FcMaterial* m, float cos_d) {
+    switch (m->fresnel) {
+        case FC_FRESNEL_SCHLICK:
+            return fresnel_schlick((float3)(m->specular[0], m->specular[1], m->specular[2]), cos_d);
+        case FC_FRESNEL_SCHLICK_IOR:
+            return fresnel_schlick((float3)(f0_from_ior(m->ior)), cos_d);
+        case FC_FRESNEL_DIELECTRIC:
+            return (float3)(fresnel_dielectric(cos_d, m->ior));
+        case FC_FRESNEL_CONDUCTOR:
+            return fresnel_conductor(cos_d, (float3)(m->eta[0], m->eta[1], m->eta[2]),
+                                     (float3)(m->k[0], m->k[1], m->k[2]));
+        default:
+            return (float3)(1.0f);
+    }
+}
+
+/* F0 of the material's Fresnel term (the reflectance at normal incidence). */
+inline float3 fresnel_f0(const FcMaterial* m) { return fresnel_eval(m, 1.0f); }
+
+#endif

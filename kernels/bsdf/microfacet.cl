@@ -1,0 +1,107 @@
+/* The microfacet specular lobe (FC_SPECULAR_MICROFACET):
+ *     f(wo, wi) = D(h) G(wo, wi, h) F(wo.h) / (4 cos_o cos_i),  h = normalize(wo + wi)
+ * (Cook & Torrance 1982; Walter et al. 2007, eq. 20), with D, G and F chosen
+ * independently (ndf.cl, geometry.cl, fresnel.cl). Sampling draws h from the NDF
+ * (visible or all normals, ndf.cl) and reflects wo; the density of wi is
+ * pdf_h(h) / (4 |wo.h|) (Walter 2007, eq. 14).
+ *
+ * Numerical policy (docs/brdf.md):
+ * - Ranges: alpha from 1e-7 to 1, anisotropy ratio up to 1e4, Blinn-Phong exponents up
+ *   to 2e14, cosines down to 1e-7, wi = +-wo, ior 1 to 20, conductor eta up to 20 and k
+ *   up to 10. Every output is finite, f >= 0, pdf >= 0 for all of them.
+ * - Mirror limit: below FC_ALPHA_MIRROR (max(alpha_x, alpha_y), or Blinn-Phong's
+ *   equivalent alpha) the lobe IS a perfect mirror: eval and pdf give 0, sample gives
+ *   the mirror direction with delta = 1, pdf = INFINITY and weight = F(cos_o) (the
+ *   limit of G -> 1 as alpha -> 0). At and above it everything is evaluated exactly:
+ *   alpha is never clamped.
+ * - No float overflow for tiny alphas: D is written in stretched forms (x/ax, y/ay),
+ *   Lambda without cancellation (ggx.cl, beckmann.cl), Blinn-Phong's cos^e through
+ *   log1p(tan^2). No pow of a negative base. No division that can reach 0: every
+ *   denominator is tested or bounded away from 0 by the ranges above (wo.z, wi.z >= 1e-7
+ *   make |wo + wi| >= 2e-7).
+ * - Degenerate half vectors (wo + wi of zero length, wi = -wo) give f = 0 and pdf = 0;
+ *   wo or wi at or below the horizon give 0.
+ * - A sampled wi at or below the horizon is refused (sample returns false); so is a
+ *   sample whose recomputed pdf is 0. f and pdf of a sample are exactly what eval and
+ *   pdf return for its wi (recomputed from wo + wi), so weight = f cos_i / pdf is
+ *   G F / G1(wo) for visible-normal sampling: at most 1 for F = 1 and the exact Smith
+ *   terms, separable or height-correlated (Heitz 2014, section 6).
+ * - No fast or finite math anywhere (docs/conventions.md): NaN/Inf tests must hold. */
+#ifndef FACET_BSDF_MICROFACET_CL
+#define FACET_BSDF_MICROFACET_CL
+
+#include "../shared/material.h"
+#include "bsdf_sample.cl"
+#include "fresnel.cl"
+#include "geometry.cl"
+#include "ndf.cl"
+
+inline bool microfacet_is_mirror(const FcMaterial* m) {
+    float2 a = ndf_alpha(m);
+    return !(fmax(a.x, a.y) >= FC_ALPHA_MIRROR);   /* NaN roughness: a mirror too */
+}
+
+/* The half vector of wo and wi (both above the surface) and |wo + wi| / 2 = wo.h;
+ * false when it is degenerate. */
+inline bool microfacet_half_vector(float3 wo, float3 wi, float3* h, float* wo_h) {
+    if (!(wo.z > 0.0f) || !(wi.z > 0.0f)) return false;
+    float3 v = wo + wi;
+    float len = length(v);
+    if (!(len > 0.0f) || !isfinite(len)) return false;
+    *h = v / len;
+    *wo_h = 0.5f * len;
+    return true;
+}
+
+inline float3 microfacet_eval(const FcMaterial* m, float3 wo, float3 wi) {
+    float3 h;
+    float wo_h;
+    if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return (float3)(0.0f);
+    float d = ndf_D(m, h);
+    if (!(d > 0.0f)) return (float3)(0.0f);
+    /* G / (4 cos_o cos_i); the implicit G cancels the denominator exactly. */
+    float g_over = (m->geometry == FC_G_IMPLICIT)
+                       ? 0.25f
+                       : geometry_G(m, wo, wi, h) / (4.0f * wo.z * wi.z);
+    float3 f = fresnel_eval(m, dot(wo, h)) * (d * g_over);
+    return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
+}
+
+inline float microfacet_pdf(const FcMaterial* m, float3 wo, float3 wi) {
+    float3 h;
+    float wo_h;
+    if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return 0.0f;
+    /* ndf_pdf(h) / (4 wo.h); for visible normals the factor wo.h cancels analytically,
+     * D(h) / (4 wo.z (1 + Lambda(wo))), which keeps f cos / pdf = G F / G1(wo) <= 1 in
+     * float even where wo.h suffers cancellation (wi ~ -wo at grazing angles). */
+    float pdf = ndf_samples_visible(m) ? ndf_D(m, h) / (4.0f * ndf_projected_area(m, wo))
+                                       : ndf_pdf(m, wo, h) / (4.0f * wo_h);
+    return isfinite(pdf) ? fmax(pdf, 0.0f) : 0.0f;
+}
+
+inline bool microfacet_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSample* s) {
+    s->delta = 0;
+    if (!(wo.z > 0.0f)) return false;
+    if (microfacet_is_mirror(m)) {
+        s->wi = (float3)(-wo.x, -wo.y, wo.z);
+        s->delta = 1;
+        s->pdf = INFINITY;
+        s->f = (float3)(0.0f);
+        s->weight = fresnel_eval(m, wo.z);
+        return true;
+    }
+    /* Draw a normal, reflect wo about it (Walter 2007, eq. 39). */
+    float3 h = ndf_sample(m, wo, u);
+    float wo_h = dot(wo, h);
+    if (!(wo_h > 0.0f)) return false;
+    float3 wi = normalize_or(2.0f * wo_h * h - wo, (float3)(0.0f));
+    if (!(wi.z > 0.0f)) return false;
+    s->wi = wi;
+    s->f = microfacet_eval(m, wo, wi);
+    s->pdf = microfacet_pdf(m, wo, wi);
+    if (!(s->pdf > 0.0f)) return false;
+    s->weight = s->f * (wi.z / s->pdf);
+    return all_finite(s->weight);
+}
+
+#endif

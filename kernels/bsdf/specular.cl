@@ -1,0 +1,75 @@
+/* The specular lobe of a material (FcMaterial.specular_model): dispatch to the
+ * microfacet BRDF, the Blinn-Phong lobes or Ashikhmin-Shirley's. */
+#ifndef FACET_BSDF_SPECULAR_CL
+#define FACET_BSDF_SPECULAR_CL
+
+#include "../shared/material.h"
+#include "ashikhmin_shirley.cl"
+#include "blinn_phong.cl"
+#include "bsdf_sample.cl"
+#include "fresnel.cl"
+#include "microfacet.cl"
+
+inline float3 specular_eval(const FcMaterial* m, float3 wo, float3 wi) {
+    switch (m->specular_model) {
+        case FC_SPECULAR_MICROFACET:
+            return microfacet_eval(m, wo, wi);
+        case FC_SPECULAR_BLINN_PHONG:
+        case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
+            return blinn_phong_eval(m, wo, wi);
+        case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
+            return ashikhmin_shirley_eval(m, wo, wi);
+        default:
+            return (float3)(0.0f);
+    }
+}
+
+inline float specular_pdf(const FcMaterial* m, float3 wo, float3 wi) {
+    switch (m->specular_model) {
+        case FC_SPECULAR_MICROFACET:
+            return microfacet_pdf(m, wo, wi);
+        case FC_SPECULAR_BLINN_PHONG:
+        case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
+            return blinn_phong_pdf(m, wo, wi);
+        case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
+            return ashikhmin_shirley_pdf(m, wo, wi);
+        default:
+            return 0.0f;
+    }
+}
+
+/* Samples the lobe alone: s->f and s->pdf are the lobe's own. */
+inline bool specular_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSample* s) {
+    switch (m->specular_model) {
+        case FC_SPECULAR_MICROFACET:
+            return microfacet_sample(m, wo, u, s);
+        case FC_SPECULAR_BLINN_PHONG:
+        case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
+            return blinn_phong_sample(m, wo, u, s);
+        case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
+            return ashikhmin_shirley_sample(m, wo, u, s);
+        default:
+            return false;
+    }
+}
+
+/* A cheap estimate of the lobe's albedo seen from wo, used only to choose lobes. */
+inline float specular_weight(const FcMaterial* m, float3 wo) {
+    switch (m->specular_model) {
+        case FC_SPECULAR_MICROFACET:
+        case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
+            return fmax(luminance(fresnel_eval(m, wo.z)), 0.0f);
+        case FC_SPECULAR_BLINN_PHONG:
+        case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
+            return fmax(luminance((float3)(m->specular[0], m->specular[1], m->specular[2])), 0.0f);
+        default:
+            return 0.0f;
+    }
+}
+
+/* Whether the specular lobe is a perfect mirror (a delta distribution). */
+inline bool specular_is_delta(const FcMaterial* m) {
+    return m->specular_model == FC_SPECULAR_MICROFACET && microfacet_is_mirror(m);
+}
+
+#endif

@@ -1,0 +1,90 @@
+/* Test kernels of the reflection models (tests/models_test.cpp): the whole BSDF's
+ * eval/pdf, directional albedos by importance sampling, and the specular lobes'
+ * sample/eval/pdf agreement. Directions are in the local frame (n = +z). */
+#ifndef FACET_TEST_MODEL_KERNELS_CL
+#define FACET_TEST_MODEL_KERNELS_CL
+
+#include "../bsdf/bsdf.cl"
+#include "../util/rng.cl"
+
+/* out[4i..4i+2] = bsdf_eval(mats[i], wo_i, wi_i), out[4i+3] = bsdf_pdf;
+ * dirs holds wo_i, wi_i as 6 floats per item. */
+__kernel void models_eval(__global const FcMaterial* mats, __global const float* dirs, __global float* out,
+                          int n) {
+    int i = (int)get_global_id(0);
+    if (i >= n) return;
+    FcMaterial m = mats[i];
+    float3 wo = vload3(2 * i, dirs);
+    float3 wi = vload3(2 * i + 1, dirs);
+    float3 f = bsdf_eval(&m, wo, wi);
+    out[4 * i + 0] = f.x;
+    out[4 * i + 1] = f.y;
+    out[4 * i + 2] = f.z;
+    out[4 * i + 3] = bsdf_pdf(&m, wo, wi);
+}
+
+/* Directional albedo of channel 0 of mats[i] seen from wos[i], from `samples`
+ * bsdf_sample draws: out[4i] = mean weight, out[4i+1] = standard error of the mean,
+ * out[4i+2] = number of samples with a NaN, infinite or negative weight, f or pdf,
+ * out[4i+3] = largest weight. */
+__kernel void models_albedo(__global const FcMaterial* mats, __global const float* wos, __global float* out,
+                            int n, int samples) {
+    int i = (int)get_global_id(0);
+    if (i >= n) return;
+    FcMaterial m = mats[i];
+    float3 wo = vload3(i, wos);
+    Rng rng = rng_init(1234u, (uint)i, 0u);
+    /* Welford's running mean and variance */
+    float mean = 0.0f, m2 = 0.0f, wmax = 0.0f;
+    int bad = 0;
+    for (int k = 0; k < samples; ++k) {
+        float3 u = (float3)(rng_float(&rng), rng_float(&rng), rng_float(&rng));
+        BsdfSample s;
+        float w = 0.0f;
+        if (bsdf_sample(&m, wo, u, &s)) {
+            w = s.weight.x;
+            bool ok = isfinite(w) && w >= 0.0f && all_finite(s.f) && s.f.x >= 0.0f && s.f.y >= 0.0f &&
+                      s.f.z >= 0.0f && (s.delta || (isfinite(s.pdf) && s.pdf > 0.0f));
+            if (!ok) {
+                ++bad;
+                w = 0.0f;
+            }
+        }
+        float d = w - mean;
+        mean += d / (float)(k + 1);
+        m2 += d * (w - mean);
+        wmax = fmax(wmax, w);
+    }
+    out[4 * i + 0] = mean;
+    out[4 * i + 1] = sqrt(m2 / ((float)samples * (float)(samples - 1)));
+    out[4 * i + 2] = (float)bad;
+    out[4 * i + 3] = wmax;
+}
+
+/* specular_sample of mats[i] from wos[i] with `samples` random u: counts samples whose
+ * f and pdf differ from specular_eval/specular_pdf (out[2i]) and samples with a NaN,
+ * infinite or negative value anywhere (out[2i+1]). */
+__kernel void models_sample_consistency(__global const FcMaterial* mats, __global const float* wos,
+                                        __global int* out, int n, int samples) {
+    int i = (int)get_global_id(0);
+    if (i >= n) return;
+    FcMaterial m = mats[i];
+    float3 wo = vload3(i, wos);
+    Rng rng = rng_init(99u, (uint)i, 0u);
+    int mismatch = 0, bad = 0;
+    for (int k = 0; k < samples; ++k) {
+        BsdfSample s;
+        if (!specular_sample(&m, wo, rng_float2(&rng), &s)) continue;
+        float3 f = specular_eval(&m, wo, s.wi);
+        float pdf = specular_pdf(&m, wo, s.wi);
+        if (any(f != s.f) || pdf != s.pdf) ++mismatch;
+        float3 w = f * (s.wi.z / pdf);
+        if (!all_finite(f) || !all_finite(s.weight) || !isfinite(pdf) || !(pdf > 0.0f) || any(f < 0.0f) ||
+            any(w != s.weight) || !(s.wi.z > 0.0f))
+            ++bad;
+    }
+    out[2 * i + 0] = mismatch;
+    out[2 * i + 1] = bad;
+}
+
+#endif
