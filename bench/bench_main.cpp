@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bench.hpp"
 #include "bvh/bvh.hpp"
 #include "cl/runtime.hpp"
 #include "error.hpp"
@@ -225,6 +226,7 @@ int run(int argc, char** argv) {
         std::fflush(stdout);
         all["scenes"].push_back(j);
     }
+    all["bsdfs"] = bench_bsdfs(ctx, quick);
     if (!json_out.empty()) std::ofstream(json_out) << all.dump(2) << "\n";
     return 0;
 }

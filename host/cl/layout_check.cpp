@@ -21,7 +21,7 @@ static_assert(offsetof(FcBvhNode, b_min) == 32);
 static_assert(offsetof(FcTriangle, v1) == 16 && offsetof(FcTriangle, v2) == 32);
 static_assert(offsetof(FcTriShading, n1) == 16 && offsetof(FcTriShading, n2) == 32);
 static_assert(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104);
-static_assert(offsetof(FcLight, e1) == 16 && offsetof(FcLight, pick_pdf) == 48);
+static_assert(offsetof(FcLight, e1) == 16 && offsetof(FcLight, pick_pdf) == 60);
 static_assert(offsetof(FcCamera, up) == 48);
 static_assert(offsetof(FcRenderParams, width) == 64 && offsetof(FcRenderParams, row_count) == 100);
 

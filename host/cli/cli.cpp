@@ -3,12 +3,14 @@
 
 #include <cstdio>
 #include <iostream>
+#include <map>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
 #include "error.hpp"
+#include "shared/render.h"
 
 namespace facet {
 
@@ -34,6 +36,11 @@ int run_cli(int argc, char** argv) {
     render->add_option("--max-depth", opt.max_depth, "Maximum number of bounces (1 = direct light only)")
         ->check(CLI::Range(1, 1024));
     render->add_option("--seed", opt.seed, "Seed of the random stream (same seed and settings give the same image)");
+    render->add_option("--strategy", opt.strategy,
+                       "Direct light from area lights and the environment: mis (default), light (light sampling only) "
+                       "or bsdf (BSDF sampling only); for measuring the strategies")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT},
+                                                                        {"bsdf", FC_STRATEGY_BSDF}}));
     render->add_option("--device", opt.device, "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU)");
     render->add_option("--out", opt.out, "Output EXR (a tone-mapped PNG is written beside it); default out/<scene>.exr");
     render->add_option("--snapshot", opt.snapshot, "Write the image so far (and the report) every SECONDS")
@@ -53,6 +60,14 @@ int run_cli(int argc, char** argv) {
     plot_cmd->add_option("report", plot.report, "CSV report written by `facet render`")->required();
     plot_cmd->add_option("--out", plot.out, "Output SVG (default: the report with .svg)");
 
+    SkyOptions sky;
+    CLI::App* sky_cmd = app.add_subcommand("sky", "Write the generated sun-and-sky environment map as EXR (docs/environment.md)");
+    sky_cmd->add_option("out", sky.out, "Output EXR")->required();
+    sky_cmd->add_option("--width", sky.width, "Width in texels (height is half)")->check(CLI::Range(8, 16384));
+    sky_cmd->add_option("--elevation", sky.elevation, "Sun elevation in degrees")->check(CLI::Range(-10.0f, 90.0f));
+    sky_cmd->add_option("--azimuth", sky.azimuth, "Sun azimuth in degrees")->check(CLI::Range(-360.0f, 360.0f));
+    sky_cmd->add_option("--turbidity", sky.turbidity, "Atmospheric turbidity (Preetham's model)")->check(CLI::Range(1.7f, 10.0f));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -65,6 +80,7 @@ int run_cli(int argc, char** argv) {
         if (*render) return run_render(opt);
         if (*compare) return run_compare(cmp);
         if (*plot_cmd) return run_plot(plot);
+        if (*sky_cmd) return run_sky(sky);
     } catch (const Error& e) {
         std::fflush(stdout);
         std::cerr << "facet: error: " << e.what() << "\n";

@@ -11,6 +11,7 @@ struct RenderOptions {
     std::string scene;
     std::optional<int> spp, width, height, max_depth;
     std::optional<std::uint32_t> seed;
+    std::optional<int> strategy;   // FC_STRATEGY_*
     std::optional<double> time_limit;
     std::string device;
     std::string out;
@@ -23,6 +24,12 @@ struct RenderOptions {
 
 struct CompareOptions {
     std::string image, reference;
+};
+
+struct SkyOptions {
+    std::string out;
+    int width = 2048;
+    float elevation = 25.0f, azimuth = 40.0f, turbidity = 3.0f;
 };
 
 struct PlotOptions {
@@ -44,5 +51,6 @@ int run_info(const InfoOptions& opt);
 int run_render(const RenderOptions& opt);
 int run_compare(const CompareOptions& opt);
 int run_plot(const PlotOptions& opt);
+int run_sky(const SkyOptions& opt);
 
 }  // namespace facet

@@ -9,6 +9,7 @@
 #include "film/error_metrics.hpp"
 #include "film/image_io.hpp"
 #include "report/report.hpp"
+#include "scene/sky.hpp"
 
 namespace facet {
 
@@ -23,9 +24,25 @@ int run_compare(const CompareOptions& opt) {
             throw Error(fmt::format("{}: texel {} (pixel {}) is not finite", opt.image, i % 3, i / 3));
     ErrorMetrics m = compare_images(a.rgb, b.rgb, opt.reference);
     for (const auto& [path, img] : {std::pair{opt.image, &a}, std::pair{opt.reference, &b}})
-        fmt::print("{}: {}x{}{}\n", path, img->width, img->height,
-                   img->spp >= 0 ? fmt::format(", {} spp", img->spp) : std::string());
+    {
+        double mean[3] = {0, 0, 0};
+        for (std::size_t i = 0; i < img->rgb.size(); ++i) mean[i % 3] += double(img->rgb[i]);
+        const double n = double(img->rgb.size() / 3);
+        fmt::print("{}: {}x{}{}, mean ({:.6g}, {:.6g}, {:.6g})\n", path, img->width, img->height,
+                   img->spp >= 0 ? fmt::format(", {} spp", img->spp) : std::string(), mean[0] / n, mean[1] / n,
+                   mean[2] / n);
+    }
     fmt::print("mse     {:.6e}\nrmse    {:.6e}\nrelmse  {:.6e}\n", m.mse, m.rmse, m.relmse);
+    return kExitOk;
+}
+
+int run_sky(const SkyOptions& opt) {
+    SunSkyParams params;
+    params.elevation_degrees = opt.elevation;
+    params.azimuth_degrees = opt.azimuth;
+    params.turbidity = opt.turbidity;
+    write_sun_sky_exr(opt.out, opt.width, params);
+    fmt::print("wrote    {} ({}x{})\n", opt.out, opt.width, opt.width / 2);
     return kExitOk;
 }
 

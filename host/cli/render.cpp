@@ -44,6 +44,7 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
     if (opt.height) s.height = *opt.height;
     if (opt.max_depth) s.max_depth = *opt.max_depth;
     if (opt.seed) s.seed = *opt.seed;
+    if (opt.strategy) s.strategy = *opt.strategy;
 }
 
 std::string default_output(const std::string& scene_path) {

@@ -33,6 +33,9 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
     params_.max_depth = std::uint32_t(scene.settings.max_depth);
     params_.rr_depth = std::uint32_t(scene.settings.rr_depth);
     params_.light_count = std::uint32_t(scene.lights.size());
+    params_.environment = scene.environment.params;
+    params_.environment_light = scene.environment_light;
+    params_.strategy = std::uint32_t(scene.settings.strategy);
 
     ProgramBuild build = build_program(ctx, "kernels/integrator/path.cl");
     stats_.compile_seconds = build.seconds;
@@ -51,6 +54,8 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
         materials_ = upload(c, scene.materials);
         lights_ = upload(c, scene.lights);
         light_cdf_ = upload(c, scene.light_cdf);
+        env_texels_ = upload(c, scene.environment.texels);
+        env_dist_ = upload(c, scene.environment.distribution);
         accum_ = cl::Buffer(c, CL_MEM_READ_WRITE, 2 * pixel_count() * sizeof(cl_float4));
         kernel_.setArg(0, params_buf_);
         kernel_.setArg(1, nodes_);
@@ -59,7 +64,9 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
         kernel_.setArg(4, materials_);
         kernel_.setArg(5, lights_);
         kernel_.setArg(6, light_cdf_);
-        kernel_.setArg(7, accum_);
+        kernel_.setArg(7, env_texels_);
+        kernel_.setArg(8, env_dist_);
+        kernel_.setArg(9, accum_);
     });
     reset();
     stats_.upload_seconds = seconds_since(start);

@@ -59,7 +59,7 @@ private:
     std::size_t local_size_ = 64;   // work-group size of every launch
     cl::Program program_;
     cl::Kernel kernel_;
-    cl::Buffer params_buf_, nodes_, tris_, shading_, materials_, lights_, light_cdf_, accum_;
+    cl::Buffer params_buf_, nodes_, tris_, shading_, materials_, lights_, light_cdf_, env_texels_, env_dist_, accum_;
     RenderStats stats_;
 };
 

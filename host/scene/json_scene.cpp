@@ -13,6 +13,7 @@
 #include "error.hpp"
 #include "scene/json_schema.hpp"
 #include "scene/material.hpp"
+#include "scene/sky.hpp"
 #include "scene/load.hpp"
 #include "scene/text_parse.hpp"
 
@@ -85,7 +86,7 @@ struct Loader {
     }
 
     void render(const Json& v, const std::string& path) {
-        r.object(v, path, {"width", "height", "spp", "max_depth", "rr_depth", "seed"});
+        r.object(v, path, {"width", "height", "spp", "max_depth", "rr_depth", "seed", "strategy"});
         RenderSettings& s = scene.settings;
         auto k = [&](const char* name) { return JsonReader::key(path, name); };
         auto get = [&](const char* name, std::int64_t lo, std::int64_t hi, auto& out) {
@@ -98,6 +99,14 @@ struct Loader {
         get("max_depth", 1, 1024, s.max_depth);
         get("rr_depth", 0, 1024, s.rr_depth);
         get("seed", 0, 0xffffffffLL, s.seed);
+        if (v.contains("strategy")) {
+            const std::string k = JsonReader::key(path, "strategy");
+            const std::string name = r.string(v["strategy"], k);
+            if (name == "mis") s.strategy = FC_STRATEGY_MIS;
+            else if (name == "light") s.strategy = FC_STRATEGY_LIGHT;
+            else if (name == "bsdf") s.strategy = FC_STRATEGY_BSDF;
+            else r.fail(k, fmt::format("unknown strategy '{}' (expected mis, light or bsdf)", name));
+        }
     }
 
     // A material: a named model's preset (material.hpp), then its parameters. One
@@ -297,6 +306,78 @@ struct Loader {
         }
     }
 
+    // A point, spot or directional light (docs/lights.md).
+    void light(const Json& v, const std::string& path) {
+        r.object(v, path, {"type", "position", "direction", "color", "inner", "outer"});
+        r.require(v, path, "type");
+        auto k = [&](const char* key) { return JsonReader::key(path, key); };
+        const std::string type = r.string(v["type"], k("type"));
+        PunctualLight l;
+        if (type == "point") l.type = FC_LIGHT_POINT;
+        else if (type == "spot") l.type = FC_LIGHT_SPOT;
+        else if (type == "directional") l.type = FC_LIGHT_DIRECTIONAL;
+        else r.fail(k("type"), fmt::format("unknown light type '{}' (expected point, spot or directional)", type));
+        if (l.type != FC_LIGHT_DIRECTIONAL) {
+            r.require(v, path, "position");
+            l.position = r.vec3(v["position"], k("position"));
+        }
+        if (l.type != FC_LIGHT_POINT) {
+            r.require(v, path, "direction");
+            l.direction = r.vec3(v["direction"], k("direction"));
+            if (!(glm::length(l.direction) > 0.0f)) r.fail(k("direction"), "must not be zero");
+        }
+        r.require(v, path, "color");
+        l.color = r.color(v["color"], k("color"));
+        if (v.contains("inner")) l.inner_degrees = r.number_in(v["inner"], k("inner"), 0, 180);
+        if (v.contains("outer")) l.outer_degrees = r.number_in(v["outer"], k("outer"), 0, 180);
+        if (l.outer_degrees < l.inner_degrees) r.fail(k("outer"), "must not be smaller than 'inner'");
+        scene.punctual_lights.push_back(l);
+    }
+
+    // The environment: a map file, a constant radiance or the generated sun and sky
+    // (docs/environment.md), with a radiance scale and a rotation.
+    void environment(const Json& v, const std::string& path) {
+        r.object(v, path, {"file", "constant", "sky", "scale", "rotate"});
+        auto k = [&](const char* key) { return JsonReader::key(path, key); };
+        int sources = int(v.contains("file")) + int(v.contains("constant")) + int(v.contains("sky"));
+        if (sources != 1) r.fail(path, "give exactly one of 'file', 'constant' or 'sky'");
+        glm::vec3 scale(1.0f);
+        if (v.contains("scale")) {
+            scale = v["scale"].is_number() ? glm::vec3(r.number_in(v["scale"], k("scale"), 0, 1e30))
+                                           : r.color(v["scale"], k("scale"));
+        }
+        glm::mat3 map_to_world(1.0f);
+        if (v.contains("rotate")) map_to_world = glm::mat3(transform(Json{{"rotate", v["rotate"]}}, path));
+        const glm::mat3 world_to_map = glm::transpose(map_to_world);
+        if (v.contains("constant")) {
+            scene.environment = constant_environment(r.color(v["constant"], k("constant")) * scale);
+        } else if (v.contains("file")) {
+            const std::string file = r.string(v["file"], k("file"));
+            const std::string full = text::join_path(dir, file);
+            std::error_code ec;
+            if (!std::filesystem::is_regular_file(full, ec))
+                r.fail(k("file"), fmt::format("environment map '{}' not found (looked for '{}')", file, full));
+            try {
+                scene.environment = load_environment_map(full, scale, world_to_map, scene.warnings);
+            } catch (const Error& e) {
+                r.fail(k("file"), e.what());
+            }
+        } else {
+            const Json& sky = v["sky"];
+            const std::string sp = k("sky");
+            r.object(sky, sp, {"elevation", "azimuth", "turbidity", "width"});
+            SunSkyParams params;
+            if (sky.contains("elevation")) params.elevation_degrees = r.number_in(sky["elevation"], JsonReader::key(sp, "elevation"), -10, 90);
+            if (sky.contains("azimuth")) params.azimuth_degrees = r.number_in(sky["azimuth"], JsonReader::key(sp, "azimuth"), -360, 360);
+            if (sky.contains("turbidity")) params.turbidity = r.number_in(sky["turbidity"], JsonReader::key(sp, "turbidity"), 1.7, 10);
+            int width = 1024;
+            if (sky.contains("width")) width = int(r.integer(sky["width"], JsonReader::key(sp, "width"), 8, 16384));
+            scene.environment = sun_sky_environment(params, width);
+            set_environment_scale(scene.environment, scale);
+        }
+        set_environment_rotation(scene.environment, world_to_map);
+    }
+
     template <typename F>
     void array(const Json& root, const char* name, F each) {
         if (!root.contains(name)) return;
@@ -311,7 +392,7 @@ struct Loader {
 bool load_json_scene(const std::string& path, Scene& scene) {
     const Json root = parse_json(path, text::read_file(path, "scene file"));
     Loader l{JsonReader(path), text::directory_of(path), scene, {}, -1};
-    l.r.object(root, "", {"camera", "render", "materials", "meshes", "shapes"});
+    l.r.object(root, "", {"camera", "render", "materials", "meshes", "shapes", "lights", "environment"});
     if (root.contains("render")) l.render(root["render"], "render");
     if (root.contains("materials")) {
         const Json& mats = root["materials"];
@@ -322,6 +403,8 @@ bool load_json_scene(const std::string& path, Scene& scene) {
     }
     l.array(root, "meshes", [&](const Json& v, const std::string& p) { l.mesh(v, p); });
     l.array(root, "shapes", [&](const Json& v, const std::string& p) { l.shape(v, p); });
+    l.array(root, "lights", [&](const Json& v, const std::string& p) { l.light(v, p); });
+    if (root.contains("environment")) l.environment(root["environment"], "environment");
     if (scene.triangle_count() == 0) {
         throw Error(fmt::format("{}: the scene has no geometry (no 'meshes' or 'shapes')", path));
     }

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "scene/environment.hpp"
 #include "shared/scene.h"
 #include "shared/render.h"
 
@@ -30,6 +31,17 @@ struct RenderSettings {
     int max_depth = 16;        // path vertices after the camera; 1 = direct light only
     int rr_depth = 3;          // Russian roulette starts after this many bounces
     std::uint32_t seed = 0;
+    int strategy = FC_STRATEGY_MIS;   // FC_STRATEGY_*: MIS, light sampling or BSDF sampling only
+};
+
+// A point, spot or directional light as the scene file gives it (docs/lights.md).
+struct PunctualLight {
+    int type = FC_LIGHT_POINT;              // FC_LIGHT_POINT, FC_LIGHT_SPOT or FC_LIGHT_DIRECTIONAL
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // spot axis, or the direction light travels
+    glm::vec3 color{1.0f};                  // Hoffman's c_light (at distance 1)
+    float inner_degrees = 30.0f;            // spot: full intensity inside this half-angle
+    float outer_degrees = 45.0f;            // spot: no light outside this half-angle
 };
 
 struct Scene {
@@ -37,8 +49,11 @@ struct Scene {
     std::vector<FcTriShading> shading;       // 1 per triangle
     std::vector<FcMaterial> materials;
     std::vector<std::string> material_names; // parallel to materials
+    std::vector<PunctualLight> punctual_lights;
+    EnvironmentMap environment = no_environment();
     std::vector<FcLight> lights;             // built by build_lights()
     std::vector<float> light_cdf;            // light_count + 1 entries, cdf[0] = 0, cdf[n] = 1
+    int environment_light = -1;              // index of the environment in `lights`, or -1
     CameraDesc camera;
     RenderSettings settings;
     std::string source_path;                 // the file it was loaded from
@@ -53,9 +68,9 @@ FcMaterial default_material();
 // Camera parameters as the kernels see them, for an image of the given aspect ratio.
 FcCamera make_camera(const CameraDesc& desc, float aspect);
 
-// Fills scene.lights and scene.light_cdf from the emissive triangles: one area
-// light per triangle with non-zero emission and area, picked in proportion to its
-// power (area x luminance of emission, doubled when two-sided).
+// Fills scene.lights and scene.light_cdf (host/scene/lights.cpp): one area light per
+// emissive triangle with non-zero area, the punctual lights, and the environment;
+// each picked in proportion to an estimate of its power.
 void build_lights(Scene& scene);
 
 // Shapes made on the host (host/scene/shapes.cpp), appended to `scene` with

@@ -15,57 +15,53 @@
 
 #include "surface.cl"
 #include "../camera/camera.cl"
-#include "../lights/area.cl"
+#include "../lights/light.cl"
 #include "../bsdf/bsdf.cl"
 #include "../util/rng.cl"
 
-typedef struct {
-    __constant const FcRenderParams* params;
-    __global const FcBvhNode* nodes;
-    __global const FcTriangle* tris;
-    __global const FcTriShading* shading;
-    __global const FcMaterial* materials;
-    __global const FcLight* lights;
-    __global const float* light_cdf;
-} SceneView;
 
-/* Next-event estimation at surface `s` seen from direction wo: one light sample
- * weighted against the BSDF's density. Returns its contribution before throughput. */
+/* Next-event estimation at surface `s` seen from direction wo: one light sample,
+ * weighted against the BSDF's density by the power heuristic (delta lights: weight 1).
+ * Returns its contribution before throughput. */
 inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* frame,
                             const FcMaterial* m, float3 wo_local, Rng* rng) {
     float u_pick = rng_float(rng);
-    float2 u_point = rng_float2(rng);
-    uint light_count = sc->params->light_count;
-    if (light_count == 0u) return (float3)(0.0f);
-    LightSample ls = sample_area_light(sc->lights, sc->light_cdf, light_count, u_pick, u_point);
-    float3 to_light = ls.p - s->p;
-    float dist2 = dot(to_light, to_light);
-    if (!(dist2 > 0.0f)) return (float3)(0.0f);
-    float dist = sqrt(dist2);
-    float3 wi = to_light / dist;
-    if (dot(s->ng, wi) <= 0.0f) return (float3)(0.0f);
-
-    __global const FcLight* light = &sc->lights[ls.light];
-    __global const FcMaterial* lm = &sc->materials[sc->shading[light->prim].material];
-    float3 le = area_light_radiance(load3(lm->emission), lm->flags, ls.n, -wi);
-    if (is_black(le)) return (float3)(0.0f);
-
-    float3 wi_local = frame_to_local(frame, wi);
+    float2 u = rng_float2(rng);
+    LightSample ls;
+    if (!sample_light(sc, s->p, u_pick, u, &ls)) return (float3)(0.0f);
+    if (dot(s->ng, ls.wi) <= 0.0f) return (float3)(0.0f);
+    float3 wi_local = frame_to_local(frame, ls.wi);
     float3 f = bsdf_eval(m, wo_local, wi_local);
     if (is_black(f)) return (float3)(0.0f);
 
-    /* Shadow ray between the two offset points, so neither end hits itself. */
+    /* Shadow ray: to the offset point on an area light, else to the light's distance. */
     float3 o = offset_ray_origin(s->p, s->ng);
-    float3 target = offset_ray_origin(ls.p, dot(ls.n, wi) < 0.0f ? ls.n : -ls.n);
-    float3 seg = target - o;
-    float seg_len = length(seg);
-    if (!(seg_len > 0.0f)) return (float3)(0.0f);
-    if (trace_any(sc->nodes, sc->tris, o, seg / seg_len, seg_len)) return (float3)(0.0f);
+    float3 dir = ls.wi;
+    float tmax = ls.dist;
+    if (isfinite(ls.dist) && !ls.delta) {
+        float3 target = offset_ray_origin(ls.point, dot(ls.normal, ls.wi) < 0.0f ? ls.normal : -ls.normal);
+        float3 seg = target - o;
+        tmax = length(seg);
+        if (!(tmax > 0.0f)) return (float3)(0.0f);
+        dir = seg / tmax;
+    } else if (isfinite(ls.dist)) {
+        tmax = ls.dist * (1.0f - 1e-5f);   /* stop short of a point light */
+    }
+    if (trace_any(sc->nodes, sc->tris, o, dir, tmax)) return (float3)(0.0f);
 
-    float light_pdf = area_light_pdf_solid_angle(light, dist, dot(ls.n, wi));
-    if (!(light_pdf > 0.0f)) return (float3)(0.0f);
-    float w = power_heuristic(light_pdf, bsdf_pdf(m, wo_local, wi_local));
-    return f * le * (wi_local.z * w / light_pdf);
+    if (ls.delta) return f * ls.li * (wi_local.z / ls.pdf);
+    uint strategy = sc->params->strategy;
+    if (strategy == FC_STRATEGY_BSDF) return (float3)(0.0f);
+    float w = strategy == FC_STRATEGY_LIGHT ? 1.0f : power_heuristic(ls.pdf, bsdf_pdf(m, wo_local, wi_local));
+    return f * ls.li * (wi_local.z * w / ls.pdf);
+}
+
+/* The weight of light found by BSDF sampling, against light sampling's density. After
+ * a delta lobe (pdf INFINITY) light sampling could not have found it: weight 1. */
+inline float bsdf_strategy_weight(uint strategy, float bsdf_pdf, float light_pdf) {
+    if (strategy == FC_STRATEGY_BSDF || isinf(bsdf_pdf)) return 1.0f;
+    if (strategy == FC_STRATEGY_LIGHT) return 0.0f;
+    return power_heuristic(bsdf_pdf, light_pdf);
 }
 
 inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
@@ -75,7 +71,15 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
     float prev_bsdf_pdf = INFINITY;   /* density of the sampled direction; camera rays: a delta */
     for (uint depth = 0;; ++depth) {
         Hit hit;
-        if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) break;
+        if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) {
+            /* The ray escapes: the environment, MIS-weighted against light sampling. */
+            float3 le = env_radiance(&P->environment, sc->env_texels, d);
+            if (!is_black(le)) {
+                float w = depth > 0u ? bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, environment_light_pdf(sc, d)) : 1.0f;
+                radiance += throughput * le * w;
+            }
+            break;
+        }
         Surface s = surface_at(sc->tris, sc->shading, &hit);
         const FcMaterial mat = sc->materials[s.material];
         const FcMaterial* m = &mat;
@@ -87,7 +91,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
             float w = 1.0f;
             if (depth > 0u) {
                 float light_pdf = area_light_pdf_solid_angle(&sc->lights[s.light], hit.t, dot(s.ng, wo));
-                w = power_heuristic(prev_bsdf_pdf, light_pdf);
+                w = bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, light_pdf);
             }
             radiance += throughput * le * w;
         }
@@ -134,12 +138,13 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
 __kernel void render_pass(__constant const FcRenderParams* params, __global const FcBvhNode* nodes,
                           __global const FcTriangle* tris, __global const FcTriShading* shading,
                           __global const FcMaterial* materials, __global const FcLight* lights,
-                          __global const float* light_cdf, __global float4* accum) {
+                          __global const float* light_cdf, __global const float4* env_texels,
+                          __global const float* env_dist, __global float4* accum) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
-    SceneView sc = {params, nodes, tris, shading, materials, lights, light_cdf};
+    SceneView sc = {params, nodes, tris, shading, materials, lights, light_cdf, env_texels, env_dist};
     uint pixel = y * params->width + x;
     float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
     for (uint i = 0; i < params->sample_count; ++i) {

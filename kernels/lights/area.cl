@@ -8,25 +8,6 @@
 #include "../shared/scene.h"
 #include "../util/math.cl"
 
-typedef struct {
-    float3 p;       /* point on the light */
-    float3 n;       /* unit normal of the emitting side */
-    float pdf_area; /* probability density per unit area, light choice included */
-    int light;      /* index in the light array */
-} LightSample;
-
-/* Picks a light with probability pick_pdf by binary search of the cdf
- * (light_count + 1 entries, cdf[0] = 0, cdf[light_count] = 1). */
-inline int pick_light(__global const float* cdf, uint light_count, float u) {
-    uint lo = 0, hi = light_count;   /* invariant: cdf[lo] <= u < cdf[hi] */
-    while (hi - lo > 1u) {
-        uint mid = (lo + hi) / 2u;
-        if (cdf[mid] <= u) lo = mid;
-        else hi = mid;
-    }
-    return (int)lo;
-}
-
 /* Uniform point on a triangle (the square-root parameterisation, Turk 1990):
  * barycentrics of v1 and v2. */
 inline float2 square_to_triangle(float2 u) {
@@ -38,16 +19,10 @@ inline float3 area_light_normal(__global const FcLight* l) {
     return normalize_or(cross(load3(l->e1), load3(l->e2)), (float3)(0.0f, 0.0f, 1.0f));
 }
 
-inline LightSample sample_area_light(__global const FcLight* lights, __global const float* cdf,
-                                     uint light_count, float u_pick, float2 u_point) {
-    LightSample s;
-    s.light = pick_light(cdf, light_count, u_pick);
-    __global const FcLight* l = &lights[s.light];
-    float2 b = square_to_triangle(u_point);
-    s.p = load3(l->p0) + b.x * load3(l->e1) + b.y * load3(l->e2);
-    s.n = area_light_normal(l);
-    s.pdf_area = l->pick_pdf / l->area;
-    return s;
+/* A point uniformly distributed over the light's triangle. */
+inline float3 area_light_point(__global const FcLight* l, float2 u) {
+    float2 b = square_to_triangle(u);
+    return load3(l->p0) + b.x * load3(l->e1) + b.y * load3(l->e2);
 }
 
 /* Radiance leaving the light toward direction w (pointing away from the light). */

@@ -5,4 +5,5 @@
 #include "bvh.h"
 #include "scene.h"
 #include "render.h"
+#include "environment.h"
 #endif

@@ -11,7 +11,8 @@
     S(FcMaterial)            \
     S(FcLight)               \
     S(FcCamera)              \
-    S(FcRenderParams)
+    S(FcRenderParams)        \
+    S(FcEnvironment)
 
 #define FC_LAYOUT_FIELDS(F)                                                                       \
     F(FcBvhNode, a_min) F(FcBvhNode, a_index) F(FcBvhNode, a_max) F(FcBvhNode, a_count)           \
@@ -25,12 +26,16 @@
     F(FcMaterial, alpha_y) F(FcMaterial, exponent_x) F(FcMaterial, exponent_y) F(FcMaterial, ior) \
     F(FcMaterial, roughness) F(FcMaterial, flags) F(FcMaterial, sampling)                         \
     F(FcLight, p0) F(FcLight, type) F(FcLight, e1) F(FcLight, prim) F(FcLight, e2)                \
-    F(FcLight, area) F(FcLight, pick_pdf)                                                         \
+    F(FcLight, area) F(FcLight, color) F(FcLight, pick_pdf) F(FcLight, cos_inner)                 \
+    F(FcLight, cos_outer)                                                                         \
     F(FcCamera, eye) F(FcCamera, projection) F(FcCamera, forward) F(FcCamera, right)              \
     F(FcCamera, up)                                                                               \
     F(FcRenderParams, camera) F(FcRenderParams, width) F(FcRenderParams, height)                  \
     F(FcRenderParams, sample_begin) F(FcRenderParams, sample_count) F(FcRenderParams, seed)       \
     F(FcRenderParams, max_depth) F(FcRenderParams, rr_depth) F(FcRenderParams, light_count)       \
-    F(FcRenderParams, row_begin) F(FcRenderParams, row_count)
+    F(FcRenderParams, row_begin) F(FcRenderParams, row_count) F(FcRenderParams, environment)      \
+    F(FcRenderParams, environment_light) F(FcRenderParams, strategy)                              \
+    F(FcEnvironment, width) F(FcEnvironment, height) F(FcEnvironment, enabled)                    \
+    F(FcEnvironment, scale) F(FcEnvironment, total) F(FcEnvironment, to_map)
 
 #endif

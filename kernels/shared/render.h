@@ -4,9 +4,17 @@
 #define FACET_SHARED_RENDER_H
 
 #include "types.h"
+#include "environment.h"
 
 #define FC_PROJECTION_PERSPECTIVE 0
 #define FC_PROJECTION_ORTHOGRAPHIC 1
+
+/* How light from area lights and the environment is estimated (punctual lights are
+ * always sampled: nothing else can reach them). MIS is the default; the single
+ * strategies exist to measure and test them. */
+#define FC_STRATEGY_MIS 0     /* light sampling + BSDF sampling, power heuristic */
+#define FC_STRATEGY_LIGHT 1   /* light sampling only */
+#define FC_STRATEGY_BSDF 2    /* BSDF sampling only */
 
 /* A pinhole or orthographic camera. `right` and `up` span half the image plane:
  * for a perspective camera at distance 1 along `forward` (so |up| = tan(fov_y / 2)),
@@ -39,11 +47,12 @@ typedef struct FcRenderParams {
     fc_uint light_count;
     fc_uint row_begin;
     fc_uint row_count;
-    fc_uint pad0;
-    fc_uint pad1;
+    fc_int environment_light;   /* index of the FC_LIGHT_ENVIRONMENT light, or -1 */
+    fc_uint strategy;           /* FC_STRATEGY_*: how direct light is estimated */
+    FcEnvironment environment;
 } FcRenderParams;
 
 FC_STATIC_ASSERT(sizeof(FcCamera) == 64, "FcCamera is 64 bytes");
-FC_STATIC_ASSERT(sizeof(FcRenderParams) == 112, "FcRenderParams is 112 bytes");
+FC_STATIC_ASSERT(sizeof(FcRenderParams) == 192, "FcRenderParams is 192 bytes");
 
 #endif

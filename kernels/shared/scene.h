@@ -20,12 +20,25 @@ typedef struct FcTriShading {
 
 /* Light types (FcLight.type). */
 #define FC_LIGHT_AREA_TRIANGLE 0
+#define FC_LIGHT_POINT 1
+#define FC_LIGHT_SPOT 2
+#define FC_LIGHT_DIRECTIONAL 3
+#define FC_LIGHT_ENVIRONMENT 4
 
-/* A light. An area light is one emitting triangle: `p0` a vertex, `e1`, `e2` its
- * edges, ordered so that cross(e1, e2) points to the emitting side (the side its
- * shading normals face); `prim` is the triangle's scene index and `area` its area.
- * `pick_pdf` is the probability that light selection picks this light, in
- * proportion to emitted power (host/scene/scene.cpp, build_lights). */
+/* A light (docs/lights.md gives the units).
+ * - Area light: one emitting triangle: `p0` a vertex, `e1`, `e2` its edges, ordered so
+ *   that cross(e1, e2) points to the emitting side (the side its shading normals
+ *   face); `prim` is the triangle's scene index, `area` its area; the radiance is its
+ *   material's emission.
+ * - Point and spot lights: position `p0`; spot axis `e1` (unit), cone cosines
+ *   cos_inner >= cos_outer with a smoothstep falloff between. `color` is Hoffman's
+ *   c_light at distance 1: the radiance of a white Lambertian surface facing the light
+ *   there, so the irradiance is pi * color / d^2.
+ * - Directional light: `e1` is the unit direction the light travels; `color` is
+ *   c_light (irradiance pi * color at normal incidence).
+ * - Environment: the one FcEnvironment of the scene (kernels/shared/environment.h).
+ * `pick_pdf` is the probability that light selection picks this light, in proportion to
+ * an estimate of its power (host/scene/lights.cpp). */
 typedef struct FcLight {
     float p0[3];
     fc_int type;
@@ -33,11 +46,14 @@ typedef struct FcLight {
     fc_int prim;
     float e2[3];
     float area;
+    float color[3];
     float pick_pdf;
-    float pad0[3];
+    float cos_inner;
+    float cos_outer;
+    float pad0[2];
 } FcLight;
 
 FC_STATIC_ASSERT(sizeof(FcTriShading) == 48, "FcTriShading is 48 bytes");
-FC_STATIC_ASSERT(sizeof(FcLight) == 64, "FcLight is 64 bytes");
+FC_STATIC_ASSERT(sizeof(FcLight) == 80, "FcLight is 80 bytes");
 
 #endif

@@ -1,0 +1,189 @@
+// Environment maps: loading, sanitising and the sampling distribution
+// (environment.hpp documents the buffers, docs/environment.md the reasons).
+#include "scene/environment.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "error.hpp"
+#include "film/image_io.hpp"
+
+namespace facet {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double luminance(double r, double g, double b) { return 0.2126 * r + 0.7152 * g + 0.0722 * b; }
+
+// Solid angle of one texel of row y (all texels of a row are equal).
+double texel_solid_angle(int y, int width, int height) {
+    return 2.0 * kPi / width * (std::cos(kPi * y / height) - std::cos(kPi * (y + 1) / height));
+}
+
+void check_scale(const glm::vec3& s, const std::string& what) {
+    for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(s[c]) || s[c] < 0.0f)
+            throw Error(fmt::format("{}: the environment's scale ({}, {}, {}) must be finite and >= 0", what, s.x,
+                                    s.y, s.z));
+}
+
+// Sets negative, NaN and infinite channels to 0; warns with the count and the change
+// in energy (luminance x solid angle) relative to the map after the change.
+void sanitise(int width, int height, std::vector<float>& rgb, const std::string& name,
+              std::vector<std::string>& warnings) {
+    static const double kWeight[3] = {0.2126, 0.7152, 0.0722};
+    long long bad = 0, non_finite = 0;
+    double removed = 0.0, kept = 0.0;
+    for (int y = 0; y < height; ++y) {
+        const double omega = texel_solid_angle(y, width, height);
+        for (int x = 0; x < width; ++x) {
+            float* t = &rgb[3 * (std::size_t(y) * width + x)];
+            bool changed = false, inf_nan = false;
+            for (int c = 0; c < 3; ++c) {
+                if (std::isfinite(t[c]) && t[c] >= 0.0f) {
+                    kept += kWeight[c] * double(t[c]) * omega;
+                    continue;
+                }
+                if (std::isfinite(t[c])) removed += kWeight[c] * -double(t[c]) * omega;
+                else inf_nan = true;
+                t[c] = 0.0f;
+                changed = true;
+            }
+            bad += changed ? 1 : 0;
+            non_finite += inf_nan ? 1 : 0;
+        }
+    }
+    if (bad == 0) return;
+    std::string msg = fmt::format("{}: {} texels were negative, NaN or infinite and were set to 0 ({:.3g}% of the "
+                                  "map's energy changed",
+                                  name, bad, kept > 0.0 ? 100.0 * removed / kept : 100.0);
+    if (non_finite > 0) msg += fmt::format("; {} of them NaN or infinite, not counted in the energy", non_finite);
+    warnings.push_back(msg + ")");
+}
+
+}  // namespace
+
+void set_environment_rotation(FcEnvironment& params, const glm::mat3& m) {
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) params.to_map[r][c] = m[c][r];   // glm is column-major
+        params.to_map[r][3] = 0.0f;
+    }
+}
+
+void set_environment_rotation(EnvironmentMap& env, const glm::mat3& world_to_map) {
+    set_environment_rotation(env.params, world_to_map);
+}
+
+void set_environment_scale(EnvironmentMap& env, const glm::vec3& scale) {
+    check_scale(scale, "environment");
+    for (int c = 0; c < 3; ++c) env.params.scale[c] *= scale[c];
+    build_environment_distribution(env);
+}
+
+EnvironmentMap no_environment() {
+    EnvironmentMap env;
+    env.params.enabled = 0;
+    set_environment_rotation(env.params, glm::mat3(1.0f));
+    return env;
+}
+
+EnvironmentMap constant_environment(const glm::vec3& radiance) {
+    check_scale(radiance, "constant environment");
+    EnvironmentMap env;
+    env.params.enabled = 1;
+    for (int c = 0; c < 3; ++c) env.params.scale[c] = radiance[c];
+    set_environment_rotation(env.params, glm::mat3(1.0f));
+    build_environment_distribution(env);
+    return env;
+}
+
+void build_environment_distribution(EnvironmentMap& env) {
+    FcEnvironment& p = env.params;
+    const double sr = p.scale[0], sg = p.scale[1], sb = p.scale[2];
+    if (p.width == 0) {
+        env.distribution.assign(1, 0.0f);
+        p.total = 0.0f;
+        env.mean_luminance = p.enabled ? luminance(sr, sg, sb) : 0.0;
+        return;
+    }
+    const int w = p.width, h = p.height;
+    env.distribution.assign(std::size_t(h + 1) + std::size_t(h) * (w + 1), 0.0f);
+    float* marginal = env.distribution.data();
+    std::vector<double> row_sum(h, 0.0), f(w);
+    double mean = 0.0;
+    for (int y = 0; y < h; ++y) {
+        const double sin_theta = std::sin(kPi * (y + 0.5) / h);
+        const double omega = texel_solid_angle(y, w, h);
+        float* cond = marginal + (h + 1) + std::size_t(y) * (w + 1);
+        double sum = 0.0;
+        for (int x = 0; x < w; ++x) {
+            const float* t = &env.texels[4 * (std::size_t(y) * w + x)];
+            const double lum = luminance(double(t[0]) * sr, double(t[1]) * sg, double(t[2]) * sb);
+            mean += lum * omega;
+            f[x] = lum * sin_theta;
+            sum += f[x];
+        }
+        // conditional cdf of the row (uniform when the row is black: never picked)
+        double acc = 0.0;
+        for (int x = 0; x < w; ++x) {
+            cond[x] = sum > 0.0 ? float(acc / sum) : float(double(x) / w);
+            acc += f[x];
+        }
+        cond[w] = 1.0f;
+        row_sum[y] = sum;
+    }
+    double total = 0.0;
+    for (int y = 0; y < h; ++y) total += row_sum[y];
+    double acc = 0.0;
+    for (int y = 0; y < h; ++y) {
+        marginal[y] = total > 0.0 ? float(acc / total) : float(double(y) / h);
+        acc += row_sum[y];
+    }
+    marginal[h] = 1.0f;
+    p.total = float(total / (double(w) * h));
+    env.mean_luminance = p.enabled ? mean / (4.0 * kPi) : 0.0;
+}
+
+EnvironmentMap environment_from_pixels(int width, int height, std::vector<float> rgb, const glm::vec3& scale,
+                                       const glm::mat3& world_to_map, const std::string& name,
+                                       std::vector<std::string>& warnings) {
+    check_scale(scale, name);
+    if (width < 1 || height < 1 || rgb.size() != std::size_t(width) * height * 3)
+        throw Error(fmt::format("{}: an environment map needs width x height x 3 floats (got {}x{}, {} floats)", name,
+                                width, height, rgb.size()));
+    if (std::size_t(width) * height > (std::size_t(1) << 28))
+        throw Error(fmt::format("{}: the map is {}x{}: at most 2^28 texels are supported", name, width, height));
+    sanitise(width, height, rgb, name, warnings);
+
+    EnvironmentMap env;
+    env.params.enabled = 1;
+    set_environment_rotation(env.params, world_to_map);
+    for (int c = 0; c < 3; ++c) env.params.scale[c] = scale[c];
+    if (width == 1 && height == 1) {
+        // one texel: the constant environment of its radiance (sampled uniformly)
+        for (int c = 0; c < 3; ++c) env.params.scale[c] = scale[c] * rgb[c];
+    } else {
+        if (width != 2 * height)
+            warnings.push_back(fmt::format("{}: the map is {}x{}, not 2:1: it is stretched onto the sphere", name,
+                                           width, height));
+        env.params.width = width;
+        env.params.height = height;
+        env.texels.assign(std::size_t(width) * height * 4, 0.0f);
+        for (std::size_t i = 0; i < std::size_t(width) * height; ++i)
+            for (int c = 0; c < 3; ++c) env.texels[4 * i + c] = rgb[3 * i + c];
+    }
+    build_environment_distribution(env);
+    const bool black = env.params.width == 0 ? env.mean_luminance <= 0.0 : !(env.params.total > 0.0f);
+    if (black) warnings.push_back(fmt::format("{}: the map is black: it lights nothing", name));
+    return env;
+}
+
+EnvironmentMap load_environment_map(const std::string& path, const glm::vec3& scale, const glm::mat3& world_to_map,
+                                    std::vector<std::string>& warnings) {
+    ImageRGB img = read_image(path);   // throws facet::Error naming the file
+    return environment_from_pixels(img.width, img.height, std::move(img.rgb), scale, world_to_map, path, warnings);
+}
+
+}  // namespace facet

@@ -1,0 +1,71 @@
+// The environment light on the host: constant radiance or an equirectangular map read
+// through OpenImageIO (EXR, Radiance .hdr, anything read_image takes), sanitised, with
+// the sampling distribution the kernels use (kernels/lights/environment.cl). The
+// direction <-> texel convention is the comment of kernels/shared/environment.h;
+// docs/environment.md explains units, sanitising and the distribution.
+//
+// Buffers uploaded to the device:
+//  - texels: 4 floats a texel (R, G, B, 0), linear radiance before `scale`, top row
+//    (theta = 0) first, width x height texels (one zero texel when width == 0).
+//  - distribution (floats), for a map of W x H texels:
+//      [0, H]                              the marginal cdf over rows: H + 1 entries,
+//                                          cdf[0] = 0, cdf[H] = 1
+//      [H + 1 + y (W + 1), ... + W]        the conditional cdf of row y: W + 1 entries,
+//                                          0 ... 1 (uniform for a row with no energy)
+//    Texel (x, y) weighs f = luminance(texel * scale) * sin(theta of row y's centre); a
+//    texel's probability is the product of its two cdf steps. params.total is the
+//    integral of f over the (u, v) square: sum(f) / (W H); 0 for a black map, whose
+//    pdf is then 0 everywhere. A constant environment has a one-float distribution (an
+//    OpenCL buffer cannot be empty).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "shared/environment.h"
+
+namespace facet {
+
+struct EnvironmentMap {
+    FcEnvironment params{};
+    std::vector<float> texels = std::vector<float>(4, 0.0f);   // 4 floats a texel
+    std::vector<float> distribution = std::vector<float>(1, 0.0f);
+    // (1 / 4pi) * integral of the luminance of the radiance (scale included) over the
+    // sphere: the mean luminance, for light selection by power.
+    double mean_luminance = 0.0;
+};
+
+// Stores the world-to-map rotation in params.to_map (rows).
+void set_environment_rotation(FcEnvironment& params, const glm::mat3& world_to_map);
+void set_environment_rotation(EnvironmentMap& env, const glm::mat3& world_to_map);
+
+// Multiplies the radiance by `scale` (finite, >= 0) and rebuilds the distribution.
+void set_environment_scale(EnvironmentMap& env, const glm::vec3& scale);
+
+// No environment: escaped rays see black, nothing is sampled.
+EnvironmentMap no_environment();
+
+// Radiance `radiance` (linear RGB, >= 0) from every direction.
+EnvironmentMap constant_environment(const glm::vec3& radiance);
+
+// A map from linear RGB pixels (3 floats a pixel, top row first). `name` prefixes the
+// warnings: texels with negative, NaN or infinite channels are set to 0 (the warning
+// says how many and how much of the energy changed); a map that is not 2:1 is stretched
+// onto the sphere (warning); a black map lights nothing (warning, pdf 0); a 1 x 1 map
+// becomes the constant environment of its texel. Throws facet::Error on a bad scale or
+// size.
+EnvironmentMap environment_from_pixels(int width, int height, std::vector<float> rgb, const glm::vec3& scale,
+                                       const glm::mat3& world_to_map, const std::string& name,
+                                       std::vector<std::string>& warnings);
+
+// Reads `path` through OpenImageIO and builds the map (environment_from_pixels).
+// Throws facet::Error naming the file when it cannot be read.
+EnvironmentMap load_environment_map(const std::string& path, const glm::vec3& scale, const glm::mat3& world_to_map,
+                                    std::vector<std::string>& warnings);
+
+// Builds params.total, the distribution and mean_luminance from the texels and scale.
+void build_environment_distribution(EnvironmentMap& env);
+
+}  // namespace facet

@@ -1,0 +1,128 @@
+// The scene's light table: every light, with the probability that next-event
+// estimation picks it, in proportion to an estimate of its emitted power:
+//   area light       pi * area * luminance(Le) (x 2 when two-sided)
+//   point light      4 pi * I, with intensity I = pi * luminance(c)
+//   spot light       2 pi (1 - (cos_inner + cos_outer) / 2) * I
+//   directional      pi * luminance(c) * pi R^2 (R: the scene's bounding radius)
+//   environment      pi * mean luminance * 4 pi R^2 (the flux onto the bounding sphere)
+// Only the ratios matter; they steer samples, never the estimate's expectation.
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "scene/scene.hpp"
+
+namespace facet {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double luminance(const float rgb[3]) {
+    return 0.2126 * double(rgb[0]) + 0.7152 * double(rgb[1]) + 0.0722 * double(rgb[2]);
+}
+
+double luminance(glm::vec3 c) { return 0.2126 * double(c.x) + 0.7152 * double(c.y) + 0.0722 * double(c.z); }
+
+void store(float out[3], glm::vec3 v) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+}
+
+// The area light of triangle t: edges ordered so that cross(e1, e2) points to the
+// side its shading normals face (the emitting side).
+FcLight triangle_light(const Scene& scene, std::size_t t, float area) {
+    const glm::vec3* v = &scene.vertices[3 * t];
+    const FcTriShading& sh = scene.shading[t];
+    glm::vec3 e1 = v[1] - v[0], e2 = v[2] - v[0];
+    const glm::vec3 shading_n = glm::vec3(sh.n0[0], sh.n0[1], sh.n0[2]) + glm::vec3(sh.n1[0], sh.n1[1], sh.n1[2]) +
+                                glm::vec3(sh.n2[0], sh.n2[1], sh.n2[2]);
+    if (glm::dot(glm::cross(e1, e2), shading_n) < 0.0f) std::swap(e1, e2);
+    FcLight light{};
+    store(light.p0, v[0]);
+    store(light.e1, e1);
+    store(light.e2, e2);
+    light.type = FC_LIGHT_AREA_TRIANGLE;
+    light.prim = static_cast<fc_int>(t);
+    light.area = area;
+    return light;
+}
+
+FcLight punctual_light(const PunctualLight& p, double* power, double radius) {
+    FcLight l{};
+    l.type = p.type;
+    l.prim = -1;
+    store(l.p0, p.position);
+    store(l.e1, glm::normalize(p.direction));
+    store(l.color, p.color);
+    l.cos_inner = std::cos(glm::radians(p.inner_degrees));
+    l.cos_outer = std::cos(glm::radians(std::max(p.outer_degrees, p.inner_degrees)));
+    if (l.cos_outer >= l.cos_inner) l.cos_outer = l.cos_inner - 1e-6f;   // a hard edge
+    double intensity = kPi * luminance(p.color);
+    if (p.type == FC_LIGHT_DIRECTIONAL) *power = intensity * kPi * radius * radius;
+    else if (p.type == FC_LIGHT_SPOT) *power = 2.0 * kPi * (1.0 - 0.5 * (double(l.cos_inner) + double(l.cos_outer))) * intensity;
+    else *power = 4.0 * kPi * intensity;
+    return l;
+}
+
+double bounding_radius(const Scene& scene) {
+    if (scene.vertices.empty()) return 1.0;
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& v : scene.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    double r = 0.5 * double(glm::length(hi - lo));
+    return r > 0.0 && std::isfinite(r) ? r : 1.0;
+}
+
+}  // namespace
+
+void build_lights(Scene& scene) {
+    scene.lights.clear();
+    scene.environment_light = -1;
+    std::vector<double> power;
+    for (std::size_t t = 0; t < scene.shading.size(); ++t) {
+        FcTriShading& sh = scene.shading[t];
+        sh.light = -1;
+        if (sh.material < 0 || static_cast<std::size_t>(sh.material) >= scene.materials.size()) continue;
+        const FcMaterial& m = scene.materials[static_cast<std::size_t>(sh.material)];
+        const double lum = luminance(m.emission);
+        if (!(lum > 0.0)) continue;
+        const glm::vec3* v = &scene.vertices[3 * t];
+        const float area = 0.5f * glm::length(glm::cross(v[1] - v[0], v[2] - v[0]));
+        if (!(area > 0.0f) || !std::isfinite(area)) continue;
+        const double sides = (m.flags & FC_MAT_TWO_SIDED_EMISSION) ? 2.0 : 1.0;
+        sh.light = static_cast<fc_int>(scene.lights.size());
+        scene.lights.push_back(triangle_light(scene, t, area));
+        power.push_back(kPi * double(area) * lum * sides);
+    }
+    const double radius = bounding_radius(scene);
+    for (const PunctualLight& p : scene.punctual_lights) {
+        double w = 0.0;
+        FcLight l = punctual_light(p, &w, radius);
+        if (!(w > 0.0) || !std::isfinite(w)) continue;
+        scene.lights.push_back(l);
+        power.push_back(w);
+    }
+    if (scene.environment.params.enabled && scene.environment.mean_luminance > 0.0) {
+        FcLight l{};
+        l.type = FC_LIGHT_ENVIRONMENT;
+        l.prim = -1;
+        scene.environment_light = static_cast<int>(scene.lights.size());
+        scene.lights.push_back(l);
+        power.push_back(kPi * scene.environment.mean_luminance * 4.0 * kPi * radius * radius);
+    }
+    double total = 0.0;
+    for (double p : power) total += p;
+    // pick_pdf is exactly the cdf step the kernel's binary search selects with.
+    scene.light_cdf.assign(1, 0.0f);
+    double running = 0.0;
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        running += power[i];
+        scene.light_cdf.push_back(i + 1 == scene.lights.size() ? 1.0f : static_cast<float>(running / total));
+    }
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        scene.lights[i].pick_pdf = scene.light_cdf[i + 1] - scene.light_cdf[i];
+}
+
+}  // namespace facet

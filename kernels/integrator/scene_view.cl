@@ -1,0 +1,20 @@
+/* Everything a kernel needs to read the scene: the constant parameters and one
+ * buffer per scene array (bound in host/render/renderer.cpp). */
+#ifndef FACET_INTEGRATOR_SCENE_VIEW_CL
+#define FACET_INTEGRATOR_SCENE_VIEW_CL
+
+#include "../shared/all.h"
+
+typedef struct {
+    __constant const FcRenderParams* params;
+    __global const FcBvhNode* nodes;
+    __global const FcTriangle* tris;
+    __global const FcTriShading* shading;
+    __global const FcMaterial* materials;
+    __global const FcLight* lights;
+    __global const float* light_cdf;
+    __global const float4* env_texels;
+    __global const float* env_dist;
+} SceneView;
+
+#endif

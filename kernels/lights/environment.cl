@@ -1,0 +1,158 @@
+/* The environment light: radiance from infinitely far away, seen by escaping rays and
+ * sampled by next-event estimation. Layout and direction convention: FcEnvironment in
+ * kernels/shared/environment.h; the host side (loading, sanitising, the distribution) is
+ * host/scene/environment.cpp; docs/environment.md explains the whole.
+ *
+ * - Constant environment (width == 0): radiance `scale` from every direction, sampled
+ *   uniformly over the sphere, pdf 1 / (4 pi) (0 when the radiance is black).
+ * - Equirectangular map: nearest-texel lookup, so the radiance is piecewise constant
+ *   over the texels, exactly like the sampling density. Sampling picks a texel from a
+ *   piecewise-constant 2D distribution over luminance x sin(theta) (a marginal cdf over
+ *   rows, a conditional cdf per row; pbrt-v3 section 14.2.4, Pharr, Jakob, Humphreys
+ *   2016) and a uniform point in it. The density in (u, v) converts to solid angle with
+ *   the Jacobian of the equirectangular map, d(omega) = 2 pi^2 sin(theta) du dv:
+ *     p(omega) = p(u, v) / (2 pi^2 sin(theta)).
+ *   Directions at the poles (sin(theta) == 0) get pdf 0.
+ *
+ * Every probability is derived from differences of the stored float cdfs, so a texel
+ * the float binary search can never pick reports pdf 0: env_pdf is the density of
+ * env_sample as it runs, not of the exact real-number distribution. env_sample returns
+ * the radiance and pdf of the direction it produced through the same lookup as
+ * env_radiance and env_pdf, so the three always agree bit for bit. */
+#ifndef FACET_LIGHTS_ENVIRONMENT_CL
+#define FACET_LIGHTS_ENVIRONMENT_CL
+
+#include "../shared/environment.h"
+#include "../util/math.cl"
+
+#define FC_INV_2PI 0.15915494309189533577f
+#define FC_INV_4PI 0.07957747154594766788f
+#define FC_INV_2PI2 0.05066059182116888572f /* 1 / (2 pi^2) */
+
+/* World direction to the map's frame (rows of to_map). */
+inline float3 env_dir_to_map(__constant const FcEnvironment* env, float3 d) {
+    return (float3)(dot(load3c(env->to_map[0]), d), dot(load3c(env->to_map[1]), d),
+                    dot(load3c(env->to_map[2]), d));
+}
+
+/* The map's frame back to world (the transpose: to_map is a rotation). */
+inline float3 env_map_to_dir(__constant const FcEnvironment* env, float3 m) {
+    return m.x * load3c(env->to_map[0]) + m.y * load3c(env->to_map[1]) + m.z * load3c(env->to_map[2]);
+}
+
+/* Map-frame direction to (u, v) in [0, 1]^2:
+ * d = (sin theta sin phi, cos theta, -sin theta cos phi), u = phi / 2pi, v = theta / pi. */
+inline float2 env_map_dir_to_uv(float3 m) {
+    float phi = atan2(m.x, -m.z);
+    if (phi < 0.0f) phi += 2.0f * FC_PI;
+    return (float2)(phi * FC_INV_2PI, acos(clamp(m.y, -1.0f, 1.0f)) * FC_INV_PI);
+}
+
+inline float3 env_uv_to_map_dir(float2 uv) {
+    float phi = 2.0f * FC_PI * uv.x;
+    float theta = FC_PI * uv.y;
+    float st = sin(theta);
+    return (float3)(st * sin(phi), cos(theta), -st * cos(phi));
+}
+
+/* The texel (x, y) holding (u, v), clamped into the map. */
+inline int2 env_texel(__constant const FcEnvironment* env, float2 uv) {
+    int x = clamp((int)(uv.x * (float)env->width), 0, env->width - 1);
+    int y = clamp((int)(uv.y * (float)env->height), 0, env->height - 1);
+    return (int2)(x, y);
+}
+
+/* The texel world direction `dir` falls in, and sin(theta) in the map's frame (from
+ * the horizontal component: accurate near the poles). */
+inline int2 env_locate(__constant const FcEnvironment* env, float3 dir, float* sin_theta) {
+    float3 m = env_dir_to_map(env, dir);
+    *sin_theta = sqrt(m.x * m.x + m.z * m.z);
+    return env_texel(env, env_map_dir_to_uv(m));
+}
+
+/* Radiance arriving from world direction `dir` (unit, pointing away from the scene). */
+inline float3 env_radiance(__constant const FcEnvironment* env, __global const float4* texels, float3 dir) {
+    if (!env->enabled) return (float3)(0.0f);
+    if (env->width == 0) return load3c(env->scale);
+    float sin_theta;
+    int2 t = env_locate(env, dir, &sin_theta);
+    return texels[t.y * env->width + t.x].xyz * load3c(env->scale);
+}
+
+/* The solid-angle pdf of texel t at sin(theta) `sin_theta` (0 at the poles). */
+inline float env_texel_pdf(__constant const FcEnvironment* env, __global const float* dist, int2 t,
+                           float sin_theta) {
+    if (!(env->total > 0.0f) || !(sin_theta > 0.0f)) return 0.0f;
+    __global const float* cond = dist + (env->height + 1) + t.y * (env->width + 1);
+    float p_row = dist[t.y + 1] - dist[t.y];
+    float p_col = cond[t.x + 1] - cond[t.x];
+    float pdf = p_row * (float)env->height * p_col * (float)env->width * FC_INV_2PI2 / sin_theta;
+    return isfinite(pdf) ? pdf : 0.0f;
+}
+
+/* Solid-angle density with which env_sample produces `dir`. The texel buffer is not
+ * needed: the density lives in the cdfs. */
+inline float env_pdf(__constant const FcEnvironment* env, __global const float* dist, float3 dir) {
+    if (!env->enabled) return 0.0f;
+    if (env->width == 0) return is_black(load3c(env->scale)) ? 0.0f : FC_INV_4PI;
+    float sin_theta;
+    int2 t = env_locate(env, dir, &sin_theta);
+    return env_texel_pdf(env, dist, t, sin_theta);
+}
+
+/* The interval i of cdf[0..n] (cdf[0] = 0, cdf[n] = 1, non-decreasing) with
+ * cdf[i] <= u < cdf[i + 1]: never an interval of zero width. */
+inline int env_find_interval(__global const float* cdf, int n, float u) {
+    int lo = 0, hi = n;
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (cdf[mid] <= u) lo = mid;
+        else hi = mid;
+    }
+    return lo;
+}
+
+/* u's position inside interval i of cdf, in [0, 1). */
+inline float env_remap(__global const float* cdf, int i, float u) {
+    float w = cdf[i + 1] - cdf[i];
+    float t = (w > 0.0f) ? (u - cdf[i]) / w : 0.5f;
+    return clamp(t, 0.0f, FC_ONE_MINUS_EPSILON);
+}
+
+/* Samples a direction toward the environment: returns the radiance along it, `dir`
+ * (world, unit) and its solid-angle pdf, which is 0 when nothing can be sampled (no
+ * environment, a black map, or a direction that landed exactly on a pole). */
+inline float3 env_sample(__constant const FcEnvironment* env, __global const float4* texels,
+                         __global const float* dist, float2 u, float3* dir, float* pdf) {
+    u = clamp(u, 0.0f, FC_ONE_MINUS_EPSILON);
+    *dir = (float3)(0.0f, 1.0f, 0.0f);
+    *pdf = 0.0f;
+    if (!env->enabled) return (float3)(0.0f);
+    if (env->width == 0) {
+        if (is_black(load3c(env->scale))) return (float3)(0.0f);
+        /* uniform sphere */
+        float z = 1.0f - 2.0f * u.x;
+        float r = safe_sqrt(1.0f - z * z);
+        float phi = 2.0f * FC_PI * u.y;
+        *dir = (float3)(r * cos(phi), r * sin(phi), z);
+        *pdf = FC_INV_4PI;
+        return load3c(env->scale);
+    }
+    if (!(env->total > 0.0f)) return (float3)(0.0f);
+    /* row from the marginal cdf, column from the row's conditional cdf */
+    int w = env->width, h = env->height;
+    int y = env_find_interval(dist, h, u.y);
+    float dv = env_remap(dist, y, u.y);
+    __global const float* cond = dist + (h + 1) + y * (w + 1);
+    int x = env_find_interval(cond, w, u.x);
+    float du = env_remap(cond, x, u.x);
+    float2 uv = (float2)(((float)x + du) / (float)w, ((float)y + dv) / (float)h);
+    *dir = normalize_or(env_map_to_dir(env, env_uv_to_map_dir(uv)), (float3)(0.0f, 1.0f, 0.0f));
+    /* radiance and pdf of the direction produced, by the lookup of env_radiance/env_pdf */
+    float sin_theta;
+    int2 t = env_locate(env, *dir, &sin_theta);
+    *pdf = env_texel_pdf(env, dist, t, sin_theta);
+    return texels[t.y * w + t.x].xyz * load3c(env->scale);
+}
+
+#endif

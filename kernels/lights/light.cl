@@ -1,0 +1,72 @@
+/* Light selection and sampling for next-event estimation, over every light type:
+ * area (area.cl), point, spot and directional (punctual.cl) and the environment
+ * (environment.cl). A light is picked with probability pick_pdf (in proportion to an
+ * estimate of its power), then sampled. */
+#ifndef FACET_LIGHTS_LIGHT_CL
+#define FACET_LIGHTS_LIGHT_CL
+
+#include "../integrator/scene_view.cl"
+#include "area.cl"
+#include "environment.cl"
+#include "punctual.cl"
+
+typedef struct {
+    float3 wi;      /* unit direction from the shading point to the light */
+    float dist;     /* distance to the light; INFINITY for directional and environment */
+    float3 li;      /* radiance arriving along wi; for delta lights the irradiance at normal incidence */
+    float pdf;      /* solid-angle density, pick included; delta lights: the pick probability */
+    int delta;      /* a punctual light: no MIS, no BSDF strategy can reach it */
+    float3 point;   /* area lights: the sampled point, and the light's normal (for the shadow ray) */
+    float3 normal;
+} LightSample;
+
+/* Picks a light with probability pick_pdf by binary search of the cdf
+ * (light_count + 1 entries, cdf[0] = 0, cdf[light_count] = 1). */
+inline int pick_light(__global const float* cdf, uint light_count, float u) {
+    uint lo = 0, hi = light_count;   /* invariant: cdf[lo] <= u < cdf[hi] */
+    while (hi - lo > 1u) {
+        uint mid = (lo + hi) / 2u;
+        if (cdf[mid] <= u) lo = mid;
+        else hi = mid;
+    }
+    return (int)lo;
+}
+
+/* Samples a light as seen from point p. Returns false when the sample carries nothing. */
+inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, LightSample* ls) {
+    uint count = sc->params->light_count;
+    if (count == 0u) return false;
+    __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, count, u_pick)];
+    ls->delta = 0;
+    if (l->type == FC_LIGHT_AREA_TRIANGLE) {
+        ls->point = area_light_point(l, u);
+        ls->normal = area_light_normal(l);
+        float3 to = ls->point - p;
+        float d2 = dot(to, to);
+        if (!(d2 > 0.0f)) return false;
+        ls->dist = sqrt(d2);
+        ls->wi = to / ls->dist;
+        __global const FcMaterial* m = &sc->materials[sc->shading[l->prim].material];
+        ls->li = area_light_radiance(load3(m->emission), m->flags, ls->normal, -ls->wi);
+        ls->pdf = area_light_pdf_solid_angle(l, ls->dist, dot(ls->normal, ls->wi));
+    } else if (l->type == FC_LIGHT_ENVIRONMENT) {
+        float pdf;
+        ls->li = env_sample(&sc->params->environment, sc->env_texels, sc->env_dist, u, &ls->wi, &pdf);
+        ls->dist = INFINITY;
+        ls->pdf = pdf * l->pick_pdf;
+    } else {
+        ls->li = punctual_light_irradiance(l, p, &ls->wi, &ls->dist);
+        ls->pdf = l->pick_pdf;
+        ls->delta = 1;
+    }
+    return ls->pdf > 0.0f && isfinite(ls->pdf) && !is_black(ls->li) && all_finite(ls->li);
+}
+
+/* Density with which sample_light reaches the environment along wi (for MIS). */
+inline float environment_light_pdf(const SceneView* sc, float3 wi) {
+    int index = sc->params->environment_light;
+    if (index < 0) return 0.0f;
+    return sc->lights[index].pick_pdf * env_pdf(&sc->params->environment, sc->env_dist, wi);
+}
+
+#endif

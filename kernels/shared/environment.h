@@ -1,0 +1,33 @@
+/* The environment: light from infinitely far away, seen by rays that escape the
+ * scene and sampled by next-event estimation (kernels/lights/environment.cl).
+ *
+ * An equirectangular map (width x height texels, linear RGB), or a constant
+ * radiance when width == height == 0. Directions map to the image as
+ *   u = phi / 2pi,  v = theta / pi,  with  d = (sin theta sin phi, cos theta, -sin theta cos phi)
+ * in the map's own frame, after the world-to-map rotation `to_map` (rows of a 3x3
+ * matrix): +y up (v = 0 the top row), the centre of the image (u = 0.5) looking along +z,
+ * u growing to the right of a viewer inside the sphere looking at the centre (toward -x,
+ * right-handed), so the map is seen unmirrored. Texel (x, y) covers
+ * [x/W, (x+1)/W) x [y/H, (y+1)/H); lookups are nearest-texel. Radiance = texel * scale.
+ * Sampling uses a piecewise-constant 2D distribution over luminance x sin(theta):
+ * a marginal cdf over rows (H + 1 floats) then a conditional cdf per row (W + 1 floats
+ * each) in the distribution buffer (host/scene/environment.hpp documents the layout;
+ * docs/environment.md the whole). */
+#ifndef FACET_SHARED_ENVIRONMENT_H
+#define FACET_SHARED_ENVIRONMENT_H
+
+#include "types.h"
+
+typedef struct FcEnvironment {
+    fc_int width;        /* 0: no map (constant radiance, or no environment at all) */
+    fc_int height;
+    fc_int enabled;      /* 0: no environment (escaped rays see black) */
+    fc_int pad0;
+    float scale[3];      /* radiance multiplier (the constant radiance when width == 0) */
+    float total;         /* integral of luminance x sin(theta) over the map's (u, v) square */
+    float to_map[3][4];  /* world-to-map rotation, row-major, 4th column unused */
+} FcEnvironment;
+
+FC_STATIC_ASSERT(sizeof(FcEnvironment) == 80, "FcEnvironment is 80 bytes");
+
+#endif

@@ -1,0 +1,86 @@
+/* Test kernels for tests/environment_test.cpp and tests/environment_chi2_test.cpp:
+ * batches of env_sample / env_radiance / env_pdf, the chi-square binning of samples in
+ * the map's texel grid, the rotation round trip and a throughput loop. */
+#include "../lights/environment.cl"
+#include "../util/rng.cl"
+
+/* One sample per work-item: (dir, pdf) and radiance as returned by env_sample, and
+ * (env_radiance, env_pdf) evaluated again at the sampled direction. */
+__kernel void env_sample_batch(__constant const FcEnvironment* env, __global const float4* texels,
+                               __global const float* dist, uint seed, __global float4* dir_pdf,
+                               __global float4* radiance, __global float4* eval) {
+    uint i = (uint)get_global_id(0);
+    Rng rng = rng_init(seed, i, 0x656eu);
+    float3 dir;
+    float pdf;
+    float3 L = env_sample(env, texels, dist, rng_float2(&rng), &dir, &pdf);
+    dir_pdf[i] = (float4)(dir, pdf);
+    radiance[i] = (float4)(L, 0.0f);
+    eval[i] = (float4)(env_radiance(env, texels, dir), env_pdf(env, dist, dir));
+}
+
+/* (env_radiance, env_pdf) at each direction of `dirs` (xyz). */
+__kernel void env_eval_batch(__constant const FcEnvironment* env, __global const float4* texels,
+                             __global const float* dist, __global const float4* dirs, __global float4* out) {
+    uint i = (uint)get_global_id(0);
+    float3 d = dirs[i].xyz;
+    out[i] = (float4)(env_radiance(env, texels, d), env_pdf(env, dist, d));
+}
+
+/* `per_item` samples per work-item, each binned by its texel in blocks of bu x bv
+ * texels: bin = (y / bv) * (width / bu) + x / bu, with `cells` = the number of bins for
+ * a refused sample (pdf 0) and cells + 1 for an invalid one (non-finite or negative).
+ * The texel is found from the map-frame direction by the documented convention. */
+__kernel void env_sample_bins(__constant const FcEnvironment* env, __global const float4* texels,
+                              __global const float* dist, uint seed, uint per_item, int bu, int bv,
+                              __global uint* bins) {
+    uint g = (uint)get_global_id(0);
+    Rng rng = rng_init(seed, g, 0x6368u);
+    int w = env->width, h = env->height;
+    uint cells = (uint)((w / bu) * (h / bv));
+    for (uint k = 0; k < per_item; ++k) {
+        float3 dir;
+        float pdf;
+        float3 L = env_sample(env, texels, dist, rng_float2(&rng), &dir, &pdf);
+        uint bin;
+        if (!isfinite(pdf) || pdf < 0.0f || !all_finite(L) || !all_finite(dir) || L.x < 0.0f || L.y < 0.0f ||
+            L.z < 0.0f) {
+            bin = cells + 1u;
+        } else if (pdf == 0.0f) {
+            bin = cells;
+        } else {
+            float3 m = env_dir_to_map(env, dir);
+            float phi = atan2(m.x, -m.z);
+            phi = phi < 0.0f ? phi + 2.0f * FC_PI : phi;
+            int x = clamp((int)(phi / (2.0f * FC_PI) * (float)w), 0, w - 1);
+            int y = clamp((int)(acos(clamp(m.y, -1.0f, 1.0f)) / FC_PI * (float)h), 0, h - 1);
+            bin = (uint)((y / bv) * (w / bu) + x / bu);
+        }
+        bins[g * per_item + k] = bin;
+    }
+}
+
+/* World -> map -> world and world -> (u, v) -> world: the larger error of the two. */
+__kernel void env_round_trip(__constant const FcEnvironment* env, __global const float4* dirs, __global float* err) {
+    uint i = (uint)get_global_id(0);
+    float3 d = dirs[i].xyz;
+    float3 m = env_dir_to_map(env, d);
+    float3 back = env_map_to_dir(env, m);
+    float3 via_uv = env_map_to_dir(env, env_uv_to_map_dir(env_map_dir_to_uv(m)));
+    err[i] = fmax(length(back - d), length(via_uv - d));
+}
+
+/* Throughput: `per_item` env_sample calls per work-item, summed so none is elided. */
+__kernel void env_sample_throughput(__constant const FcEnvironment* env, __global const float4* texels,
+                                    __global const float* dist, uint seed, uint per_item, __global float* out) {
+    uint g = (uint)get_global_id(0);
+    Rng rng = rng_init(seed, g, 0x7470u);
+    float sum = 0.0f;
+    for (uint k = 0; k < per_item; ++k) {
+        float3 dir;
+        float pdf;
+        float3 L = env_sample(env, texels, dist, rng_float2(&rng), &dir, &pdf);
+        sum += (pdf > 0.0f) ? luminance(L) / pdf + dir.x : 0.0f;
+    }
+    out[g] = sum;
+}
