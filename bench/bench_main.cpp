@@ -227,6 +227,7 @@ int run(int argc, char** argv) {
         all["scenes"].push_back(j);
     }
     all["bsdfs"] = bench_bsdfs(ctx, quick);
+    all["ibl"] = bench_ibl(ctx, assets, quick);
     if (!json_out.empty()) std::ofstream(json_out) << all.dump(2) << "\n";
     return 0;
 }

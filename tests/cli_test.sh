@@ -45,6 +45,12 @@ expect malformed-obj 1 "broken\.obj:2" -- "$FACET" render "$tmp/broken.obj" "${s
 expect bad-spp 2 "spp" -- "$FACET" render "$SCENES/cornell_box.json" --spp 0
 expect bad-device 1 "no device" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --device no-such-device
 expect unknown-option 2 "--frobnicate" -- "$FACET" render "$SCENES/cornell_box.json" --frobnicate
+expect too-big-for-device 1 "MiB" -- "$FACET" render "$SCENES/cornell_box.json" --width 16384 --height 16384 \
+    --spp 1 --quiet --out "$tmp/huge.exr"
+expect unknown-strategy 2 "strategy" -- "$FACET" render "$SCENES/cornell_box.json" --strategy sometimes
+expect sky 0 "wrote" -- "$FACET" sky "$tmp/sky.exr" --width 64
+expect render-sky-scene 0 "wrote" -- "$FACET" render "$SCENES/spheres_sky.json" "${small[@]}" --out "$tmp/sky_render.exr"
+expect render-material-grid 0 "wrote" -- "$FACET" render "$SCENES/material_grid.json" "${small[@]}" --out "$tmp/grid.exr"
 expect unwritable-output 1 "cb\.exr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --out /proc/cb.exr
 
 # Error against run time: a report (CSV + JSON + SVG) beside the image, with and

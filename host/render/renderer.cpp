@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <initializer_list>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -21,6 +23,23 @@ cl::Buffer upload(const cl::Context& ctx, const std::vector<T>& v) {
     return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, copy.size() * sizeof(T), copy.data());
 }
 
+// Fails before any upload when a buffer exceeds the device's largest allocation or all
+// of them its global memory, saying what the scene needs and what the device has.
+void check_device_memory(const DeviceDesc& dev, std::initializer_list<std::pair<const char*, std::size_t>> buffers) {
+    const double mib = 1024.0 * 1024.0;
+    std::size_t total = 0;
+    for (const auto& [name, bytes] : buffers) {
+        total += bytes;
+        if (bytes > dev.max_alloc)
+            throw Error(fmt::format("the scene's {} need {:.1f} MiB in one buffer, but {} allows at most {:.1f} MiB "
+                                    "per allocation",
+                                    name, double(bytes) / mib, dev.name, double(dev.max_alloc) / mib));
+    }
+    if (total > dev.global_mem)
+        throw Error(fmt::format("out of device memory: the scene needs {:.1f} MiB, {} has {:.1f} MiB", double(total) / mib,
+                                dev.name, double(dev.global_mem) / mib));
+}
+
 }  // namespace
 
 Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
@@ -36,6 +55,12 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
     params_.environment = scene.environment.params;
     params_.environment_light = scene.environment_light;
     params_.strategy = std::uint32_t(scene.settings.strategy);
+
+    check_device_memory(ctx.desc(), {{"BVH nodes", bvh.nodes.size() * sizeof(FcBvhNode)},
+                                     {"triangles", bvh.triangles.size() * sizeof(FcTriangle)},
+                                     {"shading data", scene.shading.size() * sizeof(FcTriShading)},
+                                     {"environment map", scene.environment.texels.size() * sizeof(float)},
+                                     {"image", 2 * pixel_count() * sizeof(cl_float4)}});
 
     ProgramBuild build = build_program(ctx, "kernels/integrator/path.cl");
     stats_.compile_seconds = build.seconds;

@@ -1,5 +1,7 @@
 #include "scene/scene.hpp"
 
+#include "scene/material.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,29 +13,8 @@
 namespace facet {
 
 FcMaterial default_material() {
-    FcMaterial m{};
-    for (int c = 0; c < 3; ++c) {
-        m.diffuse[c] = 0.8f;
-        m.specular[c] = 0.0f;
-        m.emission[c] = 0.0f;
-    }
-    m.diffuse_model = FC_DIFFUSE_LAMBERT;
-    m.specular_model = FC_SPECULAR_NONE;
-    m.ndf = FC_NDF_GGX;
-    m.geometry = FC_G_SMITH_CORRELATED;
-    m.fresnel = FC_FRESNEL_SCHLICK;
-    m.sampling = FC_SAMPLE_VISIBLE;
-    m.alpha_x = 0.5f;
-    m.alpha_y = 0.5f;
-    m.exponent_x = 6.0f;   // 2 / alpha^2 - 2 (Walter 2007)
-    m.exponent_y = 6.0f;
-    m.roughness = 0.0f;
-    m.ior = 1.5f;
-    for (int c = 0; c < 3; ++c) {
-        m.eta[c] = 1.5f;
-        m.k[c] = 0.0f;
-    }
-    m.flags = 0u;
+    FcMaterial m = make_material("lambert");
+    for (int c = 0; c < 3; ++c) m.diffuse[c] = 0.8f;
     return m;
 }
 
