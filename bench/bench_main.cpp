@@ -201,6 +201,8 @@ int run(int argc, char** argv) {
     app.add_option("--assets", assets, "Folder of the shared assets (skipped when absent)");
     app.add_option("--json", json_out, "Also write the figures as JSON to this file");
     app.add_flag("--quick", quick, "Smaller images and fewer repetitions");
+    std::string only;
+    app.add_option("--only", only, "Run one section: trace, bsdf, ibl or specialisation");
     CLI11_PARSE(app, argc, argv);
 
     ClContext ctx = ClContext::create(device);
@@ -212,11 +214,17 @@ int run(int argc, char** argv) {
         else fmt::print("skipping {}: {} not found\n", name, p.string());
     }
     fmt::print("device: {} / {} ({})\n\n", ctx.desc().platform, ctx.desc().name, ctx.desc().driver);
-    fmt::print("| scene | triangles | BVH build Mtris/s (1 thread) | SAH cost | bytes/tri | camera Mrays/s | diffuse Mrays/s | diffuse any-hit Mrays/s | render Msamples/s | kernel build s |\n");
-    fmt::print("|---|---|---|---|---|---|---|---|---|---|\n");
     nlohmann::json all;
     all["device"] = ctx.desc().platform + " / " + ctx.desc().name;
+    if (!only.empty() && only != "trace" && only != "bsdf" && only != "ibl" && only != "specialisation")
+        throw Error(fmt::format("--only {}: expected trace, bsdf, ibl or specialisation", only));
+    auto wanted = [&](const char* section) { return only.empty() || only == section; };
+    if (wanted("trace")) {
+        fmt::print("| scene | triangles | BVH build Mtris/s (1 thread) | SAH cost | bytes/tri | camera Mrays/s | diffuse Mrays/s | diffuse any-hit Mrays/s | render Msamples/s | kernel build s |\n");
+        fmt::print("|---|---|---|---|---|---|---|---|---|---|\n");
+    }
     for (const BenchCase& c : cases) {
+        if (!wanted("trace")) break;
         nlohmann::json j = bench_scene(ctx, c, quick);
         fmt::print("| {} | {} | {:.2f} | {:.1f} | {:.0f} | {:.2f} | {:.2f} | {:.2f} | {:.3f} | {:.2f} |\n", c.name,
                    j["triangles"].get<std::size_t>(), j["bvh_mtris_per_s"].get<double>(), j["bvh_sah_cost"].get<double>(),
@@ -226,8 +234,9 @@ int run(int argc, char** argv) {
         std::fflush(stdout);
         all["scenes"].push_back(j);
     }
-    all["bsdfs"] = bench_bsdfs(ctx, quick);
-    all["ibl"] = bench_ibl(ctx, assets, quick);
+    if (wanted("bsdf")) all["bsdfs"] = bench_bsdfs(ctx, quick);
+    if (wanted("ibl")) all["ibl"] = bench_ibl(ctx, assets, quick);
+    if (wanted("specialisation")) all["specialisation"] = bench_specialisation(ctx, assets, quick);
     if (!json_out.empty()) std::ofstream(json_out) << all.dump(2) << "\n";
     return 0;
 }

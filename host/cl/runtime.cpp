@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 
 #include <fmt/format.h>
 
@@ -108,6 +109,81 @@ std::string keep_source(const std::string& text) {
     return path.string();
 }
 
+// FNV-1a, 64 bits: the cache key of a program.
+std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 1469598103934665603ull) {
+    for (unsigned char c : s) {
+        h ^= c;
+        h *= 1099511628211ull;
+    }
+    return h;
+}
+
+bool use_program_cache(const DeviceDesc& dev) {
+    const char* env = std::getenv("FACET_PROGRAM_CACHE");
+    if (env && std::string(env) == "0") return false;
+    if (env && std::string(env) == "1") return true;
+    return dev.platform.find("Portable Computing Language") == std::string::npos;
+}
+
+std::filesystem::path program_cache_dir() {
+    namespace fs = std::filesystem;
+    if (const char* d = std::getenv("FACET_CACHE_DIR"); d && *d) return fs::path(d);
+    if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "facet" / "kernels";
+    if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".cache" / "facet" / "kernels";
+    return fs::temp_directory_path() / "facet-kernels";
+}
+
+std::string cache_file_for(const DeviceDesc& dev, const std::string& source, const std::string& options) {
+    std::uint64_t key = fnv1a(source);
+    for (const std::string* part : {&options, &dev.platform, &dev.name, &dev.version, &dev.driver})
+        key = fnv1a(*part, fnv1a(std::string(1, '\0'), key));
+    return (program_cache_dir() / fmt::format("{:016x}.bin", key)).string();
+}
+
+std::vector<unsigned char> read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return {};
+    return std::vector<unsigned char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_bytes_atomically(const std::string& path, const std::vector<unsigned char>& bytes) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::create_directories(fs::path(path).parent_path(), ec);
+    fs::path tmp = fs::path(path).string() + fmt::format(".tmp{}", std::hash<std::string>{}(path) % 100000);
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        if (!out) return;   // a cache that cannot be written is no error
+    }
+    fs::rename(tmp, path, ec);
+    if (ec) fs::remove(tmp, ec);
+}
+
+// Builds from a cached binary; false when there is none or the driver refuses it.
+bool build_from_cache(const ClContext& ctx, ProgramBuild& build) {
+    std::vector<unsigned char> bytes = read_bytes(build.cache_file);
+    if (bytes.empty()) return false;
+    try {
+        cl::Program::Binaries binaries{bytes};
+        std::vector<cl_int> status;
+        build.program = cl::Program(ctx.context(), {ctx.device()}, binaries, &status);
+        if (status.empty() || status[0] != CL_SUCCESS) return false;
+        return build.program.build({ctx.device()}, build.options.c_str()) == CL_SUCCESS;
+    } catch (const cl::Error&) {
+        return false;
+    }
+}
+
+std::size_t binary_size(const cl::Program& program) {
+    try {
+        std::vector<std::size_t> sizes = program.getInfo<CL_PROGRAM_BINARY_SIZES>();
+        return sizes.empty() ? 0 : sizes[0];
+    } catch (const cl::Error&) {
+        return 0;
+    }
+}
+
 }  // namespace
 
 std::string DeviceDesc::type_name() const {
@@ -150,16 +226,34 @@ ProgramBuild build_program(const ClContext& ctx, const std::string& entry,
     build.options = default_build_options();
     if (!extra_options.empty()) build.options += " " + extra_options;
     auto start = std::chrono::steady_clock::now();
+    const bool caching = use_program_cache(ctx.desc());
+    if (caching) {
+        build.cache_file = cache_file_for(ctx.desc(), build.source.text, build.options);
+        build.from_cache = build_from_cache(ctx, build);
+    }
     cl_int status = CL_SUCCESS;
-    try {
-        build.program = cl::Program(ctx.context(), build.source.text);
-        status = build.program.build({ctx.device()}, build.options.c_str());
-    } catch (const cl::BuildError& e) {
-        status = e.err();
-    } catch (const cl::Error& e) {
-        status = e.err();
+    if (!build.from_cache) {
+        try {
+            build.program = cl::Program(ctx.context(), build.source.text);
+            status = build.program.build({ctx.device()}, build.options.c_str());
+        } catch (const cl::BuildError& e) {
+            status = e.err();
+        } catch (const cl::Error& e) {
+            status = e.err();
+        }
     }
     build.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (status == CL_SUCCESS) {
+        build.binary_bytes = binary_size(build.program);
+        if (caching && !build.from_cache) {
+            try {
+                std::vector<std::vector<unsigned char>> binaries = build.program.getInfo<CL_PROGRAM_BINARIES>();
+                if (!binaries.empty() && !binaries[0].empty()) write_bytes_atomically(build.cache_file, binaries[0]);
+            } catch (const cl::Error&) {
+                // the driver gives no binary: nothing to cache
+            }
+        }
+    }
     if (status != CL_SUCCESS) {
         std::string log;
         try {

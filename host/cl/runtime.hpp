@@ -64,7 +64,10 @@ struct ProgramBuild {
     cl::Program program;
     AssembledSource source;
     std::string options;
-    double seconds = 0.0;     // wall time of clBuildProgram
+    double seconds = 0.0;          // wall time of the build (from source or from the cache)
+    std::size_t binary_bytes = 0;  // the device binary's size, where the driver reports it
+    bool from_cache = false;       // loaded from facet's program-binary cache
+    std::string cache_file;        // the cache entry used or written ("" when not caching)
 };
 
 // The options every facet program is built with (no fast or finite math).
@@ -73,6 +76,13 @@ std::string default_build_options();
 // Assembles `entry` after `prelude` and builds it for the context's device. On failure
 // throws facet::Error with the device, the options, the full build log and the path
 // where the assembled source was kept.
+//
+// Program-binary cache: PoCL keeps its own cache, so facet's is used for every other
+// driver (or always with FACET_PROGRAM_CACHE=1; never with FACET_PROGRAM_CACHE=0). An
+// entry is keyed on the assembled source, the options, the platform, the device, its
+// OpenCL version and the driver version, lives in $FACET_CACHE_DIR (default
+// $XDG_CACHE_HOME/facet/kernels, else ~/.cache/facet/kernels), is written atomically,
+// and a binary the driver refuses falls back to a source build that replaces it.
 ProgramBuild build_program(const ClContext& ctx, const std::string& entry,
                            const std::vector<std::string>& prelude = {},
                            const std::string& extra_options = "");

@@ -48,6 +48,8 @@ int run_cli(int argc, char** argv) {
     render->add_option("--reference", opt.reference, "Reference image (EXR/HDR) to measure the error against, per pass");
     render->add_option("--report", opt.report, "Error-against-time report (CSV; .json summary and .svg plot beside it); default beside --out");
     render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops")->check(CLI::Range(-30.0f, 30.0f));
+    render->add_flag("--generic", opt.generic,
+                     "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
     render->add_flag("--quiet,-q", opt.quiet, "Print only errors and the final summary");
 
     CompareOptions cmp;

@@ -20,6 +20,7 @@ struct RenderOptions {
     std::optional<double> snapshot;   // seconds between snapshots of the image so far
     float exposure = 0.0f;
     bool quiet = false;
+    bool generic = false;   // build every kernel feature, not only the scene's
 };
 
 struct CompareOptions {

@@ -3,6 +3,7 @@
 
 #include "bvh/bvh.hpp"
 #include "cli/commands.hpp"
+#include "render/features.hpp"
 #include "scene/load.hpp"
 #include "scene/material.hpp"
 
@@ -26,7 +27,17 @@ int run_info(const InfoOptions& opt) {
         fmt::print("  [{}] {:<20} {}{}\n", i, scene.material_names[i], describe_material(m),
                    emits ? fmt::format(" emission ({:.3f}, {:.3f}, {:.3f})", m.emission[0], m.emission[1], m.emission[2]) : "");
     }
-    fmt::print("lights      {} area (emitting triangles)\n", scene.lights.size());
+    std::size_t area = 0, punctual = 0;
+    for (const FcLight& l : scene.lights) {
+        if (l.type == FC_LIGHT_AREA_TRIANGLE) ++area;
+        else if (l.type != FC_LIGHT_ENVIRONMENT) ++punctual;
+    }
+    fmt::print("lights      {} area (emitting triangles), {} punctual, environment: {}\n", area, punctual,
+               !scene.environment.params.enabled ? "none"
+               : scene.environment.params.width == 0
+                   ? "constant"
+                   : fmt::format("{}x{} map", scene.environment.params.width, scene.environment.params.height));
+    fmt::print("features    {}\n", describe_features(scene_features(scene)));
     fmt::print("bvh         {} nodes, {} leaves, depth {}, max leaf {}, SAH cost {:.2f}, built in {:.3f} s\n",
                b.nodes, b.leaves, b.max_depth, b.max_leaf_size, b.sah_cost, b.build_seconds);
     fmt::print("image       {}x{}, {} spp, max depth {}\n", scene.settings.width, scene.settings.height,

@@ -20,6 +20,7 @@
 #include "error.hpp"
 #include "film/error_metrics.hpp"
 #include "film/image_io.hpp"
+#include "render/features.hpp"
 #include "render/renderer.hpp"
 #include "report/report.hpp"
 #include "scene/load.hpp"
@@ -128,13 +129,14 @@ int run_render(const RenderOptions& opt) {
 
     ClContext ctx = ClContext::create(opt.device);
     Bvh bvh = build_bvh(scene.vertices);
-    Renderer renderer(ctx, scene, bvh);
+    Renderer renderer(ctx, scene, bvh, opt.generic);
     const double compile_s = renderer.stats().compile_seconds;
     if (!opt.quiet) {
         fmt::print("device   {} / {}\n", ctx.desc().platform, ctx.desc().name);
-        fmt::print("scene    {}: {} triangles, {} lights; BVH {} nodes in {:.3f} s; kernels built in {:.2f} s\n",
-                   scene.source_path, scene.triangle_count(), scene.lights.size(), bvh.stats.nodes,
-                   bvh.stats.build_seconds, compile_s);
+        fmt::print("scene    {}: {} triangles, {} lights; BVH {} nodes in {:.3f} s\n", scene.source_path,
+                   scene.triangle_count(), scene.lights.size(), bvh.stats.nodes, bvh.stats.build_seconds);
+        fmt::print("kernels  {} program ({}), built in {:.2f} s\n", opt.generic ? "generic" : "specialised",
+                   describe_features(renderer.stats().features), compile_s);
     }
 
     g_stop_signal.store(0);

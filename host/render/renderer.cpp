@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "error.hpp"
+#include "render/features.hpp"
 
 namespace facet {
 namespace {
@@ -42,7 +43,8 @@ void check_device_memory(const DeviceDesc& dev, std::initializer_list<std::pair<
 
 }  // namespace
 
-Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
+Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool generic,
+                   const std::vector<std::string>& extra_prelude)
     : ctx_(ctx), width_(scene.settings.width), height_(scene.settings.height) {
     if (width_ < 1 || height_ < 1) throw Error(fmt::format("invalid image size {}x{}", width_, height_));
     params_.camera = make_camera(scene.camera, float(width_) / float(height_));
@@ -62,9 +64,12 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh)
                                      {"environment map", scene.environment.texels.size() * sizeof(float)},
                                      {"image", 2 * pixel_count() * sizeof(cl_float4)}});
 
-    ProgramBuild build = build_program(ctx, "kernels/integrator/path.cl");
-    stats_.compile_seconds = build.seconds;
-    program_ = build.program;
+    stats_.features = generic ? all_features() : scene_features(scene);
+    std::vector<std::string> prelude = generic ? std::vector<std::string>{} : feature_prelude(stats_.features);
+    prelude.insert(prelude.end(), extra_prelude.begin(), extra_prelude.end());
+    build_ = build_program(ctx, "kernels/integrator/path.cl", prelude);
+    stats_.compile_seconds = build_.seconds;
+    program_ = build_.program;
 
     auto start = Clock::now();
     cl_call("uploading the scene", [&] {

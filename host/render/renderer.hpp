@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "bvh/bvh.hpp"
@@ -14,15 +15,20 @@ namespace facet {
 struct RenderStats {
     std::uint64_t samples_per_pixel = 0;   // samples added to every pixel so far
     double compile_seconds = 0.0;          // building the render program
+    std::uint32_t features = 0;            // the program's features (FeatureMask)
     double upload_seconds = 0.0;
     double render_seconds = 0.0;           // time inside render passes
 };
 
 class Renderer {
 public:
-    // Uploads `scene` (with its `bvh`) and builds the render program. The image size,
-    // depth and seed come from scene.settings.
-    Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh);
+    // Uploads `scene` (with its `bvh`) and builds the render program: specialised to
+    // the features the scene uses (render/features.hpp), or with every feature when
+    // `generic`. The image size, depth and seed come from scene.settings.
+    // `extra_prelude` lines go before the program (the bench uses them to defeat the
+    // driver's cache).
+    Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool generic = false,
+             const std::vector<std::string>& extra_prelude = {});
 
     // Adds `count` samples to every pixel, split into launches of at most
     // `max_rows_per_launch` rows (0: the whole image) so no launch runs too long.
@@ -49,6 +55,7 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     const ClContext& context() const { return ctx_; }
+    const ProgramBuild& build() const { return build_; }
     std::size_t pixel_count() const { return std::size_t(width_) * std::size_t(height_); }
 
 private:
@@ -57,6 +64,7 @@ private:
     int height_;
     FcRenderParams params_{};
     std::size_t local_size_ = 64;   // work-group size of every launch
+    ProgramBuild build_;
     cl::Program program_;
     cl::Kernel kernel_;
     cl::Buffer params_buf_, nodes_, tris_, shading_, materials_, lights_, light_cdf_, env_texels_, env_dist_, accum_;

@@ -65,6 +65,7 @@ struct Pending {
     MtlMaterial m;
     bool has_pr = false;
     bool has_pm = false;
+    bool has_ks = false;
     float pr = 0.0f;
     bool has_ns = false;
     float ns = 0.0f;
@@ -82,7 +83,7 @@ MtlMaterial finish(Pending& p) {
     FcMaterial& mat = m.material;
     const float shininess = p.has_ns ? p.ns : 10.0f;
     const bool pbr = p.has_pr || p.has_pm;
-    const bool has_ks = mat.specular[0] > 0.0f || mat.specular[1] > 0.0f || mat.specular[2] > 0.0f;
+    const bool has_ks = p.has_ks && (mat.specular[0] > 0.0f || mat.specular[1] > 0.0f || mat.specular[2] > 0.0f);
     FcMaterial base = mat;
     if (pbr) {
         mat = make_material("ggx");
@@ -139,8 +140,10 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
         FcMaterial& mat = p.m.material;
         if (kw == "Kd")
             l.color(mat.diffuse);
-        else if (kw == "Ks")
+        else if (kw == "Ks") {
             l.color(mat.specular);
+            p.has_ks = true;
+        }
         else if (kw == "Ke")
             l.color(mat.emission);
         else if (kw == "Ns") {

@@ -4,6 +4,7 @@
 #define FACET_BSDF_DIFFUSE_CL
 
 #include "../shared/material.h"
+#include "../shared/features.h"
 #include "ashikhmin_shirley.cl"
 #include "fresnel.cl"
 #include "lambert.cl"
@@ -19,10 +20,14 @@ inline float3 diffuse_eval(const FcMaterial* m, float3 wo, float3 wi) {
             return lambert_eval(material_diffuse(m), wo, wi);
         case FC_DIFFUSE_LAMBERT_1MF0:
             return lambert_eval(material_diffuse(m) * ((float3)(1.0f) - fresnel_f0(m)), wo, wi);
+#if FC_HAS_OREN_NAYAR
         case FC_DIFFUSE_OREN_NAYAR:
             return oren_nayar_eval(m, wo, wi);
+#endif
+#if FC_HAS_ASHIKHMIN_SHIRLEY
         case FC_DIFFUSE_ASHIKHMIN_SHIRLEY:
             return ashikhmin_shirley_diffuse_eval(m, wo, wi);
+#endif
         default:
             return (float3)(0.0f);
     }

@@ -12,6 +12,7 @@
 #ifndef FACET_BSDF_NDF_CL
 #define FACET_BSDF_NDF_CL
 
+#include "../shared/features.h"
 #include "../shared/material.h"
 #include "beckmann.cl"
 #include "blinn_phong_ndf.cl"
@@ -64,8 +65,12 @@ inline float3 ndf_sample(const FcMaterial* m, float3 wo, float2 u) {
         case FC_NDF_BLINN_PHONG:
             return bp_ndf_sample(m->exponent_x, u);
         default:
+#if FC_HAS_BECKMANN
             return visible ? beckmann_sample_visible(m->alpha_x, m->alpha_y, wo, u)
                            : beckmann_sample_all(m->alpha_x, m->alpha_y, u);
+#else
+            return (float3)(0.0f, 0.0f, 1.0f);   /* no Beckmann material in this program */
+#endif
     }
 }
 
@@ -79,8 +84,12 @@ inline float ndf_pdf(const FcMaterial* m, float3 wo, float3 h) {
         case FC_NDF_BLINN_PHONG:
             return bp_ndf_pdf(m->exponent_x, h);
         default:
+#if FC_HAS_BECKMANN
             return visible ? beckmann_pdf_visible(m->alpha_x, m->alpha_y, wo, h)
                            : beckmann_pdf_all(m->alpha_x, m->alpha_y, h);
+#else
+            return 0.0f;
+#endif
     }
 }
 

@@ -3,6 +3,7 @@
 #ifndef FACET_BSDF_SPECULAR_CL
 #define FACET_BSDF_SPECULAR_CL
 
+#include "../shared/features.h"
 #include "../shared/material.h"
 #include "ashikhmin_shirley.cl"
 #include "blinn_phong.cl"
@@ -12,13 +13,19 @@
 
 inline float3 specular_eval(const FcMaterial* m, float3 wo, float3 wi) {
     switch (m->specular_model) {
+#if FC_HAS_MICROFACET
         case FC_SPECULAR_MICROFACET:
             return microfacet_eval(m, wo, wi);
+#endif
+#if FC_HAS_BLINN_PHONG
         case FC_SPECULAR_BLINN_PHONG:
         case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
             return blinn_phong_eval(m, wo, wi);
+#endif
+#if FC_HAS_ASHIKHMIN_SHIRLEY
         case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
             return ashikhmin_shirley_eval(m, wo, wi);
+#endif
         default:
             return (float3)(0.0f);
     }
@@ -26,13 +33,19 @@ inline float3 specular_eval(const FcMaterial* m, float3 wo, float3 wi) {
 
 inline float specular_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     switch (m->specular_model) {
+#if FC_HAS_MICROFACET
         case FC_SPECULAR_MICROFACET:
             return microfacet_pdf(m, wo, wi);
+#endif
+#if FC_HAS_BLINN_PHONG
         case FC_SPECULAR_BLINN_PHONG:
         case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
             return blinn_phong_pdf(m, wo, wi);
+#endif
+#if FC_HAS_ASHIKHMIN_SHIRLEY
         case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
             return ashikhmin_shirley_pdf(m, wo, wi);
+#endif
         default:
             return 0.0f;
     }
@@ -41,13 +54,19 @@ inline float specular_pdf(const FcMaterial* m, float3 wo, float3 wi) {
 /* Samples the lobe alone: s->f and s->pdf are the lobe's own. */
 inline bool specular_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSample* s) {
     switch (m->specular_model) {
+#if FC_HAS_MICROFACET
         case FC_SPECULAR_MICROFACET:
             return microfacet_sample(m, wo, u, s);
+#endif
+#if FC_HAS_BLINN_PHONG
         case FC_SPECULAR_BLINN_PHONG:
         case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
             return blinn_phong_sample(m, wo, u, s);
+#endif
+#if FC_HAS_ASHIKHMIN_SHIRLEY
         case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
             return ashikhmin_shirley_sample(m, wo, u, s);
+#endif
         default:
             return false;
     }
@@ -69,7 +88,11 @@ inline float specular_weight(const FcMaterial* m, float3 wo) {
 
 /* Whether the specular lobe is a perfect mirror (a delta distribution). */
 inline bool specular_is_delta(const FcMaterial* m) {
+#if FC_HAS_MICROFACET
     return m->specular_model == FC_SPECULAR_MICROFACET && microfacet_is_mirror(m);
+#else
+    return false;
+#endif
 }
 
 #endif

@@ -72,12 +72,14 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
     for (uint depth = 0;; ++depth) {
         Hit hit;
         if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) {
+#if FC_HAS_ENVIRONMENT
             /* The ray escapes: the environment, MIS-weighted against light sampling. */
             float3 le = env_radiance(&P->environment, sc->env_texels, d);
             if (!is_black(le)) {
                 float w = depth > 0u ? bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, environment_light_pdf(sc, d)) : 1.0f;
                 radiance += throughput * le * w;
             }
+#endif
             break;
         }
         Surface s = surface_at(sc->tris, sc->shading, &hit);
@@ -85,6 +87,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
         const FcMaterial* m = &mat;
         float3 wo = -d;
 
+#if FC_HAS_AREA_LIGHTS
         /* Emission reached by the camera ray or by BSDF sampling (MIS-weighted). */
         float3 le = area_light_radiance(load3p(m->emission), m->flags, s.ng, wo);
         if (!is_black(le) && s.light >= 0) {
@@ -95,6 +98,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
             }
             radiance += throughput * le * w;
         }
+#endif
         if (depth >= P->max_depth) break;
 
         /* Two-sided shading: work on the side the ray arrived from. */

@@ -38,7 +38,9 @@ inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, 
     if (count == 0u) return false;
     __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, count, u_pick)];
     ls->delta = 0;
-    if (l->type == FC_LIGHT_AREA_TRIANGLE) {
+    if (false) {   /* each light type below is compiled only when the scene has it */
+#if FC_HAS_AREA_LIGHTS
+    } else if (l->type == FC_LIGHT_AREA_TRIANGLE) {
         ls->point = area_light_point(l, u);
         ls->normal = area_light_normal(l);
         float3 to = ls->point - p;
@@ -49,24 +51,35 @@ inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, 
         __global const FcMaterial* m = &sc->materials[sc->shading[l->prim].material];
         ls->li = area_light_radiance(load3(m->emission), m->flags, ls->normal, -ls->wi);
         ls->pdf = area_light_pdf_solid_angle(l, ls->dist, dot(ls->normal, ls->wi));
+#endif
+#if FC_HAS_ENVIRONMENT
     } else if (l->type == FC_LIGHT_ENVIRONMENT) {
         float pdf;
         ls->li = env_sample(&sc->params->environment, sc->env_texels, sc->env_dist, u, &ls->wi, &pdf);
         ls->dist = INFINITY;
         ls->pdf = pdf * l->pick_pdf;
-    } else {
+#endif
+#if FC_HAS_PUNCTUAL_LIGHTS
+    } else if (l->type != FC_LIGHT_AREA_TRIANGLE && l->type != FC_LIGHT_ENVIRONMENT) {
         ls->li = punctual_light_irradiance(l, p, &ls->wi, &ls->dist);
         ls->pdf = l->pick_pdf;
         ls->delta = 1;
+#endif
+    } else {
+        return false;
     }
     return ls->pdf > 0.0f && isfinite(ls->pdf) && !is_black(ls->li) && all_finite(ls->li);
 }
 
 /* Density with which sample_light reaches the environment along wi (for MIS). */
 inline float environment_light_pdf(const SceneView* sc, float3 wi) {
+#if FC_HAS_ENVIRONMENT
     int index = sc->params->environment_light;
     if (index < 0) return 0.0f;
     return sc->lights[index].pick_pdf * env_pdf(&sc->params->environment, sc->env_dist, wi);
+#else
+    return 0.0f;
+#endif
 }
 
 #endif

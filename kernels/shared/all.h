@@ -6,4 +6,5 @@
 #include "scene.h"
 #include "render.h"
 #include "environment.h"
+#include "features.h"
 #endif

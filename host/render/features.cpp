@@ -1,0 +1,91 @@
+#include "render/features.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include <fmt/format.h>
+
+#include "shared/features.h"
+
+namespace facet {
+namespace {
+
+struct Feature {
+    const char* name;
+    int bit;
+};
+
+#define FC_FEATURE_ENTRY(name, bit) {#name, bit},
+constexpr Feature kFeatures[] = {FC_FEATURE_LIST(FC_FEATURE_ENTRY)};
+#undef FC_FEATURE_ENTRY
+
+#define FC_FEATURE_BIT(name, bit) constexpr FeatureMask k##name = 1u << bit;
+FC_FEATURE_LIST(FC_FEATURE_BIT)
+#undef FC_FEATURE_BIT
+
+std::string lower(const char* s) {
+    std::string out(s);
+    std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return out;
+}
+
+}  // namespace
+
+FeatureMask all_features() {
+    FeatureMask m = 0;
+    for (const Feature& f : kFeatures) m |= 1u << f.bit;
+    return m;
+}
+
+FeatureMask scene_features(const Scene& scene) {
+    FeatureMask mask = 0;
+    for (const FcLight& l : scene.lights) {
+        if (l.type == FC_LIGHT_AREA_TRIANGLE) mask |= kAREA_LIGHTS;
+        else if (l.type == FC_LIGHT_ENVIRONMENT) mask |= kENVIRONMENT;
+        else mask |= kPUNCTUAL_LIGHTS;
+    }
+    // Escaped rays see the environment even when it lights nothing (a black map).
+    if (scene.environment.params.enabled) mask |= kENVIRONMENT;
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const FcTriShading& s : scene.shading)
+        if (s.material >= 0 && std::size_t(s.material) < used.size()) used[std::size_t(s.material)] = true;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        if (!used[i]) continue;
+        const FcMaterial& m = scene.materials[i];
+        if (m.diffuse_model == FC_DIFFUSE_OREN_NAYAR) mask |= kOREN_NAYAR;
+        if (m.diffuse_model == FC_DIFFUSE_ASHIKHMIN_SHIRLEY || m.specular_model == FC_SPECULAR_ASHIKHMIN_SHIRLEY)
+            mask |= kASHIKHMIN_SHIRLEY;
+        if (m.specular_model == FC_SPECULAR_BLINN_PHONG || m.specular_model == FC_SPECULAR_BLINN_PHONG_NORMALIZED)
+            mask |= kBLINN_PHONG;
+        if (m.specular_model == FC_SPECULAR_MICROFACET) {
+            mask |= kMICROFACET;
+            if (m.ndf == FC_NDF_BECKMANN) mask |= kBECKMANN;
+        }
+    }
+    return mask;
+}
+
+std::vector<std::string> feature_prelude(FeatureMask mask) {
+    std::vector<std::string> lines;
+    for (const Feature& f : kFeatures)
+        lines.push_back(fmt::format("#define FC_HAS_{} {}", f.name, (mask >> f.bit) & 1u));
+    return lines;
+}
+
+std::string describe_features(FeatureMask mask) {
+    std::string out;
+    for (const Feature& f : kFeatures) {
+        if (!((mask >> f.bit) & 1u)) continue;
+        if (!out.empty()) out += ' ';
+        out += lower(f.name);
+    }
+    return out.empty() ? "none" : out;
+}
+
+std::vector<std::string> feature_names() {
+    std::vector<std::string> out;
+    for (const Feature& f : kFeatures) out.push_back(lower(f.name));
+    return out;
+}
+
+}  // namespace facet

@@ -1,0 +1,31 @@
+// Kernel specialisation: the features a scene uses (kernels/shared/features.h holds the
+// closed list), and the prelude that builds a program with only those.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace facet {
+
+using FeatureMask = std::uint32_t;
+
+// Every feature of the closed list.
+FeatureMask all_features();
+
+// The features `scene` uses: light types present, diffuse and specular lobes, and the
+// Beckmann NDF of any material that some triangle uses.
+FeatureMask scene_features(const Scene& scene);
+
+// "#define FC_HAS_X 0|1" for every feature: the prelude of a specialised program.
+std::vector<std::string> feature_prelude(FeatureMask mask);
+
+// "area_lights environment microfacet" (the features present), or "none".
+std::string describe_features(FeatureMask mask);
+
+// The names of every feature, lower case, in list order.
+std::vector<std::string> feature_names();
+
+}  // namespace facet

@@ -1,0 +1,46 @@
+/* The closed list of kernel features: code paths that a scene may not need and that
+ * the host leaves out of its program (host/render/features.cpp decides, per scene).
+ * Each FC_HAS_* is 1 unless the program's prelude defines it as 0, so a program built
+ * with no prelude is the generic one (every feature, chosen at run time), the
+ * reference `--generic` renders with. Add a feature here, in FC_FEATURE_LIST, and in
+ * features.cpp's scene analysis; tests/features_test.cpp exercises every one. */
+#ifndef FACET_SHARED_FEATURES_H
+#define FACET_SHARED_FEATURES_H
+
+/* X(name, bit) for every feature. */
+#define FC_FEATURE_LIST(X)        \
+    X(AREA_LIGHTS, 0)             \
+    X(PUNCTUAL_LIGHTS, 1)         \
+    X(ENVIRONMENT, 2)             \
+    X(OREN_NAYAR, 3)              \
+    X(ASHIKHMIN_SHIRLEY, 4)       \
+    X(BLINN_PHONG, 5)             \
+    X(MICROFACET, 6)              \
+    X(BECKMANN, 7)
+
+#ifndef FC_HAS_AREA_LIGHTS
+#define FC_HAS_AREA_LIGHTS 1
+#endif
+#ifndef FC_HAS_PUNCTUAL_LIGHTS
+#define FC_HAS_PUNCTUAL_LIGHTS 1
+#endif
+#ifndef FC_HAS_ENVIRONMENT
+#define FC_HAS_ENVIRONMENT 1
+#endif
+#ifndef FC_HAS_OREN_NAYAR
+#define FC_HAS_OREN_NAYAR 1
+#endif
+#ifndef FC_HAS_ASHIKHMIN_SHIRLEY
+#define FC_HAS_ASHIKHMIN_SHIRLEY 1
+#endif
+#ifndef FC_HAS_BLINN_PHONG
+#define FC_HAS_BLINN_PHONG 1
+#endif
+#ifndef FC_HAS_MICROFACET
+#define FC_HAS_MICROFACET 1
+#endif
+#ifndef FC_HAS_BECKMANN
+#define FC_HAS_BECKMANN 1
+#endif
+
+#endif
