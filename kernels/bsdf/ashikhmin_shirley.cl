@@ -87,16 +87,8 @@ inline bool ashikhmin_shirley_sample(const FcMaterial* m, float3 wo, float2 u, B
     float cos_h = exp(lg);
     float sin_h = safe_sqrt(-expm1(2.0f * lg));
     float3 h = (float3)(sin_h * cos_phi, sin_h * sin_phi, cos_h);
-    /* reflect wo about h */
-    float wo_h = dot(wo, h);
-    if (!(wo_h > 0.0f)) return false;
-    s->wi = 2.0f * wo_h * h - wo;
-    if (!(s->wi.z > 0.0f)) return false;
-    s->f = ashikhmin_shirley_eval(m, wo, s->wi);
-    s->pdf = ashikhmin_shirley_pdf(m, wo, s->wi);
-    if (!(s->pdf > 0.0f) || !isfinite(s->pdf)) return false;
-    s->weight = s->f * (s->wi.z / s->pdf);
-    return all_finite(s->weight);
+    if (!reflect_about(wo, h, &s->wi)) return false;
+    return finish_sample(s, ashikhmin_shirley_eval(m, wo, s->wi), ashikhmin_shirley_pdf(m, wo, s->wi));
 }
 
 /* The paper's eq. 5 diffuse term, which pairs with the specular lobe above. */

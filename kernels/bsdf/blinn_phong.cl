@@ -61,16 +61,8 @@ inline bool blinn_phong_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSam
     float sin_h = safe_sqrt(-expm1(2.0f * lg));
     float phi = 2.0f * FC_PI * u.y;
     float3 h = (float3)(sin_h * cos(phi), sin_h * sin(phi), cos_h);
-    /* reflect wo about h */
-    float wo_h = dot(wo, h);
-    if (!(wo_h > 0.0f)) return false;
-    s->wi = 2.0f * wo_h * h - wo;
-    if (!(s->wi.z > 0.0f)) return false;
-    s->f = blinn_phong_eval(m, wo, s->wi);
-    s->pdf = blinn_phong_pdf(m, wo, s->wi);
-    if (!(s->pdf > 0.0f) || !isfinite(s->pdf)) return false;
-    s->weight = s->f * (s->wi.z / s->pdf);
-    return all_finite(s->weight);
+    if (!reflect_about(wo, h, &s->wi)) return false;
+    return finish_sample(s, blinn_phong_eval(m, wo, s->wi), blinn_phong_pdf(m, wo, s->wi));
 }
 
 #endif

@@ -55,11 +55,7 @@ inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s)
         s->wi = square_to_cosine_hemisphere(u.xy);
     }
     if (s->wi.z <= 0.0f) return false;
-    s->f = bsdf_eval(m, wo, s->wi);
-    s->pdf = bsdf_pdf(m, wo, s->wi);
-    if (!(s->pdf > 0.0f) || !isfinite(s->pdf)) return false;
-    s->weight = s->f * (s->wi.z / s->pdf);
-    return all_finite(s->weight);
+    return finish_sample(s, bsdf_eval(m, wo, s->wi), bsdf_pdf(m, wo, s->wi));
 }
 
 #endif

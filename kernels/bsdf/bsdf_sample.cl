@@ -6,6 +6,8 @@
 #ifndef FACET_BSDF_BSDF_SAMPLE_CL
 #define FACET_BSDF_BSDF_SAMPLE_CL
 
+#include "../util/math.cl"
+
 typedef struct {
     float3 wi;
     float3 f;
@@ -13,5 +15,24 @@ typedef struct {
     float3 weight;
     int delta;
 } BsdfSample;
+
+/* wo reflected about the unit (micro)normal h. False when wo does not see h's front
+ * or the reflection leaves at or below the surface. */
+inline bool reflect_about(float3 wo, float3 h, float3* wi) {
+    float wo_h = dot(wo, h);
+    if (!(wo_h > 0.0f)) return false;
+    *wi = normalize_or(2.0f * wo_h * h - wo, (float3)(0.0f));
+    return wi->z > 0.0f;
+}
+
+/* Completes a non-delta sample from the value f and density pdf of its direction
+ * s->wi: weight = f cos / pdf. False for a zero or non-finite density or weight. */
+inline bool finish_sample(BsdfSample* s, float3 f, float pdf) {
+    s->f = f;
+    s->pdf = pdf;
+    if (!(pdf > 0.0f) || !isfinite(pdf)) return false;
+    s->weight = f * (s->wi.z / pdf);
+    return all_finite(s->weight);
+}
 
 #endif

@@ -91,17 +91,8 @@ inline bool microfacet_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSamp
         return true;
     }
     /* Draw a normal, reflect wo about it (Walter 2007, eq. 39). */
-    float3 h = ndf_sample(m, wo, u);
-    float wo_h = dot(wo, h);
-    if (!(wo_h > 0.0f)) return false;
-    float3 wi = normalize_or(2.0f * wo_h * h - wo, (float3)(0.0f));
-    if (!(wi.z > 0.0f)) return false;
-    s->wi = wi;
-    s->f = microfacet_eval(m, wo, wi);
-    s->pdf = microfacet_pdf(m, wo, wi);
-    if (!(s->pdf > 0.0f)) return false;
-    s->weight = s->f * (wi.z / s->pdf);
-    return all_finite(s->weight);
+    if (!reflect_about(wo, ndf_sample(m, wo, u), &s->wi)) return false;
+    return finish_sample(s, microfacet_eval(m, wo, s->wi), microfacet_pdf(m, wo, s->wi));
 }
 
 #endif
