@@ -5,13 +5,28 @@
  * specular_probability(wo) (the lobes' estimated albedos), samples it, and reports
  * the value and density of the whole BSDF (one-sample MIS over the lobes, Veach
  * 1997 section 9.2.4), so weight = f cos / pdf. Directions in the local frame
- * (n = +z), pointing away from the surface; wo below the surface gives 0. */
+ * (n = +z), pointing away from the surface; wo below the surface gives 0.
+ *
+ * A dielectric (FC_SPECULAR_DIELECTRIC) is the whole BSDF: it alone transmits, so wo
+ * and wi may lie on either side (dielectric.cl), and any diffuse lobe is ignored. */
 #ifndef FACET_BSDF_BSDF_CL
 #define FACET_BSDF_BSDF_CL
 
 #include "bsdf_sample.cl"
 #include "diffuse.cl"
 #include "specular.cl"
+#if FC_HAS_DIELECTRIC
+#include "dielectric.cl"
+#endif
+
+/* Whether the material is a dielectric (transmits; handled by dielectric.cl). */
+inline bool bsdf_is_dielectric(const FcMaterial* m) {
+#if FC_HAS_DIELECTRIC
+    return m->specular_model == FC_SPECULAR_DIELECTRIC;
+#else
+    return false;
+#endif
+}
 
 inline float specular_probability(const FcMaterial* m, float3 wo) {
     if (m->specular_model == FC_SPECULAR_NONE) return 0.0f;
@@ -22,11 +37,17 @@ inline float specular_probability(const FcMaterial* m, float3 wo) {
 }
 
 inline float3 bsdf_eval(const FcMaterial* m, float3 wo, float3 wi) {
+#if FC_HAS_DIELECTRIC
+    if (bsdf_is_dielectric(m)) return dielectric_eval(m, wo, wi);
+#endif
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
     return diffuse_eval(m, wo, wi) + specular_eval(m, wo, wi);
 }
 
 inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
+#if FC_HAS_DIELECTRIC
+    if (bsdf_is_dielectric(m)) return dielectric_pdf(m, wo, wi);
+#endif
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
     float p = specular_probability(m, wo);
     float pdf = 0.0f;
@@ -37,12 +58,18 @@ inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
 
 /* Whether every lobe of the BSDF is a delta (next-event estimation is useless). */
 inline bool bsdf_is_delta(const FcMaterial* m) {
+#if FC_HAS_DIELECTRIC
+    if (bsdf_is_dielectric(m)) return dielectric_is_smooth(m);
+#endif
     return m->diffuse_model == FC_DIFFUSE_NONE && specular_is_delta(m);
 }
 
 /* u.z chooses the lobe, u.xy sample it. Returns false when no direction was made. */
 inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s) {
     s->delta = 0;
+#if FC_HAS_DIELECTRIC
+    if (bsdf_is_dielectric(m)) return dielectric_sample(m, wo, u, s);
+#endif
     if (wo.z <= 0.0f) return false;
     float p = specular_probability(m, wo);
     if (u.z < p) {

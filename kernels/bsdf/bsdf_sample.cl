@@ -2,7 +2,8 @@
  * away from the surface. For a non-delta sample, f and pdf are exactly what the
  * lobe's eval and pdf return for wi, and weight = f cos(theta_i) / pdf. For a delta
  * lobe (a perfect mirror), f and pdf are meaningless (pdf = INFINITY) and weight
- * carries the whole throughput factor. */
+ * carries the whole throughput factor. Only the dielectric (dielectric.cl) returns wi
+ * below the surface (wi.z < 0, a refraction). */
 #ifndef FACET_BSDF_BSDF_SAMPLE_CL
 #define FACET_BSDF_BSDF_SAMPLE_CL
 
@@ -26,12 +27,13 @@ inline bool reflect_about(float3 wo, float3 h, float3* wi) {
 }
 
 /* Completes a non-delta sample from the value f and density pdf of its direction
- * s->wi: weight = f cos / pdf. False for a zero or non-finite density or weight. */
+ * s->wi: weight = f |cos| / pdf (|cos|: refracted directions lie below the surface).
+ * False for a zero or non-finite density or weight. */
 inline bool finish_sample(BsdfSample* s, float3 f, float pdf) {
     s->f = f;
     s->pdf = pdf;
     if (!(pdf > 0.0f) || !isfinite(pdf)) return false;
-    s->weight = f * (s->wi.z / pdf);
+    s->weight = f * (fabs(s->wi.z) / pdf);
     return all_finite(s->weight);
 }
 

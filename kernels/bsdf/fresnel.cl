@@ -47,6 +47,19 @@ inline float fresnel_dielectric(float cos_i, float eta) {
     return isfinite(f) ? clamp(f, 0.0f, 1.0f) : 1.0f;
 }
 
+/* The dielectric transmittance 1 - F of a refraction whose two cosines are known,
+ * cos_i on the incident side and cos_t on the far side (both > 0; eta = n_t / n_i):
+ * 1 - rs^2 = 4 eta ci ct / (ci + eta ct)^2 and 1 - rp^2 = 4 eta ci ct / (eta ci + ct)^2,
+ * without the cancellation of 1 - F or of cos_t = sqrt(1 - sin^2_t) near the critical
+ * angle; symmetric under (ci, ct, eta) -> (ct, ci, 1 / eta), as reciprocity demands. */
+inline float fresnel_dielectric_transmittance(float cos_i, float cos_t, float eta) {
+    float a = cos_i + eta * cos_t;
+    float b = eta * cos_i + cos_t;
+    if (!(a > 0.0f) || !(b > 0.0f)) return 0.0f;
+    float t = 2.0f * eta * cos_i * cos_t * (1.0f / (a * a) + 1.0f / (b * b));
+    return isfinite(t) ? clamp(t, 0.0f, 1.0f) : 0.0f;
+}
+
 /* Exact conductor reflectance of one channel, index eta + i k, from the outside. */
 inline float fresnel_conductor1(float cos_i, float eta, float k) {
     float c = clamp(cos_i, 0.0f, 1.0f);

@@ -8,6 +8,10 @@
  * max_depth bounces or by Russian roulette after rr_depth bounces (survival
  * probability = the path throughput's largest channel, pbrt-v4's rule).
  *
+ * Dielectrics transmit: a sampled or light direction may cross the surface, and the
+ * next ray then starts on the far side (offset along -ng); inside or outside is read
+ * from the geometric normal's side of wo.
+ *
  * Samples whose radiance is NaN, infinite or negative are not added; they are
  * counted in the accumulation buffer's w channel so that tests can demand zero. */
 #ifndef FACET_INTEGRATOR_PATH_CL
@@ -29,13 +33,19 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
     float2 u = rng_float2(rng);
     LightSample ls;
     if (!sample_light(sc, s->p, u_pick, u, &ls)) return (float3)(0.0f);
-    if (dot(s->ng, ls.wi) <= 0.0f) return (float3)(0.0f);
+    /* Lights behind the surface count only through a dielectric; the shading frame
+     * must put them on the same side as the geometric normal does. */
+    float side = dot(s->ng, ls.wi);
+    if (!(side > 0.0f) && !(side < 0.0f && bsdf_is_dielectric(m))) return (float3)(0.0f);
     float3 wi_local = frame_to_local(frame, ls.wi);
+    if (!(wi_local.z * side > 0.0f)) return (float3)(0.0f);
     float3 f = bsdf_eval(m, wo_local, wi_local);
     if (is_black(f)) return (float3)(0.0f);
+    float cos_i = fabs(wi_local.z);
 
-    /* Shadow ray: to the offset point on an area light, else to the light's distance. */
-    float3 o = offset_ray_origin(s->p, s->ng);
+    /* Shadow ray from the side of wi: to the offset point on an area light, else to
+     * the light's distance. */
+    float3 o = offset_ray_origin(s->p, side > 0.0f ? s->ng : -s->ng);
     float3 dir = ls.wi;
     float tmax = ls.dist;
     if (isfinite(ls.dist) && !ls.delta) {
@@ -49,11 +59,11 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
     }
     if (trace_any(sc->nodes, sc->tris, o, dir, tmax)) return (float3)(0.0f);
 
-    if (ls.delta) return f * ls.li * (wi_local.z / ls.pdf);
+    if (ls.delta) return f * ls.li * (cos_i / ls.pdf);
     uint strategy = sc->params->strategy;
     if (strategy == FC_STRATEGY_BSDF) return (float3)(0.0f);
     float w = strategy == FC_STRATEGY_LIGHT ? 1.0f : power_heuristic(ls.pdf, bsdf_pdf(m, wo_local, wi_local));
-    return f * ls.li * (wi_local.z * w / ls.pdf);
+    return f * ls.li * (cos_i * w / ls.pdf);
 }
 
 /* The weight of light found by BSDF sampling, against light sampling's density. After
@@ -83,7 +93,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
             break;
         }
         Surface s = surface_at(sc->tris, sc->shading, &hit);
-        const FcMaterial mat = sc->materials[s.material];
+        FcMaterial mat = sc->materials[s.material];
         const FcMaterial* m = &mat;
         float3 wo = -d;
 
@@ -101,10 +111,13 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
 #endif
         if (depth >= P->max_depth) break;
 
-        /* Two-sided shading: work on the side the ray arrived from. */
+        /* Two-sided shading: work on the side the ray arrived from. A ray arriving from
+         * behind the normals (the inside of a closed dielectric) sees the relative
+         * index n_outside / n_inside = 1 / ior (docs/conventions.md). */
         if (dot(s.ng, wo) < 0.0f) {
             s.ng = -s.ng;
             s.ns = -s.ns;
+            if (bsdf_is_dielectric(m)) mat.ior = 1.0f / mat.ior;
         }
         Frame frame = frame_from_normal(s.ns);
         float3 wo_local = frame_to_local(&frame, wo);
@@ -120,7 +133,10 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
         BsdfSample bs;
         if (!bsdf_sample(m, wo_local, u, &bs)) break;
         float3 wi = frame_to_world(&frame, bs.wi);
-        if (dot(s.ng, wi) <= 0.0f) break;   /* the shading normal sends the path below the surface */
+        /* The shading frame and the geometric normal must agree on wi's side (a
+         * reflection stays on wo's side, a refraction crosses). */
+        float side = dot(s.ng, wi);
+        if (!(side * bs.wi.z > 0.0f)) break;
         throughput *= bs.weight;
         prev_bsdf_pdf = bs.delta ? INFINITY : bs.pdf;
 
@@ -129,7 +145,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
             if (rng_float(rng) >= survive) break;
             throughput /= survive;
         }
-        o = offset_ray_origin(s.p, s.ng);
+        o = offset_ray_origin(s.p, side > 0.0f ? s.ng : -s.ng);
         d = wi;
     }
     return radiance;

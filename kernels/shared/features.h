@@ -16,7 +16,8 @@
     X(ASHIKHMIN_SHIRLEY, 4)       \
     X(BLINN_PHONG, 5)             \
     X(MICROFACET, 6)              \
-    X(BECKMANN, 7)
+    X(BECKMANN, 7)                \
+    X(DIELECTRIC, 8)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -41,6 +42,9 @@
 #endif
 #ifndef FC_HAS_BECKMANN
 #define FC_HAS_BECKMANN 1
+#endif
+#ifndef FC_HAS_DIELECTRIC
+#define FC_HAS_DIELECTRIC 1
 #endif
 
 #endif

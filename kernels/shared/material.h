@@ -9,7 +9,12 @@
  *   blinn_phong_normalized  diffuse LAMBERT,            specular BLINN_PHONG_NORMALIZED ((n+8)/8pi)
  *   ashikhmin_shirley       diffuse ASHIKHMIN_SHIRLEY,  specular ASHIKHMIN_SHIRLEY
  *   ggx (the default)       diffuse LAMBERT_1MF0,       specular MICROFACET (GGX, height-correlated Smith, Schlick F0)
- *   microfacet              any diffuse, MICROFACET with any D, G, F */
+ *   microfacet              any diffuse, MICROFACET with any D, G, F
+ *   conductor               diffuse NONE, MICROFACET (GGX, correlated Smith, exact conductor F, eta + i k)
+ *   dielectric              diffuse NONE, DIELECTRIC (glass, water: the whole BSDF, any diffuse ignored)
+ * The dielectric reads ior as n_below / n_above (inside over outside), the microfacet
+ * terms as the microfacet lobe does, and `specular` as a transmittance applied at each
+ * refraction (kernels/bsdf/dielectric.cl). */
 #ifndef FACET_SHARED_MATERIAL_H
 #define FACET_SHARED_MATERIAL_H
 
@@ -29,7 +34,8 @@
 #define FC_SPECULAR_BLINN_PHONG 2             /* Ks (n.h)^e / pi, the original (Blinn 1977) */
 #define FC_SPECULAR_BLINN_PHONG_NORMALIZED 3  /* Ks (e + 8) / (8 pi) (n.h)^e */
 #define FC_SPECULAR_ASHIKHMIN_SHIRLEY 4       /* anisotropic Phong (Ashikhmin & Shirley 2000) */
-#define FC_SPECULAR_COUNT 5
+#define FC_SPECULAR_DIELECTRIC 5              /* reflection + refraction, smooth or rough (Walter 2007) */
+#define FC_SPECULAR_COUNT 6
 
 /* Normal distributions (FcMaterial.ndf). */
 #define FC_NDF_BECKMANN 0

@@ -1,0 +1,167 @@
+/* The dielectric BSDF (FC_SPECULAR_DIELECTRIC): reflection and refraction at the
+ * interface between two non-absorbing media, smooth or rough.
+ *
+ * Parameters: ior = eta = n_below / n_above (the index of the -z side, "inside", over
+ * the +z side's; the integrator passes 1 / ior when the ray arrives from inside),
+ * 1.0001 to 20 and below 1; ndf and alpha_x/alpha_y (GGX or Beckmann); geometry
+ * smith_separable, else height-correlated Smith; specular = a transmittance applied
+ * at each refraction (1 = clear); sampling = visible or all normals. Unlike the
+ * reflection lobes, wo and wi may lie on either side (wo.z != 0).
+ *
+ * - Rough (alpha >= FC_ALPHA_MIRROR): Walter et al. 2007, "Microfacet Models for
+ *   Refraction through Rough Surfaces", EGSR. Reflection is eq. 20,
+ *   D G F / (4 |cos_o| |cos_i|), h = normalize(wo + wi). Refraction uses the
+ *   generalised half vector h = -(n_i wi + n_o wo) / |...| (eq. 16, n_i the index on
+ *   wi's side, n_o on wo's), turned to +z, and eq. 21:
+ *       f_t = |wi.h| |wo.h| / (|cos_i| |cos_o|) n_o^2 (1 - F) G D / (n_i wi.h + n_o wo.h)^2.
+ *   Microfacets seen from behind by wo or wi contribute nothing (the chi+ of eq. 23).
+ *   Sampling draws h from the NDF seen from wo (visible normals: Heitz 2018 for GGX,
+ *   beckmann.cl for Beckmann; or D cos), then reflects with probability F(wo.h) and
+ *   refracts otherwise (Walter 2007, section 5.3), so the density of wi is
+ *       reflection  F pdf_h / (4 |wo.h|)                               (eq. 14)
+ *       refraction  (1 - F) pdf_h n_i^2 |wi.h| / (n_i wi.h + n_o wo.h)^2 (eq. 17).
+ * - Smooth (alpha below FC_ALPHA_MIRROR): a delta BSDF. Sampling reflects with
+ *   probability F(cos_o) (exact Fresnel, fresnel_dielectric: 1 under total internal
+ *   reflection) and refracts otherwise (refraction.cl); the weight is 1 for the
+ *   reflection and specular / etap^2 for the refraction; eval and pdf give 0.
+ *
+ * Radiance scaling (docs/brdf.md, "Dielectrics"): eq. 21's n_o^2 / (...)^2 makes f_t the
+ * BTDF that transports radiance, which is multiplied by (n_o / n_i)^2 = 1 / etap^2
+ * across the boundary (etap = n_i / n_o; pbrt-v4 DielectricBxDF in Radiance mode).
+ * It is not symmetric: f(wo, wi) / n_o^2 = f(wi, wo) / n_i^2 (Veach 1997, eq. 5.14).
+ * Below, f_t is written as the importance form times 1 / etap^2.
+ *
+ * Every output is finite and >= 0; degenerate half vectors (|n_i wi + n_o wo| = 0, as
+ * wi = -wo at eta ~ 1) and wo or wi on the surface (z = 0) give f = 0 and pdf = 0. */
+#ifndef FACET_BSDF_DIELECTRIC_CL
+#define FACET_BSDF_DIELECTRIC_CL
+
+#include "../shared/material.h"
+#include "bsdf_sample.cl"
+#include "fresnel.cl"
+#include "ndf.cl"
+#include "refraction.cl"
+
+inline bool dielectric_is_smooth(const FcMaterial* m) {
+    float2 a = ndf_alpha(m);
+    return !(fmax(a.x, a.y) >= FC_ALPHA_MIRROR);
+}
+
+inline float3 dielectric_tint(const FcMaterial* m) { return (float3)(m->specular[0], m->specular[1], m->specular[2]); }
+
+/* Shadowing-masking for both sides: Lambda uses |w.z|. */
+inline float dielectric_G(const FcMaterial* m, float3 wo, float3 wi) {
+    float lo = ndf_lambda(m, wo);
+    float li = ndf_lambda(m, wi);
+    if (m->geometry == FC_G_SMITH_SEPARABLE) return 1.0f / ((1.0f + lo) * (1.0f + li));
+    return 1.0f / (1.0f + lo + li);
+}
+
+/* The (generalised) half vector of wo and wi, on the +z side, and etap = n_i / n_o
+ * (1 for a reflection) and |wo + etap wi|; false when degenerate or when wo or wi sees
+ * the back of h. */
+typedef struct {
+    float3 h;
+    float etap;
+    float len;
+    bool reflect;
+} DielectricPair;
+
+inline bool dielectric_pair(const FcMaterial* m, float3 wo, float3 wi, DielectricPair* p) {
+    float co = wo.z, ci = wi.z;
+    if (!(fabs(co) > 0.0f) || !(fabs(ci) > 0.0f)) return false;
+    p->reflect = co * ci > 0.0f;
+    p->etap = p->reflect ? 1.0f : relative_eta(m->ior, co);
+    float3 v = wo + p->etap * wi;
+    p->len = length(v);
+    if (!(p->len > 0.0f) || !isfinite(p->len)) return false;
+    p->h = v / p->len;
+    if (p->h.z < 0.0f) p->h = -p->h;
+    return dot(p->h, wi) * ci > 0.0f && dot(p->h, wo) * co > 0.0f;
+}
+
+/* The Fresnel factor of the pair's lobe: F for a reflection; for a refraction 1 - F,
+ * as the transmittance of the pair's two cosines (well conditioned near the critical
+ * angle, and reciprocal). */
+inline float dielectric_lobe_fresnel(const FcMaterial* m, const DielectricPair* p, float oh, float ih) {
+    if (p->reflect) return fresnel_dielectric(oh, m->ior);
+    return fresnel_dielectric_transmittance(fabs(oh), fabs(ih), p->etap);
+}
+
+/* The density of h seen from wo (either side): the NDF's, for wo turned to +z. */
+inline float dielectric_pdf_h(const FcMaterial* m, float3 wo, float3 h) {
+    float3 wv = wo.z < 0.0f ? -wo : wo;
+    if (ndf_samples_visible(m)) return ndf_D(m, h) * fmax(dot(wv, h), 0.0f) / ndf_projected_area(m, wv);
+    return ndf_pdf(m, wv, h);
+}
+
+inline float3 dielectric_eval(const FcMaterial* m, float3 wo, float3 wi) {
+    DielectricPair p;
+    if (dielectric_is_smooth(m) || !dielectric_pair(m, wo, wi, &p)) return (float3)(0.0f);
+    float d = ndf_D(m, p.h);
+    if (!(d > 0.0f)) return (float3)(0.0f);
+    float g = dielectric_G(m, wo, wi);
+    float oh = dot(wo, p.h), ih = dot(wi, p.h);
+    float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
+    float3 f;
+    if (p.reflect) {
+        f = (float3)(d * g * fl / (4.0f * fabs(wo.z) * fabs(wi.z)));
+    } else {
+        /* Eq. 21 as the BTDF of importance (no scaling, pbrt-v4's Importance mode),
+         * (1 - F) D G |wi.h| |wo.h| etap^2 / (|cos_i| |cos_o| |wo + etap wi|^2), times the
+         * radiance scaling 1 / etap^2 (|wo + etap wi| = |n_i wi.h + n_o wo.h| / n_o). */
+        float importance = fl * d * g * fabs(ih * oh) / (fabs(wi.z) * fabs(wo.z)) * (p.etap * p.etap) /
+                           (p.len * p.len);
+        f = dielectric_tint(m) * (importance / (p.etap * p.etap));
+    }
+    return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
+}
+
+inline float dielectric_pdf(const FcMaterial* m, float3 wo, float3 wi) {
+    DielectricPair p;
+    if (dielectric_is_smooth(m) || !dielectric_pair(m, wo, wi, &p)) return 0.0f;
+    float oh = dot(wo, p.h), ih = dot(wi, p.h);
+    float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
+    float pdf_h = dielectric_pdf_h(m, wo, p.h);
+    float pdf = p.reflect ? fl * pdf_h / (4.0f * fabs(oh))
+                          : fl * pdf_h * (p.etap * p.etap) * fabs(ih) / (p.len * p.len);
+    return isfinite(pdf) ? fmax(pdf, 0.0f) : 0.0f;
+}
+
+/* The smooth interface: reflect with probability F, else refract (delta lobes). */
+inline bool dielectric_sample_smooth(const FcMaterial* m, float3 wo, float u, BsdfSample* s) {
+    s->delta = 1;
+    s->pdf = INFINITY;
+    s->f = (float3)(0.0f);
+    float fr = fresnel_dielectric(wo.z, m->ior);
+    if (u < fr) {
+        s->wi = (float3)(-wo.x, -wo.y, wo.z);
+        s->weight = (float3)(1.0f);
+        return true;
+    }
+    if (!refract_about(wo, (float3)(0.0f, 0.0f, 1.0f), m->ior, &s->wi)) return false;
+    if (!(s->wi.z * wo.z < 0.0f)) return false;
+    float etap = relative_eta(m->ior, wo.z);
+    s->weight = dielectric_tint(m) / (etap * etap);
+    return all_finite(s->weight);
+}
+
+/* u.xy draws the microfacet normal, u.z chooses reflection or refraction. */
+inline bool dielectric_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s) {
+    s->delta = 0;
+    if (!(fabs(wo.z) > 0.0f)) return false;
+    if (dielectric_is_smooth(m)) return dielectric_sample_smooth(m, wo, u.z, s);
+    float3 wv = wo.z < 0.0f ? -wo : wo;
+    float3 h = ndf_sample(m, wv, u.xy);
+    float oh = dot(wo, h);
+    if (u.z < fresnel_dielectric(oh, m->ior)) {
+        s->wi = 2.0f * oh * h - wo;   /* Walter 2007, eq. 39 */
+        if (!(s->wi.z * wo.z > 0.0f)) return false;
+    } else {
+        if (!refract_about(wo, h, m->ior, &s->wi)) return false;   /* eq. 40 */
+        if (!(s->wi.z * wo.z < 0.0f)) return false;
+    }
+    return finish_sample(s, dielectric_eval(m, wo, s->wi), dielectric_pdf(m, wo, s->wi));
+}
+
+#endif
