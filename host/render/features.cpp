@@ -61,6 +61,10 @@ FeatureMask scene_features(const Scene& scene) {
             mask |= kMICROFACET;
             if (m.ndf == FC_NDF_BECKMANN) mask |= kBECKMANN;
         }
+        if (m.specular_model == FC_SPECULAR_DIELECTRIC) {
+            mask |= kDIELECTRIC;
+            if (m.ndf == FC_NDF_BECKMANN) mask |= kBECKMANN;
+        }
     }
     return mask;
 }

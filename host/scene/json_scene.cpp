@@ -116,7 +116,8 @@ struct Loader {
         r.object(v, path,
                  {"model", "diffuse", "specular", "f0", "emission", "two_sided_emission", "roughness",
                   "roughness_x", "roughness_y", "shininess", "shininess_x", "shininess_y", "sigma", "ior",
-                  "eta", "k", "diffuse_model", "specular_model", "ndf", "geometry", "fresnel", "sampling"});
+                  "eta", "k", "diffuse_model", "specular_model", "ndf", "geometry", "fresnel", "sampling",
+                  "conductor", "transmittance"});
         auto k = [&](const char* key) { return JsonReader::key(path, key); };
         auto put = [](float out[3], glm::vec3 c) {
             out[0] = c.x;
@@ -173,6 +174,20 @@ struct Loader {
         if (v.contains("shininess_y")) set_shininess(r.number_in(v["shininess_y"], k("shininess_y"), 0, 1e6), m.exponent_y, m.alpha_y);
         if (v.contains("sigma")) m.roughness = r.number_in(v["sigma"], k("sigma"), 0, 1.5707963);
         if (v.contains("ior")) m.ior = r.number_in(v["ior"], k("ior"), 1e-3, 100);
+        if (v.contains("conductor")) {
+            // A metal's complex index, with its Schlick F0 beside it for "fresnel": "schlick".
+            std::string metal = r.string(v["conductor"], k("conductor"));
+            std::optional<ConductorIndex> c = conductor_preset(metal);
+            if (!c) {
+                std::string known;
+                for (std::string_view n : conductor_preset_names()) known += (known.empty() ? "" : ", ") + std::string(n);
+                r.fail(k("conductor"), fmt::format("unknown conductor '{}' (known: {})", metal, known));
+            }
+            std::array<float, 3> f0 = *f0_preset(metal);
+            for (int c3 = 0; c3 < 3; ++c3) m.eta[c3] = c->eta[c3], m.k[c3] = c->k[c3], m.specular[c3] = f0[c3];
+            m.fresnel = FC_FRESNEL_CONDUCTOR;
+        }
+        if (v.contains("transmittance")) put(m.specular, r.color(v["transmittance"], k("transmittance")));
         if (v.contains("eta")) put(m.eta, r.color(v["eta"], k("eta")));
         if (v.contains("k")) put(m.k, r.color(v["k"], k("k")));
         auto choice = [&](const char* key, MaterialEnum kind, fc_int& field) {

@@ -40,6 +40,7 @@ FcMaterial base_material() {
 struct Preset {
     std::string_view name;
     int diffuse, specular, ndf, geometry;
+    int fresnel = FC_FRESNEL_SCHLICK;
 };
 // kernels/shared/material.h's table; microfacet is ggx's lobes with any D, G, F.
 constexpr Preset kPresets[] = {
@@ -53,6 +54,8 @@ constexpr Preset kPresets[] = {
      FC_G_SMITH_CORRELATED},
     {"ggx", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
     {"microfacet", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
+    {"conductor", FC_DIFFUSE_NONE, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_CONDUCTOR},
+    {"dielectric", FC_DIFFUSE_NONE, FC_SPECULAR_DIELECTRIC, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_DIELECTRIC},
 };
 
 const std::vector<EnumName> kDiffuse = {{"none", FC_DIFFUSE_NONE}, {"lambert", FC_DIFFUSE_LAMBERT},
@@ -60,7 +63,7 @@ const std::vector<EnumName> kDiffuse = {{"none", FC_DIFFUSE_NONE}, {"lambert", F
     {"ashikhmin_shirley", FC_DIFFUSE_ASHIKHMIN_SHIRLEY}};
 const std::vector<EnumName> kSpecular = {{"none", FC_SPECULAR_NONE}, {"microfacet", FC_SPECULAR_MICROFACET},
     {"blinn_phong", FC_SPECULAR_BLINN_PHONG}, {"blinn_phong_normalized", FC_SPECULAR_BLINN_PHONG_NORMALIZED},
-    {"ashikhmin_shirley", FC_SPECULAR_ASHIKHMIN_SHIRLEY}};
+    {"ashikhmin_shirley", FC_SPECULAR_ASHIKHMIN_SHIRLEY}, {"dielectric", FC_SPECULAR_DIELECTRIC}};
 const std::vector<EnumName> kNdf = {
     {"beckmann", FC_NDF_BECKMANN}, {"ggx", FC_NDF_GGX}, {"blinn_phong", FC_NDF_BLINN_PHONG}};
 const std::vector<EnumName> kGeometry = {{"implicit", FC_G_IMPLICIT}, {"cook_torrance", FC_G_COOK_TORRANCE},
@@ -70,6 +73,11 @@ const std::vector<EnumName> kFresnel = {{"one", FC_FRESNEL_ONE}, {"schlick", FC_
     {"schlick_ior", FC_FRESNEL_SCHLICK_IOR}, {"dielectric", FC_FRESNEL_DIELECTRIC},
     {"conductor", FC_FRESNEL_CONDUCTOR}};
 const std::vector<EnumName> kSampling = {{"visible", FC_SAMPLE_VISIBLE}, {"all", FC_SAMPLE_ALL}};
+
+struct ConductorRow {
+    std::string_view name;
+    std::array<float, 3> eta, k;
+};
 
 struct F0Row {
     std::string_view name;
@@ -86,6 +94,28 @@ constexpr F0Row kF0[] = {
     {"copper", {0.95f, 0.64f, 0.54f}},       {"gold", {1.00f, 0.71f, 0.29f}},
     {"aluminium", {0.91f, 0.92f, 0.92f}},    {"aluminum", {0.91f, 0.92f, 0.92f}},
     {"silver", {0.95f, 0.93f, 0.88f}},
+};
+
+// Complex indices n + i k of metals at R = 630 nm, G = 532 nm, B = 465 nm, linearly
+// interpolated in photon energy between the tabulated points (and rounded to 2-3
+// digits) of:
+//   gold, silver, copper  P. B. Johnson and R. W. Christy, "Optical constants of the
+//                         noble metals", Phys. Rev. B 6, 4370 (1972), table 1;
+//   aluminium             A. D. Rakic, "Algorithm for the determination of intrinsic
+//                         optical constants of metal films: application to aluminum",
+//                         Appl. Opt. 34, 4755 (1995);
+//   iron                  P. B. Johnson and R. W. Christy, "Optical constants of
+//                         transition metals", Phys. Rev. B 9, 5056 (1974).
+// The values were transcribed as the refractiveindex.info tables print them; they are
+// point samples, not spectral integrals over the RGB primaries, so the normal-incidence
+// reflectance differs from the F0 table above by up to ~0.12 (gold's blue).
+constexpr ConductorRow kConductors[] = {
+    {"gold", {0.188f, 0.543f, 1.33f}, {3.40f, 2.23f, 1.87f}},
+    {"silver", {0.056f, 0.054f, 0.047f}, {4.28f, 3.43f, 2.81f}},
+    {"copper", {0.271f, 1.10f, 1.24f}, {3.41f, 2.59f, 2.40f}},
+    {"aluminium", {1.37f, 0.958f, 0.665f}, {7.62f, 6.69f, 5.66f}},
+    {"aluminum", {1.37f, 0.958f, 0.665f}, {7.62f, 6.69f, 5.66f}},
+    {"iron", {2.88f, 2.80f, 2.55f}, {3.05f, 2.95f, 2.80f}},
 };
 
 std::string lower(std::string_view s) {
@@ -115,6 +145,17 @@ std::optional<FcMaterial> material_preset(std::string_view model) {
         m.specular_model = p.specular;
         m.ndf = p.ndf;
         m.geometry = p.geometry;
+        m.fresnel = p.fresnel;
+        if (p.specular == FC_SPECULAR_DIELECTRIC) {
+            set3(m.specular, 1.0f);   // clear: no absorption at the refractions
+            m.alpha_x = m.alpha_y = 0.0f;   // smooth glass
+        }
+        if (p.fresnel == FC_FRESNEL_CONDUCTOR) {
+            ConductorIndex c = *conductor_preset("aluminium");
+            std::array<float, 3> f0 = *f0_preset("aluminium");
+            for (int i = 0; i < 3; ++i) m.eta[i] = c.eta[i], m.k[i] = c.k[i], m.specular[i] = f0[i];
+            set3(m.diffuse, 0.0f);
+        }
         return m;
     }
     return std::nullopt;
@@ -131,8 +172,7 @@ std::string material_model_of(const FcMaterial& m) {
     for (const Preset& p : kPresets) {
         if (p.name == "microfacet" || m.diffuse_model != p.diffuse || m.specular_model != p.specular) continue;
         bool microfacet = p.specular == FC_SPECULAR_MICROFACET;
-        if (microfacet && (m.ndf != p.ndf || m.geometry != p.geometry || m.fresnel != FC_FRESNEL_SCHLICK))
-            continue;
+        if (microfacet && (m.ndf != p.ndf || m.geometry != p.geometry || m.fresnel != p.fresnel)) continue;
         return std::string(p.name);
     }
     return m.specular_model == FC_SPECULAR_MICROFACET ? "microfacet" : "custom";
@@ -200,6 +240,19 @@ std::optional<std::array<float, 3>> f0_preset(std::string_view name) {
     for (const F0Row& r : kF0)
         if (r.name == n) return r.f0;
     return std::nullopt;
+}
+
+std::optional<ConductorIndex> conductor_preset(std::string_view name) {
+    std::string n = lower(name);
+    for (const ConductorRow& r : kConductors)
+        if (r.name == n) return ConductorIndex{r.eta, r.k};
+    return std::nullopt;
+}
+
+std::vector<std::string_view> conductor_preset_names() {
+    std::vector<std::string_view> v;
+    for (const ConductorRow& r : kConductors) v.push_back(r.name);
+    return v;
 }
 
 std::vector<std::string_view> f0_preset_names() {
@@ -283,6 +336,12 @@ std::string describe_material(const FcMaterial& m) {
         case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
             s += fmt::format(" specular ashikhmin_shirley F0={} nu={:g} nv={:g}", rgb(m.specular), m.exponent_x,
                              m.exponent_y);
+            break;
+        case FC_SPECULAR_DIELECTRIC:
+            s += fmt::format(" specular dielectric ior={:g} D={} transmittance={}", m.ior,
+                             enum_to_name(MaterialEnum::Ndf, m.ndf), rgb(m.specular));
+            if (std::max(m.alpha_x, m.alpha_y) < FC_ALPHA_MIRROR) s += " smooth";
+            else s += fmt::format(" alpha=({:g}, {:g})", m.alpha_x, m.alpha_y);
             break;
         default:
             if (m.specular_model != FC_SPECULAR_NONE) s += fmt::format(" specular invalid({})", m.specular_model);

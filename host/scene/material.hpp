@@ -16,7 +16,9 @@ namespace facet {
 
 // --- named models ---------------------------------------------------------------------
 // "lambert", "oren_nayar", "cook_torrance", "blinn_phong", "blinn_phong_normalized",
-// "ashikhmin_shirley", "ggx" (the default) and "microfacet", in that order.
+// "ashikhmin_shirley", "ggx" (the default), "microfacet", "conductor" (GGX with the
+// exact conductor Fresnel, aluminium's eta + i k, no diffuse lobe) and "dielectric"
+// (smooth clear glass, ior 1.5, no diffuse lobe), in that order.
 const std::vector<std::string_view>& material_model_names();
 inline constexpr std::string_view kDefaultMaterialModel = "ggx";
 
@@ -40,7 +42,7 @@ struct EnumName {
 };
 // Every name of the enum in value order (each value has exactly one name):
 //  Diffuse:  none lambert lambert_1mf0 oren_nayar ashikhmin_shirley
-//  Specular: none microfacet blinn_phong blinn_phong_normalized ashikhmin_shirley
+//  Specular: none microfacet blinn_phong blinn_phong_normalized ashikhmin_shirley dielectric
 //  Ndf:      beckmann ggx blinn_phong
 //  Geometry: implicit cook_torrance smith_separable smith_correlated smith_schlick smith_walter
 //  Fresnel:  one schlick schlick_ior dielectric conductor
@@ -69,6 +71,17 @@ float roughness_from_shininess(float s);
 // gold, aluminium (= aluminum), silver. Names are case-insensitive.
 std::optional<std::array<float, 3>> f0_preset(std::string_view name);
 std::vector<std::string_view> f0_preset_names();
+
+// --- complex indices of metals ----------------------------------------------------------
+// eta + i k per linear-RGB channel (R 630 nm, G 532 nm, B 465 nm) of gold, silver, copper,
+// aluminium (= aluminum) and iron, from published optical data (material.cpp cites it).
+// Names are case-insensitive. The F0 presets of the same names are the Schlick
+// alternative ("fresnel": "schlick" in a scene compares the two).
+struct ConductorIndex {
+    std::array<float, 3> eta, k;
+};
+std::optional<ConductorIndex> conductor_preset(std::string_view name);
+std::vector<std::string_view> conductor_preset_names();
 // The sRGB transfer function's inverse (IEC 61966-2-1), for colours given in sRGB.
 float srgb_to_linear(float c);
 

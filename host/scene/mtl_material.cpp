@@ -69,6 +69,7 @@ struct Pending {
     float pr = 0.0f;
     bool has_ns = false;
     float ns = 0.0f;
+    float tf[3] = {1.0f, 1.0f, 1.0f};
 };
 
 // Chooses the model from what the MTL gives (docs/scene-format.md, "MTL materials"):
@@ -77,6 +78,11 @@ struct Pending {
 //   perceptual roughness, as in glTF and Disney 2012); no Pr: alpha from Ns;
 // - a specular colour (Ks > 0) with illum 2 or more: normalized Blinn-Phong with Ks
 //   and exponent Ns (the energy-normalised form of MTL's Phong highlight);
+// - illum 5 (a ray-traced mirror): a perfect mirror reflecting Ks (Schlick Fresnel
+//   with F0 = Ks, alpha 0), no diffuse lobe;
+// - illum 7 (refraction on, Fresnel on): smooth clear glass of index Ni (exact Fresnel,
+//   Snell refraction), tinted by Tf: the transmittance sqrt(Tf) at each refraction, so
+//   that light through a closed object is filtered by Tf once;
 // - otherwise Lambert with Kd.
 MtlMaterial finish(Pending& p) {
     MtlMaterial m = p.m;
@@ -85,7 +91,15 @@ MtlMaterial finish(Pending& p) {
     const bool pbr = p.has_pr || p.has_pm;
     const bool has_ks = p.has_ks && (mat.specular[0] > 0.0f || mat.specular[1] > 0.0f || mat.specular[2] > 0.0f);
     FcMaterial base = mat;
-    if (pbr) {
+    if (m.illum == 5 && !pbr) {
+        mat = make_material("conductor");
+        mat.fresnel = FC_FRESNEL_SCHLICK;
+        for (int c = 0; c < 3; ++c) mat.specular[c] = p.has_ks ? std::min(base.specular[c], 1.0f) : 1.0f;
+        mat.alpha_x = mat.alpha_y = 0.0f;
+    } else if (m.illum == 7 && !pbr) {
+        mat = make_material("dielectric");
+        for (int c = 0; c < 3; ++c) mat.specular[c] = std::sqrt(std::min(p.tf[c], 1.0f));
+    } else if (pbr) {
         mat = make_material("ggx");
         float alpha = p.has_pr ? std::max(p.pr * p.pr, 1e-3f) : roughness_from_shininess(shininess);
         float f0 = ((base.ior - 1.0f) / (base.ior + 1.0f)) * ((base.ior - 1.0f) / (base.ior + 1.0f));
@@ -133,8 +147,8 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             continue;
         }
         const bool known = kw == "Kd" || kw == "Ks" || kw == "Ke" || kw == "Ns" || kw == "Ni" ||
-                           kw == "d" || kw == "illum" || kw == "Pr" || kw == "Pm";
-        if (!known && !is_texture_statement(kw)) continue;  // Ka, Tf, Tr, ...: not used
+                           kw == "d" || kw == "illum" || kw == "Pr" || kw == "Pm" || kw == "Tf";
+        if (!known && !is_texture_statement(kw)) continue;  // Ka, Tr, ...: not used
         if (list.empty()) l.fail(fmt::format("'{}' before any 'newmtl'", kw));
         Pending& p = list.back();
         FcMaterial& mat = p.m.material;
@@ -146,6 +160,8 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
         }
         else if (kw == "Ke")
             l.color(mat.emission);
+        else if (kw == "Tf")
+            l.color(p.tf);
         else if (kw == "Ns") {
             p.ns = l.scalar(0.0f, 1e9f);
             p.has_ns = true;
