@@ -50,6 +50,7 @@ expect too-big-for-device 1 "MiB" -- "$FACET" render "$SCENES/cornell_box.json" 
 expect unknown-strategy 2 "strategy" -- "$FACET" render "$SCENES/cornell_box.json" --strategy sometimes
 expect sky 0 "wrote" -- "$FACET" sky "$tmp/sky.exr" --width 64
 expect render-sky-scene 0 "wrote" -- "$FACET" render "$SCENES/spheres_sky.json" "${small[@]}" --out "$tmp/sky_render.exr"
+expect render-glass-metal 0 "wrote" -- "$FACET" render "$SCENES/glass_metal_sky.json" "${small[@]}" --out "$tmp/glass.exr"
 expect render-material-grid 0 "wrote" -- "$FACET" render "$SCENES/material_grid.json" "${small[@]}" --out "$tmp/grid.exr"
 expect unwritable-output 1 "cb\.exr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --out /proc/cb.exr
 

@@ -89,7 +89,7 @@ TEST(Features, LambertCornellBoxLeavesOutEverythingElse) {
     Renderer r(test::context(), scene, bvh);
     EXPECT_TRUE(built_with(r, "AREA_LIGHTS", 1));
     for (const char* off : {"ENVIRONMENT", "PUNCTUAL_LIGHTS", "MICROFACET", "BECKMANN", "BLINN_PHONG",
-                            "ASHIKHMIN_SHIRLEY", "OREN_NAYAR"})
+                            "ASHIKHMIN_SHIRLEY", "OREN_NAYAR", "DIELECTRIC"})
         EXPECT_TRUE(built_with(r, off, 0)) << off;
     Renderer g(test::context(), scene, bvh, true);
     EXPECT_TRUE(prelude(g).empty()) << "the generic program has no prelude";
@@ -108,7 +108,8 @@ TEST(Features, SceneAnalysis) {
 
 // Every demo scene: the specialised program renders what the generic one does.
 TEST(Features, DemoScenesMatchGeneric) {
-    for (const char* file : {"cornell_box.json", "material_grid.json", "spheres_sky.json", "furnace_sphere.json"})
+    for (const char* file :
+         {"cornell_box.json", "material_grid.json", "spheres_sky.json", "furnace_sphere.json", "glass_metal_sky.json"})
         expect_same_distribution(render_both(small(file), 16), file);
 }
 
@@ -144,6 +145,12 @@ TEST(Features, EveryFlagIsExercised) {
     with_material("blinn_phong", make_material("blinn_phong_normalized"));
     with_material("ggx", make_material("ggx"));
     with_material("beckmann", make_material("cook_torrance"));
+    with_material("dielectric", make_material("dielectric"));
+    FcMaterial rough_glass = make_material("dielectric");
+    rough_glass.ndf = FC_NDF_BECKMANN;
+    rough_glass.alpha_x = rough_glass.alpha_y = 0.2f;
+    with_material("rough dielectric (beckmann)", rough_glass);
+    with_material("conductor", make_material("conductor"));
     FeatureMask seen_on = 0, seen_off = 0;
     for (auto& [label, scene] : cases) {
         FeatureMask mask = scene_features(scene);

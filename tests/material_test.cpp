@@ -24,9 +24,20 @@ TEST(Models, PresetsFollowTheTable) {
                         {"blinn_phong_normalized", FC_DIFFUSE_LAMBERT, FC_SPECULAR_BLINN_PHONG_NORMALIZED},
                         {"ashikhmin_shirley", FC_DIFFUSE_ASHIKHMIN_SHIRLEY, FC_SPECULAR_ASHIKHMIN_SHIRLEY},
                         {"ggx", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET},
-                        {"microfacet", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET}};
+                        {"microfacet", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET},
+                        {"conductor", FC_DIFFUSE_NONE, FC_SPECULAR_MICROFACET},
+                        {"dielectric", FC_DIFFUSE_NONE, FC_SPECULAR_DIELECTRIC}};
     ASSERT_EQ(material_model_names().size(), std::size(rows));
     for (const Row& r : rows) {
+        // conductor and dielectric: their own colours (dielectric_test.cpp checks them)
+        if (r.diffuse == FC_DIFFUSE_NONE) {
+            FcMaterial m = make_material(r.name);
+            EXPECT_EQ(m.diffuse_model, r.diffuse) << r.name;
+            EXPECT_EQ(m.specular_model, r.specular) << r.name;
+            EXPECT_EQ(validate_material(m), "") << r.name;
+            EXPECT_EQ(material_model_of(m), r.name);
+            continue;
+        }
         FcMaterial m = make_material(r.name);
         EXPECT_EQ(m.diffuse_model, r.diffuse) << r.name;
         EXPECT_EQ(m.specular_model, r.specular) << r.name;

@@ -112,9 +112,9 @@ constexpr unsigned kItems = 4096;
 constexpr unsigned kPerItem = 245;   // 4096 x 245 = 1,003,520 samples
 constexpr unsigned kGroup = 256;    // work-items per local histogram
 
-// The chart histogram of kItems * kPerItem samples (cells, refused, invalid).
+// The chart histogram of kItems * per_item samples (cells, refused, invalid).
 inline std::vector<std::uint32_t> histogram(const FcMaterial& m, const Vec3& wo, int mode,
-                                            const chi2::Chart& chart, unsigned seed) {
+                                            const chi2::Chart& chart, unsigned seed, unsigned per_item = kPerItem) {
     std::vector<float> te(chart.theta_edges.begin(), chart.theta_edges.end());
     std::vector<float> pe(chart.phi_edges.begin(), chart.phi_edges.end());
     std::vector<std::uint32_t> zero(std::size_t(chart.cells()) + 2, 0u);
@@ -126,7 +126,7 @@ inline std::vector<std::uint32_t> histogram(const FcMaterial& m, const Vec3& wo,
     k.setArg(1, f4(wo));
     k.setArg(2, mode);
     k.setArg(3, seed);
-    k.setArg(4, kPerItem);
+    k.setArg(4, per_item);
     k.setArg(5, chart.n_theta());
     k.setArg(6, chart.n_phi());
     k.setArg(7, tb);

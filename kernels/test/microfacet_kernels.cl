@@ -148,7 +148,7 @@ __kernel void mf_consistency(__global const FcMaterial* mats, __global const flo
     ok = bsdf_sample(&m, o, u[i].xyz, &s);
     out[4 * i + 2] = (float4)(s.weight, ok ? 1.0f : 0.0f);
     float3 expect = (float3)(0.0f);
-    if (ok && !s.delta) expect = bsdf_eval(&m, o, s.wi) * (s.wi.z / bsdf_pdf(&m, o, s.wi));
+    if (ok && !s.delta) expect = bsdf_eval(&m, o, s.wi) * (fabs(s.wi.z) / bsdf_pdf(&m, o, s.wi));
     out[4 * i + 3] = (float4)(expect, (float)s.delta);
 }
 
@@ -189,6 +189,12 @@ inline FcMaterial sweep_material(Rng* r) {
         m.k[c] = 10.0f * rng_float(r);
     }
     m.flags = 0u;
+    if (m.specular_model == FC_SPECULAR_DIELECTRIC) {
+        /* eta from 1.0001 to 20, and its inverse (below 1) half the time. */
+        float u = rng_float(r);
+        m.ior = (u < 0.25f) ? 1.0001f : sweep_log_uniform(r, 0.0f, 1.30103f);
+        if (rng_float(r) < 0.5f) m.ior = 1.0f / m.ior;
+    }
     return m;
 }
 
@@ -206,17 +212,26 @@ inline void sweep_fail(__global uint* counters, __global FcMaterial* fail_mats, 
     fail_dirs[2 * slot + 1] = (float4)(wi, value);
 }
 
-/* Work-item i draws a material, wo and four wi (random, wo, -wo, the mirror), checks
- * eval and pdf of the BSDF and of the microfacet lobe for each, and both samplers.
- * counters[0] += cases checked, counters[1] = failures. */
+/* Work-item i draws a material, wo and five wi (random, wo, -wo, the mirror, and the
+ * refracted direction), checks eval and pdf of the BSDF and of the microfacet lobe for
+ * each, and both samplers. Dielectrics take wo and the random wi on either side (code 6:
+ * a dielectric sample's energy weight, weight etap^2, above 1 + 1e-3 with visible
+ * normals, where it is G2 / G1(wo) <= 1). counters[0] += cases checked, counters[1] =
+ * failures. */
 __kernel void mf_extreme_sweep(uint seed, __global uint* counters, __global FcMaterial* fail_mats,
                                __global float4* fail_dirs) {
     Rng r = rng_init(seed, (uint)get_global_id(0), 0x7377u);
     FcMaterial m = sweep_material(&r);
+    bool dielectric = m.specular_model == FC_SPECULAR_DIELECTRIC;
     float3 wo = sweep_direction(&r);
-    float3 dirs[4] = {sweep_direction(&r), wo, -wo, (float3)(-wo.x, -wo.y, wo.z)};
+    if (dielectric && rng_float(&r) < 0.5f) wo = -wo;
+    float3 wr = sweep_direction(&r);
+    if (dielectric && rng_float(&r) < 0.5f) wr = -wr;
+    float3 wt = -wo;
+    refract_about(wo, (float3)(0.0f, 0.0f, 1.0f), m.ior, &wt);
+    float3 dirs[5] = {wr, wo, -wo, (float3)(-wo.x, -wo.y, wo.z), wt};
     uint checked = 0u;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < 5; ++k) {
         float3 wi = dirs[k];
         float3 f = bsdf_eval(&m, wo, wi);
         if (!sweep_value_ok(f)) sweep_fail(counters, fail_mats, fail_dirs, &m, wo, wi, 1, f.x);
@@ -231,8 +246,14 @@ __kernel void mf_extreme_sweep(uint seed, __global uint* counters, __global FcMa
     BsdfSample s;
     if (bsdf_sample(&m, wo, u, &s)) {
         bool ok = sweep_value_ok(s.weight) && all_finite(s.wi);
-        if (!s.delta) ok = ok && s.wi.z > 0.0f && sweep_value_ok(s.f) && s.pdf > 0.0f && isfinite(s.pdf);
+        bool side_ok = dielectric ? fabs(s.wi.z) > 0.0f : s.wi.z > 0.0f;
+        if (!s.delta) ok = ok && side_ok && sweep_value_ok(s.f) && s.pdf > 0.0f && isfinite(s.pdf);
         if (!ok) sweep_fail(counters, fail_mats, fail_dirs, &m, wo, s.wi, 3, s.pdf);
+        if (ok && dielectric && (s.delta || ndf_samples_visible(&m))) {
+            float etap = (s.wi.z * wo.z > 0.0f) ? 1.0f : relative_eta(m.ior, wo.z);
+            float energy = max3(s.weight) * etap * etap;
+            if (!(energy <= 1.001f)) sweep_fail(counters, fail_mats, fail_dirs, &m, wo, s.wi, 6, energy);
+        }
     }
     if (microfacet_sample(&m, wo, u.xy, &s)) {
         bool ok = sweep_value_ok(s.weight) && all_finite(s.wi);
