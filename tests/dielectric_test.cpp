@@ -146,9 +146,10 @@ TEST(Dielectric, MtlGlassAndMirror) {
     std::vector<std::string> warnings;
     auto mats = parse_mtl("t.mtl",
                           "newmtl mirror\nKs 0.9 0.8 0.7\nillum 5\n"
-                          "newmtl glass\nKs 0.3 0.3 0.3\nTf 0.25 1 1\nNi 1.33\nillum 7\n",
+                          "newmtl glass\nKs 0.3 0.3 0.3\nTf 0.25 1 1\nNi 1.33\nillum 7\n"
+                          "newmtl grey\nTf 0.1 0.1 0.1\nNi 2.5\nillum 7\n",
                           warnings);
-    ASSERT_EQ(mats.size(), 2u);
+    ASSERT_EQ(mats.size(), 3u);
     const FcMaterial& mirror = mats[0].material;
     EXPECT_EQ(mirror.specular_model, FC_SPECULAR_MICROFACET);
     EXPECT_EQ(mirror.diffuse_model, FC_DIFFUSE_NONE);
@@ -159,6 +160,8 @@ TEST(Dielectric, MtlGlassAndMirror) {
     EXPECT_FLOAT_EQ(glass_m.ior, 1.33f);
     EXPECT_FLOAT_EQ(glass_m.specular[0], 0.5f) << "sqrt(Tf) per refraction";
     EXPECT_FLOAT_EQ(glass_m.specular[1], 1.0f);
+    // Only Tf's hue is kept (McGuire's clear glass says Tf 0.1): grey Tf is clear glass.
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(mats[2].material.specular[c], 1.0f);
 }
 
 // McGuire's Cornell boxes with a mirror sphere and glass (or water) render without a

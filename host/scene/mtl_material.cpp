@@ -80,9 +80,12 @@ struct Pending {
 //   and exponent Ns (the energy-normalised form of MTL's Phong highlight);
 // - illum 5 (a ray-traced mirror): a perfect mirror reflecting Ks (Schlick Fresnel
 //   with F0 = Ks, alpha 0), no diffuse lobe;
-// - illum 7 (refraction on, Fresnel on): smooth clear glass of index Ni (exact Fresnel,
-//   Snell refraction), tinted by Tf: the transmittance sqrt(Tf) at each refraction, so
-//   that light through a closed object is filtered by Tf once;
+// - illum 7 (refraction on, Fresnel on): smooth glass of index Ni (exact Fresnel, Snell
+//   refraction), tinted by the colour of Tf. The MTL model scales refraction by
+//   (1 - Ks) Ft Tf, amounts that the exact Fresnel split replaces, and files use Tf
+//   inconsistently (McGuire's glass and water give Tf 0.1 for the clear glass of
+//   Jensen's figures): so only Tf's hue is kept, t = Tf / max(Tf), applied as sqrt(t)
+//   at each refraction so that light through a closed object is filtered by t once;
 // - otherwise Lambert with Kd.
 MtlMaterial finish(Pending& p) {
     MtlMaterial m = p.m;
@@ -98,7 +101,9 @@ MtlMaterial finish(Pending& p) {
         mat.alpha_x = mat.alpha_y = 0.0f;
     } else if (m.illum == 7 && !pbr) {
         mat = make_material("dielectric");
-        for (int c = 0; c < 3; ++c) mat.specular[c] = std::sqrt(std::min(p.tf[c], 1.0f));
+        const float tf_max = std::max({p.tf[0], p.tf[1], p.tf[2]});
+        for (int c = 0; c < 3; ++c)
+            mat.specular[c] = tf_max > 0.0f ? std::sqrt(std::clamp(p.tf[c] / tf_max, 0.0f, 1.0f)) : 1.0f;
     } else if (pbr) {
         mat = make_material("ggx");
         float alpha = p.has_pr ? std::max(p.pr * p.pr, 1e-3f) : roughness_from_shininess(shininess);
