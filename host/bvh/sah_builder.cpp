@@ -81,6 +81,7 @@ public:
     Builder(std::vector<PrimRef>& refs, const BvhOptions& opt)
         : refs_(refs), opt_(opt), nb_(std::clamp(opt.bins, 2, 256)),
           max_leaf_(static_cast<std::uint32_t>(std::max(opt.max_leaf_size, 1))),
+          exact_max_(static_cast<std::uint32_t>(std::clamp(opt.exact_max, 0, kExactMax))),
           bins_(3 * nb_), counts_(3 * nb_), right_area_(nb_), right_count_(nb_) {}
 
     BuildOutput run();
@@ -96,6 +97,7 @@ private:
     const BvhOptions& opt_;
     int nb_;
     std::uint32_t max_leaf_;
+    std::uint32_t exact_max_;
     std::vector<Box> bins_;               // [axis * nb_ + bin]
     std::vector<std::uint32_t> counts_;
     std::vector<float> right_area_;
@@ -297,7 +299,7 @@ bool Builder::decide(const Task& t, Split& s) {
     // Leaf or split by the SAH (MacDonald & Booth 1990): C_i*n against
     // C_t + C_i*(A_l*n_l + A_r*n_r)/A.
     float cost = 0.0f;
-    if (n <= kExactMax ? exact_split(t, s, cost) : sah_split(t, s, cost)) {
+    if (n <= exact_max_ ? exact_split(t, s, cost) : sah_split(t, s, cost)) {
         float area = t.box.half_area();
         float split_cost = opt_.traversal_cost + opt_.intersection_cost * (area > 0.0f ? cost / area : 0.0f);
         return fits && opt_.intersection_cost * static_cast<float>(n) <= split_cost;
