@@ -20,6 +20,16 @@ struct RayBatch {
     std::vector<cl_float4> origins, dirs;   // dirs[i].w = tmax
 };
 
+// Wall time and the CPU time of the whole process (every thread, the OpenCL driver's
+// included) over the same interval: under contention from other processes the wall
+// time stretches while the CPU time stays near the work done, so rates per CPU-second
+// compare fairly across runs of a shared machine.
+struct Timing {
+    double wall = 0.0;
+    double cpu = 0.0;
+};
+double process_cpu_seconds();
+
 // Everything the bench prints as its report, kept for --markdown.
 std::string& bench_markdown();
 

@@ -18,12 +18,12 @@ bool embree_available(std::string* why);
 
 struct EmbreeTimes {
     double build_s = 0.0;          // rtcCommitScene, one build thread, medium quality
-    // Best-of-reps seconds for the whole batch; [0] one thread, [1] `threads` threads.
-    double closest1[2] = {0, 0};   // rtcIntersect1
-    double closestP[2] = {0, 0};   // rtcIntersect<packet> (width in packet_width)
-    double closestS[2] = {0, 0};   // rtcIntersect1M stream
-    double any1[2] = {0, 0};       // rtcOccluded1
-    double anyP[2] = {0, 0};       // rtcOccluded<packet>
+    // Best-of-reps wall and CPU seconds for the whole batch; [0] one thread, [1] `threads` threads.
+    Timing closest1[2];   // rtcIntersect1
+    Timing closestP[2];   // rtcIntersect<packet> (width in packet_width)
+    Timing closestS[2];   // rtcIntersect1M stream
+    Timing any1[2];       // rtcOccluded1
+    Timing anyP[2];       // rtcOccluded<packet>
     int packet_width = 0;
     int threads = 1;
     std::size_t hit_mismatches = 0;   // rays where Embree's hit/miss differs from facet's

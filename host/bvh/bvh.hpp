@@ -12,7 +12,7 @@
 namespace facet {
 
 struct BvhOptions {
-    int bins = 16;            // SAH bins per axis
+    int bins = 12;            // SAH bins per axis
     int max_leaf_size = 8;    // a leaf never holds more triangles than this
     int exact_max = 16;       // ranges up to this size get the exact SAH sweep (0: bin everywhere)
     float traversal_cost = 1.0f;      // SAH cost of visiting a node, relative to...

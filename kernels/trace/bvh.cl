@@ -83,44 +83,67 @@ inline bool leaf_hit(__global const FcTriangle* tris, int first, int count, cons
     return found;
 }
 
+/* Both children of a node at once: the node is read as four float4 (a child's min
+ * with its index in .w, its max with its count in .w), and each box's near and far
+ * planes are chosen by the direction's signs with one vector select. The arithmetic
+ * is box_hit()'s, operation for operation: (plane - o) * inv_d, the exit scaled by
+ * FC_SLAB_SCALE, NaN entries and exits ignored by the comparisons. */
+inline float fc_slab_max(float a, float b) { return b > a ? b : a; }   /* NaN b: a */
+inline float fc_slab_min(float a, float b) { return b < a ? b : a; }
+
+inline bool child_hit(float3 lo, float3 hi, float3 o, float3 inv_d, int3 negm, float tmax, float* tnear) {
+    float3 t0 = (select(lo, hi, negm) - o) * inv_d;
+    float3 t1 = (select(hi, lo, negm) - o) * inv_d;
+    t1 *= FC_SLAB_SCALE;
+    float tn = fc_slab_max(fc_slab_max(fc_slab_max(0.0f, t0.x), t0.y), t0.z);
+    float tf = fc_slab_min(fc_slab_min(fc_slab_min(tmax, t1.x), t1.y), t1.z);
+    *tnear = tn;
+    return tn <= tf;
+}
+
 /* The traversal shared by trace_closest and trace_any. */
 inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o,
                       float3 d, Hit* hit, bool any) {
-    const BoxRay br = box_ray_setup(o, d);
+    const float3 inv_d = (float3)(1.0f / d.x, 1.0f / d.y, 1.0f / d.z);
+    const int3 negm = inv_d < (float3)(0.0f);   /* -1 where the near plane is max */
     const TriRay tr = tri_ray_setup(d);
+    __global const float4* nodes4 = (__global const float4*)nodes;
     int stack[FC_BVH_STACK_SIZE];
     int sp = 0;
     int node = 0;
     bool found = false;
     for (;;) {
-        __global const FcBvhNode* n = &nodes[node];
+        __global const float4* n = nodes4 + 4 * node;
+        const float4 amin = n[0], amax = n[1], bmin = n[2], bmax = n[3];
+        const int a_index = as_int(amin.w), a_count = as_int(amax.w);
+        const int b_index = as_int(bmin.w), b_count = as_int(bmax.w);
         float ta, tb;
-        bool ha = box_hit(&br, n->a_min, n->a_max, hit->t, &ta);
-        bool hb = box_hit(&br, n->b_min, n->b_max, hit->t, &tb);
+        bool ha = child_hit(amin.xyz, amax.xyz, o, inv_d, negm, hit->t, &ta);
+        bool hb = child_hit(bmin.xyz, bmax.xyz, o, inv_d, negm, hit->t, &tb);
         /* Leaves first: their hits shorten the ray before the inner children. */
-        if (ha && n->a_count > 0) {
-            if (leaf_hit(tris, n->a_index, n->a_count, &tr, o, hit, any)) {
+        if (ha && a_count > 0) {
+            if (leaf_hit(tris, a_index, a_count, &tr, o, hit, any)) {
                 found = true;
                 if (any) return true;
             }
             ha = false;
         }
-        if (hb && n->b_count > 0) {
-            if (leaf_hit(tris, n->b_index, n->b_count, &tr, o, hit, any)) {
+        if (hb && b_count > 0) {
+            if (leaf_hit(tris, b_index, b_count, &tr, o, hit, any)) {
                 found = true;
                 if (any) return true;
             }
             hb = false;
         }
         if (ha && hb) {
-            int near_child = ta <= tb ? n->a_index : n->b_index;
-            int far_child = ta <= tb ? n->b_index : n->a_index;
+            int near_child = ta <= tb ? a_index : b_index;
+            int far_child = ta <= tb ? b_index : a_index;
             if (sp < FC_BVH_STACK_SIZE) stack[sp++] = far_child;   /* always, by the builder */
             node = near_child;
         } else if (ha) {
-            node = n->a_index;
+            node = a_index;
         } else if (hb) {
-            node = n->b_index;
+            node = b_index;
         } else {
             if (sp == 0) break;
             node = stack[--sp];
