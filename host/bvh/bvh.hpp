@@ -21,11 +21,12 @@ struct BvhOptions {
 
 struct BvhStats {
     std::size_t triangles = 0;
-    std::size_t nodes = 0;      // FcBvhNode count (each holds two children)
+    std::size_t nodes = 0;      // FcBvhNode count (each holds up to four children)
+    std::size_t binary_nodes = 0;   // nodes of the binary SAH tree it was collapsed from
     std::size_t leaves = 0;
-    int max_depth = 0;
+    int max_depth = 0;          // 4-wide nodes on the longest root-to-leaf path
     int max_leaf_size = 0;
-    double sah_cost = 0.0;      // expected cost per ray, normalised by the root's surface area
+    double sah_cost = 0.0;      // of the binary SAH tree, normalised by the root's surface area
     double build_seconds = 0.0;
     std::size_t device_bytes = 0;   // nodes + triangles as uploaded
 };

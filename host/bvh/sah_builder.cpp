@@ -47,7 +47,7 @@ constexpr int kExactMax = 16;
 
 int ceil_log2(std::uint32_t n) { return n <= 1 ? 0 : 32 - std::countl_zero(n - 1); }
 
-void set_child(FcBvhNode& node, int side, const Box& box) {
+void set_child(BinaryNode& node, int side, const Box& box) {
     float* lo = side == 0 ? node.a_min : node.b_min;
     float* hi = side == 0 ? node.a_max : node.b_max;
     for (int a = 0; a < 3; ++a) {
@@ -56,9 +56,9 @@ void set_child(FcBvhNode& node, int side, const Box& box) {
     }
 }
 
-void set_ref(FcBvhNode& node, int side, std::uint32_t index, std::uint32_t count) {
-    (side == 0 ? node.a_index : node.b_index) = static_cast<fc_int>(index);
-    (side == 0 ? node.a_count : node.b_count) = static_cast<fc_int>(count);
+void set_ref(BinaryNode& node, int side, std::uint32_t index, std::uint32_t count) {
+    (side == 0 ? node.a_index : node.b_index) = static_cast<std::int32_t>(index);
+    (side == 0 ? node.a_count : node.b_count) = static_cast<std::int32_t>(count);
 }
 
 // A range of references still to be built, and the child slot that refers to it.
@@ -387,7 +387,7 @@ BuildOutput Builder::run() {
 
 }  // namespace
 
-void set_empty_child(FcBvhNode& node, int side) {
+void set_empty_child(BinaryNode& node, int side) {
     float* lo = side == 0 ? node.a_min : node.b_min;
     float* hi = side == 0 ? node.a_max : node.b_max;
     for (int a = 0; a < 3; ++a) {
