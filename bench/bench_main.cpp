@@ -163,6 +163,7 @@ double mrays(std::size_t n, double s) { return s > 0.0 ? double(n) / s * 1e-6 : 
 std::string fmt_rate(double v) { return v > 0.0 ? fmt::format("{:.2f}", v) : std::string("—"); }
 
 nlohmann::json bench_scene(ClContext& ctx, const BenchCase& c, bool quick, bool build_only, std::size_t local,
+                           const BvhOptions& bvh_options,
                            Markdown& build_md, Markdown& trace_md, Markdown& render_md) {
     Scene scene = load_scene(c.path);
     nlohmann::json j;
@@ -174,7 +175,7 @@ nlohmann::json bench_scene(ClContext& ctx, const BenchCase& c, bool quick, bool 
     Bvh bvh;
     double best_build = 1e30;
     for (int r = 0; r < (quick ? 1 : 3); ++r) {
-        bvh = build_bvh(scene.vertices);
+        bvh = build_bvh(scene.vertices, bvh_options);
         best_build = std::min(best_build, bvh.stats.build_seconds);
     }
     BvhOptions plain;
@@ -357,6 +358,10 @@ int run(int argc, char** argv) {
     std::size_t trace_local = 64;
     app.add_option("--trace-local", trace_local, "Work-group size of the trace kernels (default 64, as the renderer)")
         ->check(CLI::Range(1, 1024));
+    BvhOptions bvh_options;
+    app.add_option("--bvh-leaf", bvh_options.max_leaf_size, "BVH knob: largest leaf (default 8)");
+    app.add_option("--bvh-intersection-cost", bvh_options.intersection_cost,
+                   "BVH knob: SAH cost of a triangle test against a node visit (default 1)");
     std::string scene_filter;
     app.add_option("--scene", scene_filter, "Trace section: only the scenes whose name contains this");
     std::string only;
@@ -411,7 +416,7 @@ int run(int argc, char** argv) {
             if (!scene_filter.empty() && c.name.find(scene_filter) == std::string::npos) continue;
             fmt::print("  [{}]\n", c.name);
             std::fflush(stdout);
-            all["scenes"].push_back(bench_scene(ctx, c, quick, only == "build", trace_local, build_md, trace_md, render_md));
+            all["scenes"].push_back(bench_scene(ctx, c, quick, only == "build", trace_local, bvh_options, build_md, trace_md, render_md));
         }
         bench_print("\n### BVH build (one thread; SAH cost normalised by the root's area, traversal = intersection = 1)\n\n{}",
                     build_md.str());
