@@ -67,7 +67,7 @@ nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick) 
         maps.push_back({name, load_environment_map(p.string(), glm::vec3(1.0f), glm::mat3(1.0f), warnings)});
     }
     const double budget = quick ? 0.5 : 2.0;
-    bench_print("\nEqual-time IBL ({:.1f} s each; RMSE against a {:.0f} s MIS render)\n\n", budget, budget * 8);
+    bench_print("\n### Equal-time IBL ({:.1f} s each; RMSE against a {:.0f} s MIS render)\n\n", budget, budget * 8);
     bench_print("| map | BSDF only RMSE (spp) | light only RMSE (spp) | MIS RMSE (spp) |\n|---|---|---|---|\n");
     nlohmann::json rows = nlohmann::json::array();
     for (auto& [name, env] : maps) {

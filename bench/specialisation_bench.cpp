@@ -22,7 +22,7 @@ nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, b
         scenes.push_back({s, (fs::path(FACET_SOURCE_DIR) / "scenes" / s).string()});
     fs::path dragon = fs::path(assets) / "dragon_stanford" / "dragon_vrip_res2.obj";
     if (fs::exists(dragon)) scenes.push_back({"dragon_res2.obj", dragon.string()});
-    bench_print("\nKernel specialisation. Time to first image = program build + the first launch (PoCL generates\n"
+    bench_print("\n### Program build: kernel specialisation\n\nTime to first image = program build + the first launch (PoCL generates\n"
                "machine code at the first launch); cold: a nonce kernel defeats the driver's caches; warm: the\n"
                "same program again.\n\n");
     bench_print("| scene | program | features | cold build + first launch s | warm s | binary KiB | Msamples/s |\n");
