@@ -8,10 +8,12 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
 # Debian 12 packages facet needs to build, test and run on the CPU (PoCL).
+# libembree-dev and zlib1g-dev are for the bench only (it skips their parts without them).
 PACKAGES := build-essential cmake pkg-config \
 	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
 	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
-	libgtest-dev clang
+	libgtest-dev clang \
+	libembree-dev zlib1g-dev
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
@@ -41,8 +43,11 @@ demo: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# The bench (bench/README.md): every speed and memory figure of facet, against Embree,
+# in one run; writes out/bench/bench.json and out/bench/bench.md.
 bench: build
-	$(BUILD)/facet_bench
+	mkdir -p out/bench
+	$(BUILD)/facet_bench --json out/bench/bench.json --markdown out/bench/bench.md
 
 sanitize: deps
 	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_SANITIZE=ON

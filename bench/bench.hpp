@@ -1,13 +1,68 @@
 // Sections of facet_bench (bench/bench_main.cpp runs them in one process).
 #pragma once
 
+#include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include <fmt/format.h>
+
+#include <CL/opencl.hpp>
 #include <nlohmann/json.hpp>
 
 #include "cl/runtime.hpp"
 
 namespace facet {
+
+// A batch of rays as both facet's trace kernel and Embree take them.
+struct RayBatch {
+    std::vector<cl_float4> origins, dirs;   // dirs[i].w = tmax
+};
+
+// Wall time and the CPU time of the whole process (every thread, the OpenCL driver's
+// included) over the same interval: under contention from other processes the wall
+// time stretches while the CPU time stays near the work done, so rates per CPU-second
+// compare fairly across runs of a shared machine.
+struct Timing {
+    double wall = 0.0;
+    double cpu = 0.0;
+};
+double process_cpu_seconds();
+
+// Everything the bench prints as its report, kept for --markdown.
+std::string& bench_markdown();
+
+// Prints to stdout and appends to bench_markdown().
+template <typename... Args>
+void bench_print(fmt::format_string<Args...> f, Args&&... args) {
+    std::string s = fmt::format(f, std::forward<Args>(args)...);
+    std::fputs(s.c_str(), stdout);
+    std::fflush(stdout);
+    bench_markdown() += s;
+}
+
+// A Markdown table built row by row.
+class Markdown {
+public:
+    explicit Markdown(std::vector<std::string> header) : cols_(header.size()) { row(header); }
+    void row(const std::vector<std::string>& cells) {
+        text_ += "|";
+        for (const auto& c : cells) text_ += " " + c + " |";
+        text_ += "\n";
+        if (++rows_ == 1) {
+            text_ += "|";
+            for (std::size_t i = 0; i < cols_; ++i) text_ += "---|";
+            text_ += "\n";
+        }
+    }
+    const std::string& str() const { return text_; }
+
+private:
+    std::size_t cols_;
+    int rows_ = 0;
+    std::string text_;
+};
 
 // BSDF eval+pdf and sample throughput of every named model; prints a table.
 nlohmann::json bench_bsdfs(ClContext& ctx, bool quick);

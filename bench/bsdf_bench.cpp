@@ -16,7 +16,7 @@ nlohmann::json bench_bsdfs(ClContext& ctx, bool quick) {
     const cl_uint iterations = quick ? 16 : 64;
     cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, items * sizeof(float));
     nlohmann::json rows = nlohmann::json::array();
-    fmt::print("\n| model | eval + pdf M/s | sample M/s |\n|---|---|---|\n");
+    bench_print("\n### BSDF throughput\n\n| model | eval + pdf M/s | sample M/s |\n|---|---|---|\n");
     for (std::string_view name : material_model_names()) {
         FcMaterial m = make_material(std::string(name));
         cl::Buffer mb(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof m, &m);
@@ -35,7 +35,7 @@ nlohmann::json bench_bsdfs(ClContext& ctx, bool quick) {
             }
             rate[k] = double(items) * iterations / best * 1e-6;
         }
-        fmt::print("| {} | {:.1f} | {:.1f} |\n", name, rate[0], rate[1]);
+        bench_print("| {} | {:.1f} | {:.1f} |\n", name, rate[0], rate[1]);
         rows.push_back({{"model", name}, {"eval_pdf_m_per_s", rate[0]}, {"sample_m_per_s", rate[1]}});
     }
     return rows;

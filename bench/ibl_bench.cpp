@@ -60,15 +60,15 @@ nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick) 
     for (const char* name : {"sunrise.exr", "city.exr"}) {
         fs::path p = fs::path(assets) / "env_blender" / name;
         if (!fs::exists(p)) {
-            fmt::print("skipping {}: not found\n", p.string());
+            bench_print("skipping {}: not found\n", p.string());
             continue;
         }
         std::vector<std::string> warnings;
         maps.push_back({name, load_environment_map(p.string(), glm::vec3(1.0f), glm::mat3(1.0f), warnings)});
     }
     const double budget = quick ? 0.5 : 2.0;
-    fmt::print("\nEqual-time IBL ({:.1f} s each; RMSE against a {:.0f} s MIS render)\n\n", budget, budget * 8);
-    fmt::print("| map | BSDF only RMSE (spp) | light only RMSE (spp) | MIS RMSE (spp) |\n|---|---|---|---|\n");
+    bench_print("\n### Equal-time IBL ({:.1f} s each; RMSE against a {:.0f} s MIS render)\n\n", budget, budget * 8);
+    bench_print("| map | BSDF only RMSE (spp) | light only RMSE (spp) | MIS RMSE (spp) |\n|---|---|---|---|\n");
     nlohmann::json rows = nlohmann::json::array();
     for (auto& [name, env] : maps) {
         Scene scene = spheres_under(env);
@@ -86,7 +86,7 @@ nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick) 
             row[label] = {{"rmse", rmse}, {"spp", spp}};
             line += fmt::format(" {:.4g} ({}) |", rmse, spp);
         }
-        fmt::print("{}\n", line);
+        bench_print("{}\n", line);
         std::fflush(stdout);
         rows.push_back(row);
     }

@@ -22,11 +22,11 @@ nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, b
         scenes.push_back({s, (fs::path(FACET_SOURCE_DIR) / "scenes" / s).string()});
     fs::path dragon = fs::path(assets) / "dragon_stanford" / "dragon_vrip_res2.obj";
     if (fs::exists(dragon)) scenes.push_back({"dragon_res2.obj", dragon.string()});
-    fmt::print("\nKernel specialisation. Time to first image = program build + the first launch (PoCL generates\n"
+    bench_print("\n### Program build: kernel specialisation\n\nTime to first image = program build + the first launch (PoCL generates\n"
                "machine code at the first launch); cold: a nonce kernel defeats the driver's caches; warm: the\n"
                "same program again.\n\n");
-    fmt::print("| scene | program | features | cold build + first launch s | warm s | binary KiB | Msamples/s |\n");
-    fmt::print("|---|---|---|---|---|---|---|\n");
+    bench_print("| scene | program | features | cold build + first launch s | warm s | binary KiB | Msamples/s |\n");
+    bench_print("|---|---|---|---|---|---|---|\n");
     nlohmann::json rows = nlohmann::json::array();
     const auto nonce = std::chrono::steady_clock::now().time_since_epoch().count();
     for (const auto& [name, path] : scenes) {
@@ -54,7 +54,7 @@ nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, b
             std::uint32_t spp = quick ? 4 : 16;
             r.render(spp);
             double rate = double(spp) * double(r.pixel_count()) / r.stats().render_seconds * 1e-6;
-            fmt::print("| {} | {} | {} | {:.2f} | {:.3f} | {:.0f} | {:.3f} |\n", name, generic ? "generic" : "specialised",
+            bench_print("| {} | {} | {} | {:.2f} | {:.3f} | {:.0f} | {:.3f} |\n", name, generic ? "generic" : "specialised",
                        describe_features(mask), cold_s, warm_s, double(binary_bytes) / 1024.0, rate);
             std::fflush(stdout);
             rows.push_back({{"scene", name}, {"program", generic ? "generic" : "specialised"},

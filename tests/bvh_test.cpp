@@ -39,24 +39,36 @@ void walk_child(const Bvh& bvh, const float* lo, const float* hi, int index, int
 void walk_node(const Bvh& bvh, int node, int depth, Walk& w) {
     ASSERT_GE(node, 0);
     ASSERT_LT(static_cast<std::size_t>(node), bvh.nodes.size());
-    ASSERT_LT(depth, FC_BVH_STACK_SIZE);
-    const FcBvhNode& n = bvh.nodes[node];
-    walk_child(bvh, n.a_min, n.a_max, n.a_index, n.a_count, depth + 1, w);
-    walk_child(bvh, n.b_min, n.b_max, n.b_index, n.b_count, depth + 1, w);
+    ASSERT_LE(3 * (depth + 1), FC_BVH_STACK_SIZE) << "deeper than the traversal stack allows";
+    const FcBvhNode& n = bvh.nodes[static_cast<std::size_t>(node)];
+    for (int k = 0; k < 4; ++k) {
+        const float lo[3] = {n.lo_x[k], n.lo_y[k], n.lo_z[k]}, hi[3] = {n.hi_x[k], n.hi_y[k], n.hi_z[k]};
+        walk_child(bvh, lo, hi, n.index[k], n.count[k], depth + 1, w);
+    }
+}
+
+// Whether box [lo, hi] encloses all four child boxes of node `c` that are not empty.
+bool encloses_children(const float* lo, const float* hi, const FcBvhNode& c) {
+    for (int k = 0; k < 4; ++k) {
+        if (!(c.lo_x[k] <= c.hi_x[k])) continue;
+        const float clo[3] = {c.lo_x[k], c.lo_y[k], c.lo_z[k]}, chi[3] = {c.hi_x[k], c.hi_y[k], c.hi_z[k]};
+        if (!encloses(lo, hi, clo) || !encloses(lo, hi, chi)) return false;
+    }
+    return true;
 }
 
 void walk_child(const Bvh& bvh, const float* lo, const float* hi, int index, int count, int depth,
                 Walk& w) {
-    if (lo[0] > hi[0]) {   // empty child: only in the root of a tiny tree
+    if (lo[0] > hi[0]) {   // empty slot
         EXPECT_EQ(count, 0);
+        EXPECT_EQ(index, 0);
         EXPECT_TRUE(std::isinf(lo[0]) && std::isinf(hi[0]));
         return;
     }
     if (count == 0) {
         ASSERT_GT(index, 0) << "an inner child never refers back to the root";
-        const FcBvhNode& c = bvh.nodes[static_cast<std::size_t>(index)];
-        EXPECT_TRUE(encloses(lo, hi, c.a_min) && encloses(lo, hi, c.a_max));
-        EXPECT_TRUE(encloses(lo, hi, c.b_min) && encloses(lo, hi, c.b_max));
+        ASSERT_LT(static_cast<std::size_t>(index), bvh.nodes.size());
+        EXPECT_TRUE(encloses_children(lo, hi, bvh.nodes[static_cast<std::size_t>(index)]));
         walk_node(bvh, index, depth, w);
         return;
     }
@@ -87,11 +99,11 @@ void check_structure(const Bvh& bvh, const std::vector<glm::vec3>& input, std::s
         EXPECT_TRUE(v0.x == t.v0[0] && v0.y == t.v0[1] && v0.z == t.v0[2]);
     }
     EXPECT_EQ(w.max_depth, bvh.stats.max_depth);
-    EXPECT_LE(bvh.stats.max_depth, FC_BVH_STACK_SIZE);
+    EXPECT_LE(3 * bvh.stats.max_depth, FC_BVH_STACK_SIZE);
     EXPECT_EQ(w.leaves, bvh.stats.leaves);
     EXPECT_EQ(bvh.stats.nodes, bvh.nodes.size());
     EXPECT_EQ(bvh.stats.triangles, bvh.triangles.size());
-    EXPECT_EQ(bvh.stats.device_bytes, bvh.nodes.size() * 64 + bvh.triangles.size() * 48);
+    EXPECT_EQ(bvh.stats.device_bytes, bvh.nodes.size() * 128 + bvh.triangles.size() * 48);
 }
 
 TEST(Bvh, StructureValid) {
@@ -125,7 +137,7 @@ TEST(Bvh, StructureValid) {
     one.max_leaf_size = 1;
     Bvh deep = build_bvh(nested, one, &skipped);
     check_structure(deep, nested, skipped);
-    EXPECT_LT(deep.stats.max_depth, FC_BVH_STACK_SIZE);
+    EXPECT_LE(3 * deep.stats.max_depth, FC_BVH_STACK_SIZE);
 }
 
 // ---- device: BVH against brute force -------------------------------------------------
@@ -334,9 +346,10 @@ TEST(Bvh, EdgesAndVerticesAreWatertight) {
 }
 
 TEST(Bvh, EmptyAndSingleTriangle) {
-    auto expect_empty_child = [](const float* lo, const float* hi, int index, int count) {
-        EXPECT_EQ(count, 0);
-        EXPECT_EQ(index, 0);
+    auto expect_empty_slot = [](const FcBvhNode& n, int k) {
+        EXPECT_EQ(n.count[k], 0);
+        EXPECT_EQ(n.index[k], 0);
+        const float lo[3] = {n.lo_x[k], n.lo_y[k], n.lo_z[k]}, hi[3] = {n.hi_x[k], n.hi_y[k], n.hi_z[k]};
         for (int a = 0; a < 3; ++a) EXPECT_TRUE(std::isinf(lo[a]) && lo[a] > 0.0f && std::isinf(hi[a]) && hi[a] < 0.0f);
     };
     Rays rays = random_rays({}, 200, 2.0f, 4);
@@ -353,9 +366,7 @@ TEST(Bvh, EmptyAndSingleTriangle) {
         EXPECT_EQ(skipped, input.size() / 3);
         ASSERT_EQ(bvh.nodes.size(), 1u);
         EXPECT_TRUE(bvh.triangles.empty());
-        const FcBvhNode& root = bvh.nodes[0];
-        expect_empty_child(root.a_min, root.a_max, root.a_index, root.a_count);
-        expect_empty_child(root.b_min, root.b_max, root.b_index, root.b_count);
+        for (int k = 0; k < 4; ++k) expect_empty_slot(bvh.nodes[0], k);
         Result r = expect_agreement(bvh, input, rays);
         for (std::size_t i = 0; i < rays.o.size(); ++i) EXPECT_EQ(r.prim(i), -1);
     }
@@ -364,8 +375,8 @@ TEST(Bvh, EmptyAndSingleTriangle) {
     std::vector<glm::vec3> one = {z, x, glm::vec3(0.0f, 1.0f, 0.0f)};
     Bvh bvh = build_bvh(one);
     ASSERT_EQ(bvh.nodes.size(), 1u);
-    EXPECT_EQ(bvh.nodes[0].a_count, 1);
-    expect_empty_child(bvh.nodes[0].b_min, bvh.nodes[0].b_max, bvh.nodes[0].b_index, bvh.nodes[0].b_count);
+    EXPECT_EQ(bvh.nodes[0].count[0], 1);
+    for (int k = 1; k < 4; ++k) expect_empty_slot(bvh.nodes[0], k);
     check_structure(bvh, one, 0);
     Result r = expect_agreement(bvh, one, rays);
     const std::size_t k = rays.o.size() - 4;

@@ -1,9 +1,12 @@
 // build_bvh: filters the triangle soup, runs the binned SAH builder
-// (bvh/sah_builder.cpp) and lays the triangles out in leaf order.
+// (bvh/sah_builder.cpp), collapses its binary tree into 4-wide nodes and lays the
+// triangles out in leaf order.
 #include "bvh/bvh.hpp"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "bvh/sah_builder.hpp"
 #include "error.hpp"
@@ -22,6 +25,74 @@ bool usable(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
     float ny = e1.z * e2.x - e1.x * e2.z;
     float nz = e1.x * e2.y - e1.y * e2.x;
     return nx != 0.0f || ny != 0.0f || nz != 0.0f;
+}
+
+// One child reference of a binary node.
+struct ChildRef {
+    const float* lo;
+    const float* hi;
+    std::int32_t index, count;
+    bool empty() const { return !(lo[0] <= hi[0]); }
+    bool inner() const { return count == 0 && !empty(); }
+};
+
+ChildRef child(const bvh_detail::BinaryNode& n, int side) {
+    return side == 0 ? ChildRef{n.a_min, n.a_max, n.a_index, n.a_count} : ChildRef{n.b_min, n.b_max, n.b_index, n.b_count};
+}
+
+void set_slot(FcBvhNode& node, int k, const float* lo, const float* hi, std::int32_t index, std::int32_t count) {
+    node.lo_x[k] = lo[0], node.lo_y[k] = lo[1], node.lo_z[k] = lo[2];
+    node.hi_x[k] = hi[0], node.hi_y[k] = hi[1], node.hi_z[k] = hi[2];
+    node.index[k] = index;
+    node.count[k] = count;
+}
+
+// Collapses the binary tree: each 4-wide node holds a binary node's children, with
+// every inner child replaced by its own two children, so every root-to-leaf path
+// halves. Empty slots get the inverted box. Returns the 4-wide depth (nodes on the
+// longest root-to-leaf path).
+int collapse(const std::vector<bvh_detail::BinaryNode>& bin, std::vector<FcBvhNode>& out) {
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    const float empty_lo[3] = {inf, inf, inf}, empty_hi[3] = {-inf, -inf, -inf};
+    out.clear();
+    out.reserve(bin.size() / 2 + 1);
+    out.emplace_back();
+    struct Item {
+        std::int32_t binary, wide, depth;
+    };
+    std::vector<Item> stack{{0, 0, 1}};
+    int max_depth = 0;
+    while (!stack.empty()) {
+        Item it = stack.back();
+        stack.pop_back();
+        ChildRef slots[4];
+        int k = 0;
+        for (int side = 0; side < 2; ++side) {
+            ChildRef c = child(bin[static_cast<std::size_t>(it.binary)], side);
+            if (c.inner()) {
+                const bvh_detail::BinaryNode& g = bin[static_cast<std::size_t>(c.index)];
+                slots[k++] = child(g, 0);
+                slots[k++] = child(g, 1);
+            } else {
+                slots[k++] = c;
+            }
+        }
+        for (int s = 0; s < 4; ++s) {
+            if (s >= k || slots[s].empty()) {
+                set_slot(out[static_cast<std::size_t>(it.wide)], s, empty_lo, empty_hi, 0, 0);
+            } else if (slots[s].inner()) {
+                const auto j = static_cast<std::int32_t>(out.size());
+                out.emplace_back();
+                set_slot(out[static_cast<std::size_t>(it.wide)], s, slots[s].lo, slots[s].hi, j, 0);
+                stack.push_back({slots[s].index, j, it.depth + 1});
+            } else {
+                set_slot(out[static_cast<std::size_t>(it.wide)], s, slots[s].lo, slots[s].hi, slots[s].index,
+                         slots[s].count);
+            }
+        }
+        max_depth = std::max(max_depth, static_cast<int>(it.depth));
+    }
+    return max_depth;
 }
 
 }  // namespace
@@ -58,7 +129,7 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
     bvh_detail::BuildOutput built = bvh_detail::build_sah(refs, options);
 
     Bvh bvh;
-    bvh.nodes = std::move(built.nodes);
+    const int depth = collapse(built.nodes, bvh.nodes);
     bvh.triangles.resize(refs.size());
     for (std::size_t k = 0; k < refs.size(); ++k) {
         const std::uint32_t i = refs[k].id;
@@ -76,7 +147,8 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
     st.triangles = bvh.triangles.size();
     st.nodes = bvh.nodes.size();
     st.leaves = built.leaves;
-    st.max_depth = built.max_depth;
+    st.max_depth = depth;
+    st.binary_nodes = built.nodes.size();
     st.max_leaf_size = built.max_leaf_size;
     st.sah_cost = built.sah_cost;
     st.device_bytes = bvh.nodes.size() * sizeof(FcBvhNode) + bvh.triangles.size() * sizeof(FcTriangle);

@@ -12,19 +12,21 @@
 namespace facet {
 
 struct BvhOptions {
-    int bins = 16;            // SAH bins per axis
+    int bins = 12;            // SAH bins per axis
     int max_leaf_size = 8;    // a leaf never holds more triangles than this
+    int exact_max = 16;       // ranges up to this size get the exact SAH sweep (0: bin everywhere)
     float traversal_cost = 1.0f;      // SAH cost of visiting a node, relative to...
     float intersection_cost = 1.0f;   // ...the cost of one ray/triangle test
 };
 
 struct BvhStats {
     std::size_t triangles = 0;
-    std::size_t nodes = 0;      // FcBvhNode count (each holds two children)
+    std::size_t nodes = 0;      // FcBvhNode count (each holds up to four children)
+    std::size_t binary_nodes = 0;   // nodes of the binary SAH tree it was collapsed from
     std::size_t leaves = 0;
-    int max_depth = 0;
+    int max_depth = 0;          // 4-wide nodes on the longest root-to-leaf path
     int max_leaf_size = 0;
-    double sah_cost = 0.0;      // expected cost per ray, normalised by the root's surface area
+    double sah_cost = 0.0;      // of the binary SAH tree, normalised by the root's surface area
     double build_seconds = 0.0;
     std::size_t device_bytes = 0;   // nodes + triangles as uploaded
 };

@@ -47,7 +47,7 @@ constexpr int kExactMax = 16;
 
 int ceil_log2(std::uint32_t n) { return n <= 1 ? 0 : 32 - std::countl_zero(n - 1); }
 
-void set_child(FcBvhNode& node, int side, const Box& box) {
+void set_child(BinaryNode& node, int side, const Box& box) {
     float* lo = side == 0 ? node.a_min : node.b_min;
     float* hi = side == 0 ? node.a_max : node.b_max;
     for (int a = 0; a < 3; ++a) {
@@ -56,9 +56,9 @@ void set_child(FcBvhNode& node, int side, const Box& box) {
     }
 }
 
-void set_ref(FcBvhNode& node, int side, std::uint32_t index, std::uint32_t count) {
-    (side == 0 ? node.a_index : node.b_index) = static_cast<fc_int>(index);
-    (side == 0 ? node.a_count : node.b_count) = static_cast<fc_int>(count);
+void set_ref(BinaryNode& node, int side, std::uint32_t index, std::uint32_t count) {
+    (side == 0 ? node.a_index : node.b_index) = static_cast<std::int32_t>(index);
+    (side == 0 ? node.a_count : node.b_count) = static_cast<std::int32_t>(count);
 }
 
 // A range of references still to be built, and the child slot that refers to it.
@@ -81,7 +81,8 @@ public:
     Builder(std::vector<PrimRef>& refs, const BvhOptions& opt)
         : refs_(refs), opt_(opt), nb_(std::clamp(opt.bins, 2, 256)),
           max_leaf_(static_cast<std::uint32_t>(std::max(opt.max_leaf_size, 1))),
-          bins_(3 * nb_), counts_(3 * nb_), right_area_(nb_), right_count_(nb_) {}
+          exact_max_(static_cast<std::uint32_t>(std::clamp(opt.exact_max, 0, kExactMax))),
+          bins_(3 * nb_), counts_(3 * nb_), right_area_(nb_), right_count_(nb_), scratch_(refs.size()) {}
 
     BuildOutput run();
 
@@ -96,10 +97,12 @@ private:
     const BvhOptions& opt_;
     int nb_;
     std::uint32_t max_leaf_;
+    std::uint32_t exact_max_;
     std::vector<Box> bins_;               // [axis * nb_ + bin]
     std::vector<std::uint32_t> counts_;
     std::vector<float> right_area_;
     std::vector<std::uint32_t> right_count_;
+    std::vector<PrimRef> scratch_;        // the partition's out-of-place buffer
 };
 
 void Builder::bounds(std::uint32_t begin, std::uint32_t end, Box& box, Box& cbox) const {
@@ -175,25 +178,34 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
 
     // Partition with the same mapping (bin < best_bin <=> position < best_bin; NaN
     // positions were binned to 0, so they go left too), gathering the children's bounds.
+    // Branch-free: each reference goes to the front (left) or the back (right) of a
+    // scratch array by a computed index, and the bounds grow through selects, so the
+    // unpredictable side costs no mispredictions; then the range is copied back.
     const float o = origin[best_axis], sc = scale[best_axis];
     const float split_at = static_cast<float>(best_bin);
+    const f4 inf4 = {kInf, kInf, kInf, 0.0f}, ninf4 = {-kInf, -kInf, -kInf, 0.0f};
     Box lbox, rbox, lcbox, rcbox;
-    std::uint32_t l = t.begin, r = t.end;
-    PrimRef* refs = refs_.data();
-    while (l < r) {
-        PrimRef& p = refs[l];
+    const std::uint32_t n = t.end - t.begin;
+    PrimRef* src = refs_.data() + t.begin;
+    PrimRef* dst = scratch_.data();
+    std::uint32_t nl = 0, nr = n;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const PrimRef& p = src[i];
         f4 lo = lo_of(p), hi = hi_of(p);
         f4 c = (lo + hi) * 0.5f;
-        if (!((c[best_axis] - o) * sc >= split_at)) {
-            lbox.grow(lo, hi);
-            lcbox.grow(c, c);
-            ++l;
-        } else {
-            rbox.grow(lo, hi);
-            rcbox.grow(c, c);
-            std::swap(p, refs[--r]);
-        }
+        const bool right = (c[best_axis] - o) * sc >= split_at;
+        const std::uint32_t at = right ? nr - 1 : nl;
+        dst[at] = p;
+        nl += right ? 0u : 1u;
+        nr -= right ? 1u : 0u;
+        const i4 m = right ? i4{-1, -1, -1, -1} : i4{0, 0, 0, 0};   // all ones: right
+        lbox.grow(m ? inf4 : lo, m ? ninf4 : hi);
+        lcbox.grow(m ? inf4 : c, m ? ninf4 : c);
+        rbox.grow(m ? lo : inf4, m ? hi : ninf4);
+        rcbox.grow(m ? c : inf4, m ? c : ninf4);
     }
+    std::memcpy(static_cast<void*>(src), dst, n * sizeof(PrimRef));
+    const std::uint32_t l = t.begin + nl;
     s.lbox = lbox;
     s.rbox = rbox;
     s.lcbox = lcbox;
@@ -230,9 +242,15 @@ bool Builder::exact_split(const Task& t, Split& s, float& best_cost) {
     best_cost = kInf;
     for (int a = 0; a < 3; ++a) {
         int* o = order[a];
+        float key[kExactMax];   // the sorted centroid coordinates, beside their indices
         for (int i = 0; i < n; ++i) {   // insertion sort on the centroid
+            const float k = c[i][a];
             int j = i;
-            for (; j > 0 && c[o[j - 1]][a] > c[i][a]; --j) o[j] = o[j - 1];
+            for (; j > 0 && key[j - 1] > k; --j) {
+                key[j] = key[j - 1];
+                o[j] = o[j - 1];
+            }
+            key[j] = k;
             o[j] = i;
         }
         Box acc;
@@ -297,7 +315,7 @@ bool Builder::decide(const Task& t, Split& s) {
     // Leaf or split by the SAH (MacDonald & Booth 1990): C_i*n against
     // C_t + C_i*(A_l*n_l + A_r*n_r)/A.
     float cost = 0.0f;
-    if (n <= kExactMax ? exact_split(t, s, cost) : sah_split(t, s, cost)) {
+    if (n <= exact_max_ ? exact_split(t, s, cost) : sah_split(t, s, cost)) {
         float area = t.box.half_area();
         float split_cost = opt_.traversal_cost + opt_.intersection_cost * (area > 0.0f ? cost / area : 0.0f);
         return fits && opt_.intersection_cost * static_cast<float>(n) <= split_cost;
@@ -369,7 +387,7 @@ BuildOutput Builder::run() {
 
 }  // namespace
 
-void set_empty_child(FcBvhNode& node, int side) {
+void set_empty_child(BinaryNode& node, int side) {
     float* lo = side == 0 ? node.a_min : node.b_min;
     float* hi = side == 0 ? node.a_max : node.b_max;
     for (int a = 0; a < 3; ++a) {

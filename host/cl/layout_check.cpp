@@ -17,7 +17,7 @@ namespace facet {
 FC_LAYOUT_STRUCTS(FC_CHECK_STRUCT)
 #undef FC_CHECK_STRUCT
 
-static_assert(offsetof(FcBvhNode, b_min) == 32);
+static_assert(offsetof(FcBvhNode, hi_x) == 48 && offsetof(FcBvhNode, index) == 96);
 static_assert(offsetof(FcTriangle, v1) == 16 && offsetof(FcTriangle, v2) == 32);
 static_assert(offsetof(FcTriShading, n1) == 16 && offsetof(FcTriShading, n2) == 32);
 static_assert(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104);

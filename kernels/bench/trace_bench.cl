@@ -5,12 +5,13 @@
 
 #include "../trace/bvh.cl"
 
-/* origins[i].xyz, dirs[i].xyz (unit), dirs[i].w = tmax. Writes t (or -1 on a miss)
+/* n rays (the global size may be padded past n); origins[i].xyz, dirs[i].xyz (unit), dirs[i].w = tmax. Writes t (or -1 on a miss)
  * and the hit triangle's scene index. */
 __kernel void trace_closest_batch(__global const FcBvhNode* nodes, __global const FcTriangle* tris,
                                   __global const float4* origins, __global const float4* dirs,
-                                  __global float* t_out, __global int* prim_out) {
-    size_t i = get_global_id(0);
+                                  __global float* t_out, __global int* prim_out, int n) {
+    int i = (int)get_global_id(0);
+    if (i >= n) return;
     float4 o = origins[i];
     float4 d = dirs[i];
     Hit hit;
@@ -21,8 +22,9 @@ __kernel void trace_closest_batch(__global const FcBvhNode* nodes, __global cons
 
 __kernel void trace_any_batch(__global const FcBvhNode* nodes, __global const FcTriangle* tris,
                               __global const float4* origins, __global const float4* dirs,
-                              __global int* hit_out) {
-    size_t i = get_global_id(0);
+                              __global int* hit_out, int n) {
+    int i = (int)get_global_id(0);
+    if (i >= n) return;
     float4 o = origins[i];
     float4 d = dirs[i];
     hit_out[i] = trace_any(nodes, tris, o.xyz, d.xyz, d.w) ? 1 : 0;

@@ -15,8 +15,8 @@
     S(FcEnvironment)
 
 #define FC_LAYOUT_FIELDS(F)                                                                       \
-    F(FcBvhNode, a_min) F(FcBvhNode, a_index) F(FcBvhNode, a_max) F(FcBvhNode, a_count)           \
-    F(FcBvhNode, b_min) F(FcBvhNode, b_index) F(FcBvhNode, b_max) F(FcBvhNode, b_count)           \
+    F(FcBvhNode, lo_x) F(FcBvhNode, lo_y) F(FcBvhNode, lo_z) F(FcBvhNode, hi_x)                   \
+    F(FcBvhNode, hi_y) F(FcBvhNode, hi_z) F(FcBvhNode, index) F(FcBvhNode, count)                 \
     F(FcTriangle, v0) F(FcTriangle, prim) F(FcTriangle, v1) F(FcTriangle, v2)                     \
     F(FcTriShading, n0) F(FcTriShading, material) F(FcTriShading, n1) F(FcTriShading, light)      \
     F(FcTriShading, n2)                                                                           \

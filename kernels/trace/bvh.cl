@@ -1,9 +1,10 @@
-/* BVH traversal over the two-children nodes of shared/bvh.h: one node fetch tests
- * both child boxes, leaves are intersected at once and the nearer inner child is
- * visited first, the farther one pushed on a small private stack (Aila & Laine 2009,
- * "Understanding the efficiency of ray traversal on GPUs"). The host builder keeps the
- * tree shallower than FC_BVH_STACK_SIZE. An empty child is an inner reference with an
- * inverted box (min = +inf, max = -inf), which box_hit() never reports. */
+/* BVH traversal over the 4-wide nodes of shared/bvh.h: one node fetch tests all four
+ * child boxes with float4 arithmetic, leaves are intersected at once and the nearest
+ * inner child is visited next, the others pushed farthest first on a small private
+ * stack (Aila & Laine 2009, "Understanding the efficiency of ray traversal on GPUs";
+ * Wald et al. 2008 for the wide node). The host keeps the tree shallow enough for
+ * FC_BVH_STACK_SIZE. An empty slot has an inverted box (min = +inf, max = -inf), which
+ * the slab test never reports. */
 #ifndef FACET_TRACE_BVH_CL
 #define FACET_TRACE_BVH_CL
 
@@ -83,6 +84,36 @@ inline bool leaf_hit(__global const FcTriangle* tris, int first, int count, cons
     return found;
 }
 
+/* The four children of a node at once: the node's boxes are structure-of-arrays, so
+ * each slab is one float4 operation over the children. Near and far planes are chosen
+ * by the direction's signs; the arithmetic is box_hit()'s, operation for operation:
+ * (plane - o) * inv_d, the exit scaled by FC_SLAB_SCALE, NaN entries and exits ignored
+ * by the comparisons (select keeps the running value where the comparison is false).
+ * Returns a mask (-1 where hit) and the entry distances in *tnear. */
+inline int4 children_hit(__global const FcBvhNode* n, float3 o, float3 inv_d, int3 neg, float tmax,
+                         float4* tnear) {
+    __global const float4* v = (__global const float4*)n;
+    const float4 lx = v[0], ly = v[1], lz = v[2], hx = v[3], hy = v[4], hz = v[5];
+    float4 t0x = ((neg.x ? hx : lx) - o.x) * inv_d.x;
+    float4 t1x = ((neg.x ? lx : hx) - o.x) * inv_d.x;
+    float4 t0y = ((neg.y ? hy : ly) - o.y) * inv_d.y;
+    float4 t1y = ((neg.y ? ly : hy) - o.y) * inv_d.y;
+    float4 t0z = ((neg.z ? hz : lz) - o.z) * inv_d.z;
+    float4 t1z = ((neg.z ? lz : hz) - o.z) * inv_d.z;
+    t1x *= FC_SLAB_SCALE;
+    t1y *= FC_SLAB_SCALE;
+    t1z *= FC_SLAB_SCALE;
+    float4 tn = (float4)(0.0f), tf = (float4)(tmax);
+    tn = select(tn, t0x, t0x > tn);
+    tf = select(tf, t1x, t1x < tf);
+    tn = select(tn, t0y, t0y > tn);
+    tf = select(tf, t1y, t1y < tf);
+    tn = select(tn, t0z, t0z > tn);
+    tf = select(tf, t1z, t1z < tf);
+    *tnear = tn;
+    return tn <= tf;
+}
+
 /* The traversal shared by trace_closest and trace_any. */
 inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o,
                       float3 d, Hit* hit, bool any) {
@@ -94,33 +125,41 @@ inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle
     bool found = false;
     for (;;) {
         __global const FcBvhNode* n = &nodes[node];
-        float ta, tb;
-        bool ha = box_hit(&br, n->a_min, n->a_max, hit->t, &ta);
-        bool hb = box_hit(&br, n->b_min, n->b_max, hit->t, &tb);
+        float4 tn4;
+        const int4 mask = children_hit(n, o, br.inv_d, br.neg, hit->t, &tn4);
+        const int4 index = vload4(0, n->index), count = vload4(0, n->count);
+        float tn[4] = {tn4.x, tn4.y, tn4.z, tn4.w};
+        int idx[4] = {index.x, index.y, index.z, index.w};
+        int hitm[4] = {mask.x, mask.y, mask.z, mask.w};
+        int cnt[4] = {count.x, count.y, count.z, count.w};
         /* Leaves first: their hits shorten the ray before the inner children. */
-        if (ha && n->a_count > 0) {
-            if (leaf_hit(tris, n->a_index, n->a_count, &tr, o, hit, any)) {
-                found = true;
-                if (any) return true;
+        int inner_child[4];
+        float inner_t[4];
+        int k = 0;
+        for (int c = 0; c < 4; ++c) {
+            if (!hitm[c]) continue;
+            if (cnt[c] > 0) {
+                if (leaf_hit(tris, idx[c], cnt[c], &tr, o, hit, any)) {
+                    found = true;
+                    if (any) return true;
+                }
+            } else {
+                /* Nearest first: insertion by entry distance, farthest at 0. */
+                int j = k++;
+                for (; j > 0 && inner_t[j - 1] < tn[c]; --j) {
+                    inner_t[j] = inner_t[j - 1];
+                    inner_child[j] = inner_child[j - 1];
+                }
+                inner_t[j] = tn[c];
+                inner_child[j] = idx[c];
             }
-            ha = false;
         }
-        if (hb && n->b_count > 0) {
-            if (leaf_hit(tris, n->b_index, n->b_count, &tr, o, hit, any)) {
-                found = true;
-                if (any) return true;
-            }
-            hb = false;
-        }
-        if (ha && hb) {
-            int near_child = ta <= tb ? n->a_index : n->b_index;
-            int far_child = ta <= tb ? n->b_index : n->a_index;
-            if (sp < FC_BVH_STACK_SIZE) stack[sp++] = far_child;   /* always, by the builder */
-            node = near_child;
-        } else if (ha) {
-            node = n->a_index;
-        } else if (hb) {
-            node = n->b_index;
+        /* The farther ones on the stack, the nearest next; entries beyond a hit found
+         * since are culled by their box test when popped. */
+        for (int j = 0; j + 1 < k; ++j)
+            if (sp < FC_BVH_STACK_SIZE) stack[sp++] = inner_child[j];   /* always, by the builder */
+        if (k > 0) {
+            node = inner_child[k - 1];
         } else {
             if (sp == 0) break;
             node = stack[--sp];
