@@ -1,9 +1,12 @@
 # The two commands of the README:
 #   make demo   installs what is missing, builds, renders the default scene into out/
-#   make test   installs what is missing, builds, runs the whole test suite (ctest)
-# Other targets: make build | deps | bench | sanitize | clean
+#   make test   installs what is missing, builds, runs the whole test suite (ctest), then
+#               each fuzz harness for FUZZ_SECONDS (30 s) on the stored corpus
+# Other targets: make build | deps | bench | sanitize | fuzz | clean (docs/robustness.md)
 
 BUILD ?= build
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 30
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
@@ -11,11 +14,11 @@ CMAKE_FLAGS ?=
 PACKAGES := build-essential cmake pkg-config \
 	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
 	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
-	libgtest-dev clang
+	libgtest-dev clang libclang-rt-14-dev
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test bench sanitize clean
+.PHONY: all deps configure build demo test bench sanitize fuzz-build fuzz clean
 
 all: build
 
@@ -40,6 +43,15 @@ demo: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	$(MAKE) fuzz
+
+# The loaders' libFuzzer harnesses (tests/fuzz), built with clang in their own folder.
+fuzz-build: deps
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+
+fuzz: fuzz-build
+	tests/fuzz/run_fuzzers.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 bench: build
 	$(BUILD)/facet_bench
@@ -50,4 +62,4 @@ sanitize: deps
 	cd build-asan && ctest --output-on-failure -j $(JOBS)
 
 clean:
-	rm -rf $(BUILD) build-asan out
+	rm -rf $(BUILD) build-asan $(FUZZ_BUILD) out

@@ -367,9 +367,9 @@ struct Loader {
             const std::string sp = k("sky");
             r.object(sky, sp, {"elevation", "azimuth", "turbidity", "width"});
             SunSkyParams params;
-            if (sky.contains("elevation")) params.elevation_degrees = r.number_in(sky["elevation"], JsonReader::key(sp, "elevation"), -10, 90);
-            if (sky.contains("azimuth")) params.azimuth_degrees = r.number_in(sky["azimuth"], JsonReader::key(sp, "azimuth"), -360, 360);
-            if (sky.contains("turbidity")) params.turbidity = r.number_in(sky["turbidity"], JsonReader::key(sp, "turbidity"), 1.7, 10);
+            if (sky.contains("elevation")) params.elevation_degrees = double(r.number_in(sky["elevation"], JsonReader::key(sp, "elevation"), -10, 90));
+            if (sky.contains("azimuth")) params.azimuth_degrees = double(r.number_in(sky["azimuth"], JsonReader::key(sp, "azimuth"), -360, 360));
+            if (sky.contains("turbidity")) params.turbidity = double(r.number_in(sky["turbidity"], JsonReader::key(sp, "turbidity"), 1.7, 10));
             int width = 1024;
             if (sky.contains("width")) width = int(r.integer(sky["width"], JsonReader::key(sp, "width"), 8, 16384));
             scene.environment = sun_sky_environment(params, width);
