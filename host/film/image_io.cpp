@@ -15,6 +15,8 @@ namespace facet {
 namespace {
 
 namespace fs = std::filesystem;
+
+constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 28;
 using OIIO::ImageOutput;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
@@ -91,8 +93,13 @@ ImageRGB read_image(const std::string& path) {
     const ImageSpec& spec = in->spec();
     if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
         throw Error(fmt::format("{}: empty image ({}x{}, {} channels)", path, spec.width, spec.height, spec.nchannels));
-    std::vector<float> all(std::size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, TypeDesc::FLOAT, all.data()))
+    // Checked before allocating: a header can claim any size (16384 x 16384 is 2^28).
+    if (std::int64_t(spec.width) * spec.height > kMaxImagePixels)
+        throw Error(fmt::format("{}: the image claims {}x{} pixels: at most 2^28 pixels are supported", path,
+                                spec.width, spec.height));
+    const int channels = std::min(spec.nchannels, 3);   // R, G, B (or grey); alpha and the rest unused
+    std::vector<float> all(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
+    if (!in->read_image(0, 0, 0, channels, TypeDesc::FLOAT, all.data()))
         throw Error(fmt::format("{}: cannot read pixels: {}", path, in->geterror()));
     ImageRGB img;
     img.width = spec.width;
@@ -101,7 +108,7 @@ ImageRGB read_image(const std::string& path) {
     img.rgb.resize(std::size_t(spec.width) * spec.height * 3);
     for (std::size_t i = 0; i < std::size_t(spec.width) * spec.height; ++i)
         for (int c = 0; c < 3; ++c)
-            img.rgb[3 * i + c] = all[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
+            img.rgb[3 * i + c] = all[i * std::size_t(channels) + std::size_t(std::min(c, channels - 1))];
     return img;
 }
 

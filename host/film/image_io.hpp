@@ -34,7 +34,8 @@ struct ImageRGB {
 
 // Reads any image OpenImageIO can (EXR, HDR, PNG...) as RGB floats (values as stored:
 // EXR and HDR are linear, 8-bit formats are not converted). A one-channel image is
-// replicated to grey. Throws facet::Error naming the file on failure.
+// replicated to grey. Throws facet::Error naming the file on failure, and for images
+// of more than 2^28 pixels (checked on the header, before reading).
 ImageRGB read_image(const std::string& path);
 
 // Reads a reference image for a render of width x height: the size must match and

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 
@@ -80,6 +81,8 @@ struct Loader {
         }
         const glm::vec3 forward = c.target - c.eye;
         if (!(glm::length(forward) > 0.0f)) r.fail(path, "eye and target are the same point");
+        if (!std::isfinite(glm::length(forward)))
+            r.fail(path, "eye and target are too far apart (their distance overflows a float)");
         if (!(glm::length(glm::cross(glm::normalize(forward), c.up)) > 1e-6f)) {
             r.fail(k("up"), "must be non-zero and not parallel to the view direction");
         }
