@@ -2,6 +2,7 @@
 // rejected with a message naming the file and key (or line), or sanitised with a
 // warning; device errors say their cause (docs/robustness.md lists what is checked).
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include <fmt/format.h>
@@ -165,6 +166,39 @@ TEST(Limits, HugeImageHeaderIsRejectedBeforeReading) {
     std::string cut = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 64 +X 128\n";
     cut += std::string(100, '\x80');
     expect_error([&] { read_image(d.write("cut.hdr", cut)); }, {"cut.hdr"});
+}
+
+// A corrupt EXR header is rejected before OpenEXR allocates from it (found by
+// fuzz_env_map: a 363-byte file claimed a 1.7 GB attribute; OpenEXR took 2 GB and 8 s).
+std::string exr_header(const std::string& attributes) {
+    return std::string("\x76\x2f\x31\x01\x02\x00\x00\x00", 8) + attributes + std::string(1, '\0');
+}
+std::string le32(std::int32_t v) {
+    std::string s(4, '\0');
+    for (int i = 0; i < 4; ++i) s[std::size_t(i)] = char((std::uint32_t(v) >> (8 * i)) & 0xffu);
+    return s;
+}
+std::string box(std::int32_t x0, std::int32_t y0, std::int32_t x1, std::int32_t y1) {
+    return std::string("dataWindow\0box2i\0", 17) + le32(16) + le32(x0) + le32(y0) + le32(x1) + le32(y1);
+}
+
+TEST(Limits, CorruptExrHeaderIsRejectedBeforeReading) {
+    TempDir d;
+    const std::string attr = d.write("attr.exr", exr_header(std::string("capDate\0string\0", 15) + le32(1751318547) + "xyz"));
+    expect_error([&] { read_image(attr); }, {"attr.exr", "attribute 'capDate' claims 1751318547 bytes", "corrupt"});
+    const std::string window = d.write("window.exr", exr_header(box(0, 0, 99999, 99999)));
+    expect_error([&] { read_image(window); }, {"window.exr", "100000x100000", "2^28"});
+    const std::string lines = d.write("lines.exr", exr_header(box(0, 0, 9, 1999999) + std::string("compression\0compression\0", 24) + le32(1) + std::string(1, '\0')));
+    expect_error([&] { read_image(lines); }, {"lines.exr", "2000000 scanlines", "offset table"});
+    // The stored finding itself, through the environment loader.
+    std::vector<std::string> warnings;
+    expect_error([&] {
+        load_environment_map(std::string(FACET_FUZZ_DIR) + "/regressions/env_map/exr_attribute_size_oom.exr", glm::vec3(1.0f),
+                             glm::mat3(1.0f), warnings);
+    }, {"exr_attribute_size_oom.exr", "attribute"});
+    // A valid EXR still reads.
+    write_exr(d.path("ok.exr"), 4, 2, std::vector<float>(24, 0.5f));
+    EXPECT_EQ(read_image(d.path("ok.exr")).width, 4);
 }
 
 // Environment scale: negative or non-finite is rejected.

@@ -17,6 +17,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "error.hpp"
+#include "film/image_io.hpp"
 #include "fuzz_util.hpp"
 #include "scene/environment.hpp"
 #include "scene/load.hpp"
@@ -87,6 +88,11 @@ inline void obj_mtl(std::string_view input) {
 inline void env_map(std::string_view input) {
     const bool hdr = input.substr(0, 2) == "#?";
     const std::string path = write_file(hdr ? "in.hdr" : "in.exr", input);
+    try {
+        check_image_header(path);   // before OpenImageIO allocates from the header
+    } catch (const Error&) {
+        return;
+    }
     {
         std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
         if (!in) {
