@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "cl/runtime.hpp"
+#include "cl_test_env.hpp"
 #include "film/image_io.hpp"
 #include "scene/environment.hpp"
 #include "scene/load.hpp"
@@ -220,6 +221,14 @@ TEST(Limits, OutOfResourcesMessage) {
     }
     expect_error([&] { cl_call("uploading the scene", [] { throw cl::Error(CL_INVALID_BUFFER_SIZE, "clCreateBuffer"); }); },
                  {"CL_INVALID_BUFFER_SIZE", "clCreateBuffer", "uploading the scene"});
+}
+
+// A kernel that does not build: the message says so, with the OpenCL status, the device,
+// the options (no fast-math flags) and the compiler's log naming the error.
+TEST(Limits, KernelBuildFailureIsReportedWithItsLog) {
+    expect_error([] { build_program(test::context(), "kernels/integrator/path.cl", {"this is not OpenCL C;"}); },
+                 {"kernel build failed", "CL_BUILD_PROGRAM_FAILURE", "kernels/integrator/path.cl", "device:",
+                  "options: -cl-std=CL1.2", "--- build log ---", "error"});
 }
 
 }  // namespace
