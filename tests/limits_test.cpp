@@ -79,6 +79,17 @@ TEST(Limits, GeometryBeyondTheFloatRange) {
                  {"c.json: camera", "too far apart"});
 }
 
+// Punctual lights: a direction that cannot be normalised, a position beyond the scene limit.
+TEST(Limits, PunctualLights) {
+    TempDir d;
+    expect_error([&] { load_scene(scene(d, "l.json", R"("lights": [{"type": "directional", "direction": [3e38, 3e38, 0], "color": [1, 1, 1]}],)" + kQuad)); },
+                 {"l.json: lights[0].direction", "unit vector"});
+    expect_error([&] { load_scene(scene(d, "p.json", R"("lights": [{"type": "point", "position": [0, 1e30, 0], "color": [1, 1, 1]}],)" + kQuad)); },
+                 {"p.json: lights[0].position", "1e18"});
+    expect_error([&] { load_scene(scene(d, "z.json", R"("lights": [{"type": "spot", "position": [0, 1, 0], "direction": [0, 0, 0], "color": [1, 1, 1]}],)" + kQuad)); },
+                 {"z.json: lights[0].direction", "zero"});
+}
+
 // A camera whose up vector is zero or along the view direction has no frame.
 TEST(Limits, DegenerateCamera) {
     TempDir d;

@@ -323,11 +323,15 @@ struct Loader {
         if (l.type != FC_LIGHT_DIRECTIONAL) {
             r.require(v, path, "position");
             l.position = r.vec3(v["position"], k("position"));
+            for (int c = 0; c < 3; ++c)
+                if (std::fabs(l.position[c]) > 1e18f) r.fail(k("position"), "coordinates must be within +-1e18");
         }
         if (l.type != FC_LIGHT_POINT) {
             r.require(v, path, "direction");
             l.direction = r.vec3(v["direction"], k("direction"));
             if (!(glm::length(l.direction) > 0.0f)) r.fail(k("direction"), "must not be zero");
+            if (!std::isfinite(glm::length(l.direction)))
+                r.fail(k("direction"), "is too long to normalise in float; give a unit vector");
         }
         r.require(v, path, "color");
         l.color = r.color(v["color"], k("color"));

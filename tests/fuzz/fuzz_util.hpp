@@ -94,6 +94,12 @@ inline void check_scene(const Scene& s) {
         if (!std::isfinite(s.lights[i].pick_pdf)) broken("finite light pick pdf");
     }
     if (!s.lights.empty() && s.light_cdf.back() != 1.0f) broken("light cdf ends at 1");
+    for (const FcLight& l : s.lights) {
+        if (!finite3(l.p0) || !finite3(l.e1) || !finite3(l.e2) || !finite3(l.color)) broken("finite lights");
+        if ((l.type == FC_LIGHT_SPOT || l.type == FC_LIGHT_DIRECTIONAL) &&
+            !(std::fabs(glm::length(glm::vec3(l.e1[0], l.e1[1], l.e1[2])) - 1.0f) < 1e-3f))
+            broken("unit spot and directional light directions");
+    }
     const EnvironmentMap& e = s.environment;
     for (float t : e.texels)
         if (!std::isfinite(t) || t < 0.0f) broken("finite, non-negative environment texels");
