@@ -162,6 +162,10 @@ TEST(Limits, ObjDegenerateAndNonFinite) {
     EXPECT_TRUE(contains(s.warnings, "2 of 3 triangles have zero area and were dropped"));
     expect_error([&] { load_scene(d.write("all.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 3 2 1\n")); },
                  {"all.obj", "every face has zero area"});
+    // A form feed is not a blank to tinyobjloader: "vn\f0 0 1" is no normal, and an index
+    // naming it is out of range (found by fuzz_obj_mtl: a heap overflow before the fix).
+    expect_error([&] { load_scene(d.write("ff.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn\f0 0 1\nf 1//2 2//2 3//2\n")); },
+                 {"ff.obj:6", "normal index 2 is out of range"});
     Scene nn = load_scene(d.write("vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn nan nan nan\nf 1//1 2//1 3//1\n"));
     for (float c : nn.shading[0].n0) EXPECT_TRUE(std::isfinite(c));
     EXPECT_FLOAT_EQ(nn.shading[0].n0[2], 1.0f);

@@ -138,8 +138,22 @@ void load_obj(const std::string& path, Scene& scene, const ObjLoadOptions& optio
         return by_name[name] = add_material(scene, m, name);
     };
 
-    // Positions in world space; normals by the inverse transpose.
+    // Every index tinyobjloader returns is checked against its own arrays: the validator
+    // counts statements the same way, but an index out of range here must never be read.
     const auto& attrib = reader.GetAttrib();
+    for (const auto& shape : reader.GetShapes()) {
+        for (const tinyobj::index_t& i : shape.mesh.indices) {
+            const bool vertex_ok = i.vertex_index >= 0 && std::size_t(i.vertex_index) < attrib.vertices.size() / 3;
+            const bool normal_ok = i.normal_index == -1 ||
+                                   (i.normal_index >= 0 && std::size_t(i.normal_index) < attrib.normals.size() / 3);
+            if (!vertex_ok || !normal_ok)
+                throw Error(fmt::format("{}: a face index is out of range for what tinyobjloader read (it reads some "
+                                        "statements differently from facet's checks); the file is malformed",
+                                        path));
+        }
+    }
+
+    // Positions in world space; normals by the inverse transpose.
     const std::size_t npos = attrib.vertices.size() / 3;
     std::vector<glm::vec3> pos(npos);
     for (std::size_t i = 0; i < npos; ++i) {
