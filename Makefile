@@ -1,9 +1,13 @@
 # The two commands of the README:
 #   make demo   installs what is missing, builds, renders the default scene into out/
-#   make test   installs what is missing, builds, runs the whole test suite (ctest)
-# Other targets: make build | deps | bench | sanitize | clean
+#   make test   installs what is missing, builds, runs the whole test suite (ctest), then
+#               each fuzz harness for FUZZ_SECONDS (30 s) on the stored corpus
+# Other targets: make build | deps | bench | sanitize | fuzz | clean (docs/robustness.md)
 
 BUILD ?= build
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 30
+SANITIZE_ASAN_OPTIONS ?= detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 
@@ -12,12 +16,12 @@ CMAKE_FLAGS ?=
 PACKAGES := build-essential cmake pkg-config \
 	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
 	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
-	libgtest-dev clang \
+	libgtest-dev clang libclang-rt-14-dev \
 	libembree-dev zlib1g-dev
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test bench sanitize clean
+.PHONY: all deps configure build demo test bench sanitize fuzz-build fuzz clean
 
 all: build
 
@@ -42,6 +46,15 @@ demo: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	$(MAKE) fuzz
+
+# The loaders' libFuzzer harnesses (tests/fuzz), built with clang in their own folder.
+fuzz-build: deps
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_FUZZ=ON
+	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+
+fuzz: fuzz-build
+	tests/fuzz/run_fuzzers.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 # The bench (bench/README.md): every speed and memory figure of facet, against Embree,
 # in one run; writes out/bench/bench.json and out/bench/bench.md.
@@ -49,10 +62,14 @@ bench: build
 	mkdir -p out/bench
 	$(BUILD)/facet_bench --json out/bench/bench.json --markdown out/bench/bench.md
 
+# AddressSanitizer + UBSan build of everything; runs the unit and cli tiers (docs/robustness.md).
+# Leaks inside the OpenCL driver stack (PoCL, LLVM) are suppressed, facet's are not.
 sanitize: deps
-	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_SANITIZE=ON
+	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_SANITIZE=ON -DFACET_BUILD_BENCH=OFF
 	cmake --build build-asan -j $(JOBS)
-	cd build-asan && ctest --output-on-failure -j $(JOBS)
+	cd build-asan && ASAN_OPTIONS=$(SANITIZE_ASAN_OPTIONS) UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+		LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizer/lsan.supp:print_suppressions=0 \
+		ctest --output-on-failure -j $(JOBS) -L "unit|cli"
 
 clean:
-	rm -rf $(BUILD) build-asan out
+	rm -rf $(BUILD) build-asan $(FUZZ_BUILD) out

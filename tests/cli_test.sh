@@ -47,6 +47,25 @@ expect bad-device 1 "no device" -- "$FACET" render "$SCENES/cornell_box.json" "$
 expect unknown-option 2 "--frobnicate" -- "$FACET" render "$SCENES/cornell_box.json" --frobnicate
 expect too-big-for-device 1 "MiB" -- "$FACET" render "$SCENES/cornell_box.json" --width 16384 --height 16384 \
     --spp 1 --quiet --out "$tmp/huge.exr"
+# Absurd parameters (docs/robustness.md): rejected before any work, naming the option or key.
+expect bad-time-nan 2 "--time.*not a finite" -- "$FACET" render "$SCENES/cornell_box.json" --time nan
+expect bad-time-inf 2 "--time.*not a finite" -- "$FACET" render "$SCENES/cornell_box.json" --time inf
+expect bad-time-negative 2 "--time" -- "$FACET" render "$SCENES/cornell_box.json" --time -1
+expect bad-snapshot-nan 2 "--snapshot.*not a finite" -- "$FACET" render "$SCENES/cornell_box.json" --snapshot nan
+expect bad-exposure-nan 2 "--exposure.*not a finite" -- "$FACET" render "$SCENES/cornell_box.json" --exposure nan
+expect bad-width-negative 2 "--width" -- "$FACET" render "$SCENES/cornell_box.json" --width -5
+expect bad-width-huge 2 "--width" -- "$FACET" render "$SCENES/cornell_box.json" --width 1000000000
+expect bad-height-zero 2 "--height" -- "$FACET" render "$SCENES/cornell_box.json" --height 0
+expect bad-spp-huge 2 "--spp" -- "$FACET" render "$SCENES/cornell_box.json" --spp 1000000000
+expect bad-depth-zero 2 "--max-depth" -- "$FACET" render "$SCENES/cornell_box.json" --max-depth 0
+expect bad-seed-negative 2 "--seed" -- "$FACET" render "$SCENES/cornell_box.json" --seed -1
+expect bad-sky-elevation-nan 2 "--elevation.*not a finite" -- "$FACET" sky "$tmp/s.exr" --elevation nan
+printf '{"render": {"spp": 1e400}, "shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1,0,0], "edge2": [0,1,0]}]}\n' >"$tmp/overflow.json"
+expect scene-number-overflow 1 "error: .*overflow\.json: JSON error: .*overflow" -- "$FACET" info "$tmp/overflow.json"
+printf '{"shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1e38,0,0], "edge2": [0,1e38,0]}], "meshes": [{"file": "tet.obj", "transform": {"scale": 1e25}}]}\n' >"$tmp/far.json"
+expect scene-geometry-overflow 1 "far\.json: triangle .* finite and within" -- "$FACET" info "$tmp/far.json"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\n' >"$tmp/flat.obj"
+expect obj-zero-area-dropped 0 "1 of 2 triangles have zero area and were dropped" -- "$FACET" render "$tmp/flat.obj" "${small[@]}" --out "$tmp/flat.exr"
 expect unknown-strategy 2 "strategy" -- "$FACET" render "$SCENES/cornell_box.json" --strategy sometimes
 expect sky 0 "wrote" -- "$FACET" sky "$tmp/sky.exr" --width 64
 expect render-sky-scene 0 "wrote" -- "$FACET" render "$SCENES/spheres_sky.json" "${small[@]}" --out "$tmp/sky_render.exr"

@@ -1,7 +1,9 @@
 // `facet devices | info | render`: argument parsing and dispatch.
 #include "cli/cli.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 
@@ -13,6 +15,20 @@
 #include "shared/render.h"
 
 namespace facet {
+namespace {
+
+// CLI11's range checks let NaN through (every comparison with it is false): a number
+// option must first be a finite number ("nan" and "inf" parse as doubles).
+const CLI::Validator kFinite(
+    [](std::string& text) {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0') return std::string();   // left to the conversion's message
+        return std::isfinite(v) ? std::string() : "Value " + text + " is not a finite number";
+    },
+    "FINITE");
+
+}  // namespace
 
 int run_cli(int argc, char** argv) {
     CLI::App app{"facet: a physically based path tracer running as OpenCL kernels"};
@@ -30,7 +46,7 @@ int run_cli(int argc, char** argv) {
     render->add_option("scene", opt.scene, "Scene file (.json) or mesh (.obj)")->required();
     render->add_option("--spp", opt.spp, "Samples per pixel (default: the scene's)")->check(CLI::Range(1, 1 << 24));
     render->add_option("--time", opt.time_limit, "Stop after this many seconds of rendering (whichever of --spp and --time ends first)")
-        ->check(CLI::PositiveNumber);
+        ->check(kFinite & CLI::PositiveNumber);
     render->add_option("--width", opt.width, "Image width in pixels (default: the scene's)")->check(CLI::Range(1, 16384));
     render->add_option("--height", opt.height, "Image height in pixels (default: the scene's)")->check(CLI::Range(1, 16384));
     render->add_option("--max-depth", opt.max_depth, "Maximum number of bounces (1 = direct light only)")
@@ -44,10 +60,10 @@ int run_cli(int argc, char** argv) {
     render->add_option("--device", opt.device, "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU)");
     render->add_option("--out", opt.out, "Output EXR (a tone-mapped PNG is written beside it); default out/<scene>.exr");
     render->add_option("--snapshot", opt.snapshot, "Write the image so far (and the report) every SECONDS")
-        ->check(CLI::PositiveNumber);
+        ->check(kFinite & CLI::PositiveNumber);
     render->add_option("--reference", opt.reference, "Reference image (EXR/HDR) to measure the error against, per pass");
     render->add_option("--report", opt.report, "Error-against-time report (CSV; .json summary and .svg plot beside it); default beside --out");
-    render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops")->check(CLI::Range(-30.0f, 30.0f));
+    render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops")->check(kFinite & CLI::Range(-30.0f, 30.0f));
     render->add_flag("--generic", opt.generic,
                      "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
     render->add_flag("--quiet,-q", opt.quiet, "Print only errors and the final summary");
@@ -66,9 +82,9 @@ int run_cli(int argc, char** argv) {
     CLI::App* sky_cmd = app.add_subcommand("sky", "Write the generated sun-and-sky environment map as EXR (docs/environment.md)");
     sky_cmd->add_option("out", sky.out, "Output EXR")->required();
     sky_cmd->add_option("--width", sky.width, "Width in texels (height is half)")->check(CLI::Range(8, 16384));
-    sky_cmd->add_option("--elevation", sky.elevation, "Sun elevation in degrees")->check(CLI::Range(-10.0f, 90.0f));
-    sky_cmd->add_option("--azimuth", sky.azimuth, "Sun azimuth in degrees")->check(CLI::Range(-360.0f, 360.0f));
-    sky_cmd->add_option("--turbidity", sky.turbidity, "Atmospheric turbidity (Preetham's model)")->check(CLI::Range(1.7f, 10.0f));
+    sky_cmd->add_option("--elevation", sky.elevation, "Sun elevation in degrees")->check(kFinite & CLI::Range(-10.0f, 90.0f));
+    sky_cmd->add_option("--azimuth", sky.azimuth, "Sun azimuth in degrees")->check(kFinite & CLI::Range(-360.0f, 360.0f));
+    sky_cmd->add_option("--turbidity", sky.turbidity, "Atmospheric turbidity (Preetham's model)")->check(kFinite & CLI::Range(1.7f, 10.0f));
 
     try {
         app.parse(argc, argv);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 
 #include <OpenImageIO/imageio.h>
@@ -15,6 +16,8 @@ namespace facet {
 namespace {
 
 namespace fs = std::filesystem;
+
+constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 28;
 using OIIO::ImageOutput;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
@@ -86,13 +89,19 @@ void write_png(const std::string& path, int width, int height, const std::vector
 
 ImageRGB read_image(const std::string& path) {
     if (!fs::exists(path)) throw Error(fmt::format("{}: no such file", path));
+    check_image_header(path);
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
     if (!in) throw Error(fmt::format("{}: cannot read image: {}", path, OIIO::geterror()));
     const ImageSpec& spec = in->spec();
     if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
         throw Error(fmt::format("{}: empty image ({}x{}, {} channels)", path, spec.width, spec.height, spec.nchannels));
-    std::vector<float> all(std::size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, TypeDesc::FLOAT, all.data()))
+    // Checked before allocating: a header can claim any size (16384 x 16384 is 2^28).
+    if (std::int64_t(spec.width) * spec.height > kMaxImagePixels)
+        throw Error(fmt::format("{}: the image claims {}x{} pixels: at most 2^28 pixels are supported", path,
+                                spec.width, spec.height));
+    const int channels = std::min(spec.nchannels, 3);   // R, G, B (or grey); alpha and the rest unused
+    std::vector<float> all(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
+    if (!in->read_image(0, 0, 0, channels, TypeDesc::FLOAT, all.data()))
         throw Error(fmt::format("{}: cannot read pixels: {}", path, in->geterror()));
     ImageRGB img;
     img.width = spec.width;
@@ -101,7 +110,7 @@ ImageRGB read_image(const std::string& path) {
     img.rgb.resize(std::size_t(spec.width) * spec.height * 3);
     for (std::size_t i = 0; i < std::size_t(spec.width) * spec.height; ++i)
         for (int c = 0; c < 3; ++c)
-            img.rgb[3 * i + c] = all[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
+            img.rgb[3 * i + c] = all[i * std::size_t(channels) + std::size_t(std::min(c, channels - 1))];
     return img;
 }
 
@@ -115,6 +124,73 @@ ImageRGB read_reference(const std::string& path, int width, int height) {
             throw Error(fmt::format("reference {}: channel {} of pixel ({}, {}) is not finite", path, i % 3,
                                     (i / 3) % std::size_t(width), (i / 3) / std::size_t(width)));
     return ref;
+}
+
+// OpenEXR reads a file's whole chunk-offset table when it opens it, sized from the
+// header, and each header attribute at its declared size: a few hundred corrupt bytes
+// can claim a 1.7 GB attribute or 2^31 lines and take gigabytes and seconds before
+// "Unexpected end of file" (found by fuzz_env_map). The header is read here first,
+// before OpenImageIO opens the file; only what is certainly wrong is rejected (an
+// attribute or offset table larger than the file, a data window of more than
+// kMaxImagePixels pixels), anything else is left to OpenEXR's own checks.
+void check_image_header(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::string head(1 << 16, '\0');
+    file.read(head.data(), std::streamsize(head.size()));
+    head.resize(std::size_t(file.gcount()));
+    if (head.size() < 8 || head.compare(0, 4, "\x76\x2f\x31\x01") != 0) return;
+    std::error_code ec;
+    const std::uintmax_t file_size = fs::file_size(path, ec);
+    if (ec) return;
+    auto int32_at = [&](std::size_t at) {
+        std::uint32_t v = 0;
+        for (int i = 3; i >= 0; --i) v = (v << 8) | std::uint8_t(head[at + std::size_t(i)]);
+        return std::int32_t(v);
+    };
+    const std::uint32_t flags = std::uint32_t(int32_at(4));
+    const bool single_part_scanlines = (flags & 0x1a00u) == 0;   // not tiled, deep or multi-part
+    std::size_t at = 8;
+    bool have_window = false;
+    std::int64_t width = 0, height = 0;
+    int compression = 0;
+    while (at < head.size() && head[at] != '\0') {
+        const std::size_t name_end = head.find('\0', at);
+        const std::size_t type_end = name_end == std::string::npos ? name_end : head.find('\0', name_end + 1);
+        if (type_end == std::string::npos || type_end + 5 > head.size()) return;
+        const std::string name = head.substr(at, name_end - at);
+        const std::string type = head.substr(name_end + 1, type_end - name_end - 1);
+        const std::int32_t size = int32_at(type_end + 1);
+        const std::size_t value = type_end + 5;
+        // OpenEXR allocates an attribute's declared size before reading it.
+        if (size < 0 || std::uintmax_t(value) + std::uintmax_t(size) > file_size)
+            throw Error(fmt::format("{}: the EXR header's attribute '{}' claims {} bytes, but the file has {}: it is "
+                                    "truncated or corrupt",
+                                    path, name.substr(0, 64), size, file_size));
+        if (value + std::size_t(size) > head.size()) return;   // a long header: left to OpenEXR
+        if (name == "dataWindow" && type == "box2i" && size == 16) {
+            width = std::int64_t(int32_at(value + 8)) - int32_at(value) + 1;
+            height = std::int64_t(int32_at(value + 12)) - int32_at(value + 4) + 1;
+            have_window = true;
+        } else if (name == "compression" && size == 1) {
+            compression = std::uint8_t(head[value]);
+        }
+        at = value + std::size_t(size);
+    }
+    if (!have_window || width < 1 || height < 1) return;
+    if (width * height > kMaxImagePixels)
+        throw Error(fmt::format("{}: the EXR header claims a data window of {}x{} pixels: at most 2^28 pixels are "
+                                "supported",
+                                path, width, height));
+    if (!single_part_scanlines) return;
+    // Scanlines per chunk by compression: none, RLE, ZIPS 1; ZIP, PXR24 16; PIZ, B44(A),
+    // DWAA 32; DWAB 256 (unknown: the largest).
+    static const int kLines[] = {1, 1, 1, 16, 32, 16, 32, 32, 32, 256};
+    const int lines = compression >= 0 && compression < 10 ? kLines[compression] : 256;
+    const std::uint64_t table = std::uint64_t((height + lines - 1) / lines) * 8u;
+    if (table > file_size)
+        throw Error(fmt::format("{}: the EXR header claims {} scanlines, whose offset table alone needs {} bytes, "
+                                "but the file has {}: it is truncated or corrupt",
+                                path, height, table, file_size));
 }
 
 std::string replace_extension(const std::string& path, const std::string& ext) {

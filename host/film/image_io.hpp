@@ -34,8 +34,14 @@ struct ImageRGB {
 
 // Reads any image OpenImageIO can (EXR, HDR, PNG...) as RGB floats (values as stored:
 // EXR and HDR are linear, 8-bit formats are not converted). A one-channel image is
-// replicated to grey. Throws facet::Error naming the file on failure.
+// replicated to grey. Throws facet::Error naming the file on failure, and for images
+// of more than 2^28 pixels (checked on the header, before reading).
 ImageRGB read_image(const std::string& path);
+
+// Cheap checks of a file's header before any reader allocates from it (read_image calls
+// it first). OpenEXR: every attribute and the chunk-offset table must fit in the file,
+// and the data window must hold at most 2^28 pixels. Throws facet::Error naming the file.
+void check_image_header(const std::string& path);
 
 // Reads a reference image for a render of width x height: the size must match and
 // every texel must be finite, else facet::Error names the file and the problem.

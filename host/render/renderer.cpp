@@ -61,7 +61,10 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
     check_device_memory(ctx.desc(), {{"BVH nodes", bvh.nodes.size() * sizeof(FcBvhNode)},
                                      {"triangles", bvh.triangles.size() * sizeof(FcTriangle)},
                                      {"shading data", scene.shading.size() * sizeof(FcTriShading)},
+                                     {"materials", scene.materials.size() * sizeof(FcMaterial)},
+                                     {"lights", scene.lights.size() * sizeof(FcLight)},
                                      {"environment map", scene.environment.texels.size() * sizeof(float)},
+                                     {"environment distribution", scene.environment.distribution.size() * sizeof(float)},
                                      {"image", 2 * pixel_count() * sizeof(cl_float4)}});
 
     stats_.features = generic ? all_features() : scene_features(scene);

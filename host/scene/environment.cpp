@@ -101,7 +101,7 @@ EnvironmentMap constant_environment(const glm::vec3& radiance) {
 
 void build_environment_distribution(EnvironmentMap& env) {
     FcEnvironment& p = env.params;
-    const double sr = p.scale[0], sg = p.scale[1], sb = p.scale[2];
+    const double sr = double(p.scale[0]), sg = double(p.scale[1]), sb = double(p.scale[2]);
     if (p.width == 0) {
         env.distribution.assign(1, 0.0f);
         p.total = 0.0f;

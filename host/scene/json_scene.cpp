@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 
@@ -80,6 +81,8 @@ struct Loader {
         }
         const glm::vec3 forward = c.target - c.eye;
         if (!(glm::length(forward) > 0.0f)) r.fail(path, "eye and target are the same point");
+        if (!std::isfinite(glm::length(forward)))
+            r.fail(path, "eye and target are too far apart (their distance overflows a float)");
         if (!(glm::length(glm::cross(glm::normalize(forward), c.up)) > 1e-6f)) {
             r.fail(k("up"), "must be non-zero and not parallel to the view direction");
         }
@@ -335,11 +338,15 @@ struct Loader {
         if (l.type != FC_LIGHT_DIRECTIONAL) {
             r.require(v, path, "position");
             l.position = r.vec3(v["position"], k("position"));
+            for (int c = 0; c < 3; ++c)
+                if (std::fabs(l.position[c]) > 1e18f) r.fail(k("position"), "coordinates must be within +-1e18");
         }
         if (l.type != FC_LIGHT_POINT) {
             r.require(v, path, "direction");
             l.direction = r.vec3(v["direction"], k("direction"));
             if (!(glm::length(l.direction) > 0.0f)) r.fail(k("direction"), "must not be zero");
+            if (!std::isfinite(glm::length(l.direction)))
+                r.fail(k("direction"), "is too long to normalise in float; give a unit vector");
         }
         r.require(v, path, "color");
         l.color = r.color(v["color"], k("color"));
@@ -382,9 +389,9 @@ struct Loader {
             const std::string sp = k("sky");
             r.object(sky, sp, {"elevation", "azimuth", "turbidity", "width"});
             SunSkyParams params;
-            if (sky.contains("elevation")) params.elevation_degrees = r.number_in(sky["elevation"], JsonReader::key(sp, "elevation"), -10, 90);
-            if (sky.contains("azimuth")) params.azimuth_degrees = r.number_in(sky["azimuth"], JsonReader::key(sp, "azimuth"), -360, 360);
-            if (sky.contains("turbidity")) params.turbidity = r.number_in(sky["turbidity"], JsonReader::key(sp, "turbidity"), 1.7, 10);
+            if (sky.contains("elevation")) params.elevation_degrees = double(r.number_in(sky["elevation"], JsonReader::key(sp, "elevation"), -10, 90));
+            if (sky.contains("azimuth")) params.azimuth_degrees = double(r.number_in(sky["azimuth"], JsonReader::key(sp, "azimuth"), -360, 360));
+            if (sky.contains("turbidity")) params.turbidity = double(r.number_in(sky["turbidity"], JsonReader::key(sp, "turbidity"), 1.7, 10));
             int width = 1024;
             if (sky.contains("width")) width = int(r.integer(sky["width"], JsonReader::key(sp, "width"), 8, 16384));
             scene.environment = sun_sky_environment(params, width);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <fmt/format.h>
@@ -73,6 +74,12 @@ Json parse_json(const std::string& file, const std::string& text) {
             }
         }
         throw Error(fmt::format("{}:{}:{}: JSON syntax error: {}", file, line, column, what));
+    } catch (const Json::exception& e) {
+        // Not a syntax error but a value the parser cannot hold, e.g. out_of_range.406 for
+        // a number that overflows a double ("1e400"): no position is known.
+        std::string what = e.what();
+        if (const auto bracket = what.find("] "); bracket != std::string::npos) what = what.substr(bracket + 2);
+        throw Error(fmt::format("{}: JSON error: {}", file, what));
     }
 }
 
@@ -118,6 +125,9 @@ double JsonReader::number(const Json& v, const std::string& path) const {
     if (!v.is_number()) fail(path, fmt::format("expected a number, got {}", type_name(v)));
     const double d = v.get<double>();
     if (!std::isfinite(d)) fail(path, "must be finite");
+    // Every number ends up in a float: beyond its range the conversion is undefined.
+    if (std::fabs(d) > double(std::numeric_limits<float>::max()))
+        fail(path, fmt::format("{} is beyond the range of a 32-bit float (+-3.4e38)", d));
     return d;
 }
 

@@ -1,6 +1,7 @@
 // OBJ meshes (with their MTL materials) appended to a Scene. The text is checked
 // line by line first (obj_validate.cpp, mtl_material.cpp) so that malformed files
 // give "file:LINE: ..." errors; tinyobjloader then reads it (triangulating polygons).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -13,6 +14,7 @@
 
 #include "error.hpp"
 #include "scene/load.hpp"
+#include "scene/material.hpp"
 #include "scene/mtl_material.hpp"
 #include "scene/obj_validate.hpp"
 #include "scene/text_parse.hpp"
@@ -121,11 +123,37 @@ void load_obj(const std::string& path, Scene& scene, const ObjLoadOptions& optio
         for (const MtlMaterial& candidate : mtl) {
             if (candidate.name == name) m = candidate.material;  // the last definition wins
         }
+        // As for JSON materials: a reflectance above 1 creates energy; clamped, with a warning.
+        bool clamped = false;
+        for (int c = 0; c < 3; ++c) {
+            clamped = clamped || m.diffuse[c] > 1.0f || m.specular[c] > 1.0f;
+            m.diffuse[c] = std::min(m.diffuse[c], 1.0f);
+            m.specular[c] = std::min(m.specular[c], 1.0f);
+        }
+        if (clamped)
+            scene.warnings.push_back(fmt::format(
+                "{}: material '{}': a reflectance (Kd, Ks) above 1 creates energy; clamped to 1", path, name));
+        if (std::string problem = validate_material(m); !problem.empty())
+            throw Error(fmt::format("{}: material '{}': {}", path, name, problem));
         return by_name[name] = add_material(scene, m, name);
     };
 
-    // Positions in world space; normals by the inverse transpose.
+    // Every index tinyobjloader returns is checked against its own arrays: the validator
+    // counts statements the same way, but an index out of range here must never be read.
     const auto& attrib = reader.GetAttrib();
+    for (const auto& shape : reader.GetShapes()) {
+        for (const tinyobj::index_t& i : shape.mesh.indices) {
+            const bool vertex_ok = i.vertex_index >= 0 && std::size_t(i.vertex_index) < attrib.vertices.size() / 3;
+            const bool normal_ok = i.normal_index == -1 ||
+                                   (i.normal_index >= 0 && std::size_t(i.normal_index) < attrib.normals.size() / 3);
+            if (!vertex_ok || !normal_ok)
+                throw Error(fmt::format("{}: a face index is out of range for what tinyobjloader read (it reads some "
+                                        "statements differently from facet's checks); the file is malformed",
+                                        path));
+        }
+    }
+
+    // Positions in world space; normals by the inverse transpose.
     const std::size_t npos = attrib.vertices.size() / 3;
     std::vector<glm::vec3> pos(npos);
     for (std::size_t i = 0; i < npos; ++i) {
@@ -158,12 +186,20 @@ void load_obj(const std::string& path, Scene& scene, const ObjLoadOptions& optio
         }
     }
 
+    // Triangles of zero area (repeated or collinear corners, also from triangulating a
+    // degenerate polygon) are never hit and carry no light: dropped, with a warning.
+    std::size_t degenerate = 0, kept = 0;
     for (const auto& shape : reader.GetShapes()) {
         const auto& idx = shape.mesh.indices;
         for (std::size_t f = 0; 3 * f + 2 < idx.size(); ++f) {
             glm::vec3 p[3], n[3];
             for (int c = 0; c < 3; ++c)
                 p[c] = pos[static_cast<std::size_t>(idx[3 * f + c].vertex_index)];
+            if (!(glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) > 0.0f)) {
+                ++degenerate;
+                continue;
+            }
+            ++kept;
             const glm::vec3 fn = side * face_normal(p[0], p[1], p[2]);
             for (int c = 0; c < 3; ++c) {
                 const tinyobj::index_t& i = idx[3 * f + c];
@@ -180,6 +216,11 @@ void load_obj(const std::string& path, Scene& scene, const ObjLoadOptions& optio
             add_triangle(scene, p[0], p[1], p[2], n[0], n[1], n[2], scene_material(tiny_id));
         }
     }
+    if (kept == 0)
+        throw Error(fmt::format("{}: every face has zero area ({} triangles): nothing to render", path, degenerate));
+    if (degenerate > 0)
+        scene.warnings.push_back(fmt::format("{}: {} of {} triangles have zero area and were dropped", path,
+                                             degenerate, degenerate + kept));
 }
 
 }  // namespace facet

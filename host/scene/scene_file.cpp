@@ -2,6 +2,7 @@
 // by a default light when it has no emitters of its own.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 
@@ -50,6 +51,23 @@ void add_default_light(Scene& scene) {
     add_quad(scene, p - r * u - r * v, 2.0f * r * u, 2.0f * r * v, material);
 }
 
+// Every vertex finite and within +-kMaxCoordinate, so that edges, cross products
+// (areas, normals) and the bounding box stay finite in float arithmetic; transforms and
+// shape sizes can push a finite file past that.
+constexpr float kMaxCoordinate = 1e18f;
+
+void check_geometry(const Scene& scene, const std::string& path) {
+    for (std::size_t i = 0; i < scene.vertices.size(); ++i) {
+        const glm::vec3& v = scene.vertices[i];
+        for (int c = 0; c < 3; ++c) {
+            if (std::isfinite(v[c]) && std::fabs(v[c]) <= kMaxCoordinate) continue;
+            throw Error(fmt::format("{}: triangle {} has a vertex at ({:g}, {:g}, {:g}): coordinates must be finite and "
+                                    "within +-{:g} (check the transforms and the shapes' sizes)",
+                                    path, i / 3, v.x, v.y, v.z, kMaxCoordinate));
+        }
+    }
+}
+
 std::string lower_extension(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -65,10 +83,13 @@ Scene load_scene(const std::string& path) {
     const std::string ext = lower_extension(path);
     if (ext == ".obj") {
         load_obj(path, scene);
+        check_geometry(scene, path);
         scene.camera = frame_camera(scene);
         if (!has_emitter(scene)) add_default_light(scene);
     } else if (ext == ".json") {
-        if (!load_json_scene(path, scene)) scene.camera = frame_camera(scene);
+        const bool has_camera = load_json_scene(path, scene);
+        check_geometry(scene, path);
+        if (!has_camera) scene.camera = frame_camera(scene);
     } else {
         throw Error(fmt::format(
             "{}: unknown scene format '{}' (expected a .json scene or an .obj mesh)", path, ext));

@@ -1,0 +1,12 @@
+// libFuzzer harness "scene_json": the target is facet::fuzz::scene_json in harnesses.hpp, which
+// says what the input is; fuzz_util.hpp says what counts as a finding.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "harnesses.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    facet::fuzz::scene_json(std::string_view(reinterpret_cast<const char*>(data), size));
+    return 0;
+}
