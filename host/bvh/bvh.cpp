@@ -117,8 +117,8 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
         if (!usable(a, b, c)) continue;
         bvh_detail::PrimRef r;
         for (int k = 0; k < 3; ++k) {
-            r.lo[k] = std::fmin(a[k], std::fmin(b[k], c[k]));
-            r.hi[k] = std::fmax(a[k], std::fmax(b[k], c[k]));
+            r.lo[k] = std::min(a[k], std::min(b[k], c[k]));   // finite: no NaN cases
+            r.hi[k] = std::max(a[k], std::max(b[k], c[k]));
         }
         r.id = static_cast<std::uint32_t>(i);
         r.pad = 0.0f;

@@ -17,33 +17,40 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 
 inline f4 vmin(f4 a, f4 b) { return a < b ? a : b; }
 inline f4 vmax(f4 a, f4 b) { return a > b ? a : b; }
-inline f4 load3(const float* p) {   // p[0..2] and zero; p[3] may be an integer
-    f4 v;
+// Lanes 0..2 of p and zero in lane 3 (p[3] may be an integer): one 16-byte load and
+// an AND, so lane 3 never holds a denormal that an add would have to assist.
+inline f4 load3(const float* p) {
+    i4 v;
     std::memcpy(&v, p, sizeof v);
-    v[3] = 0.0f;
-    return v;
+    const i4 keep = {-1, -1, -1, 0};
+    return reinterpret_cast<f4>(v & keep);
 }
 inline f4 lo_of(const PrimRef& r) { return load3(r.lo); }
 inline f4 hi_of(const PrimRef& r) { return load3(r.hi); }
-// Every pass computes centroids and bin positions with these same operations, so the
-// partition agrees with the binning bit for bit.
-inline f4 centroid(const PrimRef& r) { return (lo_of(r) + hi_of(r)) * 0.5f; }
+// Twice the centroid: every pass bins and partitions on lo + hi (bin positions scale
+// the same way, so they equal those of the centroid bit for bit), and the partition
+// agrees with the binning exactly.
+inline f4 centroid2(f4 lo, f4 hi) { return lo + hi; }
+inline f4 centroid(const PrimRef& r) { return centroid2(lo_of(r), hi_of(r)); }
 
 struct Box {
     f4 lo = {kInf, kInf, kInf, 0.0f};
     f4 hi = {-kInf, -kInf, -kInf, 0.0f};
     void grow(f4 l, f4 h) { lo = vmin(lo, l); hi = vmax(hi, h); }
     void grow(const Box& b) { grow(b.lo, b.hi); }
-    // Half the surface area; 0 for an empty box.
+    // Half the surface area; 0 for an empty box (its inverted extents clamp to 0),
+    // without a branch.
     float half_area() const {
-        f4 d = hi - lo;
-        if (!(d[0] >= 0.0f && d[1] >= 0.0f && d[2] >= 0.0f)) return 0.0f;
+        const f4 zero = {0.0f, 0.0f, 0.0f, 0.0f};
+        f4 d = vmax(hi - lo, zero);
         return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
     }
 };
 
 // Ranges up to this size get the exact SAH sweep instead of binning.
 constexpr int kExactMax = 16;
+// Ranges from this size on bin into two bin sets.
+constexpr std::uint32_t kTwoSetsMin = 128;
 
 int ceil_log2(std::uint32_t n) { return n <= 1 ? 0 : 32 - std::countl_zero(n - 1); }
 
@@ -82,7 +89,8 @@ public:
         : refs_(refs), opt_(opt), nb_(std::clamp(opt.bins, 2, 256)),
           max_leaf_(static_cast<std::uint32_t>(std::max(opt.max_leaf_size, 1))),
           exact_max_(static_cast<std::uint32_t>(std::clamp(opt.exact_max, 0, kExactMax))),
-          bins_(3 * nb_), counts_(3 * nb_), right_area_(nb_), right_count_(nb_), scratch_(refs.size()) {}
+          bins_(6 * nb_), counts_(6 * nb_), right_area_(nb_), right_count_(nb_), scratch_(refs.size()) {}
+
 
     BuildOutput run();
 
@@ -117,10 +125,14 @@ void Builder::bounds(std::uint32_t begin, std::uint32_t end, Box& box, Box& cbox
 // Bins the centroids along all three axes, sweeps the bin boundaries for the lowest
 // sum(area * count) and partitions the range in place at the best one
 // (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies").
+// One pass bins all three axes; even and odd references go to two separate bin sets
+// (merged before the sweep) so that runs of references landing in the same bin do
+// not chain their read-modify-writes. The children's boxes are the unions of their
+// bins; the partition pass only gathers their centroid bounds.
 bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
     const int nb = nb_;
     const float last = static_cast<float>(nb - 1);
-    const f4 origin = t.cbox.lo;
+    const f4 origin = t.cbox.lo;   // cbox holds twice the centroids, as centroid2
     f4 scale = {0.0f, 0.0f, 0.0f, 0.0f};
     for (int a = 0; a < 3; ++a) {
         float extent = t.cbox.hi[a] - t.cbox.lo[a];
@@ -133,84 +145,116 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
         return __builtin_convertvector(f, i4);
     };
 
-    std::fill(bins_.begin(), bins_.end(), Box{});
-    std::fill(counts_.begin(), counts_.end(), 0u);
-    for (std::uint32_t i = t.begin; i < t.end; ++i) {
-        const PrimRef& r = refs_[i];
-        f4 lo = lo_of(r), hi = hi_of(r);
-        i4 b = bin_of((lo + hi) * 0.5f);
+    Box* __restrict b0 = bins_.data();
+    Box* __restrict b1 = b0 + 3 * nb;
+    std::uint32_t* __restrict n0 = counts_.data();
+    std::uint32_t* __restrict n1 = n0 + 3 * nb;
+    // Small ranges use one bin set (clearing and merging the second costs more there).
+    const bool two_sets = t.end - t.begin >= kTwoSetsMin;
+    std::fill(bins_.begin(), bins_.begin() + (two_sets ? 6 : 3) * nb, Box{});
+    std::fill(counts_.begin(), counts_.begin() + (two_sets ? 6 : 3) * nb, 0u);
+    const PrimRef* __restrict refs = refs_.data();
+    std::uint32_t i = t.begin;
+    if (two_sets) for (; i + 1 < t.end; i += 2) {
+        f4 lo0 = lo_of(refs[i]), hi0 = hi_of(refs[i]);
+        f4 lo1 = lo_of(refs[i + 1]), hi1 = hi_of(refs[i + 1]);
+        i4 x0 = bin_of(centroid2(lo0, hi0)) + i4{0, nb, 2 * nb, 0};
+        i4 x1 = bin_of(centroid2(lo1, hi1)) + i4{0, nb, 2 * nb, 0};
         for (int a = 0; a < 3; ++a) {
-            bins_[a * nb + b[a]].grow(lo, hi);
-            ++counts_[a * nb + b[a]];
+            Box& p = b0[x0[a]];
+            p.lo = vmin(p.lo, lo0);
+            p.hi = vmax(p.hi, hi0);
+            ++n0[x0[a]];
+            Box& q = b1[x1[a]];
+            q.lo = vmin(q.lo, lo1);
+            q.hi = vmax(q.hi, hi1);
+            ++n1[x1[a]];
         }
     }
+    for (; i < t.end; ++i) {
+        f4 lo0 = lo_of(refs[i]), hi0 = hi_of(refs[i]);
+        i4 x0 = bin_of(centroid2(lo0, hi0)) + i4{0, nb, 2 * nb, 0};
+        for (int a = 0; a < 3; ++a) {
+            b0[x0[a]].grow(lo0, hi0);
+            ++n0[x0[a]];
+        }
+    }
+    if (two_sets)
+        for (int k = 0; k < 3 * nb; ++k) {
+            b0[k].grow(b1[k]);
+            n0[k] += n1[k];
+        }
 
     int best_axis = -1, best_bin = 0;
     best_cost = kInf;
     for (int a = 0; a < 3; ++a) {
         if (scale[a] == 0.0f) continue;
-        const Box* bins = &bins_[a * nb];
-        const std::uint32_t* counts = &counts_[a * nb];
+        const Box* bins = &b0[a * nb];
+        const std::uint32_t* counts = &n0[a * nb];
         Box acc;
         std::uint32_t count = 0;
-        for (int i = nb - 1; i > 0; --i) {
-            acc.grow(bins[i]);
-            count += counts[i];
-            right_area_[i] = acc.half_area();
-            right_count_[i] = count;
+        for (int k = nb - 1; k > 0; --k) {
+            acc.grow(bins[k]);
+            count += counts[k];
+            right_area_[k] = acc.half_area();
+            right_count_[k] = count;
         }
         acc = Box{};
         count = 0;
-        for (int i = 1; i < nb; ++i) {
-            acc.grow(bins[i - 1]);
-            count += counts[i - 1];
-            if (count == 0 || right_count_[i] == 0) continue;
+        for (int k = 1; k < nb; ++k) {
+            acc.grow(bins[k - 1]);
+            count += counts[k - 1];
+            if (count == 0 || right_count_[k] == 0) continue;
             float cost = acc.half_area() * static_cast<float>(count) +
-                         right_area_[i] * static_cast<float>(right_count_[i]);
+                         right_area_[k] * static_cast<float>(right_count_[k]);
             if (cost < best_cost) {
                 best_cost = cost;
                 best_axis = a;
-                best_bin = i;
+                best_bin = k;
             }
         }
     }
     if (best_axis < 0) return false;
+    s.lbox = s.rbox = Box{};
+    std::uint32_t nl_bins = 0;
+    for (int k = 0; k < nb; ++k) {
+        const Box& bx = b0[best_axis * nb + k];
+        (k < best_bin ? s.lbox : s.rbox).grow(bx);
+        if (k < best_bin) nl_bins += n0[best_axis * nb + k];
+    }
 
     // Partition with the same mapping (bin < best_bin <=> position < best_bin; NaN
-    // positions were binned to 0, so they go left too), gathering the children's bounds.
-    // Branch-free: each reference goes to the front (left) or the back (right) of a
-    // scratch array by a computed index, and the bounds grow through selects, so the
-    // unpredictable side costs no mispredictions; then the range is copied back.
+    // positions were binned to 0, so they go left too), gathering the children's
+    // centroid bounds.
+    // Branch-free: each reference is written both to the next left slot of the range
+    // (in place) and to the next slot of a scratch array, and only the count of its
+    // side advances; the bounds grow through selects, so the unpredictable side costs
+    // no mispredictions; then the right references are copied back after the left.
     const float o = origin[best_axis], sc = scale[best_axis];
     const float split_at = static_cast<float>(best_bin);
     const f4 inf4 = {kInf, kInf, kInf, 0.0f}, ninf4 = {-kInf, -kInf, -kInf, 0.0f};
-    Box lbox, rbox, lcbox, rcbox;
+    Box lcbox, rcbox;
     const std::uint32_t n = t.end - t.begin;
     PrimRef* src = refs_.data() + t.begin;
-    PrimRef* dst = scratch_.data();
-    std::uint32_t nl = 0, nr = n;
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const PrimRef& p = src[i];
-        f4 lo = lo_of(p), hi = hi_of(p);
-        f4 c = (lo + hi) * 0.5f;
+    PrimRef* __restrict dst = scratch_.data();
+    std::uint32_t nl = 0, nr = 0;
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const PrimRef p = src[k];
+        f4 c = centroid(p);
         const bool right = (c[best_axis] - o) * sc >= split_at;
-        const std::uint32_t at = right ? nr - 1 : nl;
-        dst[at] = p;
+        src[nl] = p;   // nl <= k: left references compact in place...
+        dst[nr] = p;   // ...right ones go to the scratch array
         nl += right ? 0u : 1u;
-        nr -= right ? 1u : 0u;
+        nr += right ? 1u : 0u;
         const i4 m = right ? i4{-1, -1, -1, -1} : i4{0, 0, 0, 0};   // all ones: right
-        lbox.grow(m ? inf4 : lo, m ? ninf4 : hi);
         lcbox.grow(m ? inf4 : c, m ? ninf4 : c);
-        rbox.grow(m ? lo : inf4, m ? hi : ninf4);
         rcbox.grow(m ? c : inf4, m ? c : ninf4);
     }
-    std::memcpy(static_cast<void*>(src), dst, n * sizeof(PrimRef));
-    const std::uint32_t l = t.begin + nl;
-    s.lbox = lbox;
-    s.rbox = rbox;
+    std::memcpy(static_cast<void*>(src + nl), dst, nr * sizeof(PrimRef));
+    (void)nl_bins;
     s.lcbox = lcbox;
     s.rcbox = rcbox;
-    s.mid = l;
+    s.mid = t.begin + nl;
     return s.mid > t.begin && s.mid < t.end;
 }
 
@@ -231,27 +275,29 @@ bool Builder::exact_split(const Task& t, Split& s, float& best_cost) {
         return true;
     }
     f4 lo[kExactMax], hi[kExactMax], c[kExactMax];
+    float key[3][kExactMax];   // the centroids per axis
     for (int i = 0; i < n; ++i) {
         lo[i] = lo_of(p[i]);
         hi[i] = hi_of(p[i]);
-        c[i] = (lo[i] + hi[i]) * 0.5f;
+        c[i] = centroid2(lo[i], hi[i]);
+        key[0][i] = c[i][0];
+        key[1][i] = c[i][1];
+        key[2][i] = c[i][2];
     }
     int order[3][kExactMax];
     float right_area[kExactMax];
     int best_axis = 0, best_i = 0;
     best_cost = kInf;
     for (int a = 0; a < 3; ++a) {
+        // Stable sort by rank, without branches: a reference's position is the number
+        // of references before it in (key, index) order.
         int* o = order[a];
-        float key[kExactMax];   // the sorted centroid coordinates, beside their indices
-        for (int i = 0; i < n; ++i) {   // insertion sort on the centroid
-            const float k = c[i][a];
-            int j = i;
-            for (; j > 0 && key[j - 1] > k; --j) {
-                key[j] = key[j - 1];
-                o[j] = o[j - 1];
-            }
-            key[j] = k;
-            o[j] = i;
+        const float* ka = key[a];
+        for (int i = 0; i < n; ++i) {
+            const float k = ka[i];
+            int rank = 0;
+            for (int j = 0; j < n; ++j) rank += (ka[j] < k) | ((ka[j] == k) & (j < i));
+            o[rank] = i;
         }
         Box acc;
         for (int i = n - 1; i > 0; --i) {
