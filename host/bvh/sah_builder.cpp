@@ -75,11 +75,13 @@ struct Task {
     int parent;    // node whose child slot `side` refers to this range; -1 for the root
     int side;
     Box box;       // bounds of the primitives
-    Box cbox;      // bounds of their centroids
+    Box cbox;      // bounds of their centroids (twice the centroids, see centroid2)
+    int buf;       // where its references are: 0 the caller's array, 1 the scratch one
 };
 
 struct Split {
     std::uint32_t mid;
+    bool moved;    // the children's references went to the other buffer
     Box lbox, rbox, lcbox, rcbox;
 };
 
@@ -99,7 +101,7 @@ private:
     bool sah_split(const Task& t, Split& s, float& cost);
     bool exact_split(const Task& t, Split& s, float& cost);
     void median_split(const Task& t, Split& s);
-    void bounds(std::uint32_t begin, std::uint32_t end, Box& box, Box& cbox) const;
+    void bounds(const PrimRef* p, std::uint32_t begin, std::uint32_t end, Box& box, Box& cbox) const;
 
     std::vector<PrimRef>& refs_;
     const BvhOptions& opt_;
@@ -110,14 +112,15 @@ private:
     std::vector<std::uint32_t> counts_;
     std::vector<float> right_area_;
     std::vector<std::uint32_t> right_count_;
-    std::vector<PrimRef> scratch_;        // the partition's out-of-place buffer
+    std::vector<PrimRef> scratch_;        // the partition's other buffer
+    PrimRef* buf(int b) const { return b ? const_cast<PrimRef*>(scratch_.data()) : refs_.data(); }
 };
 
-void Builder::bounds(std::uint32_t begin, std::uint32_t end, Box& box, Box& cbox) const {
+void Builder::bounds(const PrimRef* p, std::uint32_t begin, std::uint32_t end, Box& box, Box& cbox) const {
     box = cbox = Box{};
     for (std::uint32_t i = begin; i < end; ++i) {
-        box.grow(lo_of(refs_[i]), hi_of(refs_[i]));
-        f4 c = centroid(refs_[i]);
+        box.grow(lo_of(p[i]), hi_of(p[i]));
+        f4 c = centroid(p[i]);
         cbox.grow(c, c);
     }
 }
@@ -153,7 +156,7 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
     const bool two_sets = t.end - t.begin >= kTwoSetsMin;
     std::fill(bins_.begin(), bins_.begin() + (two_sets ? 6 : 3) * nb, Box{});
     std::fill(counts_.begin(), counts_.begin() + (two_sets ? 6 : 3) * nb, 0u);
-    const PrimRef* __restrict refs = refs_.data();
+    const PrimRef* __restrict refs = buf(t.buf);
     std::uint32_t i = t.begin;
     if (two_sets) for (; i + 1 < t.end; i += 2) {
         f4 lo0 = lo_of(refs[i]), hi0 = hi_of(refs[i]);
@@ -224,45 +227,48 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
     }
 
     // Partition with the same mapping (bin < best_bin <=> position < best_bin; NaN
-    // positions were binned to 0, so they go left too), gathering the children's
-    // centroid bounds.
-    // Branch-free: each reference is written both to the next left slot of the range
-    // (in place) and to the next slot of a scratch array, and only the count of its
-    // side advances; the bounds grow through selects, so the unpredictable side costs
-    // no mispredictions; then the right references are copied back after the left.
+    // positions were binned to 0, so they go left too) into the other buffer, where
+    // the left count is known from the bins, gathering the children's centroid
+    // bounds. Branch-free: the destination index is computed and the bounds grow
+    // through selects, so the unpredictable side costs no mispredictions, and the
+    // buffers alternate level by level, so nothing is copied back.
     const float o = origin[best_axis], sc = scale[best_axis];
     const float split_at = static_cast<float>(best_bin);
     const f4 inf4 = {kInf, kInf, kInf, 0.0f}, ninf4 = {-kInf, -kInf, -kInf, 0.0f};
     Box lcbox, rcbox;
     const std::uint32_t n = t.end - t.begin;
-    PrimRef* src = refs_.data() + t.begin;
-    PrimRef* __restrict dst = scratch_.data();
-    std::uint32_t nl = 0, nr = 0;
+    const PrimRef* __restrict src = buf(t.buf) + t.begin;
+    PrimRef* __restrict dst = buf(1 - t.buf) + t.begin;
+    std::uint32_t nl = 0, nr = nl_bins;
     for (std::uint32_t k = 0; k < n; ++k) {
-        const PrimRef p = src[k];
+        const PrimRef& p = src[k];
         f4 c = centroid(p);
         const bool right = (c[best_axis] - o) * sc >= split_at;
-        src[nl] = p;   // nl <= k: left references compact in place...
-        dst[nr] = p;   // ...right ones go to the scratch array
+        dst[right ? nr : nl] = p;
         nl += right ? 0u : 1u;
         nr += right ? 1u : 0u;
         const i4 m = right ? i4{-1, -1, -1, -1} : i4{0, 0, 0, 0};   // all ones: right
         lcbox.grow(m ? inf4 : c, m ? ninf4 : c);
         rcbox.grow(m ? c : inf4, m ? c : ninf4);
     }
-    std::memcpy(static_cast<void*>(src + nl), dst, nr * sizeof(PrimRef));
-    (void)nl_bins;
     s.lcbox = lcbox;
     s.rcbox = rcbox;
     s.mid = t.begin + nl;
-    return s.mid > t.begin && s.mid < t.end;
+    s.moved = true;
+    if (s.mid > t.begin && s.mid < t.end) return true;
+    // Not reached (both sides of the chosen split hold references); keeps the range
+    // where the task says it is.
+    std::memcpy(static_cast<void*>(buf(t.buf) + t.begin), dst, n * sizeof(PrimRef));
+    s.moved = false;
+    return false;
 }
 
 // For small ranges: sorts the centroids on each axis and evaluates every split
 // between consecutive references (the full SAH sweep), cheaper here than binning.
 bool Builder::exact_split(const Task& t, Split& s, float& best_cost) {
     const int n = static_cast<int>(t.end - t.begin);
-    PrimRef* p = &refs_[t.begin];
+    PrimRef* p = buf(t.buf) + t.begin;
+    s.moved = false;
     if (n == 2) {   // one way to split two
         s.lbox = s.lcbox = s.rbox = s.rcbox = Box{};
         f4 c0 = centroid(p[0]), c1 = centroid(p[1]);
@@ -339,13 +345,15 @@ void Builder::median_split(const Task& t, Split& s) {
     if (ext[1] > ext[axis]) axis = 1;
     if (ext[2] > ext[axis]) axis = 2;
     s.mid = t.begin + (t.end - t.begin) / 2;
+    s.moved = false;
+    PrimRef* p = buf(t.buf);
     if (ext[axis] > 0.0f)
-        std::nth_element(refs_.begin() + t.begin, refs_.begin() + s.mid, refs_.begin() + t.end,
+        std::nth_element(p + t.begin, p + s.mid, p + t.end,
                          [axis](const PrimRef& x, const PrimRef& y) {
                              return centroid(x)[axis] < centroid(y)[axis];
                          });
-    bounds(t.begin, s.mid, s.lbox, s.lcbox);
-    bounds(s.mid, t.end, s.rbox, s.rcbox);
+    bounds(p, t.begin, s.mid, s.lbox, s.lcbox);
+    bounds(p, s.mid, t.end, s.rbox, s.rcbox);
 }
 
 // True when the range becomes a leaf; otherwise fills `s` with the split.
@@ -381,8 +389,8 @@ BuildOutput Builder::run() {
         set_empty_child(out.nodes[0], 1);
         return out;
     }
-    Task root{0, n, 0, -1, 0, {}, {}};
-    bounds(0, n, root.box, root.cbox);
+    Task root{0, n, 0, -1, 0, {}, {}, 0};
+    bounds(refs_.data(), 0, n, root.box, root.cbox);
     double inner_sum = 0.0, leaf_sum = 0.0;   // sums of half areas
 
     std::vector<Task> stack;
@@ -395,6 +403,9 @@ BuildOutput Builder::run() {
         const double area = static_cast<double>(t.box.half_area());
         if (decide(t, s)) {
             const std::uint32_t count = t.end - t.begin;
+            if (t.buf)   // leaves end in the caller's array
+                std::memcpy(static_cast<void*>(refs_.data() + t.begin), scratch_.data() + t.begin,
+                            count * sizeof(PrimRef));
             int depth = t.depth;
             if (t.parent < 0) {   // the whole input is one leaf: root = {leaf, empty}
                 set_child(out.nodes[0], 0, t.box);
@@ -421,8 +432,9 @@ BuildOutput Builder::run() {
         set_child(out.nodes[index], 1, s.rbox);
         inner_sum += area;
         // Right first, so the left child is built next and lands right after its parent.
-        stack.push_back(Task{s.mid, t.end, t.depth + 1, index, 1, s.rbox, s.rcbox});
-        stack.push_back(Task{t.begin, s.mid, t.depth + 1, index, 0, s.lbox, s.lcbox});
+        const int cb = s.moved ? 1 - t.buf : t.buf;
+        stack.push_back(Task{s.mid, t.end, t.depth + 1, index, 1, s.rbox, s.rcbox, cb});
+        stack.push_back(Task{t.begin, s.mid, t.depth + 1, index, 0, s.lbox, s.lcbox, cb});
     }
     const double root_area = static_cast<double>(root.box.half_area());
     if (root_area > 0.0)
