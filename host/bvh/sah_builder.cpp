@@ -281,30 +281,28 @@ bool Builder::exact_split(const Task& t, Split& s, float& best_cost) {
         return true;
     }
     f4 lo[kExactMax], hi[kExactMax], c[kExactMax];
-    float key[3][kExactMax];   // the centroids per axis
     for (int i = 0; i < n; ++i) {
         lo[i] = lo_of(p[i]);
         hi[i] = hi_of(p[i]);
         c[i] = centroid2(lo[i], hi[i]);
-        key[0][i] = c[i][0];
-        key[1][i] = c[i][1];
-        key[2][i] = c[i][2];
     }
+    // Stable sort on each axis by rank, all three axes at once and without branches:
+    // a reference's position is the number of references before it in (centroid,
+    // index) order.
     int order[3][kExactMax];
+    for (int i = 0; i < n; ++i) {
+        i4 rank = {0, 0, 0, 0};
+        for (int j = 0; j < i; ++j) rank -= c[j] <= c[i];
+        for (int j = i + 1; j < n; ++j) rank -= c[j] < c[i];
+        order[0][rank[0]] = i;
+        order[1][rank[1]] = i;
+        order[2][rank[2]] = i;
+    }
     float right_area[kExactMax];
     int best_axis = 0, best_i = 0;
     best_cost = kInf;
     for (int a = 0; a < 3; ++a) {
-        // Stable sort by rank, without branches: a reference's position is the number
-        // of references before it in (key, index) order.
-        int* o = order[a];
-        const float* ka = key[a];
-        for (int i = 0; i < n; ++i) {
-            const float k = ka[i];
-            int rank = 0;
-            for (int j = 0; j < n; ++j) rank += (ka[j] < k) | ((ka[j] == k) & (j < i));
-            o[rank] = i;
-        }
+        const int* o = order[a];
         Box acc;
         for (int i = n - 1; i > 0; --i) {
             acc.grow(lo[o[i]], hi[o[i]]);
