@@ -47,6 +47,19 @@ struct Box {
     }
 };
 
+// Half the surface areas of three boxes, in lanes 0..2 (the same operations, in the
+// same order, as Box::half_area, so the values agree bit for bit).
+inline f4 half_areas(const Box& b0, const Box& b1, const Box& b2) {
+    const f4 zero = {0.0f, 0.0f, 0.0f, 0.0f};
+    const f4 d0 = vmax(b0.hi - b0.lo, zero), d1 = vmax(b1.hi - b1.lo, zero), d2 = vmax(b2.hi - b2.lo, zero);
+    const f4 t0 = __builtin_shuffle(d0, d1, i4{0, 4, 1, 5});   // x0 x1 y0 y1
+    const f4 t1 = __builtin_shuffle(d0, d1, i4{2, 6, 3, 7});   // z0 z1 . .
+    const f4 dx = __builtin_shuffle(t0, d2, i4{0, 1, 4, 4});
+    const f4 dy = __builtin_shuffle(t0, d2, i4{2, 3, 5, 5});
+    const f4 dz = __builtin_shuffle(t1, d2, i4{0, 1, 6, 6});
+    return dx * dy + dy * dz + dz * dx;
+}
+
 // Ranges up to this size get the exact SAH sweep instead of binning.
 constexpr int kExactMax = 16;
 // Ranges from this size on bin into two bin sets.
@@ -298,27 +311,41 @@ bool Builder::exact_split(const Task& t, Split& s, float& best_cost) {
         order[1][rank[1]] = i;
         order[2][rank[2]] = i;
     }
-    float right_area[kExactMax];
-    int best_axis = 0, best_i = 0;
-    best_cost = kInf;
-    for (int a = 0; a < 3; ++a) {
-        const int* o = order[a];
-        Box acc;
+    // The sweeps of the three axes run side by side: lane a of an f4 is axis a.
+    f4 right_area[kExactMax];
+    {
+        Box r0, r1, r2;
         for (int i = n - 1; i > 0; --i) {
-            acc.grow(lo[o[i]], hi[o[i]]);
-            right_area[i] = acc.half_area();
-        }
-        acc = Box{};
-        for (int i = 1; i < n; ++i) {
-            acc.grow(lo[o[i - 1]], hi[o[i - 1]]);
-            float cost = acc.half_area() * static_cast<float>(i) + right_area[i] * static_cast<float>(n - i);
-            if (cost < best_cost) {
-                best_cost = cost;
-                best_axis = a;
-                best_i = i;
-            }
+            r0.grow(lo[order[0][i]], hi[order[0][i]]);
+            r1.grow(lo[order[1][i]], hi[order[1][i]]);
+            r2.grow(lo[order[2][i]], hi[order[2][i]]);
+            right_area[i] = half_areas(r0, r1, r2);
         }
     }
+    const f4 inf4 = {kInf, kInf, kInf, kInf};
+    f4 best = inf4;
+    i4 best_at = {0, 0, 0, 0};
+    {
+        Box l0, l1, l2;
+        for (int i = 1; i < n; ++i) {
+            l0.grow(lo[order[0][i - 1]], hi[order[0][i - 1]]);
+            l1.grow(lo[order[1][i - 1]], hi[order[1][i - 1]]);
+            l2.grow(lo[order[2][i - 1]], hi[order[2][i - 1]]);
+            const float fi = static_cast<float>(i), fr = static_cast<float>(n - i);
+            const f4 cost = half_areas(l0, l1, l2) * f4{fi, fi, fi, fi} + right_area[i] * f4{fr, fr, fr, fr};
+            const i4 better = cost < best;   // strict: the first best split per axis
+            best = better ? cost : best;
+            best_at = better ? i4{i, i, i, i} : best_at;
+        }
+    }
+    int best_axis = 0, best_i = 0;
+    best_cost = kInf;
+    for (int a = 0; a < 3; ++a)   // strict: the first axis on ties, as one sweep would
+        if (best[a] < best_cost) {
+            best_cost = best[a];
+            best_axis = a;
+            best_i = best_at[a];
+        }
     if (best_i == 0) return false;   // only NaN costs
     PrimRef tmp[kExactMax];
     s.lbox = s.rbox = s.lcbox = s.rcbox = Box{};
