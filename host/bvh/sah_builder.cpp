@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 namespace facet::bvh_detail {
 namespace {
@@ -253,17 +254,22 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
     const PrimRef* __restrict src = buf(t.buf) + t.begin;
     PrimRef* __restrict dst = buf(1 - t.buf) + t.begin;
     std::uint32_t nl = 0, nr = nl_bins;
-    for (std::uint32_t k = 0; k < n; ++k) {
-        const PrimRef& p = src[k];
-        f4 c = centroid(p);
-        const bool right = (c[best_axis] - o) * sc >= split_at;
-        dst[right ? nr : nl] = p;
-        nl += right ? 0u : 1u;
-        nr += right ? 1u : 0u;
-        const i4 m = right ? i4{-1, -1, -1, -1} : i4{0, 0, 0, 0};   // all ones: right
-        lcbox.grow(m ? inf4 : c, m ? ninf4 : c);
-        rcbox.grow(m ? c : inf4, m ? c : ninf4);
-    }
+    auto partition = [&](auto axis) {   // the axis as a constant: a fixed lane
+        for (std::uint32_t k = 0; k < n; ++k) {
+            const PrimRef& p = src[k];
+            f4 c = centroid(p);
+            const bool right = (c[decltype(axis)::value] - o) * sc >= split_at;
+            dst[right ? nr : nl] = p;
+            nl += right ? 0u : 1u;
+            nr += right ? 1u : 0u;
+            const i4 m = right ? i4{-1, -1, -1, -1} : i4{0, 0, 0, 0};   // all ones: right
+            lcbox.grow(m ? inf4 : c, m ? ninf4 : c);
+            rcbox.grow(m ? c : inf4, m ? c : ninf4);
+        }
+    };
+    if (best_axis == 0) partition(std::integral_constant<int, 0>{});
+    else if (best_axis == 1) partition(std::integral_constant<int, 1>{});
+    else partition(std::integral_constant<int, 2>{});
     s.lcbox = lcbox;
     s.rcbox = rcbox;
     s.mid = t.begin + nl;
