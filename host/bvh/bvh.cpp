@@ -109,14 +109,14 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
         throw Error("build_bvh: too many triangles (" + std::to_string(count) + ")");
 
     // Per-triangle bounds for the builder.
-    std::vector<bvh_detail::PrimRef> refs(count);
-    std::size_t used = 0;
+    std::vector<bvh_detail::PrimRef> refs;
+    refs.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
         const glm::vec3& a = vertices[3 * i];
         const glm::vec3& b = vertices[3 * i + 1];
         const glm::vec3& c = vertices[3 * i + 2];
         if (!usable(a, b, c)) continue;
-        bvh_detail::PrimRef& r = refs[used++];
+        bvh_detail::PrimRef& r = refs.emplace_back();
         for (int k = 0; k < 3; ++k) {
             r.lo[k] = std::min(a[k], std::min(b[k], c[k]));   // finite: no NaN cases
             r.hi[k] = std::max(a[k], std::max(b[k], c[k]));
@@ -124,7 +124,6 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
         r.id = static_cast<std::uint32_t>(i);
         r.pad = 0.0f;
     }
-    refs.resize(used);
     if (skipped) *skipped = count - refs.size();
 
     bvh_detail::BuildOutput built = bvh_detail::build_sah(refs, options);
@@ -132,11 +131,10 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
     Bvh bvh;
     const int depth = collapse(built.nodes, bvh.nodes);
     static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "vertices are packed float triples");
-    bvh.triangles.resize(refs.size());
-    FcTriangle* tris = bvh.triangles.data();
+    bvh.triangles.reserve(refs.size());   // filled in order, without zeroing first
     for (std::size_t k = 0; k < refs.size(); ++k) {
         const std::uint32_t i = refs[k].id;
-        FcTriangle& t = tris[k];
+        FcTriangle& t = bvh.triangles.emplace_back();
         std::memcpy(t.v0, &vertices[3 * i], sizeof t.v0);
         std::memcpy(t.v1, &vertices[3 * i + 1], sizeof t.v1);
         std::memcpy(t.v2, &vertices[3 * i + 2], sizeof t.v2);

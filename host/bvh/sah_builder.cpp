@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <type_traits>
 
 namespace facet::bvh_detail {
@@ -105,7 +106,7 @@ public:
         : refs_(refs), opt_(opt), nb_(std::clamp(opt.bins, 2, 256)),
           max_leaf_(static_cast<std::uint32_t>(std::max(opt.max_leaf_size, 1))),
           exact_max_(static_cast<std::uint32_t>(std::clamp(opt.exact_max, 0, kExactMax))),
-          bins_(6 * nb_), counts_(6 * nb_), right_area_(nb_), right_count_(nb_), scratch_(refs.size()) {}
+          bins_(6 * nb_), counts_(6 * nb_), right_area_(nb_), right_count_(nb_), scratch_(new PrimRef[refs.size()]) {}
 
 
     BuildOutput run();
@@ -126,8 +127,8 @@ private:
     std::vector<std::uint32_t> counts_;
     std::vector<float> right_area_;
     std::vector<std::uint32_t> right_count_;
-    std::vector<PrimRef> scratch_;        // the partition's other buffer
-    PrimRef* buf(int b) const { return b ? const_cast<PrimRef*>(scratch_.data()) : refs_.data(); }
+    std::unique_ptr<PrimRef[]> scratch_;  // the partition's other buffer (not zeroed)
+    PrimRef* buf(int b) const { return b ? scratch_.get() : refs_.data(); }
 };
 
 void Builder::bounds(const PrimRef* p, std::uint32_t begin, std::uint32_t end, Box& box, Box& cbox) const {
@@ -435,7 +436,7 @@ BuildOutput Builder::run() {
         if (decide(t, s)) {
             const std::uint32_t count = t.end - t.begin;
             if (t.buf)   // leaves end in the caller's array
-                std::memcpy(static_cast<void*>(refs_.data() + t.begin), scratch_.data() + t.begin,
+                std::memcpy(static_cast<void*>(refs_.data() + t.begin), scratch_.get() + t.begin,
                             count * sizeof(PrimRef));
             int depth = t.depth;
             if (t.parent < 0) {   // the whole input is one leaf: root = {leaf, empty}
