@@ -125,8 +125,8 @@ private:
     std::uint32_t exact_max_;
     std::vector<Box> bins_;               // [axis * nb_ + bin]
     std::vector<std::uint32_t> counts_;
-    std::vector<float> right_area_;
-    std::vector<std::uint32_t> right_count_;
+    std::vector<f4> right_area_;           // per bin boundary, lane a = axis a
+    std::vector<i4> right_count_;
     std::unique_ptr<PrimRef[]> scratch_;  // the partition's other buffer (not zeroed)
     PrimRef* buf(int b) const { return b ? scratch_.get() : refs_.data(); }
 };
@@ -203,35 +203,56 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
             n0[k] += n1[k];
         }
 
-    int best_axis = -1, best_bin = 0;
-    best_cost = kInf;
-    for (int a = 0; a < 3; ++a) {
-        if (scale[a] == 0.0f) continue;
-        const Box* bins = &b0[a * nb];
-        const std::uint32_t* counts = &n0[a * nb];
-        Box acc;
-        std::uint32_t count = 0;
+    // The sweeps of the three axes run side by side (lane a is axis a), without
+    // branches: the best split per axis is tracked lane by lane.
+    const Box* x = b0;
+    const Box* y = b0 + nb;
+    const Box* z = b0 + 2 * nb;
+    auto counts_at = [&](int k) {
+        return i4{static_cast<std::int32_t>(n0[k]), static_cast<std::int32_t>(n0[nb + k]),
+                  static_cast<std::int32_t>(n0[2 * nb + k]), 0};
+    };
+    {
+        Box r0, r1, r2;
+        i4 count = {0, 0, 0, 0};
         for (int k = nb - 1; k > 0; --k) {
-            acc.grow(bins[k]);
-            count += counts[k];
-            right_area_[k] = acc.half_area();
+            r0.grow(x[k]);
+            r1.grow(y[k]);
+            r2.grow(z[k]);
+            count += counts_at(k);
+            right_area_[k] = half_areas(r0, r1, r2);
             right_count_[k] = count;
         }
-        acc = Box{};
-        count = 0;
+    }
+    const f4 zero4 = {0.0f, 0.0f, 0.0f, 0.0f};
+    const i4 axis_ok = (scale != zero4) & i4{-1, -1, -1, 0};   // an axis with extent
+    f4 best = {kInf, kInf, kInf, kInf};
+    i4 best_at = {0, 0, 0, 0};
+    {
+        Box l0, l1, l2;
+        i4 count = {0, 0, 0, 0};
+        const i4 none = {0, 0, 0, 0};
         for (int k = 1; k < nb; ++k) {
-            acc.grow(bins[k - 1]);
-            count += counts[k - 1];
-            if (count == 0 || right_count_[k] == 0) continue;
-            float cost = acc.half_area() * static_cast<float>(count) +
-                         right_area_[k] * static_cast<float>(right_count_[k]);
-            if (cost < best_cost) {
-                best_cost = cost;
-                best_axis = a;
-                best_bin = k;
-            }
+            l0.grow(x[k - 1]);
+            l1.grow(y[k - 1]);
+            l2.grow(z[k - 1]);
+            count += counts_at(k - 1);
+            const i4 rcount = right_count_[k];
+            const f4 cost = half_areas(l0, l1, l2) * __builtin_convertvector(count, f4) +
+                            right_area_[k] * __builtin_convertvector(rcount, f4);
+            const i4 better = axis_ok & (count != none) & (rcount != none) & (cost < best);
+            best = better ? cost : best;
+            best_at = better ? i4{k, k, k, k} : best_at;
         }
     }
+    int best_axis = -1, best_bin = 0;
+    best_cost = kInf;
+    for (int a = 0; a < 3; ++a)   // strict: the first axis on ties, as one sweep would
+        if (best[a] < best_cost) {
+            best_cost = best[a];
+            best_axis = a;
+            best_bin = best_at[a];
+        }
     if (best_axis < 0) return false;
     s.lbox = s.rbox = Box{};
     std::uint32_t nl_bins = 0;
