@@ -141,7 +141,7 @@ void Builder::bounds(const PrimRef* p, std::uint32_t begin, std::uint32_t end, B
 }
 
 // Bins the centroids along all three axes, sweeps the bin boundaries for the lowest
-// sum(area * count) and partitions the range in place at the best one
+// sum(area * count) and partitions the range at the best one into the other buffer
 // (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies").
 // One pass bins all three axes; even and odd references go to two separate bin sets
 // (merged before the sweep) so that runs of references landing in the same bin do
