@@ -140,6 +140,63 @@ TEST(Bvh, StructureValid) {
     EXPECT_LE(3 * deep.stats.max_depth, FC_BVH_STACK_SIZE);
 }
 
+// The builder's paths on inputs that reach each of them below the root (the
+// references move between two buffers level by level): binned splits, the exact
+// sweep of small ranges, the median fallback for coincident centroids under a binned
+// split, every option combination, zero-area triangles kept out.
+TEST(Bvh, StructureValidAcrossBuilderPaths) {
+    std::vector<glm::vec3> soup = test::make_torus(60, 40, 1.0f, 0.3f).soup();
+    const std::size_t torus_tris = soup.size() / 3;
+    // Two far clusters of triangles sharing one centroid each (odd counts), after the
+    // binned root split; zero-area triangles in between.
+    for (int c = 0; c < 2; ++c) {
+        const glm::vec3 at(c ? 40.0f : -40.0f, 3.0f, -2.0f);
+        for (int i = 0; i < 301 + 4 * c; ++i) {
+            float s = 0.01f + static_cast<float>(i) * 1e-3f;
+            soup.insert(soup.end(), {at + glm::vec3(-s, -s, 0.0f), at + glm::vec3(s, -s, 0.0f),
+                                     at + glm::vec3(0.0f, 2.0f * s, 0.0f)});
+        }
+    }
+    const glm::vec3 z(5.0f), x(6.0f, 5.0f, 5.0f);
+    for (int i = 0; i < 7; ++i) soup.insert(soup.end(), {z, z, x});
+    const std::size_t kept = soup.size() / 3 - 7;
+
+    BvhOptions plain;
+    plain.exact_max = 0;
+    double plain_sah = 0.0;
+    for (int bins : {2, 12, 32, 256})
+        for (int exact : {0, 4, 16})
+            for (int leaf : {1, 4, 8}) {
+                BvhOptions o;
+                o.bins = bins;
+                o.exact_max = exact;
+                o.max_leaf_size = leaf;
+                std::size_t skipped = 99;
+                Bvh bvh = build_bvh(soup, o, &skipped);
+                SCOPED_TRACE(testing::Message() << "bins " << bins << " exact " << exact << " leaf " << leaf);
+                EXPECT_EQ(skipped, 7u);
+                EXPECT_EQ(bvh.triangles.size(), kept);
+                check_structure(bvh, soup, skipped);
+                EXPECT_LE(bvh.stats.max_leaf_size, leaf);
+                EXPECT_GT(bvh.stats.sah_cost, 1.0);
+                if (bins == 12 && exact == 0 && leaf == 8) plain_sah = bvh.stats.sah_cost;
+            }
+    // The default build (exact sweep of small ranges) is no worse than plain binning.
+    EXPECT_GT(plain_sah, 0.0);
+    EXPECT_LE(build_bvh(soup).stats.sah_cost, plain_sah * (1.0 + 1e-6));
+
+    // Small inputs: every count up to a few binned levels, and the torus alone.
+    for (std::size_t n : {1u, 2u, 3u, 5u, 8u, 9u, 16u, 17u, 33u, 129u, 130u}) {
+        std::vector<glm::vec3> part(soup.begin(), soup.begin() + static_cast<std::ptrdiff_t>(3 * n));
+        std::size_t skipped = 99;
+        Bvh bvh = build_bvh(part, {}, &skipped);
+        SCOPED_TRACE(testing::Message() << n << " triangles");
+        EXPECT_EQ(skipped, 0u);
+        check_structure(bvh, part, skipped);
+    }
+    EXPECT_GT(torus_tris, 1000u);
+}
+
 // ---- device: BVH against brute force -------------------------------------------------
 
 struct Rays {

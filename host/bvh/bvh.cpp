@@ -6,6 +6,7 @@
 #include <chrono>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "bvh/sah_builder.hpp"
@@ -107,51 +108,51 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
     if (count > static_cast<std::size_t>(INT32_MAX))
         throw Error("build_bvh: too many triangles (" + std::to_string(count) + ")");
 
-    // Per-triangle bounds for the builder.
-    std::vector<bvh_detail::PrimRef> refs;
-    refs.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const glm::vec3& a = vertices[3 * i];
-        const glm::vec3& b = vertices[3 * i + 1];
-        const glm::vec3& c = vertices[3 * i + 2];
-        if (!usable(a, b, c)) continue;
-        bvh_detail::PrimRef r;
-        for (int k = 0; k < 3; ++k) {
-            r.lo[k] = std::fmin(a[k], std::fmin(b[k], c[k]));
-            r.hi[k] = std::fmax(a[k], std::fmax(b[k], c[k]));
-        }
-        r.id = static_cast<std::uint32_t>(i);
-        r.pad = 0.0f;
-        refs.push_back(r);
-    }
-    if (skipped) *skipped = count - refs.size();
-
-    bvh_detail::BuildOutput built = bvh_detail::build_sah(refs, options);
-
     Bvh bvh;
-    const int depth = collapse(built.nodes, bvh.nodes);
-    bvh.triangles.resize(refs.size());
-    for (std::size_t k = 0; k < refs.size(); ++k) {
-        const std::uint32_t i = refs[k].id;
-        FcTriangle& t = bvh.triangles[k];
-        for (int j = 0; j < 3; ++j) {
-            t.v0[j] = vertices[3 * i][j];
-            t.v1[j] = vertices[3 * i + 1][j];
-            t.v2[j] = vertices[3 * i + 2][j];
-        }
-        t.prim = static_cast<fc_int>(i);
-        t.pad0 = t.pad1 = 0;
-    }
-
     BvhStats& st = bvh.stats;
-    st.triangles = bvh.triangles.size();
-    st.nodes = bvh.nodes.size();
-    st.leaves = built.leaves;
-    st.max_depth = depth;
-    st.binary_nodes = built.nodes.size();
-    st.max_leaf_size = built.max_leaf_size;
-    st.sah_cost = built.sah_cost;
-    st.device_bytes = bvh.nodes.size() * sizeof(FcBvhNode) + bvh.triangles.size() * sizeof(FcTriangle);
+    {   // the builder's buffers are freed inside the timed span
+        // Per-triangle bounds for the builder.
+        std::vector<bvh_detail::PrimRef> refs;
+        refs.reserve(count);
+        for (std::size_t i = 0; i < count; ++i) {
+            const glm::vec3& a = vertices[3 * i];
+            const glm::vec3& b = vertices[3 * i + 1];
+            const glm::vec3& c = vertices[3 * i + 2];
+            if (!usable(a, b, c)) continue;
+            bvh_detail::PrimRef& r = refs.emplace_back();
+            for (int k = 0; k < 3; ++k) {
+                r.lo[k] = std::min(a[k], std::min(b[k], c[k]));   // finite: no NaN cases
+                r.hi[k] = std::max(a[k], std::max(b[k], c[k]));
+            }
+            r.id = static_cast<std::uint32_t>(i);
+            r.pad = 0.0f;
+        }
+        if (skipped) *skipped = count - refs.size();
+
+        bvh_detail::BuildOutput built = bvh_detail::build_sah(refs, options);
+
+        const int depth = collapse(built.nodes, bvh.nodes);
+        static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "vertices are packed float triples");
+        bvh.triangles.reserve(refs.size());   // filled in order, without zeroing first
+        for (std::size_t k = 0; k < refs.size(); ++k) {
+            const std::uint32_t i = refs[k].id;
+            FcTriangle& t = bvh.triangles.emplace_back();
+            std::memcpy(t.v0, &vertices[3 * i], sizeof t.v0);
+            std::memcpy(t.v1, &vertices[3 * i + 1], sizeof t.v1);
+            std::memcpy(t.v2, &vertices[3 * i + 2], sizeof t.v2);
+            t.prim = static_cast<fc_int>(i);
+            t.pad0 = t.pad1 = 0;
+        }
+
+        st.triangles = bvh.triangles.size();
+        st.nodes = bvh.nodes.size();
+        st.leaves = built.leaves;
+        st.max_depth = depth;
+        st.binary_nodes = built.nodes.size();
+        st.max_leaf_size = built.max_leaf_size;
+        st.sah_cost = built.sah_cost;
+        st.device_bytes = bvh.nodes.size() * sizeof(FcBvhNode) + bvh.triangles.size() * sizeof(FcTriangle);
+    }
     st.build_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return bvh;
 }

@@ -1,5 +1,5 @@
 // Binned SAH builder (Wald 2007, "On fast construction of SAH-based bounding volume
-// hierarchies"): works in place on an array of primitive references and writes a
+// hierarchies"): reorders an array of primitive references (with one scratch copy) and writes a
 // binary tree of BinaryNode, which bvh.cpp collapses into the 4-wide FcBvhNode of
 // kernels/shared/bvh.h.
 #pragma once
