@@ -114,28 +114,24 @@ Timing timed(std::size_t n, int threads, int reps, F&& f) {
 template <int N>
 void packet_runs(RTCScene scene, const RayBatch& rays, int threads, int reps, EmbreeTimes& out) {
     const std::size_t n = rays.origins.size();
+    // Packets of N rays through rtcIntersectN (closest) or rtcOccludedN (any hit).
+    auto run = [&](int th, bool any) {
+        return timed(n, th, reps, [&](std::size_t b, std::size_t e) {
+            RTCIntersectContext ctx;
+            rtcInitIntersectContext(&ctx);
+            alignas(64) RTCRayHitNt<N> p;
+            alignas(64) int valid[N];
+            for (std::size_t i = b; i < e; i += N) {
+                fill_packet<N>(p, valid, rays, i, e);
+                if (any) occludedN(valid, scene, &ctx, p);
+                else intersectN(valid, scene, &ctx, p);
+            }
+        });
+    };
     for (int ti = 0; ti < 2; ++ti) {
-        int th = ti == 0 ? 1 : threads;
-        out.closestP[ti] = timed(n, th, reps, [&](std::size_t b, std::size_t e) {
-            RTCIntersectContext ctx;
-            rtcInitIntersectContext(&ctx);
-            alignas(64) RTCRayHitNt<N> p;
-            alignas(64) int valid[N];
-            for (std::size_t i = b; i < e; i += N) {
-                fill_packet<N>(p, valid, rays, i, e);
-                intersectN(valid, scene, &ctx, p);
-            }
-        });
-        out.anyP[ti] = timed(n, th, reps, [&](std::size_t b, std::size_t e) {
-            RTCIntersectContext ctx;
-            rtcInitIntersectContext(&ctx);
-            alignas(64) RTCRayHitNt<N> p;
-            alignas(64) int valid[N];
-            for (std::size_t i = b; i < e; i += N) {
-                fill_packet<N>(p, valid, rays, i, e);
-                occludedN(valid, scene, &ctx, p);
-            }
-        });
+        const int th = ti == 0 ? 1 : threads;
+        out.closestP[ti] = run(th, false);
+        out.anyP[ti] = run(th, true);
     }
 }
 

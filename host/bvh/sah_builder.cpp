@@ -62,6 +62,21 @@ inline f4 half_areas(const Box& b0, const Box& b1, const Box& b2) {
     return dx * dy + dy * dz + dz * dx;
 }
 
+// The cheapest of the three per-axis sweeps (lanes 0..2 of best, their split in best_at),
+// strictly: the first axis on ties, as one sweep over the axes in turn would. Returns the
+// axis, -1 when every cost is infinite or NaN.
+inline int cheapest_axis(f4 best, i4 best_at, float& cost, int& at) {
+    int axis = -1;
+    cost = kInf;
+    for (int a = 0; a < 3; ++a)
+        if (best[a] < cost) {
+            cost = best[a];
+            axis = a;
+            at = best_at[a];
+        }
+    return axis;
+}
+
 // Ranges up to this size get the exact SAH sweep instead of binning.
 constexpr int kExactMax = 16;
 // Ranges from this size on bin into two bin sets.
@@ -245,14 +260,8 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
             best_at = better ? i4{k, k, k, k} : best_at;
         }
     }
-    int best_axis = -1, best_bin = 0;
-    best_cost = kInf;
-    for (int a = 0; a < 3; ++a)   // strict: the first axis on ties, as one sweep would
-        if (best[a] < best_cost) {
-            best_cost = best[a];
-            best_axis = a;
-            best_bin = best_at[a];
-        }
+    int best_bin = 0;
+    const int best_axis = cheapest_axis(best, best_at, best_cost, best_bin);
     if (best_axis < 0) return false;
     s.lbox = s.rbox = Box{};
     std::uint32_t nl_bins = 0;
@@ -366,14 +375,8 @@ bool Builder::exact_split(const Task& t, Split& s, float& best_cost) {
             best_at = better ? i4{i, i, i, i} : best_at;
         }
     }
-    int best_axis = 0, best_i = 0;
-    best_cost = kInf;
-    for (int a = 0; a < 3; ++a)   // strict: the first axis on ties, as one sweep would
-        if (best[a] < best_cost) {
-            best_cost = best[a];
-            best_axis = a;
-            best_i = best_at[a];
-        }
+    int best_i = 0;
+    const int best_axis = std::max(cheapest_axis(best, best_at, best_cost, best_i), 0);
     if (best_i == 0) return false;   // only NaN costs
     PrimRef tmp[kExactMax];
     s.lbox = s.rbox = s.lcbox = s.rcbox = Box{};
