@@ -152,29 +152,25 @@ struct Loader {
             }
         }
         if (v.contains("emission")) put(m.emission, r.color(v["emission"], k("emission")));
-        auto set_roughness = [&](float rough, float& alpha, float& exponent) {
-            alpha = rough;
-            exponent = shininess_from_roughness(rough);
-        };
-        if (v.contains("roughness")) {
-            float rough = r.number_in(v["roughness"], k("roughness"), 0, 1);
-            set_roughness(rough, m.alpha_x, m.exponent_x);
-            set_roughness(rough, m.alpha_y, m.exponent_y);
-            m.roughness = rough;
+        // Roughness (alpha) and shininess (the Phong exponent) are one parameter in two
+        // units; each sets both fields, for both axes or, with _x/_y, for one. Applied in
+        // the order written: roughness, then shininess; the pair, then each axis.
+        struct Lobe { const char* key; float hi; bool is_roughness; };
+        for (const Lobe& p : {Lobe{"roughness", 1.0f, true}, Lobe{"shininess", 1e6f, false}}) {
+            auto set = [&](float value, float& alpha, float& exponent) {
+                alpha = p.is_roughness ? value : roughness_from_shininess(value);
+                exponent = p.is_roughness ? shininess_from_roughness(value) : value;
+            };
+            const std::string key = p.key, kx = key + "_x", ky = key + "_y";
+            if (v.contains(key)) {
+                float value = r.number_in(v[key], k(key.c_str()), 0, p.hi);
+                set(value, m.alpha_x, m.exponent_x);
+                set(value, m.alpha_y, m.exponent_y);
+                if (p.is_roughness) m.roughness = value;
+            }
+            if (v.contains(kx)) set(r.number_in(v[kx], k(kx.c_str()), 0, p.hi), m.alpha_x, m.exponent_x);
+            if (v.contains(ky)) set(r.number_in(v[ky], k(ky.c_str()), 0, p.hi), m.alpha_y, m.exponent_y);
         }
-        if (v.contains("roughness_x")) set_roughness(r.number_in(v["roughness_x"], k("roughness_x"), 0, 1), m.alpha_x, m.exponent_x);
-        if (v.contains("roughness_y")) set_roughness(r.number_in(v["roughness_y"], k("roughness_y"), 0, 1), m.alpha_y, m.exponent_y);
-        auto set_shininess = [&](float s, float& exponent, float& alpha) {
-            exponent = s;
-            alpha = roughness_from_shininess(s);
-        };
-        if (v.contains("shininess")) {
-            float s = r.number_in(v["shininess"], k("shininess"), 0, 1e6);
-            set_shininess(s, m.exponent_x, m.alpha_x);
-            set_shininess(s, m.exponent_y, m.alpha_y);
-        }
-        if (v.contains("shininess_x")) set_shininess(r.number_in(v["shininess_x"], k("shininess_x"), 0, 1e6), m.exponent_x, m.alpha_x);
-        if (v.contains("shininess_y")) set_shininess(r.number_in(v["shininess_y"], k("shininess_y"), 0, 1e6), m.exponent_y, m.alpha_y);
         if (v.contains("sigma")) m.roughness = r.number_in(v["sigma"], k("sigma"), 0, 1.5707963);
         if (v.contains("ior")) m.ior = r.number_in(v["ior"], k("ior"), 1e-3, 100);
         if (v.contains("conductor")) {
