@@ -155,8 +155,8 @@ struct Loader {
         // Roughness (alpha) and shininess (the Phong exponent) are one parameter in two
         // units; each sets both fields, for both axes or, with _x/_y, for one. Applied in
         // the order written: roughness, then shininess; the pair, then each axis.
-        struct Lobe { const char* key; float hi; bool is_roughness; };
-        for (const Lobe& p : {Lobe{"roughness", 1.0f, true}, Lobe{"shininess", 1e6f, false}}) {
+        struct Lobe { const char* key; double hi; bool is_roughness; };
+        for (const Lobe& p : {Lobe{"roughness", 1.0, true}, Lobe{"shininess", 1e6, false}}) {
             auto set = [&](float value, float& alpha, float& exponent) {
                 alpha = p.is_roughness ? value : roughness_from_shininess(value);
                 exponent = p.is_roughness ? shininess_from_roughness(value) : value;
