@@ -13,6 +13,7 @@
 #include "error.hpp"
 #include "film/image_io.hpp"
 #include "scene/sky.hpp"
+#include "temp_dir.hpp"
 
 namespace facet {
 namespace {
@@ -80,9 +81,8 @@ TEST(Environment, SunSkyMap) {
 }
 
 TEST(Environment, SunSkyExrRoundTrip) {
-    const fs::path dir = fs::temp_directory_path() / "facet_env_test";
-    fs::create_directories(dir);
-    const std::string path = (dir / "sky.exr").string();
+    const test::TempDir dir;
+    const std::string path = dir.path("sky.exr");
     write_sun_sky_exr(path, 256, SunSkyParams{});
     std::vector<std::string> warnings;
     EnvironmentMap e = load_environment_map(path, glm::vec3(1.0f), glm::mat3(1.0f), warnings);
@@ -155,9 +155,8 @@ TEST(Environment, RotationAndConvention) {
 }
 
 TEST(Environment, SanitisesBadTexels) {
-    const fs::path dir = fs::temp_directory_path() / "facet_env_test";
-    fs::create_directories(dir);
-    const std::string path = (dir / "bad.exr").string();
+    const test::TempDir dir;
+    const std::string path = dir.path("bad.exr");
     const int w = 16, h = 8;
     std::vector<float> rgb(std::size_t(w) * h * 3, 1.0f);
     rgb[0] = std::nanf("");

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "cl_test_env.hpp"
+#include "temp_dir.hpp"
 
 namespace facet {
 namespace {
@@ -17,16 +18,15 @@ namespace fs = std::filesystem;
 class ProgramCache : public testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / "facet_program_cache_test";
-        fs::remove_all(dir_);
+        dir_ = tmp_.dir() / "cache";
         setenv("FACET_PROGRAM_CACHE", "1", 1);
         setenv("FACET_CACHE_DIR", dir_.c_str(), 1);
     }
     void TearDown() override {
         unsetenv("FACET_PROGRAM_CACHE");
         unsetenv("FACET_CACHE_DIR");
-        fs::remove_all(dir_);
     }
+    test::TempDir tmp_;   // private to this process: ctest runs these two tests side by side
     fs::path dir_;
 };
 

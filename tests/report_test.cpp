@@ -14,6 +14,7 @@
 #include "render/renderer.hpp"
 #include "report/report.hpp"
 #include "scene/scene.hpp"
+#include "temp_dir.hpp"
 
 namespace facet {
 namespace {
@@ -103,8 +104,8 @@ TEST(Report, ConvergenceWarningFlagsBias) {
 }
 
 TEST(Report, CsvRoundTripAndPlot) {
-    fs::path dir = fs::temp_directory_path() / "facet_report_test";
-    fs::create_directories(dir);
+    const test::TempDir tmp;
+    const fs::path& dir = tmp.dir();
     std::vector<PassRecord> passes(3);
     for (int i = 0; i < 3; ++i) {
         passes[i].pass = i + 1;
@@ -130,12 +131,11 @@ TEST(Report, CsvRoundTripAndPlot) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("bad.csv:2"), std::string::npos) << e.what();
     }
-    fs::remove_all(dir);
 }
 
 TEST(Report, BadReferencesAreRefused) {
-    fs::path dir = fs::temp_directory_path() / "facet_reference_test";
-    fs::create_directories(dir);
+    const test::TempDir tmp;
+    const fs::path& dir = tmp.dir();
     std::vector<float> rgb(3 * 4 * 2, 0.5f);
     write_exr((dir / "small.exr").string(), 4, 2, rgb);
     auto message = [&](const std::string& path, int w, int h) {
@@ -154,7 +154,6 @@ TEST(Report, BadReferencesAreRefused) {
     EXPECT_NE(m.find("not finite"), std::string::npos) << m;
     EXPECT_NE(m.find("nan.exr"), std::string::npos) << m;
     EXPECT_EQ(read_reference((dir / "small.exr").string(), 4, 2).width, 4);
-    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -2,47 +2,19 @@
 // into, and expectations on facet::Error messages.
 #pragma once
 
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "error.hpp"
 #include "scene/scene.hpp"
+#include "temp_dir.hpp"
 
 namespace facet::test {
-
-class TempDir {
-public:
-    TempDir() {
-        static std::atomic<int> counter{0};
-        dir_ = std::filesystem::temp_directory_path() /
-               ("facet_scene_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-        std::filesystem::create_directories(dir_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        std::filesystem::remove_all(dir_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-
-    // Writes `content` byte for byte and returns the file's path.
-    std::string write(const std::string& name, const std::string& content) const {
-        const auto path = dir_ / name;
-        std::ofstream(path, std::ios::binary) << content;
-        return path.string();
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-private:
-    std::filesystem::path dir_;
-};
 
 // Runs `f`, expecting a facet::Error whose message contains every one of `parts`.
 template <typename F>

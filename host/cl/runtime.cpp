@@ -11,6 +11,7 @@
 #include <iterator>
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include "error.hpp"
 
@@ -150,7 +151,9 @@ void write_bytes_atomically(const std::string& path, const std::vector<unsigned 
     namespace fs = std::filesystem;
     std::error_code ec;
     fs::create_directories(fs::path(path).parent_path(), ec);
-    fs::path tmp = fs::path(path).string() + fmt::format(".tmp{}", std::hash<std::string>{}(path) % 100000);
+    // The temporary is private to this process, so two renders filling the same entry at once
+    // each write their own file and the last rename wins with a whole binary.
+    fs::path tmp = fs::path(path).string() + fmt::format(".tmp{}", ::getpid());
     {
         std::ofstream out(tmp, std::ios::binary);
         out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
