@@ -178,15 +178,6 @@ bool build_from_cache(const ClContext& ctx, ProgramBuild& build) {
     }
 }
 
-std::size_t binary_size(const cl::Program& program) {
-    try {
-        std::vector<std::size_t> sizes = program.getInfo<CL_PROGRAM_BINARY_SIZES>();
-        return sizes.empty() ? 0 : sizes[0];
-    } catch (const cl::Error&) {
-        return 0;
-    }
-}
-
 }  // namespace
 
 std::string DeviceDesc::type_name() const {
@@ -215,6 +206,15 @@ ClContext ClContext::create(const std::string& selector) {
         ctx.queue_ = cl::CommandQueue(ctx.context_, f.device);
         return ctx;
     });
+}
+
+std::size_t program_binary_bytes(const cl::Program& program) {
+    try {
+        std::vector<std::size_t> sizes = program.getInfo<CL_PROGRAM_BINARY_SIZES>();
+        return sizes.empty() ? 0 : sizes[0];
+    } catch (const cl::Error&) {
+        return 0;
+    }
 }
 
 std::string default_build_options() {
@@ -247,7 +247,6 @@ ProgramBuild build_program(const ClContext& ctx, const std::string& entry,
     }
     build.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (status == CL_SUCCESS) {
-        build.binary_bytes = binary_size(build.program);
         if (caching && !build.from_cache) {
             try {
                 std::vector<std::vector<unsigned char>> binaries = build.program.getInfo<CL_PROGRAM_BINARIES>();

@@ -65,10 +65,15 @@ struct ProgramBuild {
     AssembledSource source;
     std::string options;
     double seconds = 0.0;          // wall time of the build (from source or from the cache)
-    std::size_t binary_bytes = 0;  // the device binary's size, where the driver reports it
     bool from_cache = false;       // loaded from facet's program-binary cache
     std::string cache_file;        // the cache entry used or written ("" when not caching)
 };
+
+// The size of the program's device binary, where the driver reports one. Not part of
+// build_program, and kept out of timed spans: PoCL answers it by generating machine code
+// for every kernel with a generic work-group function, ~1 s for the path tracer, code
+// that the first launch then generates again, specialised to its launch geometry.
+std::size_t program_binary_bytes(const cl::Program& program);
 
 // The options every facet program is built with (no fast or finite math).
 std::string default_build_options();
