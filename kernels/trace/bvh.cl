@@ -85,21 +85,23 @@ inline bool leaf_hit(__global const FcTriangle* tris, int first, int count, cons
 }
 
 /* The four children of a node at once: the node's boxes are structure-of-arrays, so
- * each slab is one float4 operation over the children. Near and far planes are chosen
- * by the direction's signs; the arithmetic is box_hit()'s, operation for operation:
- * (plane - o) * inv_d, the exit scaled by FC_SLAB_SCALE, NaN entries and exits ignored
- * by the comparisons (select keeps the running value where the comparison is false).
- * Returns a mask (-1 where hit) and the entry distances in *tnear. */
-inline int4 children_hit(__global const FcBvhNode* n, float3 o, float3 inv_d, int3 neg, float tmax,
-                         float4* tnear) {
+ * each slab is one float4 operation over the children. The near and far planes are
+ * picked by the direction's signs through row indices set up once per ray (near[a],
+ * far[a]: which float4 of the node holds axis a's entry and exit planes), so the
+ * choice costs no branch per node; the arithmetic is box_hit()'s, operation for
+ * operation: (plane - o) * inv_d, the exit scaled by FC_SLAB_SCALE, NaN entries and
+ * exits ignored by the comparisons (select keeps the running value where the
+ * comparison is false). Returns a mask (-1 where hit) and the entry distances in
+ * *tnear. */
+inline int4 children_hit(__global const FcBvhNode* n, float3 o, float3 inv_d, int3 near, int3 far,
+                         float tmax, float4* tnear) {
     __global const float4* v = (__global const float4*)n;
-    const float4 lx = v[0], ly = v[1], lz = v[2], hx = v[3], hy = v[4], hz = v[5];
-    float4 t0x = ((neg.x ? hx : lx) - o.x) * inv_d.x;
-    float4 t1x = ((neg.x ? lx : hx) - o.x) * inv_d.x;
-    float4 t0y = ((neg.y ? hy : ly) - o.y) * inv_d.y;
-    float4 t1y = ((neg.y ? ly : hy) - o.y) * inv_d.y;
-    float4 t0z = ((neg.z ? hz : lz) - o.z) * inv_d.z;
-    float4 t1z = ((neg.z ? lz : hz) - o.z) * inv_d.z;
+    float4 t0x = (v[near.x] - o.x) * inv_d.x;
+    float4 t1x = (v[far.x] - o.x) * inv_d.x;
+    float4 t0y = (v[near.y] - o.y) * inv_d.y;
+    float4 t1y = (v[far.y] - o.y) * inv_d.y;
+    float4 t0z = (v[near.z] - o.z) * inv_d.z;
+    float4 t1z = (v[far.z] - o.z) * inv_d.z;
     t1x *= FC_SLAB_SCALE;
     t1y *= FC_SLAB_SCALE;
     t1z *= FC_SLAB_SCALE;
@@ -114,58 +116,111 @@ inline int4 children_hit(__global const FcBvhNode* n, float3 o, float3 inv_d, in
     return tn <= tf;
 }
 
-/* The traversal shared by trace_closest and trace_any. */
+/* A 4-bit mask from an int4 of 0 / -1 lanes: bit c set where lane c is. */
+inline uint lane_bits(int4 m) {
+    return (uint)((m.x & 1) | (m.y & 2) | (m.z & 4) | (m.w & 8));
+}
+
+/* Index of the lowest set bit of a non-zero mask (OpenCL C 1.2 has clz, not ctz). */
+inline uint lowest_bit(uint bits) {
+    return 31u - clz(bits & (0u - bits));
+}
+
+/* The traversal shared by trace_closest and trace_any. Per node: the four boxes in one
+ * go, then the hit leaves (their hits shorten the ray before any inner child is
+ * entered), then the hit inner children, nearest first: with one there is nothing to
+ * sort, with two one comparison, with three or four an insertion sort. The others go on
+ * the stack with their entry distance, and an entry farther than the nearest hit found
+ * since is dropped when popped, without fetching its node. */
 inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o,
                       float3 d, Hit* hit, bool any) {
     const BoxRay br = box_ray_setup(o, d);
     const TriRay tr = tri_ray_setup(d);
-    int stack[FC_BVH_STACK_SIZE];
+    /* Rows of FcBvhNode: lo_x lo_y lo_z hi_x hi_y hi_z. */
+    const int3 near_row = (int3)(0, 1, 2) + 3 * br.neg;
+    const int3 far_row = (int3)(3, 4, 5) - 3 * br.neg;
+    int stack_node[FC_BVH_STACK_SIZE];
+    float stack_t[FC_BVH_STACK_SIZE];
     int sp = 0;
     int node = 0;
     bool found = false;
     for (;;) {
         __global const FcBvhNode* n = &nodes[node];
         float4 tn4;
-        const int4 mask = children_hit(n, o, br.inv_d, br.neg, hit->t, &tn4);
-        const int4 index = vload4(0, n->index), count = vload4(0, n->count);
-        float tn[4] = {tn4.x, tn4.y, tn4.z, tn4.w};
-        int idx[4] = {index.x, index.y, index.z, index.w};
-        int hitm[4] = {mask.x, mask.y, mask.z, mask.w};
-        int cnt[4] = {count.x, count.y, count.z, count.w};
-        /* Leaves first: their hits shorten the ray before the inner children. */
-        int inner_child[4];
-        float inner_t[4];
-        int k = 0;
-        for (int c = 0; c < 4; ++c) {
-            if (!hitm[c]) continue;
-            if (cnt[c] > 0) {
+        const int4 mask = children_hit(n, o, br.inv_d, near_row, far_row, hit->t, &tn4);
+        const int4 count = vload4(0, n->count);
+        const int4 index = vload4(0, n->index);
+        uint leaves = lane_bits(mask & (count > 0));
+        uint inner = lane_bits(mask & (count <= 0));   /* empty slots are never hit */
+        if (leaves) {
+            const int idx[4] = {index.x, index.y, index.z, index.w};
+            const int cnt[4] = {count.x, count.y, count.z, count.w};
+            do {
+                const uint c = lowest_bit(leaves);
+                leaves &= leaves - 1u;
                 if (leaf_hit(tris, idx[c], cnt[c], &tr, o, hit, any)) {
                     found = true;
                     if (any) return true;
                 }
-            } else {
-                /* Nearest first: insertion by entry distance, farthest at 0. */
-                int j = k++;
-                for (; j > 0 && inner_t[j - 1] < tn[c]; --j) {
-                    inner_t[j] = inner_t[j - 1];
-                    inner_child[j] = inner_child[j - 1];
-                }
-                inner_t[j] = tn[c];
-                inner_child[j] = idx[c];
+            } while (leaves);
+        }
+        if (!inner) {
+            /* Pop the next entry still nearer than the nearest hit. */
+            for (;;) {
+                if (sp == 0) return found;
+                --sp;
+                if (stack_t[sp] <= hit->t) break;
             }
+            node = stack_node[sp];
+            continue;
         }
-        /* The farther ones on the stack, the nearest next; entries beyond a hit found
-         * since are culled by their box test when popped. */
+        const float tn[4] = {tn4.x, tn4.y, tn4.z, tn4.w};
+        const int idx[4] = {index.x, index.y, index.z, index.w};
+        const uint c0 = lowest_bit(inner);
+        inner &= inner - 1u;
+        if (!inner) {
+            node = idx[c0];
+            continue;
+        }
+        const uint c1 = lowest_bit(inner);
+        inner &= inner - 1u;
+        if (!inner) {
+            const bool swap = tn[c1] < tn[c0];
+            const uint nearer = swap ? c1 : c0, farther = swap ? c0 : c1;
+            if (sp < FC_BVH_STACK_SIZE) {   /* always, by the builder */
+                stack_node[sp] = idx[farther];
+                stack_t[sp] = tn[farther];
+                ++sp;
+            }
+            node = idx[nearer];
+            continue;
+        }
+        /* Three or four: insertion by entry distance, farthest at 0. */
+        int order[4];
+        float dist[4];
+        order[0] = (int)c0;
+        dist[0] = tn[c0];
+        int k = 1;
+        inner |= 1u << c1;
+        do {
+            const uint c = lowest_bit(inner);
+            inner &= inner - 1u;
+            int j = k++;
+            for (; j > 0 && dist[j - 1] < tn[c]; --j) {
+                dist[j] = dist[j - 1];
+                order[j] = order[j - 1];
+            }
+            dist[j] = tn[c];
+            order[j] = (int)c;
+        } while (inner);
         for (int j = 0; j + 1 < k; ++j)
-            if (sp < FC_BVH_STACK_SIZE) stack[sp++] = inner_child[j];   /* always, by the builder */
-        if (k > 0) {
-            node = inner_child[k - 1];
-        } else {
-            if (sp == 0) break;
-            node = stack[--sp];
-        }
+            if (sp < FC_BVH_STACK_SIZE) {   /* always, by the builder */
+                stack_node[sp] = idx[order[j]];
+                stack_t[sp] = dist[j];
+                ++sp;
+            }
+        node = idx[order[k - 1]];
     }
-    return found;
 }
 
 /* Nearest hit with 0 < t < tmax. */
