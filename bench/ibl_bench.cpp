@@ -1,6 +1,7 @@
-// Image-based lighting at equal time: BSDF sampling alone, environment sampling alone
-// and MIS, on a diffuse and a glossy sphere under stiff maps. Error is the RMSE
-// against a long MIS render of the same scene.
+// Image-based lighting: the cost of the environment's sampling distribution (its build on
+// the host, env_sample on the device), then equal time for BSDF sampling alone,
+// environment sampling alone and MIS, on a diffuse and a glossy sphere under stiff maps.
+// Error is the RMSE against a long MIS render of the same scene.
 #include <chrono>
 #include <filesystem>
 
@@ -11,6 +12,7 @@
 #include "bvh/bvh.hpp"
 #include "film/error_metrics.hpp"
 #include "render/renderer.hpp"
+#include "scene/environment.hpp"
 #include "scene/material.hpp"
 #include "scene/scene.hpp"
 #include "scene/sky.hpp"
@@ -50,6 +52,41 @@ std::vector<float> render_for(ClContext& ctx, Scene scene, int strategy, double 
     return r.image();
 }
 
+// Host milliseconds to build the map's sampling distribution (best of 3), and device
+// env_sample calls per second.
+std::pair<double, double> sampling_cost(ClContext& ctx, const cl::Program& program, EnvironmentMap env, bool quick) {
+    double build_ms = 1e30;
+    for (int rep = 0; rep < 3; ++rep) {
+        auto t0 = std::chrono::steady_clock::now();
+        build_environment_distribution(env);
+        build_ms = std::min(build_ms, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    }
+    const cl::Context& c = ctx.context();
+    cl::Buffer params(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(FcEnvironment), &env.params);
+    cl::Buffer texels(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, env.texels.size() * sizeof(float), env.texels.data());
+    cl::Buffer dist(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, env.distribution.size() * sizeof(float),
+                    env.distribution.data());
+    const std::size_t items = quick ? (1u << 14) : (1u << 16);
+    const cl_uint per_item = 64;
+    cl::Buffer out(c, CL_MEM_WRITE_ONLY, items * sizeof(float));
+    cl::Kernel k(program, "env_sample_throughput");
+    k.setArg(0, params);
+    k.setArg(1, texels);
+    k.setArg(2, dist);
+    k.setArg(3, cl_uint(5));
+    k.setArg(4, per_item);
+    k.setArg(5, out);
+    double best_s = 1e30;
+    for (int rep = 0; rep < 4; ++rep) {   // the first launch warms up
+        auto t0 = std::chrono::steady_clock::now();
+        ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(items), cl::NDRange(64));
+        ctx.queue().finish();
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (rep > 0) best_s = std::min(best_s, s);
+    }
+    return {build_ms, double(items) * per_item / best_s * 1e-6};
+}
+
 }  // namespace
 
 nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick) {
@@ -65,6 +102,22 @@ nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick) 
         }
         std::vector<std::string> warnings;
         maps.push_back({name, load_environment_map(p.string(), glm::vec3(1.0f), glm::mat3(1.0f), warnings)});
+    }
+    nlohmann::json sampling = nlohmann::json::array();
+    {
+        bench_print("\n### Environment sampling (distribution built on one host thread, best of 3; env_sample on the device)\n\n");
+        bench_print("| map | size | distribution build ms | env_sample M/s |\n|---|---|---|---|\n");
+        cl::Program program = build_program(ctx, "kernels/bench/ibl_bench.cl").program;
+        std::vector<std::pair<std::string, EnvironmentMap>> timed = {
+            {"generated sun-sky", sun_sky_environment(SunSkyParams{}, quick ? 1024 : 2048)}};
+        for (std::size_t i = 1; i < maps.size(); ++i) timed.push_back(maps[i]);
+        for (auto& [name, env] : timed) {
+            auto [build_ms, rate] = sampling_cost(ctx, program, env, quick);
+            bench_print("| {} | {}x{} | {:.1f} | {:.1f} |\n", name, env.params.width, env.params.height, build_ms, rate);
+            std::fflush(stdout);
+            sampling.push_back({{"map", name}, {"width", env.params.width}, {"height", env.params.height},
+                                {"distribution_build_ms", build_ms}, {"env_sample_m_per_s", rate}});
+        }
     }
     const double budget = quick ? 0.5 : 2.0;
     bench_print("\n### Equal-time IBL ({:.1f} s each; RMSE against a {:.0f} s MIS render)\n\n", budget, budget * 8);
@@ -90,7 +143,7 @@ nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick) 
         std::fflush(stdout);
         rows.push_back(row);
     }
-    return rows;
+    return {{"sampling", sampling}, {"equal_time", rows}};
 }
 
 }  // namespace facet

@@ -5,7 +5,6 @@
 // environment_chi2_test.cpp.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
@@ -275,36 +274,6 @@ TEST(Environment, RadianceHdrFile) {
     EXPECT_EQ(e.params.width, 2 * e.params.height);
     EXPECT_GT(e.mean_luminance, 0.0);
     EXPECT_LT(check_consistency(e, 1u << 14, "hdr"), 1e-3);
-}
-
-// Not assertions: how long the distribution takes to build and env_sample to run.
-TEST(Environment, Timings) {
-    using Clock = std::chrono::steady_clock;
-    EnvironmentMap e = sun_sky_environment(SunSkyParams{}, 2048);
-    auto t0 = Clock::now();
-    build_environment_distribution(e);
-    const double build_ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-    DeviceEnv d(e);
-    ClContext& ctx = test::context();
-    const std::size_t items = 1u << 16;
-    const cl_uint per_item = 64;
-    cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, items * sizeof(float));
-    cl::Kernel k(test::program(kProgram), "env_sample_throughput");
-    k.setArg(0, d.params);
-    k.setArg(1, d.texels);
-    k.setArg(2, d.dist);
-    k.setArg(3, cl_uint(5));
-    k.setArg(4, per_item);
-    k.setArg(5, out);
-    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(1024));   // warm-up
-    ctx.queue().finish();
-    auto t1 = Clock::now();
-    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(items));
-    ctx.queue().finish();
-    const double s = std::chrono::duration<double>(Clock::now() - t1).count();
-    std::printf("[ timing   ] 2048x1024 map: distribution built in %.1f ms; env_sample %.1f M samples/s (%s)\n",
-                build_ms, double(items) * per_item / s * 1e-6, ctx.device().getInfo<CL_DEVICE_NAME>().c_str());
-    SUCCEED();
 }
 
 }  // namespace

@@ -69,18 +69,3 @@ __kernel void env_round_trip(__constant const FcEnvironment* env, __global const
     float3 via_uv = env_map_to_dir(env, env_uv_to_map_dir(env_map_dir_to_uv(m)));
     err[i] = fmax(length(back - d), length(via_uv - d));
 }
-
-/* Throughput: `per_item` env_sample calls per work-item, summed so none is elided. */
-__kernel void env_sample_throughput(__constant const FcEnvironment* env, __global const float4* texels,
-                                    __global const float* dist, uint seed, uint per_item, __global float* out) {
-    uint g = (uint)get_global_id(0);
-    Rng rng = rng_init(seed, g, 0x7470u);
-    float sum = 0.0f;
-    for (uint k = 0; k < per_item; ++k) {
-        float3 dir;
-        float pdf;
-        float3 L = env_sample(env, texels, dist, rng_float2(&rng), &dir, &pdf);
-        sum += (pdf > 0.0f) ? luminance(L) / pdf + dir.x : 0.0f;
-    }
-    out[g] = sum;
-}
