@@ -11,7 +11,7 @@
 #include <CL/opencl.hpp>
 #include <nlohmann/json.hpp>
 
-#include "cl/runtime.hpp"
+#include "host/cl/runtime.hpp"
 
 namespace facet {
 

@@ -22,15 +22,15 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "bench.hpp"
-#include "embree_bench.hpp"
-#include "film/error_metrics.hpp"
-#include "ply_mesh.hpp"
-#include "bvh/bvh.hpp"
-#include "cl/runtime.hpp"
-#include "error.hpp"
-#include "render/renderer.hpp"
-#include "scene/load.hpp"
+#include "bench/bench.hpp"
+#include "bench/embree_bench.hpp"
+#include "host/film/error_metrics.hpp"
+#include "bench/ply_mesh.hpp"
+#include "host/bvh/bvh.hpp"
+#include "host/cl/runtime.hpp"
+#include "host/error.hpp"
+#include "host/render/renderer.hpp"
+#include "host/scene/load.hpp"
 
 namespace facet {
 namespace {

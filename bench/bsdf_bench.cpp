@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "bench.hpp"
-#include "scene/material.hpp"
+#include "bench/bench.hpp"
+#include "host/scene/material.hpp"
 
 namespace facet {
 

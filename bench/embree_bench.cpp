@@ -1,5 +1,5 @@
 // Embree on facet's ray batches: see embree_bench.hpp.
-#include "embree_bench.hpp"
+#include "bench/embree_bench.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,7 +10,7 @@
 #include <embree3/rtcore.h>
 #endif
 
-#include "error.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 

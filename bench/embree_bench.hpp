@@ -9,7 +9,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "bench.hpp"
+#include "bench/bench.hpp"
 
 namespace facet {
 

@@ -8,14 +8,14 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "bench.hpp"
-#include "bvh/bvh.hpp"
-#include "film/error_metrics.hpp"
-#include "render/renderer.hpp"
-#include "scene/environment.hpp"
-#include "scene/material.hpp"
-#include "scene/scene.hpp"
-#include "scene/sky.hpp"
+#include "bench/bench.hpp"
+#include "host/bvh/bvh.hpp"
+#include "host/film/error_metrics.hpp"
+#include "host/render/renderer.hpp"
+#include "host/scene/environment_map.hpp"
+#include "host/scene/material.hpp"
+#include "host/scene/scene.hpp"
+#include "host/scene/sky.hpp"
 
 namespace facet {
 namespace {

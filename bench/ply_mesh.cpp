@@ -1,5 +1,5 @@
 // gzip'd ASCII PLY to OBJ: see ply_mesh.hpp.
-#include "ply_mesh.hpp"
+#include "bench/ply_mesh.hpp"
 
 #include <cstdlib>
 #include <cstring>

@@ -7,11 +7,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "bench.hpp"
-#include "bvh/bvh.hpp"
-#include "render/features.hpp"
-#include "render/renderer.hpp"
-#include "scene/load.hpp"
+#include "bench/bench.hpp"
+#include "host/bvh/bvh.hpp"
+#include "host/render/features.hpp"
+#include "host/render/renderer.hpp"
+#include "host/scene/load.hpp"
 
 namespace facet {
 

@@ -1,3 +1,3 @@
-#include "cli/cli.hpp"
+#include "host/cli/cli.hpp"
 
 int main(int argc, char** argv) { return facet::run_cli(argc, argv); }

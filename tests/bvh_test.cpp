@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <random>
 
-#include "bvh/bvh.hpp"
-#include "bvh_meshes.hpp"
-#include "cl_test_env.hpp"
-#include "error.hpp"
+#include "host/bvh/bvh.hpp"
+#include "tests/bvh_meshes.hpp"
+#include "tests/cl_test_env.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 namespace {

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "chi2_test_util.hpp"
+#include "tests/chi2_test_util.hpp"
 
 namespace facet::test::chi2 {
 namespace {

@@ -1,4 +1,4 @@
-#include "cl_test_env.hpp"
+#include "tests/cl_test_env.hpp"
 
 #include <cstdlib>
 #include <map>

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "cl/runtime.hpp"
+#include "host/cl/runtime.hpp"
 
 namespace facet::test {
 

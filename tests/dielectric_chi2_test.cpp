@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "chi2_test_util.hpp"
-#include "dielectric_test_util.hpp"
+#include "tests/chi2_test_util.hpp"
+#include "tests/dielectric_test_util.hpp"
 
 namespace facet {
 namespace {

@@ -9,12 +9,12 @@
 #include <filesystem>
 #include <random>
 
-#include "bvh/bvh.hpp"
-#include "dielectric_test_util.hpp"
-#include "render/renderer.hpp"
-#include "scene/load.hpp"
-#include "scene/material.hpp"
-#include "scene/mtl_material.hpp"
+#include "host/bvh/bvh.hpp"
+#include "tests/dielectric_test_util.hpp"
+#include "host/render/renderer.hpp"
+#include "host/scene/load.hpp"
+#include "host/scene/material.hpp"
+#include "host/scene/mtl_material.hpp"
 
 namespace facet {
 namespace {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "microfacet_test_util.hpp"
-#include "shared/material.h"
+#include "tests/microfacet_test_util.hpp"
+#include "kernels/shared/material_layout.h"
 
 namespace facet::test::dl {
 

@@ -13,9 +13,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "chi2_test_util.hpp"
-#include "environment_test_util.hpp"
-#include "scene/sky.hpp"
+#include "tests/chi2_test_util.hpp"
+#include "tests/environment_test_util.hpp"
+#include "host/scene/sky.hpp"
 
 namespace facet {
 namespace {

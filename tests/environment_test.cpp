@@ -1,4 +1,4 @@
-// The environment light (kernels/lights/environment.cl, host/scene/environment.cpp,
+// The environment light (kernels/lights/environment.cl, host/scene/environment_map.cpp,
 // host/scene/sky.cpp): consistency of env_sample with env_radiance / env_pdf, the pdf's
 // normalisation, the direction convention under rotation, robust loading (sanitising,
 // 1x1, non-2:1, black, missing maps) and the sun-and-sky map. The chi-square tests are in
@@ -8,11 +8,11 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "environment_test_util.hpp"
-#include "error.hpp"
-#include "film/image_io.hpp"
-#include "scene/sky.hpp"
-#include "temp_dir.hpp"
+#include "tests/environment_test_util.hpp"
+#include "host/error.hpp"
+#include "host/film/image_io.hpp"
+#include "host/scene/sky.hpp"
+#include "tests/temp_dir.hpp"
 
 namespace facet {
 namespace {

@@ -10,8 +10,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "cl_test_env.hpp"
-#include "scene/environment.hpp"
+#include "tests/cl_test_env.hpp"
+#include "host/scene/environment_map.hpp"
 
 namespace facet::test::env {
 
@@ -36,7 +36,7 @@ inline glm::mat3 test_rotation() {
     return glm::mat3(glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(glm::vec3(0.3f, 1.0f, -0.5f))));
 }
 
-// Map-frame direction of (theta, phi) by the convention of kernels/shared/environment.h.
+// Map-frame direction of (theta, phi) by the convention of kernels/shared/environment_layout.h.
 inline glm::dvec3 map_direction(double theta, double phi) {
     return {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
 }

@@ -6,19 +6,19 @@
 #include <cmath>
 #include <cstring>
 
-#include "bvh/bvh.hpp"
-#include "cl_test_env.hpp"
-#include "render/features.hpp"
-#include "render/renderer.hpp"
-#include "scene/load.hpp"
-#include "scene/material.hpp"
-#include "shared/features.h"
+#include "host/bvh/bvh.hpp"
+#include "tests/cl_test_env.hpp"
+#include "host/render/features.hpp"
+#include "host/render/renderer.hpp"
+#include "host/scene/load.hpp"
+#include "host/scene/material.hpp"
+#include "kernels/shared/feature_flags.h"
 
 namespace facet {
 namespace {
 
 // The prelude of the program passed to the OpenCL build: the lines before the first
-// source file (kernels/shared/features.h's own defaults come after it).
+// source file (kernels/shared/feature_flags.h's own defaults come after it).
 std::string prelude(const Renderer& r) {
     const std::string& text = r.build().source.text;
     return text.substr(0, text.find("#line"));

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "harnesses.hpp"
+#include "tests/fuzz/harnesses.hpp"
 
 namespace facet {
 namespace {

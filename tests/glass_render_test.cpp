@@ -8,12 +8,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "bvh/bvh.hpp"
-#include "cl_test_env.hpp"
-#include "render/renderer.hpp"
-#include "scene/environment.hpp"
-#include "scene/material.hpp"
-#include "scene/scene.hpp"
+#include "host/bvh/bvh.hpp"
+#include "tests/cl_test_env.hpp"
+#include "host/render/renderer.hpp"
+#include "host/scene/environment_map.hpp"
+#include "host/scene/material.hpp"
+#include "host/scene/scene.hpp"
 
 namespace facet {
 namespace {

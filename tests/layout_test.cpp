@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "cl_test_env.hpp"
-#include "shared/all.h"
-#include "shared/layout_fields.h"
+#include "tests/cl_test_env.hpp"
+#include "kernels/shared/all.h"
+#include "kernels/shared/layout_fields.h"
 
 namespace facet {
 namespace {

@@ -8,12 +8,12 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "cl/runtime.hpp"
-#include "cl_test_env.hpp"
-#include "film/image_io.hpp"
-#include "scene/environment.hpp"
-#include "scene/load.hpp"
-#include "scene_test_util.hpp"
+#include "host/cl/runtime.hpp"
+#include "tests/cl_test_env.hpp"
+#include "host/film/image_io.hpp"
+#include "host/scene/environment_map.hpp"
+#include "host/scene/load.hpp"
+#include "tests/scene_test_util.hpp"
 
 namespace facet {
 namespace {

@@ -9,7 +9,7 @@ status=0
 count=0
 while IFS= read -r f; do
     count=$((count + 1))
-    if ! "$cc" -x cl -cl-std=CL1.2 -Xclang -finclude-default-header -fsyntax-only \
+    if ! "$cc" -x cl -cl-std=CL1.2 -Xclang -finclude-default-header -fsyntax-only -I "$dir/.." \
         -Wall -Wextra -Wdouble-promotion -Wshadow -Werror "$f"; then
         echo "FAIL $f"
         status=1

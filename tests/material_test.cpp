@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "error.hpp"
-#include "scene/material.hpp"
+#include "host/error.hpp"
+#include "host/scene/material.hpp"
 
 namespace facet {
 namespace {

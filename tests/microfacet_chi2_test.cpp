@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <random>
 
-#include "chi2_test_util.hpp"
-#include "microfacet_test_util.hpp"
+#include "tests/chi2_test_util.hpp"
+#include "tests/microfacet_test_util.hpp"
 
 namespace facet {
 namespace {

@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <random>
 
-#include "microfacet_test_util.hpp"
+#include "tests/microfacet_test_util.hpp"
 
 namespace facet {
 namespace {

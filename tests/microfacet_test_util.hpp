@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "chi2_test_util.hpp"
-#include "cl_test_env.hpp"
-#include "shared/material.h"
+#include "tests/chi2_test_util.hpp"
+#include "tests/cl_test_env.hpp"
+#include "kernels/shared/material_layout.h"
 
 namespace facet::test::mf {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "cl_test_env.hpp"
-#include "scene/material.hpp"
+#include "tests/cl_test_env.hpp"
+#include "host/scene/material.hpp"
 
 namespace facet {
 namespace {

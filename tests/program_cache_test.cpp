@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cl_test_env.hpp"
-#include "temp_dir.hpp"
+#include "tests/cl_test_env.hpp"
+#include "tests/temp_dir.hpp"
 
 namespace facet {
 namespace {

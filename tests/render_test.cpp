@@ -5,10 +5,10 @@
 #include <cstring>
 #include <numeric>
 
-#include "bvh/bvh.hpp"
-#include "cl_test_env.hpp"
-#include "render/renderer.hpp"
-#include "scene/scene.hpp"
+#include "host/bvh/bvh.hpp"
+#include "tests/cl_test_env.hpp"
+#include "host/render/renderer.hpp"
+#include "host/scene/scene.hpp"
 
 namespace facet {
 namespace {

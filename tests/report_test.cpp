@@ -6,15 +6,15 @@
 #include <filesystem>
 #include <fstream>
 
-#include "bvh/bvh.hpp"
-#include "cl_test_env.hpp"
-#include "error.hpp"
-#include "film/error_metrics.hpp"
-#include "film/image_io.hpp"
-#include "render/renderer.hpp"
-#include "report/report.hpp"
-#include "scene/scene.hpp"
-#include "temp_dir.hpp"
+#include "host/bvh/bvh.hpp"
+#include "tests/cl_test_env.hpp"
+#include "host/error.hpp"
+#include "host/film/error_metrics.hpp"
+#include "host/film/image_io.hpp"
+#include "host/render/renderer.hpp"
+#include "host/report/report.hpp"
+#include "host/scene/scene.hpp"
+#include "tests/temp_dir.hpp"
 
 namespace facet {
 namespace {

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "scene/load.hpp"
-#include "scene_test_util.hpp"
+#include "host/scene/load.hpp"
+#include "tests/scene_test_util.hpp"
 
 namespace facet {
 namespace {

@@ -5,8 +5,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/load.hpp"
-#include "scene_test_util.hpp"
+#include "host/scene/load.hpp"
+#include "tests/scene_test_util.hpp"
 
 namespace facet {
 namespace {

@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "scene/load.hpp"
-#include "scene/scene.hpp"
-#include "scene_test_util.hpp"
+#include "host/scene/load.hpp"
+#include "host/scene/scene.hpp"
+#include "tests/scene_test_util.hpp"
 
 namespace facet {
 namespace {

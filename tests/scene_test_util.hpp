@@ -10,9 +10,9 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "error.hpp"
-#include "scene/scene.hpp"
-#include "temp_dir.hpp"
+#include "host/error.hpp"
+#include "host/scene/scene.hpp"
+#include "tests/temp_dir.hpp"
 
 namespace facet::test {
 

@@ -1,7 +1,7 @@
 // build_bvh: filters the triangle soup, runs the binned SAH builder
 // (bvh/sah_builder.cpp), collapses its binary tree into 4-wide nodes and lays the
 // triangles out in leaf order.
-#include "bvh/bvh.hpp"
+#include "host/bvh/bvh.hpp"
 
 #include <chrono>
 #include <algorithm>
@@ -9,8 +9,8 @@
 #include <cstring>
 #include <limits>
 
-#include "bvh/sah_builder.hpp"
-#include "error.hpp"
+#include "host/bvh/sah_builder.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 namespace {

@@ -1,5 +1,5 @@
 // Bounding volume hierarchy over a triangle soup: a binned SAH build on the host,
-// flattened into the layout of kernels/shared/bvh.h for the traversal kernel.
+// flattened into the layout of kernels/shared/bvh_layout.h for the traversal kernel.
 #pragma once
 
 #include <cstdint>
@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "shared/bvh.h"
+#include "kernels/shared/bvh_layout.h"
 
 namespace facet {
 

@@ -1,4 +1,4 @@
-#include "bvh/sah_builder.hpp"
+#include "host/bvh/sah_builder.hpp"
 
 #include <algorithm>
 #include <bit>

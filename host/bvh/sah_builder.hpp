@@ -1,13 +1,13 @@
 // Binned SAH builder (Wald 2007, "On fast construction of SAH-based bounding volume
 // hierarchies"): reorders an array of primitive references (with one scratch copy) and writes a
 // binary tree of BinaryNode, which bvh.cpp collapses into the 4-wide FcBvhNode of
-// kernels/shared/bvh.h.
+// kernels/shared/bvh_layout.h.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "bvh/bvh.hpp"
+#include "host/bvh/bvh.hpp"
 
 namespace facet::bvh_detail {
 
@@ -53,7 +53,7 @@ BuildOutput build_sah(std::vector<PrimRef>& refs, const BvhOptions& options);
 
 // The child reference of an empty tree or of the root's unused slot: an inner-node
 // reference (count 0) whose box is inverted (lo = +inf, hi = -inf), which the slab
-// test in kernels/trace/bvh.cl never reports as hit.
+// test in kernels/trace/bvh_traverse.cl never reports as hit.
 void set_empty_child(BinaryNode& node, int side);
 
 }  // namespace facet::bvh_detail

@@ -1,8 +1,8 @@
 // OpenCL error codes by name, and the conversion of cl::Error into facet::Error.
 #include <fmt/format.h>
 
-#include "cl/runtime.hpp"
-#include "error.hpp"
+#include "host/cl/runtime.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 

@@ -1,4 +1,4 @@
-#include "cl/kernel_source.hpp"
+#include "host/cl/kernel_source.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "error.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 namespace {
@@ -88,14 +88,14 @@ void append_file(const SourceTree& tree, const std::string& path, std::set<std::
             out.text += '\n';
             continue;
         }
-        // Resolve relative to the including file, then to kernels/.
-        std::string local = normalise(fs::path(path).parent_path() / target);
-        std::string rooted = normalise(fs::path("kernels") / target);
+        // One include root: every include names its file from the repository root
+        // ("kernels/util/math.cl"), as the host's includes do.
+        std::string resolved = normalise(fs::path(target));
         std::string dummy;
-        std::string resolved = tree.find(local, dummy) ? local : rooted;
-        if (!tree.find(resolved, dummy))
-            throw Error(fmt::format("{}:{}: included file \"{}\" not found ({})", path, number,
-                                    target, tree.origin()));
+        if (resolved.rfind("kernels/", 0) != 0 || !tree.find(resolved, dummy))
+            throw Error(fmt::format("{}:{}: included file \"{}\" not found ({}); kernel includes name "
+                                    "their file from the repository root, as \"kernels/util/math.cl\"",
+                                    path, number, target, tree.origin()));
         append_file(tree, resolved, seen, out);
         out.text += fmt::format("#line {} \"{}\"\n", number + 1, path);
     }

@@ -12,7 +12,7 @@
 namespace facet {
 
 struct EmbeddedFile {
-    const char* path;     // relative to the repository root, e.g. "kernels/trace/bvh.cl"
+    const char* path;     // relative to the repository root, e.g. "kernels/trace/bvh_traverse.cl"
     const char* content;
 };
 

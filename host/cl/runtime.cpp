@@ -1,5 +1,5 @@
 // Device discovery, selection and program builds.
-#include "cl/runtime.hpp"
+#include "host/cl/runtime.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include "error.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 namespace {

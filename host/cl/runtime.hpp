@@ -9,7 +9,7 @@
 
 #include <CL/opencl.hpp>
 
-#include "cl/kernel_source.hpp"
+#include "host/cl/kernel_source.hpp"
 
 namespace facet {
 

@@ -1,5 +1,5 @@
 // `facet devices | info | render`: argument parsing and dispatch.
-#include "cli/cli.hpp"
+#include "host/cli/cli.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -10,9 +10,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "cli/commands.hpp"
-#include "error.hpp"
-#include "shared/render.h"
+#include "host/cli/commands.hpp"
+#include "host/error.hpp"
+#include "kernels/shared/render_layout.h"
 
 namespace facet {
 namespace {

@@ -4,12 +4,12 @@
 
 #include <fmt/format.h>
 
-#include "cli/commands.hpp"
-#include "error.hpp"
-#include "film/error_metrics.hpp"
-#include "film/image_io.hpp"
-#include "report/report.hpp"
-#include "scene/sky.hpp"
+#include "host/cli/commands.hpp"
+#include "host/error.hpp"
+#include "host/film/error_metrics.hpp"
+#include "host/film/image_io.hpp"
+#include "host/report/report.hpp"
+#include "host/scene/sky.hpp"
 
 namespace facet {
 

@@ -1,8 +1,8 @@
 // `facet devices`: every OpenCL platform and device, with the index --device takes.
 #include <fmt/format.h>
 
-#include "cl/runtime.hpp"
-#include "cli/commands.hpp"
+#include "host/cl/runtime.hpp"
+#include "host/cli/commands.hpp"
 
 namespace facet {
 

@@ -1,11 +1,11 @@
 // `facet info SCENE`: what the scene holds and what it will need on the device.
 #include <fmt/format.h>
 
-#include "bvh/bvh.hpp"
-#include "cli/commands.hpp"
-#include "render/features.hpp"
-#include "scene/load.hpp"
-#include "scene/material.hpp"
+#include "host/bvh/bvh.hpp"
+#include "host/cli/commands.hpp"
+#include "host/render/features.hpp"
+#include "host/scene/load.hpp"
+#include "host/scene/material.hpp"
 
 namespace facet {
 

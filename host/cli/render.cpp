@@ -15,15 +15,15 @@
 
 #include <fmt/format.h>
 
-#include "bvh/bvh.hpp"
-#include "cli/commands.hpp"
-#include "error.hpp"
-#include "film/error_metrics.hpp"
-#include "film/image_io.hpp"
-#include "render/features.hpp"
-#include "render/renderer.hpp"
-#include "report/report.hpp"
-#include "scene/load.hpp"
+#include "host/bvh/bvh.hpp"
+#include "host/cli/commands.hpp"
+#include "host/error.hpp"
+#include "host/film/error_metrics.hpp"
+#include "host/film/image_io.hpp"
+#include "host/render/features.hpp"
+#include "host/render/renderer.hpp"
+#include "host/report/report.hpp"
+#include "host/scene/load.hpp"
 
 namespace facet {
 namespace {

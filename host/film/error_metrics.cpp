@@ -1,11 +1,11 @@
-#include "film/error_metrics.hpp"
+#include "host/film/error_metrics.hpp"
 
 #include <cmath>
 #include <limits>
 
 #include <fmt/format.h>
 
-#include "error.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 

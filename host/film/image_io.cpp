@@ -1,4 +1,4 @@
-#include "film/image_io.hpp"
+#include "host/film/image_io.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
-#include "error.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 namespace {

@@ -1,11 +1,11 @@
-#include "render/features.hpp"
+#include "host/render/features.hpp"
 
 #include <algorithm>
 #include <cctype>
 
 #include <fmt/format.h>
 
-#include "shared/features.h"
+#include "kernels/shared/feature_flags.h"
 
 namespace facet {
 namespace {

@@ -1,4 +1,4 @@
-// Kernel specialisation: the features a scene uses (kernels/shared/features.h holds the
+// Kernel specialisation: the features a scene uses (kernels/shared/feature_flags.h holds the
 // closed list), and the prelude that builds a program with only those.
 #pragma once
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "host/scene/scene.hpp"
 
 namespace facet {
 

@@ -1,4 +1,4 @@
-#include "render/renderer.hpp"
+#include "host/render/renderer.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "error.hpp"
-#include "render/features.hpp"
+#include "host/error.hpp"
+#include "host/render/features.hpp"
 
 namespace facet {
 namespace {

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "bvh/bvh.hpp"
-#include "cl/runtime.hpp"
-#include "scene/scene.hpp"
+#include "host/bvh/bvh.hpp"
+#include "host/cl/runtime.hpp"
+#include "host/scene/scene.hpp"
 
 namespace facet {
 

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "report/report.hpp"
+#include "host/report/report.hpp"
 
 namespace facet {
 namespace {

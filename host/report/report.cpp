@@ -1,4 +1,4 @@
-#include "report/report.hpp"
+#include "host/report/report.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "error.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 namespace {

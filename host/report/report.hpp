@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "film/error_metrics.hpp"
+#include "host/film/error_metrics.hpp"
 
 namespace facet {
 

@@ -1,4 +1,4 @@
-#include "scene/json_scene.hpp"
+#include "host/scene/json_scene.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -11,12 +11,12 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "error.hpp"
-#include "scene/json_schema.hpp"
-#include "scene/material.hpp"
-#include "scene/sky.hpp"
-#include "scene/load.hpp"
-#include "scene/text_parse.hpp"
+#include "host/error.hpp"
+#include "host/scene/json_schema.hpp"
+#include "host/scene/material.hpp"
+#include "host/scene/sky.hpp"
+#include "host/scene/load.hpp"
+#include "host/scene/text_parse.hpp"
 
 namespace facet {
 namespace {

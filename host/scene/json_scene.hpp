@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "scene/scene.hpp"
+#include "host/scene/scene.hpp"
 
 namespace facet {
 

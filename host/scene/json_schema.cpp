@@ -1,4 +1,4 @@
-#include "scene/json_schema.hpp"
+#include "host/scene/json_schema.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "error.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 namespace {

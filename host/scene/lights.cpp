@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "scene/scene.hpp"
+#include "host/scene/scene.hpp"
 
 namespace facet {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "scene/scene.hpp"
+#include "host/scene/scene.hpp"
 
 namespace facet {
 

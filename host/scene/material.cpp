@@ -1,4 +1,4 @@
-#include "scene/material.hpp"
+#include "host/scene/material.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "error.hpp"
+#include "host/error.hpp"
 
 namespace facet {
 namespace {
@@ -42,7 +42,7 @@ struct Preset {
     int diffuse, specular, ndf, geometry;
     int fresnel = FC_FRESNEL_SCHLICK;
 };
-// kernels/shared/material.h's table; microfacet is ggx's lobes with any D, G, F.
+// kernels/shared/material_layout.h's table; microfacet is ggx's lobes with any D, G, F.
 constexpr Preset kPresets[] = {
     {"lambert", FC_DIFFUSE_LAMBERT, FC_SPECULAR_NONE, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
     {"oren_nayar", FC_DIFFUSE_OREN_NAYAR, FC_SPECULAR_NONE, FC_NDF_GGX, FC_G_SMITH_CORRELATED},

@@ -1,4 +1,4 @@
-// The host side of materials (kernels/shared/material.h holds the layout and enums):
+// The host side of materials (kernels/shared/material_layout.h holds the layout and enums):
 // the named models of the source documents as presets, the name tables the scene
 // parser and `facet info` use, roughness <-> shininess conversions, normal-incidence
 // Fresnel presets, and validation. docs/brdf.md describes every model.
@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "shared/material.h"
+#include "kernels/shared/material_layout.h"
 
 namespace facet {
 

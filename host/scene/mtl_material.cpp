@@ -1,4 +1,4 @@
-#include "scene/mtl_material.hpp"
+#include "host/scene/mtl_material.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 
 #include <fmt/format.h>
 
-#include "error.hpp"
-#include "scene/material.hpp"
-#include "scene/scene.hpp"
-#include "scene/text_parse.hpp"
+#include "host/error.hpp"
+#include "host/scene/material.hpp"
+#include "host/scene/scene.hpp"
+#include "host/scene/text_parse.hpp"
 
 namespace facet {
 namespace {

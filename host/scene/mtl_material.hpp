@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "shared/scene.h"
+#include "kernels/shared/scene_layout.h"
 
 namespace facet {
 

@@ -12,12 +12,12 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "error.hpp"
-#include "scene/load.hpp"
-#include "scene/material.hpp"
-#include "scene/mtl_material.hpp"
-#include "scene/obj_validate.hpp"
-#include "scene/text_parse.hpp"
+#include "host/error.hpp"
+#include "host/scene/load.hpp"
+#include "host/scene/material.hpp"
+#include "host/scene/mtl_material.hpp"
+#include "host/scene/obj_validate.hpp"
+#include "host/scene/text_parse.hpp"
 
 namespace facet {
 namespace {

@@ -1,11 +1,11 @@
-#include "scene/obj_validate.hpp"
+#include "host/scene/obj_validate.hpp"
 
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "error.hpp"
-#include "scene/text_parse.hpp"
+#include "host/error.hpp"
+#include "host/scene/text_parse.hpp"
 
 namespace facet {
 namespace {

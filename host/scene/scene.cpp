@@ -1,6 +1,6 @@
-#include "scene/scene.hpp"
+#include "host/scene/scene.hpp"
 
-#include "scene/material.hpp"
+#include "host/scene/material.hpp"
 
 #include <algorithm>
 #include <cmath>

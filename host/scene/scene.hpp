@@ -9,9 +9,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "scene/environment.hpp"
-#include "shared/scene.h"
-#include "shared/render.h"
+#include "host/scene/environment_map.hpp"
+#include "kernels/shared/scene_layout.h"
+#include "kernels/shared/render_layout.h"
 
 namespace facet {
 

@@ -9,9 +9,9 @@
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
-#include "error.hpp"
-#include "scene/json_scene.hpp"
-#include "scene/load.hpp"
+#include "host/error.hpp"
+#include "host/scene/json_scene.hpp"
+#include "host/scene/load.hpp"
 
 namespace facet {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "scene/scene.hpp"
+#include "host/scene/scene.hpp"
 
 namespace facet {
 namespace {

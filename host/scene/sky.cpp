@@ -1,5 +1,5 @@
 // The sun-and-sky environment (sky.hpp gives the models and their sources).
-#include "scene/sky.hpp"
+#include "host/scene/sky.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "error.hpp"
-#include "film/image_io.hpp"
+#include "host/error.hpp"
+#include "host/film/image_io.hpp"
 
 namespace facet {
 namespace {
@@ -21,7 +21,7 @@ struct Vec {
 };
 double dot(const Vec& a, const Vec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
-// The map's convention (kernels/shared/environment.h): phi = 2 pi u, theta = pi v.
+// The map's convention (kernels/shared/environment_layout.h): phi = 2 pi u, theta = pi v.
 Vec direction(double theta, double phi) {
     return {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
 }

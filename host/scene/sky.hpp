@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/environment.hpp"
+#include "host/scene/environment_map.hpp"
 
 namespace facet {
 

@@ -1,4 +1,4 @@
-#include "scene/text_parse.hpp"
+#include "host/scene/text_parse.hpp"
 
 #include <charconv>
 #include <filesystem>
@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "error.hpp"
+#include "host/error.hpp"
 
 namespace facet::text {
 

@@ -1,8 +1,8 @@
 /* BSDF throughput for bench/: every work-item evaluates, or samples, one material
  * `iterations` times at pseudo-random directions and writes a checksum so nothing is
  * optimised away. */
-#include "../bsdf/bsdf.cl"
-#include "../util/rng.cl"
+#include "kernels/bsdf/bsdf.cl"
+#include "kernels/util/rng.cl"
 
 __kernel void bsdf_eval_bench(__global const FcMaterial* material, uint iterations, __global float* out) {
     uint gid = get_global_id(0);

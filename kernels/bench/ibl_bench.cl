@@ -4,8 +4,8 @@
 #ifndef FACET_BENCH_IBL_BENCH_CL
 #define FACET_BENCH_IBL_BENCH_CL
 
-#include "../lights/environment.cl"
-#include "../util/rng.cl"
+#include "kernels/lights/environment.cl"
+#include "kernels/util/rng.cl"
 
 __kernel void env_sample_throughput(__constant const FcEnvironment* env, __global const float4* texels,
                                     __global const float* dist, uint seed, uint per_item, __global float* out) {

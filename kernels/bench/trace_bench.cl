@@ -3,7 +3,7 @@
 #ifndef FACET_BENCH_TRACE_BENCH_CL
 #define FACET_BENCH_TRACE_BENCH_CL
 
-#include "../trace/bvh.cl"
+#include "kernels/trace/bvh_traverse.cl"
 
 /* n rays (the global size may be padded past n); origins[i].xyz, dirs[i].xyz (unit), dirs[i].w = tmax. Writes t (or -1 on a miss)
  * and the hit triangle's scene index. */

@@ -15,11 +15,11 @@
 #ifndef FACET_BSDF_ASHIKHMIN_SHIRLEY_CL
 #define FACET_BSDF_ASHIKHMIN_SHIRLEY_CL
 
-#include "../shared/material.h"
-#include "../util/math.cl"
-#include "blinn_phong.cl"
-#include "bsdf_sample.cl"
-#include "fresnel.cl"
+#include "kernels/shared/material_layout.h"
+#include "kernels/util/math.cl"
+#include "kernels/bsdf/blinn_phong.cl"
+#include "kernels/bsdf/bsdf_sample.cl"
+#include "kernels/bsdf/fresnel.cl"
 
 inline float3 as_f0(const FcMaterial* m) {
     return clamp((float3)(m->specular[0], m->specular[1], m->specular[2]), 0.0f, 1.0f);

@@ -9,7 +9,7 @@
 #ifndef FACET_BSDF_BECKMANN_CL
 #define FACET_BSDF_BECKMANN_CL
 
-#include "../util/math.cl"
+#include "kernels/util/math.cl"
 
 #define FC_INV_SQRT_PI 0.56418958354775628695f
 

@@ -17,9 +17,9 @@
 #ifndef FACET_BSDF_BLINN_PHONG_CL
 #define FACET_BSDF_BLINN_PHONG_CL
 
-#include "../shared/material.h"
-#include "../util/math.cl"
-#include "bsdf_sample.cl"
+#include "kernels/shared/material_layout.h"
+#include "kernels/util/math.cl"
+#include "kernels/bsdf/bsdf_sample.cl"
 
 #define FC_PHONG_EXPONENT_MAX 1e6f
 

@@ -14,7 +14,7 @@
 #ifndef FACET_BSDF_BLINN_PHONG_NDF_CL
 #define FACET_BSDF_BLINN_PHONG_NDF_CL
 
-#include "../util/math.cl"
+#include "kernels/util/math.cl"
 
 inline float bp_ndf_exponent(float e) { return fmax(e, 0.0f); }
 

@@ -12,11 +12,11 @@
 #ifndef FACET_BSDF_BSDF_CL
 #define FACET_BSDF_BSDF_CL
 
-#include "bsdf_sample.cl"
-#include "diffuse.cl"
-#include "specular.cl"
+#include "kernels/bsdf/bsdf_sample.cl"
+#include "kernels/bsdf/diffuse.cl"
+#include "kernels/bsdf/specular.cl"
 #if FC_HAS_DIELECTRIC
-#include "dielectric.cl"
+#include "kernels/bsdf/dielectric.cl"
 #endif
 
 /* Whether the material is a dielectric (transmits; handled by dielectric.cl). */

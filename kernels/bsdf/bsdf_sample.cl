@@ -7,7 +7,7 @@
 #ifndef FACET_BSDF_BSDF_SAMPLE_CL
 #define FACET_BSDF_BSDF_SAMPLE_CL
 
-#include "../util/math.cl"
+#include "kernels/util/math.cl"
 
 typedef struct {
     float3 wi;

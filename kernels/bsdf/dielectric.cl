@@ -36,11 +36,11 @@
 #ifndef FACET_BSDF_DIELECTRIC_CL
 #define FACET_BSDF_DIELECTRIC_CL
 
-#include "../shared/material.h"
-#include "bsdf_sample.cl"
-#include "fresnel.cl"
-#include "ndf.cl"
-#include "refraction.cl"
+#include "kernels/shared/material_layout.h"
+#include "kernels/bsdf/bsdf_sample.cl"
+#include "kernels/bsdf/fresnel.cl"
+#include "kernels/bsdf/ndf.cl"
+#include "kernels/bsdf/refraction.cl"
 
 inline bool dielectric_is_smooth(const FcMaterial* m) {
     float2 a = ndf_alpha(m);

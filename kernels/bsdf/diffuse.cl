@@ -3,12 +3,12 @@
 #ifndef FACET_BSDF_DIFFUSE_CL
 #define FACET_BSDF_DIFFUSE_CL
 
-#include "../shared/material.h"
-#include "../shared/features.h"
-#include "ashikhmin_shirley.cl"
-#include "fresnel.cl"
-#include "lambert.cl"
-#include "oren_nayar.cl"
+#include "kernels/shared/material_layout.h"
+#include "kernels/shared/feature_flags.h"
+#include "kernels/bsdf/ashikhmin_shirley.cl"
+#include "kernels/bsdf/fresnel.cl"
+#include "kernels/bsdf/lambert.cl"
+#include "kernels/bsdf/oren_nayar.cl"
 
 inline float3 material_diffuse(const FcMaterial* m) {
     return (float3)(m->diffuse[0], m->diffuse[1], m->diffuse[2]);

@@ -11,8 +11,8 @@
 #ifndef FACET_BSDF_FRESNEL_CL
 #define FACET_BSDF_FRESNEL_CL
 
-#include "../shared/material.h"
-#include "../util/math.cl"
+#include "kernels/shared/material_layout.h"
+#include "kernels/util/math.cl"
 
 inline float pow5(float x) {
     float x2 = x * x;

@@ -21,8 +21,8 @@
 #ifndef FACET_BSDF_GEOMETRY_CL
 #define FACET_BSDF_GEOMETRY_CL
 
-#include "../shared/material.h"
-#include "ndf.cl"
+#include "kernels/shared/material_layout.h"
+#include "kernels/bsdf/ndf.cl"
 
 /* Smith's exact monostatic masking of w by microfacets of normal h. */
 inline float smith_G1(const FcMaterial* m, float3 w, float3 h) {

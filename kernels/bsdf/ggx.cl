@@ -11,7 +11,7 @@
 #ifndef FACET_BSDF_GGX_CL
 #define FACET_BSDF_GGX_CL
 
-#include "../util/math.cl"
+#include "kernels/util/math.cl"
 
 /* D(m) = 1 / (pi ax ay (x^2/ax^2 + y^2/ay^2 + z^2)^2) for a unit m with m.z > 0
  * (Heitz 2014, eq. 85, multiplied through by cos^4). */

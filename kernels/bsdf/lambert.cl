@@ -4,7 +4,7 @@
 #ifndef FACET_BSDF_LAMBERT_CL
 #define FACET_BSDF_LAMBERT_CL
 
-#include "../util/math.cl"
+#include "kernels/util/math.cl"
 
 inline float3 lambert_eval(float3 albedo, float3 wo, float3 wi) {
     return (wo.z > 0.0f && wi.z > 0.0f) ? albedo * FC_INV_PI : (float3)(0.0f);

@@ -30,11 +30,11 @@
 #ifndef FACET_BSDF_MICROFACET_CL
 #define FACET_BSDF_MICROFACET_CL
 
-#include "../shared/material.h"
-#include "bsdf_sample.cl"
-#include "fresnel.cl"
-#include "geometry.cl"
-#include "ndf.cl"
+#include "kernels/shared/material_layout.h"
+#include "kernels/bsdf/bsdf_sample.cl"
+#include "kernels/bsdf/fresnel.cl"
+#include "kernels/bsdf/geometry.cl"
+#include "kernels/bsdf/ndf.cl"
 
 inline bool microfacet_is_mirror(const FcMaterial* m) {
     float2 a = ndf_alpha(m);

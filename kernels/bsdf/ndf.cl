@@ -12,11 +12,11 @@
 #ifndef FACET_BSDF_NDF_CL
 #define FACET_BSDF_NDF_CL
 
-#include "../shared/features.h"
-#include "../shared/material.h"
-#include "beckmann.cl"
-#include "blinn_phong_ndf.cl"
-#include "ggx.cl"
+#include "kernels/shared/feature_flags.h"
+#include "kernels/shared/material_layout.h"
+#include "kernels/bsdf/beckmann.cl"
+#include "kernels/bsdf/blinn_phong_ndf.cl"
+#include "kernels/bsdf/ggx.cl"
 
 /* The roughness along x and y: alpha_x/alpha_y, or Blinn-Phong's equivalent alpha. */
 inline float2 ndf_alpha(const FcMaterial* m) {

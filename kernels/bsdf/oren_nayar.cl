@@ -20,8 +20,8 @@
 #ifndef FACET_BSDF_OREN_NAYAR_CL
 #define FACET_BSDF_OREN_NAYAR_CL
 
-#include "../shared/material.h"
-#include "../util/math.cl"
+#include "kernels/shared/material_layout.h"
+#include "kernels/util/math.cl"
 
 /* Below this the larger cosine is clamped: both directions are then within 1e-7 rad
  * of the horizon, and f stays finite (f cos(theta_i) is bounded by rho/pi (A + B)). */

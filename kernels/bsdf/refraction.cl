@@ -5,7 +5,7 @@
 #ifndef FACET_BSDF_REFRACTION_CL
 #define FACET_BSDF_REFRACTION_CL
 
-#include "../util/math.cl"
+#include "kernels/util/math.cl"
 
 /* The relative index n_far / n_near for a direction on the side of cos_w:
  * eta above the surface (cos_w > 0), 1 / eta below it. */

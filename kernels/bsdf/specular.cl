@@ -3,13 +3,13 @@
 #ifndef FACET_BSDF_SPECULAR_CL
 #define FACET_BSDF_SPECULAR_CL
 
-#include "../shared/features.h"
-#include "../shared/material.h"
-#include "ashikhmin_shirley.cl"
-#include "blinn_phong.cl"
-#include "bsdf_sample.cl"
-#include "fresnel.cl"
-#include "microfacet.cl"
+#include "kernels/shared/feature_flags.h"
+#include "kernels/shared/material_layout.h"
+#include "kernels/bsdf/ashikhmin_shirley.cl"
+#include "kernels/bsdf/blinn_phong.cl"
+#include "kernels/bsdf/bsdf_sample.cl"
+#include "kernels/bsdf/fresnel.cl"
+#include "kernels/bsdf/microfacet.cl"
 
 inline float3 specular_eval(const FcMaterial* m, float3 wo, float3 wi) {
     switch (m->specular_model) {

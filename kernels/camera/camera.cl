@@ -1,11 +1,11 @@
 /* Camera rays: pinhole perspective and orthographic projections with a jittered
  * position inside the pixel (box filter). The camera layout is FcCamera in
- * kernels/shared/render.h. */
+ * kernels/shared/render_layout.h. */
 #ifndef FACET_CAMERA_CAMERA_CL
 #define FACET_CAMERA_CAMERA_CL
 
-#include "../shared/render.h"
-#include "../util/math.cl"
+#include "kernels/shared/render_layout.h"
+#include "kernels/util/math.cl"
 
 /* The ray through image position (x, y) in pixels, (0, 0) the top-left corner. */
 inline void camera_ray(__constant const FcCamera* cam, float x, float y, uint width, uint height,

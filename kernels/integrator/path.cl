@@ -17,11 +17,11 @@
 #ifndef FACET_INTEGRATOR_PATH_CL
 #define FACET_INTEGRATOR_PATH_CL
 
-#include "surface.cl"
-#include "../camera/camera.cl"
-#include "../lights/light.cl"
-#include "../bsdf/bsdf.cl"
-#include "../util/rng.cl"
+#include "kernels/integrator/surface.cl"
+#include "kernels/camera/camera.cl"
+#include "kernels/lights/light.cl"
+#include "kernels/bsdf/bsdf.cl"
+#include "kernels/util/rng.cl"
 
 
 /* Next-event estimation at surface `s` seen from direction wo: one light sample,

@@ -3,9 +3,9 @@
 #ifndef FACET_INTEGRATOR_SURFACE_CL
 #define FACET_INTEGRATOR_SURFACE_CL
 
-#include "../shared/all.h"
-#include "../trace/bvh.cl"
-#include "../util/frame.cl"
+#include "kernels/shared/all.h"
+#include "kernels/trace/bvh_traverse.cl"
+#include "kernels/util/frame.cl"
 
 typedef struct {
     float3 p;        /* hit point */

@@ -5,8 +5,8 @@
 #ifndef FACET_LIGHTS_AREA_CL
 #define FACET_LIGHTS_AREA_CL
 
-#include "../shared/scene.h"
-#include "../util/math.cl"
+#include "kernels/shared/scene_layout.h"
+#include "kernels/util/math.cl"
 
 /* Uniform point on a triangle (the square-root parameterisation, Turk 1990):
  * barycentrics of v1 and v2. */

@@ -1,7 +1,7 @@
 /* The environment light: radiance from infinitely far away, seen by escaping rays and
  * sampled by next-event estimation. Layout and direction convention: FcEnvironment in
- * kernels/shared/environment.h; the host side (loading, sanitising, the distribution) is
- * host/scene/environment.cpp; docs/environment.md explains the whole.
+ * kernels/shared/environment_layout.h; the host side (loading, sanitising, the distribution) is
+ * host/scene/environment_map.cpp; docs/environment.md explains the whole.
  *
  * - Constant environment (width == 0): radiance `scale` from every direction, sampled
  *   uniformly over the sphere, pdf 1 / (4 pi) (0 when the radiance is black).
@@ -22,8 +22,8 @@
 #ifndef FACET_LIGHTS_ENVIRONMENT_CL
 #define FACET_LIGHTS_ENVIRONMENT_CL
 
-#include "../shared/environment.h"
-#include "../util/math.cl"
+#include "kernels/shared/environment_layout.h"
+#include "kernels/util/math.cl"
 
 #define FC_INV_2PI 0.15915494309189533577f
 #define FC_INV_4PI 0.07957747154594766788f

@@ -5,10 +5,10 @@
 #ifndef FACET_LIGHTS_LIGHT_CL
 #define FACET_LIGHTS_LIGHT_CL
 
-#include "../integrator/scene_view.cl"
-#include "area.cl"
-#include "environment.cl"
-#include "punctual.cl"
+#include "kernels/scene/scene_view.cl"
+#include "kernels/lights/area.cl"
+#include "kernels/lights/environment.cl"
+#include "kernels/lights/punctual.cl"
 
 typedef struct {
     float3 wi;      /* unit direction from the shading point to the light */

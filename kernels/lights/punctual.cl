@@ -7,8 +7,8 @@
 #ifndef FACET_LIGHTS_PUNCTUAL_CL
 #define FACET_LIGHTS_PUNCTUAL_CL
 
-#include "../shared/scene.h"
-#include "../util/math.cl"
+#include "kernels/shared/scene_layout.h"
+#include "kernels/util/math.cl"
 
 /* Spot falloff: 1 inside cos_inner, 0 outside cos_outer, a smoothstep between. */
 inline float spot_falloff(__global const FcLight* l, float cos_axis) {

@@ -1,10 +1,10 @@
 /* Every layout shared by host and kernels. */
 #ifndef FACET_SHARED_ALL_H
 #define FACET_SHARED_ALL_H
-#include "types.h"
-#include "bvh.h"
-#include "scene.h"
-#include "render.h"
-#include "environment.h"
-#include "features.h"
+#include "kernels/shared/types.h"
+#include "kernels/shared/bvh_layout.h"
+#include "kernels/shared/scene_layout.h"
+#include "kernels/shared/render_layout.h"
+#include "kernels/shared/environment_layout.h"
+#include "kernels/shared/feature_flags.h"
 #endif

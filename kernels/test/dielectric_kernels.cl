@@ -2,8 +2,8 @@
  * tests/dielectric_chi2_test.cpp): eval/pdf batches, sample-against-eval consistency
  * and directional albedos split into reflection and transmission. The chi-square
  * histograms use kernels/test/microfacet_kernels.cl (bsdf_sample / bsdf_pdf). */
-#include "../bsdf/bsdf.cl"
-#include "../util/rng.cl"
+#include "kernels/bsdf/bsdf.cl"
+#include "kernels/util/rng.cl"
 
 /* out[i] = (bsdf_eval(mats[i], wo[i], wi[i]), bsdf_pdf(...)). */
 __kernel void dl_eval(__global const FcMaterial* mats, __global const float4* wo, __global const float4* wi,

@@ -1,8 +1,8 @@
 /* Test kernels for tests/environment_test.cpp and tests/environment_chi2_test.cpp:
  * batches of env_sample / env_radiance / env_pdf, the chi-square binning of samples in
  * the map's texel grid, the rotation round trip and a throughput loop. */
-#include "../lights/environment.cl"
-#include "../util/rng.cl"
+#include "kernels/lights/environment.cl"
+#include "kernels/util/rng.cl"
 
 /* One sample per work-item: (dir, pdf) and radiance as returned by env_sample, and
  * (env_radiance, env_pdf) evaluated again at the sampled direction. */

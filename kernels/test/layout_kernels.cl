@@ -4,8 +4,8 @@
 #ifndef FACET_TEST_LAYOUT_KERNELS_CL
 #define FACET_TEST_LAYOUT_KERNELS_CL
 
-#include "../shared/all.h"
-#include "../shared/layout_fields.h"
+#include "kernels/shared/all.h"
+#include "kernels/shared/layout_fields.h"
 
 __kernel void report_layout(__global int* out) {
     if (get_global_id(0) != 0) return;

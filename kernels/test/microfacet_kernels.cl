@@ -7,9 +7,9 @@
  *   1  the NDF's normals, h      (ndf_sample / ndf_pdf)
  *   2  the specular lobe, wi     (specular_sample / specular_pdf)
  *   3  the whole BSDF, wi        (bsdf_sample / bsdf_pdf) */
-#include "../bsdf/bsdf.cl"
-#include "../bsdf/microfacet.cl"
-#include "../util/rng.cl"
+#include "kernels/bsdf/bsdf.cl"
+#include "kernels/bsdf/microfacet.cl"
+#include "kernels/util/rng.cl"
 
 #define MF_MODE_MICROFACET 0
 #define MF_MODE_NDF 1

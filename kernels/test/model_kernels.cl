@@ -4,8 +4,8 @@
 #ifndef FACET_TEST_MODEL_KERNELS_CL
 #define FACET_TEST_MODEL_KERNELS_CL
 
-#include "../bsdf/bsdf.cl"
-#include "../util/rng.cl"
+#include "kernels/bsdf/bsdf.cl"
+#include "kernels/util/rng.cl"
 
 /* out[4i..4i+2] = bsdf_eval(mats[i], wo_i, wi_i), out[4i+3] = bsdf_pdf;
  * dirs holds wo_i, wi_i as 6 floats per item. */

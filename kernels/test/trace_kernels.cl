@@ -1,6 +1,6 @@
 /* Test kernels for tests/bvh_test.cpp: the BVH traversal, and a brute-force loop over
  * every triangle with the same ray/triangle test to compare it against. */
-#include "../trace/bvh.cl"
+#include "kernels/trace/bvh_traverse.cl"
 
 /* origins[i].xyz, dirs[i].xyz, dirs[i].w = tmax. out[i] = (t, u, v, as_float(prim)),
  * prim = -1 and t = tmax on a miss; any_out[i] = trace_any's answer. */

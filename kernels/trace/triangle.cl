@@ -6,7 +6,7 @@
 #ifndef FACET_TRACE_TRIANGLE_CL
 #define FACET_TRACE_TRIANGLE_CL
 
-#include "../shared/bvh.h"
+#include "kernels/shared/bvh_layout.h"
 
 /* Per-ray part of the test (section 3 of the paper). */
 typedef struct {

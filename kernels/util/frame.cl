@@ -4,7 +4,7 @@
 #ifndef FACET_UTIL_FRAME_CL
 #define FACET_UTIL_FRAME_CL
 
-#include "math.cl"
+#include "kernels/util/math.cl"
 
 typedef struct {
     float3 s;

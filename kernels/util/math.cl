@@ -2,7 +2,7 @@
 #ifndef FACET_UTIL_MATH_CL
 #define FACET_UTIL_MATH_CL
 
-#include "../shared/types.h"
+#include "kernels/shared/types.h"
 
 #define FC_PI 3.14159265358979323846f
 #define FC_INV_PI 0.31830988618379067154f

@@ -10,7 +10,7 @@
 #ifndef FACET_UTIL_RNG_CL
 #define FACET_UTIL_RNG_CL
 
-#include "math.cl"
+#include "kernels/util/math.cl"
 
 typedef struct {
     ulong state;

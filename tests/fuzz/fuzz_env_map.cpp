@@ -6,7 +6,7 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "harnesses.hpp"
+#include "tests/fuzz/harnesses.hpp"
 
 // One thread: OpenEXR's thread pool costs more than these tiny images take to decode,
 // and findings reproduce the same way every time.

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "harnesses.hpp"
+#include "tests/fuzz/harnesses.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     facet::fuzz::obj_mtl(std::string_view(reinterpret_cast<const char*>(data), size));

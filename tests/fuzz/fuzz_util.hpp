@@ -21,8 +21,8 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/material.hpp"
-#include "scene/scene.hpp"
+#include "host/scene/material.hpp"
+#include "host/scene/scene.hpp"
 
 namespace facet::fuzz {
 

@@ -16,11 +16,11 @@
 #include <OpenImageIO/imageio.h>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "error.hpp"
-#include "film/image_io.hpp"
-#include "fuzz_util.hpp"
-#include "scene/environment.hpp"
-#include "scene/load.hpp"
+#include "host/error.hpp"
+#include "host/film/image_io.hpp"
+#include "tests/fuzz/fuzz_util.hpp"
+#include "host/scene/environment_map.hpp"
+#include "host/scene/load.hpp"
 
 namespace facet::fuzz {
 

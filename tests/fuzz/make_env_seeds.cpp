@@ -11,8 +11,8 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "error.hpp"
-#include "film/image_io.hpp"
+#include "host/error.hpp"
+#include "host/film/image_io.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
 /* BVH and triangle layouts uploaded by the host (host/bvh/) and traversed by
- * kernels/trace/bvh.cl.
+ * kernels/trace/bvh_traverse.cl.
  *
  * The tree is 4-wide: the host builds a binary SAH tree and collapses every node with
  * its children's children into one node of up to four children (depth halves). A node
@@ -10,10 +10,10 @@
  * a leaf (count > 0, index = first triangle in the reordered triangle array), or an
  * empty slot (count == 0, index == 0, inverted box lo = +inf, hi = -inf, which the slab
  * test never reports as hit; index 0 is the root, never a child). */
-#ifndef FACET_SHARED_BVH_H
-#define FACET_SHARED_BVH_H
+#ifndef FACET_SHARED_BVH_LAYOUT_H
+#define FACET_SHARED_BVH_LAYOUT_H
 
-#include "types.h"
+#include "kernels/shared/types.h"
 
 typedef struct FcBvhNode {
     float lo_x[4];
@@ -42,6 +42,8 @@ typedef struct FcTriangle {
 #define FC_BVH_STACK_SIZE 64
 
 FC_STATIC_ASSERT(sizeof(FcBvhNode) == 128, "FcBvhNode is 128 bytes");
+FC_STATIC_ASSERT(offsetof(FcBvhNode, hi_x) == 48 && offsetof(FcBvhNode, index) == 96, "FcBvhNode offsets");
 FC_STATIC_ASSERT(sizeof(FcTriangle) == 48, "FcTriangle is 48 bytes");
+FC_STATIC_ASSERT(offsetof(FcTriangle, v1) == 16 && offsetof(FcTriangle, v2) == 32, "FcTriangle offsets");
 
 #endif

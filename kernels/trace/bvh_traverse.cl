@@ -1,4 +1,4 @@
-/* BVH traversal over the 4-wide nodes of shared/bvh.h: one node fetch tests all four
+/* BVH traversal over the 4-wide nodes of shared/bvh_layout.h: one node fetch tests all four
  * child boxes with float4 arithmetic, leaves are intersected at once and the nearest
  * inner child is visited next, the others pushed farthest first on a small private
  * stack (Aila & Laine 2009, "Understanding the efficiency of ray traversal on GPUs";
@@ -8,9 +8,9 @@
 #ifndef FACET_TRACE_BVH_CL
 #define FACET_TRACE_BVH_CL
 
-#include "../shared/bvh.h"
-#include "ray.cl"
-#include "triangle.cl"
+#include "kernels/shared/bvh_layout.h"
+#include "kernels/trace/ray.cl"
+#include "kernels/trace/triangle.cl"
 
 typedef struct {
     float t;

@@ -15,10 +15,10 @@
  * The dielectric reads ior as n_below / n_above (inside over outside), the microfacet
  * terms as the microfacet lobe does, and `specular` as a transmittance applied at each
  * refraction (kernels/bsdf/dielectric.cl). */
-#ifndef FACET_SHARED_MATERIAL_H
-#define FACET_SHARED_MATERIAL_H
+#ifndef FACET_SHARED_MATERIAL_LAYOUT_H
+#define FACET_SHARED_MATERIAL_LAYOUT_H
 
-#include "types.h"
+#include "kernels/shared/types.h"
 
 /* Diffuse lobes (FcMaterial.diffuse_model). */
 #define FC_DIFFUSE_NONE 0
@@ -97,5 +97,6 @@ typedef struct FcMaterial {
 } FcMaterial;
 
 FC_STATIC_ASSERT(sizeof(FcMaterial) == 112, "FcMaterial is 112 bytes");
+FC_STATIC_ASSERT(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104, "FcMaterial offsets");
 
 #endif

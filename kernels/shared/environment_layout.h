@@ -11,12 +11,12 @@
  * [x/W, (x+1)/W) x [y/H, (y+1)/H); lookups are nearest-texel. Radiance = texel * scale.
  * Sampling uses a piecewise-constant 2D distribution over luminance x sin(theta):
  * a marginal cdf over rows (H + 1 floats) then a conditional cdf per row (W + 1 floats
- * each) in the distribution buffer (host/scene/environment.hpp documents the layout;
+ * each) in the distribution buffer (host/scene/environment_map.hpp documents the layout;
  * docs/environment.md the whole). */
-#ifndef FACET_SHARED_ENVIRONMENT_H
-#define FACET_SHARED_ENVIRONMENT_H
+#ifndef FACET_SHARED_ENVIRONMENT_LAYOUT_H
+#define FACET_SHARED_ENVIRONMENT_LAYOUT_H
 
-#include "types.h"
+#include "kernels/shared/types.h"
 
 typedef struct FcEnvironment {
     fc_int width;        /* 0: no map (constant radiance, or no environment at all) */

@@ -4,8 +4,8 @@
  * with no prelude is the generic one (every feature, chosen at run time), the
  * reference `--generic` renders with. Add a feature here, in FC_FEATURE_LIST, and in
  * features.cpp's scene analysis; tests/features_test.cpp exercises every one. */
-#ifndef FACET_SHARED_FEATURES_H
-#define FACET_SHARED_FEATURES_H
+#ifndef FACET_SHARED_FEATURE_FLAGS_H
+#define FACET_SHARED_FEATURE_FLAGS_H
 
 /* X(name, bit) for every feature. */
 #define FC_FEATURE_LIST(X)        \

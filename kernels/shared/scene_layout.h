@@ -3,8 +3,8 @@
 #ifndef FACET_SHARED_SCENE_H
 #define FACET_SHARED_SCENE_H
 
-#include "types.h"
-#include "material.h"
+#include "kernels/shared/types.h"
+#include "kernels/shared/material_layout.h"
 
 /* Per-triangle shading data: vertex normals (equal to the face normal for flat
  * meshes), the material, and the triangle's index in the light array (-1 if the
@@ -36,7 +36,7 @@ typedef struct FcTriShading {
  *   there, so the irradiance is pi * color / d^2.
  * - Directional light: `e1` is the unit direction the light travels; `color` is
  *   c_light (irradiance pi * color at normal incidence).
- * - Environment: the one FcEnvironment of the scene (kernels/shared/environment.h).
+ * - Environment: the one FcEnvironment of the scene (kernels/shared/environment_layout.h).
  * `pick_pdf` is the probability that light selection picks this light, in proportion to
  * an estimate of its power (host/scene/lights.cpp). */
 typedef struct FcLight {
@@ -54,6 +54,8 @@ typedef struct FcLight {
 } FcLight;
 
 FC_STATIC_ASSERT(sizeof(FcTriShading) == 48, "FcTriShading is 48 bytes");
+FC_STATIC_ASSERT(offsetof(FcTriShading, n1) == 16 && offsetof(FcTriShading, n2) == 32, "FcTriShading offsets");
 FC_STATIC_ASSERT(sizeof(FcLight) == 80, "FcLight is 80 bytes");
+FC_STATIC_ASSERT(offsetof(FcLight, e1) == 16 && offsetof(FcLight, pick_pdf) == 60, "FcLight offsets");
 
 #endif

@@ -1,14 +1,14 @@
 // Environment maps: loading, sanitising and the sampling distribution
 // (environment.hpp documents the buffers, docs/environment.md the reasons).
-#include "scene/environment.hpp"
+#include "host/scene/environment_map.hpp"
 
 #include <cmath>
 #include <numbers>
 
 #include <fmt/format.h>
 
-#include "error.hpp"
-#include "film/image_io.hpp"
+#include "host/error.hpp"
+#include "host/film/image_io.hpp"
 
 namespace facet {
 namespace {

@@ -3,8 +3,8 @@
 #ifndef FACET_SHARED_RENDER_H
 #define FACET_SHARED_RENDER_H
 
-#include "types.h"
-#include "environment.h"
+#include "kernels/shared/types.h"
+#include "kernels/shared/environment_layout.h"
 
 #define FC_PROJECTION_PERSPECTIVE 0
 #define FC_PROJECTION_ORTHOGRAPHIC 1
@@ -53,6 +53,8 @@ typedef struct FcRenderParams {
 } FcRenderParams;
 
 FC_STATIC_ASSERT(sizeof(FcCamera) == 64, "FcCamera is 64 bytes");
+FC_STATIC_ASSERT(offsetof(FcCamera, up) == 48, "FcCamera offsets");
 FC_STATIC_ASSERT(sizeof(FcRenderParams) == 192, "FcRenderParams is 192 bytes");
+FC_STATIC_ASSERT(offsetof(FcRenderParams, width) == 64 && offsetof(FcRenderParams, row_count) == 100, "FcRenderParams offsets");
 
 #endif

@@ -1,7 +1,7 @@
 // The environment light on the host: constant radiance or an equirectangular map read
 // through OpenImageIO (EXR, Radiance .hdr, anything read_image takes), sanitised, with
 // the sampling distribution the kernels use (kernels/lights/environment.cl). The
-// direction <-> texel convention is the comment of kernels/shared/environment.h;
+// direction <-> texel convention is the comment of kernels/shared/environment_layout.h;
 // docs/environment.md explains units, sanitising and the distribution.
 //
 // Buffers uploaded to the device:
@@ -24,7 +24,7 @@
 
 #include <glm/glm.hpp>
 
-#include "shared/environment.h"
+#include "kernels/shared/environment_layout.h"
 
 namespace facet {
 

@@ -1,9 +1,9 @@
 /* Everything a kernel needs to read the scene: the constant parameters and one
  * buffer per scene array (bound in host/render/renderer.cpp). */
-#ifndef FACET_INTEGRATOR_SCENE_VIEW_CL
-#define FACET_INTEGRATOR_SCENE_VIEW_CL
+#ifndef FACET_SCENE_SCENE_VIEW_CL
+#define FACET_SCENE_SCENE_VIEW_CL
 
-#include "../shared/all.h"
+#include "kernels/shared/all.h"
 
 typedef struct {
     __constant const FcRenderParams* params;
