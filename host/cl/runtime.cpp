@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "host/error.hpp"
+#include "host/film/safe_write.hpp"
 
 namespace facet {
 namespace {
@@ -148,19 +149,14 @@ std::vector<unsigned char> read_bytes(const std::string& path) {
 }
 
 void write_bytes_atomically(const std::string& path, const std::vector<unsigned char>& bytes) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    fs::create_directories(fs::path(path).parent_path(), ec);
-    // The temporary is private to this process, so two renders filling the same entry at once
-    // each write their own file and the last rename wins with a whole binary.
-    fs::path tmp = fs::path(path).string() + fmt::format(".tmp{}", ::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-        if (!out) return;   // a cache that cannot be written is no error
+    // A temporary private to this process, so two renders filling the same entry at once each
+    // write their own file and the last rename wins with a whole binary.
+    try {
+        write_bytes_safely(path, "program cache entry",
+                           std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    } catch (const Error&) {
+        // a cache that cannot be written is no error
     }
-    fs::rename(tmp, path, ec);
-    if (ec) fs::remove(tmp, ec);
 }
 
 // Builds from a cached binary; false when there is none or the driver refuses it.

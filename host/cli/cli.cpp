@@ -58,11 +58,19 @@ int run_cli(int argc, char** argv) {
         ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT},
                                                                         {"bsdf", FC_STRATEGY_BSDF}}));
     render->add_option("--device", opt.device, "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU)");
-    render->add_option("--out", opt.out, "Output EXR (a tone-mapped PNG is written beside it); default out/<scene>.exr");
+    render->add_option("--out", opt.out,
+                       "Output image, linear 32-bit float: .exr (or .hdr, .tif, .pfm); the tone-mapped PNG is written "
+                       "beside it with .png (so --out cannot be a .png); default out/<scene>.exr");
     render->add_option("--snapshot", opt.snapshot, "Write the image so far (and the report) every SECONDS")
         ->check(kFinite & CLI::PositiveNumber);
     render->add_option("--reference", opt.reference, "Reference image (EXR/HDR) to measure the error against, per pass");
     render->add_option("--report", opt.report, "Error-against-time report (CSV; .json summary and .svg plot beside it); default beside --out");
+    render->add_option("--film", opt.film,
+                       "Also save the film (the accumulated samples, docs/film-format.md) here at the end; without it "
+                       "the film is saved beside --out (.film) only when interrupted or when the image cannot be written");
+    render->add_option("--resume", opt.resume,
+                       "Continue the render saved in this film (same scene and settings; --spp and --time count its "
+                       "samples and time too)");
     render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops")->check(kFinite & CLI::Range(-30.0f, 30.0f));
     render->add_flag("--generic", opt.generic,
                      "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");

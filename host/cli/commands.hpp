@@ -17,6 +17,8 @@ struct RenderOptions {
     std::string out;
     std::string report;      // CSV; summary .json and plot .svg beside it
     std::string reference;   // image to measure the error against
+    std::string film;        // --film: the accumulated samples, saved at the end (docs/film-format.md)
+    std::string resume;      // --resume: a film to continue
     std::optional<double> snapshot;   // seconds between snapshots of the image so far
     float exposure = 0.0f;
     bool quiet = false;

@@ -17,8 +17,10 @@
 
 #include "host/bvh/bvh.hpp"
 #include "host/cli/commands.hpp"
+#include "host/cli/outputs.hpp"
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
+#include "host/film/film_state.hpp"
 #include "host/film/image_io.hpp"
 #include "host/render/features.hpp"
 #include "host/render/renderer.hpp"
@@ -48,12 +50,8 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
     if (opt.strategy) s.strategy = *opt.strategy;
 }
 
-std::string default_output(const std::string& scene_path) {
-    return (std::filesystem::path("out") / std::filesystem::path(scene_path).stem()).string() + ".exr";
-}
-
 void write_image(const std::string& out, const std::vector<float>& rgb, const Renderer& r, const Scene& scene,
-                 float exposure, double wall_s) {
+                 float exposure, double wall_s, bool with_png = true) {
     ImageMetadata meta;
     meta.ints.push_back({"facet:spp", int(r.stats().samples_per_pixel)});
     meta.ints.push_back({"facet:seed", int(scene.settings.seed)});
@@ -63,19 +61,63 @@ void write_image(const std::string& out, const std::vector<float>& rgb, const Re
     meta.strings.push_back({"facet:device", r.context().desc().platform + " / " + r.context().desc().name});
     meta.strings.push_back({"facet:scene", scene.source_path});
     write_exr(out, r.width(), r.height(), rgb, meta);
-    write_png(replace_extension(out, ".png"), r.width(), r.height(), rgb, exposure);
+    if (with_png) write_png(replace_extension(out, ".png"), r.width(), r.height(), rgb, exposure);
 }
 
-// Fails early, before any rendering, when `path` cannot be written.
-void check_writable(const std::string& path, const char* what) {
-    namespace fs = std::filesystem;
-    fs::path p(path);
-    std::error_code ec;
-    if (p.has_parent_path()) fs::create_directories(p.parent_path(), ec);
-    fs::path probe = p.parent_path() / (".tmp-probe-" + p.filename().string());
-    bool ok = static_cast<bool>(std::ofstream(probe));
-    fs::remove(probe, ec);
-    if (!ok) throw Error(fmt::format("{} {}: cannot write there", what, path));
+// Saves the film (film/film_state.hpp) to `path`; false, with the message printed, on failure.
+bool save_film(const std::string& path, const Renderer& r, const Scene& scene, std::uint64_t scene_hash) {
+    try {
+        write_film(path, make_film(scene, scene_hash, r.stats().samples_per_pixel, r.stats().render_seconds,
+                                   r.accumulation()));
+        return true;
+    } catch (const Error& e) {
+        fmt::print(stderr, "facet: error: {}\n", e.what());
+        return false;
+    }
+}
+
+// The final image, its PNG, and the film when asked (--film), interrupted or when the
+// image fails. An image or film that cannot be written where asked goes to a rescue path
+// (outputs.hpp), said on stderr, and false is returned: no finished sample is lost.
+bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const Renderer& r, const Scene& scene,
+                 std::uint64_t scene_hash, float exposure, double wall_s, bool interrupted) {
+    bool image_ok = true, png_ok = true;
+    try {
+        write_image(plan.image, rgb, r, scene, exposure, wall_s, false);
+    } catch (const Error& e) {
+        fmt::print(stderr, "facet: error: {}\n", e.what());
+        image_ok = false;
+    }
+    if (image_ok) {
+        try {
+            write_png(plan.png, r.width(), r.height(), rgb, exposure);
+        } catch (const Error& e) {
+            fmt::print(stderr, "facet: error: {} (the linear image {} was written)\n", e.what(), plan.image);
+            png_ok = false;
+        }
+    } else {
+        const std::string rescue = rescue_path(plan.image);
+        try {
+            write_image(rescue, rgb, r, scene, exposure, wall_s, true);
+            fmt::print(stderr, "facet: the image was saved to {} (and {}) instead\n", rescue,
+                       replace_extension(rescue, ".png"));
+        } catch (const Error& e) {
+            fmt::print(stderr, "facet: error: the image could not be saved to {} either: {}\n", rescue, e.what());
+        }
+    }
+    bool film_ok = true;
+    if (interrupted || plan.film_requested || !image_ok) {
+        std::string film = plan.film;
+        film_ok = save_film(film, r, scene, scene_hash);
+        if (!film_ok) {
+            film = rescue_path(plan.film);
+            if (!save_film(film, r, scene, scene_hash)) film.clear();
+        }
+        if (!film.empty())
+            fmt::print(stderr, "facet: the film ({} spp) is saved in {}{}; continue with --resume {}\n",
+                       r.stats().samples_per_pixel, film, film_ok ? "" : " instead", film);
+    }
+    return image_ok && png_ok && film_ok;
 }
 
 std::string fmt_seconds(double s) {
@@ -120,10 +162,16 @@ int run_render(const RenderOptions& opt) {
     Scene scene = load_scene(opt.scene);
     apply_overrides(opt, scene);
     for (const std::string& w : scene.warnings) fmt::print(stderr, "facet: warning: {}\n", w);
-    const std::string out = opt.out.empty() ? default_output(opt.scene) : opt.out;
-    const std::string report = opt.report.empty() ? replace_extension(out, ".csv") : opt.report;
-    check_writable(out, "--out");
-    check_writable(report, "--report");
+    const OutputPlan plan = plan_outputs(opt);
+    const std::string& out = plan.image;
+    const std::string& report = plan.report;
+    check_outputs(plan, opt);
+    const std::uint64_t scene_hash = film_scene_hash(scene);
+    std::optional<FilmState> resumed;
+    if (!opt.resume.empty()) {
+        resumed = read_film(opt.resume);
+        check_film_matches(*resumed, opt.resume, scene, scene_hash);
+    }
     std::optional<ImageRGB> reference;
     if (!opt.reference.empty()) reference = read_reference(opt.reference, scene.settings.width, scene.settings.height);
 
@@ -131,12 +179,14 @@ int run_render(const RenderOptions& opt) {
     Bvh bvh = build_bvh(scene.vertices);
     Renderer renderer(ctx, scene, bvh, opt.generic);
     const double compile_s = renderer.stats().compile_seconds;
+    if (resumed) renderer.restore(resumed->sums, resumed->spp, resumed->render_seconds);
     if (!opt.quiet) {
         fmt::print("device   {} / {}\n", ctx.desc().platform, ctx.desc().name);
         fmt::print("scene    {}: {} triangles, {} lights; BVH {} nodes in {:.3f} s\n", scene.source_path,
                    scene.triangle_count(), scene.lights.size(), bvh.stats.nodes, bvh.stats.build_seconds);
         fmt::print("kernels  {} program ({}), built in {:.2f} s\n", opt.generic ? "generic" : "specialised",
                    describe_features(renderer.stats().features), compile_s);
+        if (resumed) fmt::print("resumed  {} spp from {}\n", resumed->spp, opt.resume);
     }
 
     g_stop_signal.store(0);
@@ -196,7 +246,7 @@ int run_render(const RenderOptions& opt) {
 
     double rejected = 0.0;
     std::vector<float> rgb = renderer.image(&rejected);
-    write_image(out, rgb, renderer, scene, opt.exposure, since(start));
+    const bool written = write_final(plan, rgb, renderer, scene, scene_hash, opt.exposure, since(start), interrupted);
     const RenderStats& st = renderer.stats();
     ReportSummary summary;
     summary.scene = scene.source_path;
@@ -213,8 +263,9 @@ int run_render(const RenderOptions& opt) {
     summary.rejected_samples = rejected;
     fit_convergence(passes, summary);
     write_report_csv(report, passes);
-    write_report_json(replace_extension(report, ".json"), summary, passes);
-    write_error_plot_svg(replace_extension(report, ".svg"), passes, scene.source_path);
+    write_report_json(plan.report_json, summary, passes);
+    write_error_plot_svg(plan.report_svg, passes, scene.source_path);
+    if (!written) return kExitError;
 
     if (interrupted)
         fmt::print(stderr, "facet: interrupted; wrote the {} spp finished so far\n", st.samples_per_pixel);

@@ -1,6 +1,9 @@
 #include "host/film/image_io.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -11,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
+#include "host/film/safe_write.hpp"
 
 namespace facet {
 namespace {
@@ -22,32 +26,39 @@ using OIIO::ImageOutput;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
 
-// Writes through `write` into a temporary file beside `path`, then renames it.
-template <typename F>
-void write_atomically(const std::string& path, F&& write) {
-    fs::path target(path);
-    if (target.has_parent_path()) {
-        std::error_code ec;
-        fs::create_directories(target.parent_path(), ec);
-        if (ec) throw Error(fmt::format("{}: cannot create folder {}: {}", path, target.parent_path().string(), ec.message()));
-    }
-    // Keep the extension last: OpenImageIO picks the format from it.
-    fs::path tmp = target.parent_path() / (".tmp-" + target.filename().string());
-    write(tmp.string());
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw Error(fmt::format("{}: cannot move the written image into place: {}", path, ec.message()));
+// Writes `data` as `path`'s format into `tmp` (a temporary with the same extension).
+void write_pixels(const std::string& tmp, const ImageSpec& spec, TypeDesc type, const void* data,
+                  const std::string& path) {
+    std::unique_ptr<ImageOutput> out = ImageOutput::create(tmp);
+    if (!out) throw Error(fmt::format("{}: cannot write this image format: {}", path, OIIO::geterror()));
+    errno = 0;
+    if (!out->open(tmp, spec) || !out->write_image(type, data) || !out->close()) {
+        // OpenImageIO's message may lack the system's reason ("File output failed").
+        const int err = errno;
+        const bool told = err == ENOSPC || err == EDQUOT || err == EIO || err == EFBIG || err == EROFS;
+        throw Error(fmt::format("{}: writing the image failed: {}{}", path, out->geterror(),
+                                told ? fmt::format(" ({})", std::strerror(err)) : std::string()));
     }
 }
 
-void write_pixels(const std::string& path, const ImageSpec& spec, TypeDesc type, const void* data,
-                  const std::string& shown_path) {
-    std::unique_ptr<ImageOutput> out = ImageOutput::create(path);
-    if (!out) throw Error(fmt::format("{}: cannot write this image format: {}", shown_path, OIIO::geterror()));
-    if (!out->open(path, spec) || !out->write_image(type, data) || !out->close())
-        throw Error(fmt::format("{}: writing failed: {}", shown_path, out->geterror()));
+// Reads the written file back whole: an image writer that does not report a failed
+// write (a full disk) still cannot make a torn file pass for a good one.
+void verify_pixels(const std::string& tmp, const ImageSpec& spec, const std::string& path) {
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(tmp);
+    if (!in) throw Error(fmt::format("{}: the written image cannot be read back: {}", path, OIIO::geterror()));
+    const ImageSpec& got = in->spec();
+    if (got.width != spec.width || got.height != spec.height || got.nchannels != spec.nchannels)
+        throw Error(fmt::format("{}: the written image reads back as {}x{} with {} channels", path, got.width,
+                                got.height, got.nchannels));
+    std::vector<float> pixels(std::size_t(got.width) * std::size_t(got.height) * std::size_t(got.nchannels));
+    if (!in->read_image(0, 0, 0, got.nchannels, TypeDesc::FLOAT, pixels.data()))
+        throw Error(fmt::format("{}: the written image cannot be read back: {}", path, in->geterror()));
+}
+
+void write_image_file(const std::string& path, const ImageSpec& spec, TypeDesc type, const void* data) {
+    write_file_safely(
+        path, "image", [&](const std::string& tmp) { write_pixels(tmp, spec, type, data, path); },
+        [&](const std::string& tmp) { verify_pixels(tmp, spec, path); });
 }
 
 float srgb_encode(float linear) {
@@ -70,7 +81,7 @@ void write_exr(const std::string& path, int width, int height, const std::vector
     for (const auto& [k, v] : meta.strings) spec.attribute(k, v);
     for (const auto& [k, v] : meta.floats) spec.attribute(k, v);
     for (const auto& [k, v] : meta.ints) spec.attribute(k, v);
-    write_atomically(path, [&](const std::string& tmp) { write_pixels(tmp, spec, TypeDesc::FLOAT, rgb.data(), path); });
+    write_image_file(path, spec, TypeDesc::FLOAT, rgb.data());
 }
 
 void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure) {
@@ -84,7 +95,7 @@ void write_png(const std::string& path, int width, int height, const std::vector
     }
     ImageSpec spec(width, height, 3, TypeDesc::UINT8);
     spec.attribute("Software", "facet");
-    write_atomically(path, [&](const std::string& tmp) { write_pixels(tmp, spec, TypeDesc::UINT8, bytes.data(), path); });
+    write_image_file(path, spec, TypeDesc::UINT8, bytes.data());
 }
 
 ImageRGB read_image(const std::string& path) {
@@ -191,6 +202,29 @@ void check_image_header(const std::string& path) {
         throw Error(fmt::format("{}: the EXR header claims {} scanlines, whose offset table alone needs {} bytes, "
                                 "but the file has {}: it is truncated or corrupt",
                                 path, height, table, file_size));
+}
+
+bool can_write_float_image(const std::string& path, std::string* why) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    auto refuse = [&](std::string reason) {
+        if (why) *why = std::move(reason);
+        return false;
+    };
+    static const char* const kFloat[] = {".exr", ".hdr", ".tif", ".tiff", ".pfm"};
+    static const char* const k8Bit[] = {".png", ".jpg", ".jpeg", ".bmp", ".gif", ".webp", ".tga", ".ppm", ".pnm"};
+    if (ext.empty() || ext == ".")
+        return refuse("the name has no extension, so the image format is unknown: end it with .exr");
+    for (const char* e : k8Bit)
+        if (ext == e)
+            return refuse(fmt::format("a {} file holds 8-bit tone-mapped values, not the linear image: give the "
+                                      "EXR's name ({}); the tone-mapped PNG is written beside it",
+                                      ext, replace_extension(path, ".exr")));
+    if (std::find_if(std::begin(kFloat), std::end(kFloat), [&](const char* e) { return ext == e; }) == std::end(kFloat))
+        return refuse(fmt::format("'{}' is not an image format facet writes: use .exr (or .hdr, .tif, .pfm)", ext));
+    std::unique_ptr<ImageOutput> out = ImageOutput::create(path);
+    if (!out) return refuse(fmt::format("this OpenImageIO cannot write {} files: {}", ext, OIIO::geterror()));
+    return true;
 }
 
 std::string replace_extension(const std::string& path, const std::string& ext) {

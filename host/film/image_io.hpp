@@ -1,6 +1,6 @@
 // Image files through OpenImageIO: linear EXR with metadata, and a tone-mapped sRGB
-// PNG for viewing. Writes are atomic (a temporary file renamed into place), so a
-// snapshot never leaves a half-written image behind.
+// PNG for viewing. Writes go through write_file_safely (film/safe_write.hpp): the old
+// file or the complete, read-back new one, never a torn one.
 #pragma once
 
 #include <string>
@@ -16,7 +16,8 @@ struct ImageMetadata {
 };
 
 // Writes linear RGB floats (3 per pixel, top row first) as a 32-bit float EXR, so that
-// images can serve as references at full precision.
+// images can serve as references at full precision (another float format when the
+// extension says so: .hdr, .tif, .pfm, without the metadata EXR holds).
 void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb,
                const ImageMetadata& meta = {});
 
@@ -46,6 +47,10 @@ void check_image_header(const std::string& path);
 // Reads a reference image for a render of width x height: the size must match and
 // every texel must be finite, else facet::Error names the file and the problem.
 ImageRGB read_reference(const std::string& path, int width, int height);
+
+// Whether `path`'s extension names a format that holds linear floats and that this
+// OpenImageIO can write (.exr, .hdr, .tif, .tiff, .pfm); `why` receives the reason if not.
+bool can_write_float_image(const std::string& path, std::string* why = nullptr);
 
 // The path with its extension replaced ("out/a.exr", ".png" -> "out/a.png").
 std::string replace_extension(const std::string& path, const std::string& ext);

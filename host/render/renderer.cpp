@@ -115,6 +115,25 @@ void Renderer::reset() {
     stats_.render_seconds = 0.0;
 }
 
+std::vector<float> Renderer::accumulation() const {
+    std::vector<float> sums(2 * pixel_count() * 4);
+    cl_call("reading the image back", [&] {
+        ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data());
+    });
+    return sums;
+}
+
+void Renderer::restore(const std::vector<float>& sums, std::uint64_t spp, double render_seconds) {
+    if (sums.size() != 2 * pixel_count() * 4)
+        throw Error(fmt::format("a film of {} values does not fit a {}x{} image", sums.size(), width_, height_));
+    if (spp > 0xffffffffull) throw Error(fmt::format("a film of {} samples per pixel is beyond 2^32", spp));
+    cl_call("uploading the film", [&] {
+        ctx_.queue().enqueueWriteBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data());
+    });
+    stats_.samples_per_pixel = spp;
+    stats_.render_seconds = render_seconds;
+}
+
 void Renderer::render(std::uint32_t count, std::uint32_t max_rows_per_launch) {
     if (count == 0) return;
     auto start = Clock::now();

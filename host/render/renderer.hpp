@@ -51,6 +51,15 @@ public:
     // Clears the accumulated samples.
     void reset();
 
+    // The accumulation buffer as the kernel holds it, for a film (film/film_state.hpp):
+    // 2 * pixel_count() RGBA sums, the even-sample half then the odd-sample half.
+    std::vector<float> accumulation() const;
+
+    // Continues an earlier render: loads `sums` (from accumulation(), of the same scene
+    // and settings) holding `spp` samples per pixel rendered in `render_seconds`; the
+    // next render() starts at sample index `spp`.
+    void restore(const std::vector<float>& sums, std::uint64_t spp, double render_seconds);
+
     const RenderStats& stats() const { return stats_; }
     int width() const { return width_; }
     int height() const { return height_; }

@@ -1,7 +1,6 @@
 #include "host/report/report.hpp"
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -9,11 +8,10 @@
 #include <nlohmann/json.hpp>
 
 #include "host/error.hpp"
+#include "host/film/safe_write.hpp"
 
 namespace facet {
 namespace {
-
-namespace fs = std::filesystem;
 
 std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string(); }
 
@@ -22,20 +20,7 @@ const char* kHeader = "pass,spp,wall_s,render_s,compile_s,mse,rmse,relmse,est_ms
 }  // namespace
 
 void write_text_atomically(const std::string& path, const std::string& text) {
-    fs::path target(path);
-    std::error_code ec;
-    if (target.has_parent_path()) fs::create_directories(target.parent_path(), ec);
-    fs::path tmp = target.parent_path() / (".tmp-" + target.filename().string());
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-        if (!out) throw Error(fmt::format("{}: cannot write", path));
-    }
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw Error(fmt::format("{}: cannot move into place: {}", path, ec.message()));
-    }
+    write_bytes_safely(path, "report", text);
 }
 
 void fit_convergence(const std::vector<PassRecord>& passes, ReportSummary& summary) {

@@ -1,0 +1,202 @@
+#include "host/film/film_state.hpp"
+
+#include <bit>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "host/error.hpp"
+#include "host/film/safe_write.hpp"
+#include "host/scene/scene.hpp"
+
+namespace facet {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "the film format is little-endian (docs/film-format.md)");
+
+constexpr char kMagic[8] = {'F', 'A', 'C', 'E', 'T', 'F', 'L', 'M'};
+constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kMaxHeaderBytes = 1 << 20;
+constexpr int kMaxSide = 16384;
+
+struct Fnv {
+    std::uint64_t h = 1469598103934665603ull;
+    void bytes(const void* p, std::size_t n) {
+        const unsigned char* b = static_cast<const unsigned char*>(p);
+        for (std::size_t i = 0; i < n; ++i) {
+            h ^= b[i];
+            h *= 1099511628211ull;
+        }
+    }
+    template <typename T>
+    void vec(const std::vector<T>& v) {
+        std::uint64_t n = v.size();
+        bytes(&n, sizeof n);
+        bytes(v.data(), v.size() * sizeof(T));
+    }
+    template <typename T>
+    void value(const T& v) { bytes(&v, sizeof v); }
+};
+
+std::uint64_t payload_hash(const std::vector<float>& sums) {
+    Fnv f;
+    f.bytes(sums.data(), sums.size() * sizeof(float));
+    return f.h;
+}
+
+std::uint32_t u32_at(const char* p) {
+    std::uint32_t v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+std::uint64_t parse_hex(const std::string& s) {
+    std::size_t used = 0;
+    std::uint64_t v = std::stoull(s, &used, 16);
+    if (used != s.size()) throw std::invalid_argument(s);
+    return v;
+}
+
+}  // namespace
+
+std::uint64_t film_scene_hash(const Scene& scene) {
+    Fnv f;
+    f.vec(scene.vertices);
+    f.vec(scene.shading);
+    f.vec(scene.materials);
+    f.vec(scene.lights);
+    f.vec(scene.light_cdf);
+    f.value(scene.environment_light);
+    f.value(scene.environment.params);
+    f.vec(scene.environment.texels);
+    const CameraDesc& c = scene.camera;
+    for (const glm::vec3& v : {c.eye, c.target, c.up}) f.bytes(&v[0], 3 * sizeof(float));
+    f.value(c.projection);
+    f.value(c.fov_y_degrees);
+    f.value(c.ortho_height);
+    return f.h;
+}
+
+FilmState make_film(const Scene& scene, std::uint64_t scene_hash, std::uint64_t spp, double render_seconds,
+                    std::vector<float> sums) {
+    FilmState film;
+    film.scene_path = scene.source_path;
+    film.scene_hash = scene_hash;
+    film.width = scene.settings.width;
+    film.height = scene.settings.height;
+    film.seed = scene.settings.seed;
+    film.max_depth = scene.settings.max_depth;
+    film.rr_depth = scene.settings.rr_depth;
+    film.strategy = scene.settings.strategy;
+    film.spp = spp;
+    film.render_seconds = render_seconds;
+    film.sums = std::move(sums);
+    return film;
+}
+
+void write_film(const std::string& path, const FilmState& film) {
+    const std::size_t floats = 2 * std::size_t(film.width) * std::size_t(film.height) * 4;
+    if (film.width < 1 || film.height < 1 || film.sums.size() != floats)
+        throw Error(fmt::format("{}: a film of {}x{} pixels with {} values is inconsistent", path, film.width,
+                                film.height, film.sums.size()));
+    nlohmann::json h;
+    h["format"] = "facet film";
+    h["scene"] = film.scene_path;
+    h["scene_hash"] = fmt::format("{:016x}", film.scene_hash);
+    h["width"] = film.width;
+    h["height"] = film.height;
+    h["seed"] = film.seed;
+    h["max_depth"] = film.max_depth;
+    h["rr_depth"] = film.rr_depth;
+    h["strategy"] = film.strategy;
+    h["spp"] = film.spp;
+    h["render_seconds"] = film.render_seconds;
+    h["payload_floats"] = floats;
+    h["payload_fnv1a64"] = fmt::format("{:016x}", payload_hash(film.sums));
+    const std::string header = h.dump(1) + "\n";
+    std::string bytes(kMagic, sizeof kMagic);
+    const std::uint32_t words[2] = {kVersion, std::uint32_t(header.size())};
+    bytes.append(reinterpret_cast<const char*>(words), sizeof words);
+    bytes += header;
+    bytes.append(reinterpret_cast<const char*>(film.sums.data()), floats * sizeof(float));
+    write_bytes_safely(path, "film", bytes);
+}
+
+FilmState read_film(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw Error(fmt::format("{}: no such film", path));
+    if (!fs::is_regular_file(path, ec)) throw Error(fmt::format("{}: not a regular file, so not a film", path));
+    const std::uintmax_t size = fs::file_size(path, ec);
+    std::ifstream in(path, std::ios::binary);
+    if (ec || !in) throw Error(fmt::format("{}: cannot open the film", path));
+    char head[16];
+    if (size < sizeof head || !in.read(head, sizeof head) || std::memcmp(head, kMagic, sizeof kMagic) != 0)
+        throw Error(fmt::format("{}: not a facet film (docs/film-format.md)", path));
+    if (u32_at(head + 8) != kVersion)
+        throw Error(fmt::format("{}: film format version {}, but this facet reads version {}", path, u32_at(head + 8),
+                                kVersion));
+    const std::uint32_t header_bytes = u32_at(head + 12);
+    if (header_bytes > kMaxHeaderBytes || sizeof head + header_bytes > size)
+        throw Error(fmt::format("{}: the film's header claims {} bytes, but the file has {}: truncated or corrupt",
+                                path, header_bytes, size));
+    std::string header(header_bytes, '\0');
+    in.read(header.data(), header_bytes);
+    FilmState film;
+    std::uint64_t floats = 0, checksum = 0;
+    try {
+        nlohmann::json h = nlohmann::json::parse(header);
+        film.scene_path = h.at("scene").get<std::string>();
+        film.scene_hash = parse_hex(h.at("scene_hash").get<std::string>());
+        film.width = h.at("width").get<int>();
+        film.height = h.at("height").get<int>();
+        film.seed = h.at("seed").get<std::uint32_t>();
+        film.max_depth = h.at("max_depth").get<int>();
+        film.rr_depth = h.at("rr_depth").get<int>();
+        film.strategy = h.at("strategy").get<int>();
+        film.spp = h.at("spp").get<std::uint64_t>();
+        film.render_seconds = h.at("render_seconds").get<double>();
+        floats = h.at("payload_floats").get<std::uint64_t>();
+        checksum = parse_hex(h.at("payload_fnv1a64").get<std::string>());
+    } catch (const std::exception& e) {
+        throw Error(fmt::format("{}: the film's header is malformed: {}", path, e.what()));
+    }
+    if (film.width < 1 || film.height < 1 || film.width > kMaxSide || film.height > kMaxSide)
+        throw Error(fmt::format("{}: the film claims {}x{} pixels", path, film.width, film.height));
+    const std::uint64_t want = 2 * std::uint64_t(film.width) * std::uint64_t(film.height) * 4;
+    if (floats != want || size - sizeof head - header_bytes != want * sizeof(float))
+        throw Error(fmt::format("{}: the film of {}x{} pixels should hold {} bytes of samples, but has {}: "
+                                "truncated or corrupt",
+                                path, film.width, film.height, want * sizeof(float), size - sizeof head - header_bytes));
+    film.sums.resize(want);
+    if (!in.read(reinterpret_cast<char*>(film.sums.data()), std::streamsize(want * sizeof(float))))
+        throw Error(fmt::format("{}: cannot read the film's samples", path));
+    if (payload_hash(film.sums) != checksum)
+        throw Error(fmt::format("{}: the film's samples do not match its checksum: corrupt", path));
+    return film;
+}
+
+void check_film_matches(const FilmState& film, const std::string& film_path, const Scene& scene,
+                        std::uint64_t scene_hash) {
+    const RenderSettings& s = scene.settings;
+    auto refuse = [&](const std::string& what, const std::string& film_value, const std::string& now) {
+        throw Error(fmt::format("--resume {}: the film was rendered with {} {}, this render has {}: samples of "
+                                "different renders cannot be combined",
+                                film_path, what, film_value, now));
+    };
+    if (film.scene_hash != scene_hash)
+        refuse("another scene:", fmt::format("{} (hash {:016x})", film.scene_path, film.scene_hash),
+               fmt::format("{} (hash {:016x})", scene.source_path, scene_hash));
+    if (film.width != s.width || film.height != s.height)
+        refuse("a size of", fmt::format("{}x{}", film.width, film.height), fmt::format("{}x{}", s.width, s.height));
+    if (film.seed != s.seed) refuse("--seed", std::to_string(film.seed), std::to_string(s.seed));
+    if (film.max_depth != s.max_depth)
+        refuse("--max-depth", std::to_string(film.max_depth), std::to_string(s.max_depth));
+    if (film.rr_depth != s.rr_depth) refuse("Russian roulette depth", std::to_string(film.rr_depth), std::to_string(s.rr_depth));
+    if (film.strategy != s.strategy) refuse("--strategy", std::to_string(film.strategy), std::to_string(s.strategy));
+}
+
+}  // namespace facet
