@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 
@@ -76,6 +77,8 @@ bool save_film(const std::string& path, const Renderer& r, const Scene& scene, s
     }
 }
 
+bool save_film_or_rescue(const OutputPlan& plan, const Renderer& r, const Scene& scene, std::uint64_t scene_hash);
+
 // The final image, its PNG, and the film when asked (--film), interrupted or when the
 // image fails. An image or film that cannot be written where asked goes to a rescue path
 // (outputs.hpp), said on stderr, and false is returned: no finished sample is lost.
@@ -105,20 +108,52 @@ bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const Re
             fmt::print(stderr, "facet: error: the image could not be saved to {} either: {}\n", rescue, e.what());
         }
     }
-    bool film_ok = true;
-    if (interrupted || plan.film_requested || !image_ok) {
-        std::string film = plan.film;
-        film_ok = save_film(film, r, scene, scene_hash);
-        if (!film_ok) {
-            film = rescue_path(plan.film);
-            if (!save_film(film, r, scene, scene_hash)) film.clear();
-        }
-        if (!film.empty())
-            fmt::print(stderr, "facet: the film ({} spp) is saved in {}{}; continue with --resume {}\n",
-                       r.stats().samples_per_pixel, film, film_ok ? "" : " instead", film);
-    }
+    const bool want_film = interrupted || plan.film_requested || !image_ok;
+    const bool film_ok = !want_film || save_film_or_rescue(plan, r, scene, scene_hash);
     return image_ok && png_ok && film_ok;
 }
+
+// Saves the film where planned, else at its rescue path, saying where; false when it
+// could not be saved where planned.
+bool save_film_or_rescue(const OutputPlan& plan, const Renderer& r, const Scene& scene, std::uint64_t scene_hash) {
+    std::string film = plan.film;
+    const bool ok = save_film(film, r, scene, scene_hash);
+    if (!ok) {
+        film = rescue_path(plan.film);
+        if (!save_film(film, r, scene, scene_hash)) film.clear();
+    }
+    if (!film.empty())
+        fmt::print(stderr, "facet: the film ({} spp) is saved in {}{}; continue with --resume {}\n",
+                   r.stats().samples_per_pixel, film, ok ? "" : " instead", film);
+    return ok;
+}
+
+// Saves the film when an error ends the render before its final write (a failed pass,
+// report or snapshot): the samples finished so far are not lost.
+class FilmOnError {
+public:
+    FilmOnError(const OutputPlan& plan, const Renderer& r, const Scene& scene, std::uint64_t scene_hash)
+        : plan_(plan), r_(r), scene_(scene), hash_(scene_hash), exceptions_(std::uncaught_exceptions()) {}
+    // The final write has saved what there is to save.
+    void disarm() { armed_ = false; }
+    ~FilmOnError() {
+        if (!armed_ || std::uncaught_exceptions() <= exceptions_ || r_.stats().samples_per_pixel == 0) return;
+        try {
+            save_film_or_rescue(plan_, r_, scene_, hash_);
+        } catch (...) {   // best effort while another error is on its way
+        }
+    }
+    FilmOnError(const FilmOnError&) = delete;
+    FilmOnError& operator=(const FilmOnError&) = delete;
+
+private:
+    const OutputPlan& plan_;
+    const Renderer& r_;
+    const Scene& scene_;
+    std::uint64_t hash_;
+    int exceptions_;
+    bool armed_ = true;
+};
 
 std::string fmt_seconds(double s) {
     if (!std::isfinite(s)) return "?";
@@ -180,6 +215,7 @@ int run_render(const RenderOptions& opt) {
     Renderer renderer(ctx, scene, bvh, opt.generic);
     const double compile_s = renderer.stats().compile_seconds;
     if (resumed) renderer.restore(resumed->sums, resumed->spp, resumed->render_seconds);
+    FilmOnError film_on_error(plan, renderer, scene, scene_hash);
     if (!opt.quiet) {
         fmt::print("device   {} / {}\n", ctx.desc().platform, ctx.desc().name);
         fmt::print("scene    {}: {} triangles, {} lights; BVH {} nodes in {:.3f} s\n", scene.source_path,
@@ -247,6 +283,7 @@ int run_render(const RenderOptions& opt) {
     double rejected = 0.0;
     std::vector<float> rgb = renderer.image(&rejected);
     const bool written = write_final(plan, rgb, renderer, scene, scene_hash, opt.exposure, since(start), interrupted);
+    film_on_error.disarm();
     const RenderStats& st = renderer.stats();
     ReportSummary summary;
     summary.scene = scene.source_path;

@@ -196,7 +196,11 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
     if (film.max_depth != s.max_depth)
         refuse("--max-depth", std::to_string(film.max_depth), std::to_string(s.max_depth));
     if (film.rr_depth != s.rr_depth) refuse("Russian roulette depth", std::to_string(film.rr_depth), std::to_string(s.rr_depth));
-    if (film.strategy != s.strategy) refuse("--strategy", std::to_string(film.strategy), std::to_string(s.strategy));
+    auto strategy = [](int v) {
+        return v == FC_STRATEGY_MIS ? std::string("mis") : v == FC_STRATEGY_LIGHT ? std::string("light")
+             : v == FC_STRATEGY_BSDF ? std::string("bsdf") : std::to_string(v);
+    };
+    if (film.strategy != s.strategy) refuse("--strategy", strategy(film.strategy), strategy(s.strategy));
 }
 
 }  // namespace facet

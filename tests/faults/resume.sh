@@ -70,5 +70,23 @@ if [ -n "$spp" ]; then
         --resume "$tmp/int/i.film" --out "$tmp/int/i.exr"
 fi
 
+# An error during the render (the report's folder turns into a file): exit 1, the film
+# of the samples so far is saved beside --out.
+mkdir -p "$tmp/err/rep"
+"$FACET" render "$scene" "${opts[@]}" --spp 1000000 --time 60 --out "$tmp/err/e.exr" --report "$tmp/err/rep/r.csv" \
+    >"$tmp/err.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+    [ -s "$tmp/err/rep/r.csv" ] && break
+    sleep 0.1
+done
+rm -rf "$tmp/err/rep" && printf 'x' >"$tmp/err/rep"
+status=0
+wait "$pid" || status=$?
+cp "$tmp/err.log" "$tmp/log"
+check error-exit-1 [ "$status" -eq 1 ]
+check error-names-report grep -q "rep/r\.csv" "$tmp/log"
+check error-film-saved eval 'test -s "$tmp/err/e.film" && grep -qF -- "--resume $tmp/err/e.film" "$tmp/log"'
+
 check no-temporaries-left no_temporaries "$tmp" "$tmp/int"
 finish
