@@ -73,14 +73,14 @@ fi
 # An error during the render (the report's folder turns into a file): exit 1, the film
 # of the samples so far is saved beside --out.
 mkdir -p "$tmp/err/rep"
-"$FACET" render "$scene" "${opts[@]}" --spp 1000000 --time 60 --out "$tmp/err/e.exr" --report "$tmp/err/rep/r.csv" \
+"$FACET" render "$scene" "${opts[@]}" --spp 1000000 --time 20 --out "$tmp/err/e.exr" --report "$tmp/err/rep/r.csv" \
     >"$tmp/err.log" 2>&1 &
 pid=$!
 for _ in $(seq 1 600); do
     [ -s "$tmp/err/rep/r.csv" ] && break
     sleep 0.1
 done
-rm -rf "$tmp/err/rep" && printf 'x' >"$tmp/err/rep"
+mv "$tmp/err/rep" "$tmp/err/rep.gone" && printf x >"$tmp/err/rep"   # mv: atomic, unlike rm -r
 status=0
 wait "$pid" || status=$?
 cp "$tmp/err.log" "$tmp/log"
