@@ -1,6 +1,6 @@
-// `facet render SCENE`: progressive rendering. Passes start at one sample per pixel
-// and grow geometrically; each launch is kept short (row bands) so a GPU display
-// watchdog never fires. After every pass: progress, the error against a reference
+// `facet render SCENE`: progressive rendering through the driver in
+// render/progressive.hpp (passes that grow geometrically, launches kept short so a GPU
+// display watchdog never fires). After every pass: progress, the error against a reference
 // and/or the half-buffer estimate, and the CSV report; snapshots on request; on
 // SIGINT/SIGTERM the current pass ends and everything is written (exit 130).
 #include <unistd.h>
@@ -21,6 +21,7 @@
 #include "host/film/error_metrics.hpp"
 #include "host/film/image_io.hpp"
 #include "host/render/features.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/report/report.hpp"
 #include "host/scene/load.hpp"
@@ -35,8 +36,6 @@ std::atomic<int> g_stop_signal{0};
 extern "C" void on_stop_signal(int sig) { g_stop_signal.store(sig); }
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-constexpr double kMaxLaunchSeconds = 0.25;   // per kernel launch (GPU watchdogs kill ~2 s)
 
 void apply_overrides(const RenderOptions& opt, Scene& scene) {
     RenderSettings& s = scene.settings;
@@ -146,28 +145,17 @@ int run_render(const RenderOptions& opt) {
     std::vector<PassRecord> passes;
     const std::uint64_t target = std::uint64_t(scene.settings.spp);
     const double pixels = double(renderer.pixel_count());
-    std::uint32_t pass_samples = 1;
     double last_snapshot = 0.0;
-    while (renderer.stats().samples_per_pixel < target && g_stop_signal.load() == 0) {
-        const RenderStats& st = renderer.stats();
-        if (opt.time_limit && st.render_seconds >= *opt.time_limit) break;
-        // Samples this pass: the schedule's, no more than the target or the time left allows.
-        std::uint64_t n = std::min<std::uint64_t>(pass_samples, target - st.samples_per_pixel);
-        double per_sample = st.samples_per_pixel ? st.render_seconds / double(st.samples_per_pixel) : 0.0;
-        if (opt.time_limit && per_sample > 0)
-            n = std::clamp<std::uint64_t>(std::uint64_t((*opt.time_limit - st.render_seconds) / per_sample), 1, n);
-        // Rows per launch so that no launch runs longer than kMaxLaunchSeconds.
-        double pass_estimate = per_sample * double(n);
-        std::uint32_t rows = pass_estimate > kMaxLaunchSeconds
-            ? std::max<std::uint32_t>(1, std::uint32_t(scene.settings.height * kMaxLaunchSeconds / pass_estimate))
-            : 0;
-        renderer.render(std::uint32_t(n), rows);
-
+    ProgressiveOptions po;
+    po.target_spp = target;
+    po.time_limit_s = opt.time_limit;
+    po.stop = [] { return g_stop_signal.load() != 0; };
+    po.on_pass = [&](const PassDone& d) {
         PassRecord p;
-        p.pass = int(passes.size()) + 1;
-        p.spp = st.samples_per_pixel;
+        p.pass = d.pass;
+        p.spp = d.spp;
         p.wall_s = since(start);
-        p.render_s = st.render_seconds;
+        p.render_s = renderer.stats().render_seconds;
         p.compile_s = compile_s;
         Renderer::Halves h = renderer.halves();
         p.estimate = estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]);
@@ -175,21 +163,14 @@ int run_render(const RenderOptions& opt) {
         passes.push_back(p);
         write_report_csv(report, passes);
 
-        double rate_spp = double(p.spp) / std::max(p.render_s, 1e-9);
-        double remaining = double(target - p.spp) / rate_spp;
-        if (opt.time_limit) remaining = std::min(remaining, std::max(0.0, *opt.time_limit - p.render_s));
-        bool last = p.spp >= target || (opt.time_limit && p.render_s >= *opt.time_limit) || g_stop_signal.load();
-        progress.update(p, target, remaining, rate_spp * pixels * 1e-6, last);
-
-        if (opt.snapshot && p.wall_s - last_snapshot >= *opt.snapshot && !last) {
+        const double rate_spp = double(p.spp) / std::max(p.render_s, 1e-9);
+        progress.update(p, target, d.remaining_s, rate_spp * pixels * 1e-6, d.last);
+        if (opt.snapshot && p.wall_s - last_snapshot >= *opt.snapshot && !d.last) {
             write_image(out, renderer.image(), renderer, scene, opt.exposure, p.wall_s);
             last_snapshot = p.wall_s;
         }
-        // Next pass: about a tenth of the time so far (log-spaced error points), at
-        // most twice the samples, at least 50 ms and at most 2 s of work.
-        double want_s = std::clamp(0.1 * p.render_s, 0.05, 2.0);
-        pass_samples = std::uint32_t(std::clamp(want_s * rate_spp, 1.0, 2.0 * double(n)));
-    }
+    };
+    render_progressive(renderer, po);
     const bool interrupted = g_stop_signal.load() != 0;
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
