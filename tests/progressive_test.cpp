@@ -3,6 +3,7 @@
 // driver on the real renderer (PoCL).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 #include <vector>
@@ -78,28 +79,49 @@ TEST(Progressive, RemainingTime) {
 }
 
 TEST(Progressive, RowsPerLaunchFromSpeed) {
-    // 1 us a sample, 1000 pixels a row, 4 samples: 4 ms a row, 62 rows in 0.25 s.
-    EXPECT_EQ(rows_per_launch(1e-6, 1000, 1000, 4), 62u);
-    EXPECT_EQ(rows_per_launch(1e-6, 1000, 50, 4), 50u);       // the whole image fits
-    EXPECT_EQ(rows_per_launch(1e-3, 1000, 1000, 4), 1u);      // a row is too long: one row
+    // 1 ms for one sample over a row: 4 samples are 4 ms a row, 62 rows in 0.25 s.
+    std::vector<double> cost(1000, 1e-3);
+    EXPECT_EQ(rows_per_launch(cost, 0, 1000, 4, 1), 62u);
+    EXPECT_EQ(rows_per_launch(cost, 980, 1000, 4, 1), 20u);   // the rows left
+    std::vector<double> slow(1000, 1.0);                     // a row is too long: one row
+    EXPECT_EQ(rows_per_launch(slow, 0, 1000, 4, 100), 1u);
     ScheduleRules rules;
     rules.max_launch_s = 0.025;
-    EXPECT_EQ(rows_per_launch(1e-6, 1000, 1000, 4, rules), 6u);
+    EXPECT_EQ(rows_per_launch(cost, 0, 1000, 4, 1, rules), 6u);
+    EXPECT_EQ(rows_per_launch(std::vector<double>(50, 1e-3), 0, 1000, 4, 1), 50u);   // the whole image fits
+}
+
+TEST(Progressive, RowsPerLaunchFollowTheDearRows) {
+    // Cheap rows then dear ones: a launch stops where the measured cost fills it.
+    std::vector<double> cost(200, 1e-4);
+    for (std::size_t r = 100; r < 200; ++r) cost[r] = 1e-2;
+    EXPECT_EQ(rows_per_launch(cost, 90, 1000, 1, 1), 10u + 24u);   // 10 rows of 0.1 ms, 24 of 10 ms
 }
 
 TEST(Progressive, FirstLaunchIsAProbeBand) {
-    // No speed measured yet: about 4096 pixels, at least one row, at most the image.
-    EXPECT_EQ(rows_per_launch(0.0, 64, 1000, 1), 64u);
-    EXPECT_EQ(rows_per_launch(0.0, 2048, 2048, 1), 2u);
-    EXPECT_EQ(rows_per_launch(0.0, 100000, 10, 1), 1u);
-    EXPECT_EQ(rows_per_launch(0.0, 16, 16, 1), 16u);
+    // Nothing measured yet: about 4096 pixels, at least one row, at most the image.
+    EXPECT_EQ(rows_per_launch(std::vector<double>(1000, 0.0), 0, 64, 1, 0), 64u);
+    EXPECT_EQ(rows_per_launch(std::vector<double>(2048, 0.0), 0, 2048, 1, 0), 2u);
+    EXPECT_EQ(rows_per_launch(std::vector<double>(10, 0.0), 0, 100000, 1, 0), 1u);
+    EXPECT_EQ(rows_per_launch(std::vector<double>(16, 0.0), 0, 16, 1, 0), 16u);
+}
+
+TEST(Progressive, LaunchesIntoUnmeasuredRowsGrowAtMostTwofold) {
+    // The probe's rows were nearly free (sky, say): the rows below may not be.
+    std::vector<double> cost(2048, 0.0);
+    cost[0] = cost[1] = 1e-9;
+    EXPECT_EQ(rows_per_launch(cost, 2, 2048, 1, 2), 4u);
+    // Measured rows ahead are taken by their cost, without the growth cap.
+    std::fill(cost.begin(), cost.end(), 1e-9);
+    EXPECT_EQ(rows_per_launch(cost, 2, 2048, 1, 2), 2046u);
 }
 
 // A target whose launches sleep `us_per_sample` microseconds per pixel-sample, and
 // which records the rows each pass covered.
 class FakeTarget : public PassTarget {
 public:
-    FakeTarget(std::uint32_t w, std::uint32_t h, double us_per_sample) : w_(w), h_(h), us_(us_per_sample) {}
+    FakeTarget(std::uint32_t w, std::uint32_t h, double us_per_sample, std::uint32_t free_rows = 0)
+        : w_(w), h_(h), us_(us_per_sample), free_rows_(free_rows) {}
     std::uint32_t target_width() const override { return w_; }
     std::uint32_t target_height() const override { return h_; }
     std::uint64_t finished_spp() const override { return spp_; }
@@ -107,7 +129,8 @@ public:
         if (rows_.empty()) rows_.assign(h_, 0);
         for (std::uint32_t r = row_begin; r < row_begin + row_count; ++r) rows_[r] += count;
         ++launches;
-        std::this_thread::sleep_for(std::chrono::duration<double, std::micro>(us_ * w_ * row_count * count));
+        const std::uint32_t dear = row_begin + row_count - std::max(row_begin, std::min(free_rows_, row_begin + row_count));
+        std::this_thread::sleep_for(std::chrono::duration<double, std::micro>(us_ * w_ * dear * count));
     }
     void end_pass(std::uint32_t count, double) override {
         for (std::uint32_t r : rows_) EXPECT_EQ(r, spp_ + count) << "every row once per pass";
@@ -124,6 +147,7 @@ public:
 private:
     std::uint32_t w_, h_;
     double us_;
+    std::uint32_t free_rows_;   // the top rows cost nothing (sky)
     std::uint64_t spp_ = 0;
     std::vector<std::uint64_t> rows_;
 };
@@ -164,6 +188,18 @@ TEST(Progressive, EveryLaunchBoundedFromTheFirst) {
     EXPECT_EQ(r.spp, 2u);
     EXPECT_GT(r.launches, 6);
     EXPECT_LT(r.longest_launch_s, 0.05) << "sleeps overrun on a loaded machine, not 6x";
+}
+
+TEST(Progressive, CheapProbeRowsDoNotMakeALongLaunch) {
+    // The top 32 rows are free, the 480 below take 123 ms a sample per pixel: sized from
+    // the probe alone, the second launch would take all of it.
+    FakeTarget t(256, 512, 1.0, 32);
+    ProgressiveOptions opt;
+    opt.target_spp = 1;
+    opt.rules.max_launch_s = 0.005;
+    ProgressiveResult r = render_progressive(t, opt);
+    EXPECT_EQ(r.spp, 1u);
+    EXPECT_LT(r.longest_launch_s, 0.05);
 }
 
 TEST(Progressive, StopDuringTheFirstPassDropsIt) {

@@ -1,15 +1,12 @@
-// `facet render SCENE`: progressive rendering through the driver in
-// render/progressive.hpp (passes that grow geometrically, launches kept short so a GPU
-// display watchdog never fires). After every pass: progress, the error against a reference
-// and/or the half-buffer estimate, and the CSV report; snapshots on request; on
-// SIGINT/SIGTERM the current pass ends and everything is written (exit 130).
-#include <unistd.h>
-
+// `facet render SCENE`: load, render through the progressive driver
+// (render/progressive.hpp: passes that grow geometrically, every launch bounded), write.
+// After every pass: progress, the error against a reference and/or the half-buffer
+// estimate, and the CSV report; snapshots on request (best effort). On SIGINT, SIGTERM
+// or SIGHUP the current pass ends (the first is dropped) and everything is written
+// (exit 130); SIGPIPE is ignored (cli/stop_signals.hpp, cli/console.hpp).
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <fstream>
 
@@ -17,6 +14,9 @@
 
 #include "host/bvh/bvh.hpp"
 #include "host/cli/commands.hpp"
+#include "host/cli/console.hpp"
+#include "host/cli/progress.hpp"
+#include "host/cli/stop_signals.hpp"
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/film/image_io.hpp"
@@ -30,10 +30,6 @@ namespace facet {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::atomic<int> g_stop_signal{0};
-
-extern "C" void on_stop_signal(int sig) { g_stop_signal.store(sig); }
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -77,79 +73,27 @@ void check_writable(const std::string& path, const char* what) {
     if (!ok) throw Error(fmt::format("{} {}: cannot write there", what, path));
 }
 
-std::string fmt_seconds(double s) {
-    if (!std::isfinite(s)) return "?";
-    if (s < 60) return fmt::format("{:.1f}s", s);
-    if (s < 3600) return fmt::format("{}m{:02d}s", int(s) / 60, int(s) % 60);
-    return fmt::format("{}h{:02d}m", int(s) / 3600, (int(s) % 3600) / 60);
-}
-
-// The progress display: a live line on a terminal, plain lines (at most one every
-// two seconds, and the last) otherwise.
-class Progress {
-public:
-    explicit Progress(bool quiet) : quiet_(quiet), tty_(isatty(STDOUT_FILENO)) {}
-
-    void update(const PassRecord& p, std::uint64_t target, double remaining, double msamples, bool last) {
-        if (quiet_) return;
-        std::string err;
-        if (p.reference) err = fmt::format("  rmse {:.3e}", p.reference->rmse);
-        else if (std::isfinite(p.estimate.rmse)) err = fmt::format("  rmse~{:.3e} (est.)", p.estimate.rmse);
-        std::string line = fmt::format("pass {:3d}  {:>7}/{} spp  {:>7} elapsed  {:>7} left  {:7.3f} Msamples/s{}", p.pass,
-                                       p.spp, target, fmt_seconds(p.wall_s), fmt_seconds(remaining), msamples, err);
-        if (tty_) {
-            fmt::print("\r{:<120}", line);
-            if (last) fmt::print("\n");
-        } else if (last || p.wall_s - last_print_ >= 2.0 || p.pass == 1) {
-            fmt::print("{}\n", line);
-            last_print_ = p.wall_s;
-        }
-        std::fflush(stdout);
-    }
-
-private:
-    bool quiet_, tty_;
-    double last_print_ = -1e9;
-};
-
-}  // namespace
-
-int run_render(const RenderOptions& opt) {
-    auto start = Clock::now();
-    Scene scene = load_scene(opt.scene);
-    apply_overrides(opt, scene);
-    for (const std::string& w : scene.warnings) fmt::print(stderr, "facet: warning: {}\n", w);
-    const std::string out = opt.out.empty() ? default_output(opt.scene) : opt.out;
-    const std::string report = opt.report.empty() ? replace_extension(out, ".csv") : opt.report;
-    check_writable(out, "--out");
-    check_writable(report, "--report");
-    std::optional<ImageRGB> reference;
-    if (!opt.reference.empty()) reference = read_reference(opt.reference, scene.settings.width, scene.settings.height);
-
-    ClContext ctx = ClContext::create(opt.device);
-    Bvh bvh = build_bvh(scene.vertices);
-    Renderer renderer(ctx, scene, bvh, opt.generic);
-    const double compile_s = renderer.stats().compile_seconds;
-    if (!opt.quiet) {
-        fmt::print("device   {} / {}\n", ctx.desc().platform, ctx.desc().name);
-        fmt::print("scene    {}: {} triangles, {} lights; BVH {} nodes in {:.3f} s\n", scene.source_path,
-                   scene.triangle_count(), scene.lights.size(), bvh.stats.nodes, bvh.stats.build_seconds);
-        fmt::print("kernels  {} program ({}), built in {:.2f} s\n", opt.generic ? "generic" : "specialised",
-                   describe_features(renderer.stats().features), compile_s);
-    }
-
-    g_stop_signal.store(0);
-    std::signal(SIGINT, on_stop_signal);
-    std::signal(SIGTERM, on_stop_signal);
-    Progress progress(opt.quiet);
+// The passes, through the progressive driver: after each, the report row, the
+// progress line and (on request) a snapshot, which is best effort: a failed snapshot
+// is a warning and the render goes on.
+std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene, Renderer& renderer,
+                       const std::optional<ImageRGB>& reference, const std::string& out, const std::string& report,
+                       Clock::time_point start, const StopSignals& signals) {
     std::vector<PassRecord> passes;
+    Progress progress(opt.quiet);
     const std::uint64_t target = std::uint64_t(scene.settings.spp);
     const double pixels = double(renderer.pixel_count());
+    const double compile_s = renderer.stats().compile_seconds;
     double last_snapshot = 0.0;
     ProgressiveOptions po;
     po.target_spp = target;
     po.time_limit_s = opt.time_limit;
-    po.stop = [] { return g_stop_signal.load() != 0; };
+    po.stop = [&] { return signals.first() != 0; };
+    po.on_first_pass_estimate = [&](double first_pass_s) {
+        if (opt.time_limit && first_pass_s > *opt.time_limit)
+            say(stderr, "facet: warning: one sample per pixel takes about {}, more than --time {}; rendering one\n",
+                fmt_seconds(first_pass_s), *opt.time_limit);
+    };
     po.on_pass = [&](const PassDone& d) {
         PassRecord p;
         p.pass = d.pass;
@@ -166,19 +110,61 @@ int run_render(const RenderOptions& opt) {
         const double rate_spp = double(p.spp) / std::max(p.render_s, 1e-9);
         progress.update(p, target, d.remaining_s, rate_spp * pixels * 1e-6, d.last);
         if (opt.snapshot && p.wall_s - last_snapshot >= *opt.snapshot && !d.last) {
-            write_image(out, renderer.image(), renderer, scene, opt.exposure, p.wall_s);
             last_snapshot = p.wall_s;
+            try {
+                write_image(out, renderer.image(), renderer, scene, opt.exposure, p.wall_s);
+            } catch (const Error& e) {
+                say(stderr, "facet: warning: snapshot not written ({}); rendering goes on\n", e.what());
+            }
         }
     };
     render_progressive(renderer, po);
-    const bool interrupted = g_stop_signal.load() != 0;
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
+    return passes;
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& opt) {
+    auto start = Clock::now();
+    const SigpipeIgnored sigpipe_ignored;   // `facet render ... | head -1` renders on
+    Scene scene = load_scene(opt.scene);
+    apply_overrides(opt, scene);
+    for (const std::string& w : scene.warnings) say(stderr, "facet: warning: {}\n", w);
+    const std::string out = opt.out.empty() ? default_output(opt.scene) : opt.out;
+    const std::string report = opt.report.empty() ? replace_extension(out, ".csv") : opt.report;
+    check_writable(out, "--out");
+    check_writable(report, "--report");
+    std::optional<ImageRGB> reference;
+    if (!opt.reference.empty()) reference = read_reference(opt.reference, scene.settings.width, scene.settings.height);
+
+    ClContext ctx = ClContext::create(opt.device);
+    Bvh bvh = build_bvh(scene.vertices);
+    Renderer renderer(ctx, scene, bvh, opt.generic);
+    const double compile_s = renderer.stats().compile_seconds;
+    if (!opt.quiet) {
+        say(stdout, "device   {} / {}\n", ctx.desc().platform, ctx.desc().name);
+        say(stdout, "scene    {}: {} triangles, {} lights; BVH {} nodes in {:.3f} s\n", scene.source_path,
+            scene.triangle_count(), scene.lights.size(), bvh.stats.nodes, bvh.stats.build_seconds);
+        say(stdout, "kernels  {} program ({}), built in {:.2f} s\n", opt.generic ? "generic" : "specialised",
+            describe_features(renderer.stats().features), compile_s);
+    }
+
+    // Held until every file is written: a second Ctrl-C during the writes is counted, not fatal.
+    StopSignals signals;
+    std::vector<PassRecord> passes = render_loop(opt, scene, renderer, reference, out, report, start, signals);
+    const bool interrupted = signals.first() != 0;
+    const RenderStats& st = renderer.stats();
+    if (st.samples_per_pixel == 0) {
+        say(stderr, "facet: interrupted before the first pass finished; nothing written\n");
+        return kExitInterrupted;
+    }
+    if (interrupted)
+        say(stderr, "facet: interrupted; writing the {} spp finished so far (further Ctrl-C is ignored until written)\n",
+            st.samples_per_pixel);
 
     double rejected = 0.0;
     std::vector<float> rgb = renderer.image(&rejected);
     write_image(out, rgb, renderer, scene, opt.exposure, since(start));
-    const RenderStats& st = renderer.stats();
     ReportSummary summary;
     summary.scene = scene.source_path;
     summary.device = ctx.desc().platform + " / " + ctx.desc().name;
@@ -197,17 +183,15 @@ int run_render(const RenderOptions& opt) {
     write_report_json(replace_extension(report, ".json"), summary, passes);
     write_error_plot_svg(replace_extension(report, ".svg"), passes, scene.source_path);
 
-    if (interrupted)
-        fmt::print(stderr, "facet: interrupted; wrote the {} spp finished so far\n", st.samples_per_pixel);
+    if (interrupted) say(stderr, "facet: interrupted; wrote the {} spp finished so far\n", st.samples_per_pixel);
     if (rejected > 0)
-        fmt::print(stderr, "facet: warning: {} samples were NaN, infinite or negative and were dropped\n", rejected);
-    if (!summary.slope_warning.empty())
-        fmt::print(stderr, "facet: warning: {}\n", summary.slope_warning);
-    fmt::print("wrote    {} and {} ({} spp, {:.2f} s rendering, {:.2f} s in all)\n", out,
-               replace_extension(out, ".png"), st.samples_per_pixel, st.render_seconds, since(start));
+        say(stderr, "facet: warning: {} samples were NaN, infinite or negative and were dropped\n", rejected);
+    if (!summary.slope_warning.empty()) say(stderr, "facet: warning: {}\n", summary.slope_warning);
+    say(stdout, "wrote    {} and {} ({} spp, {:.2f} s rendering, {:.2f} s in all)\n", out,
+        replace_extension(out, ".png"), st.samples_per_pixel, st.render_seconds, since(start));
     if (!opt.quiet) {
-        fmt::print("report   {} (+ .json, .svg); RMSE ~ time^{:.2f} ({}{})\n", report, summary.slope,
-                   summary.slope_source, summary.slope_judged ? "" : ", too short a run to judge");
+        say(stdout, "report   {} (+ .json, .svg); RMSE ~ time^{:.2f} ({}{})\n", report, summary.slope,
+            summary.slope_source, summary.slope_judged ? "" : ", too short a run to judge");
     }
     return interrupted ? kExitInterrupted : kExitOk;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <vector>
 
 namespace facet {
 namespace {
@@ -21,7 +22,9 @@ ProgressiveResult render_progressive(PassTarget& target, const ProgressiveOption
     s.target_spp = opt.target_spp > start_spp ? opt.target_spp - start_spp : 0;
     s.time_limit_s = opt.time_limit_s;
     ProgressiveResult result;
-    double seconds_per_sample = 0.0;   // one sample at one pixel, from the latest launch
+    std::vector<double> row_cost(height, 0.0);   // seconds for one sample over each row, as measured
+    std::uint32_t last_rows = 0;
+    bool first_pass_estimated = false;
     while (!schedule_done(s) && !stop_requested() && width > 0 && height > 0) {
         const std::uint32_t n = opt.fixed_pass
             ? std::uint32_t(std::min<std::uint64_t>(opt.fixed_pass, s.target_spp - s.done_spp))
@@ -34,18 +37,26 @@ ProgressiveResult render_progressive(PassTarget& target, const ProgressiveOption
                 result.stopped = true;
                 return result;
             }
-            // The first launch is a probe band; later ones are sized from its speed.
-            const std::uint32_t rows =
-                std::min(rows_per_launch(seconds_per_sample, width, height, n, opt.rules), height - row);
+            // The first launch is a probe band; later ones are sized by the measured rows.
+            const std::uint32_t rows = rows_per_launch(row_cost, row, width, n, last_rows, opt.rules);
             const auto launch_start = Clock::now();
             target.launch(n, row, rows);
             const double launch_s = since(launch_start);
-            seconds_per_sample = launch_s / (double(rows) * double(width) * double(n));
+            for (std::uint32_t r = row; r < row + rows; ++r)
+                row_cost[r] = std::max(launch_s, 1e-9) / (double(rows) * double(n));
+            last_rows = rows;
             result.launches += 1;
             result.longest_launch_s = std::max(result.longest_launch_s, launch_s);
-            if (result.launches == 1 && opt.on_first_pass_estimate)
-                opt.on_first_pass_estimate(seconds_per_sample * double(width) * double(height) * double(n));
             row += rows;
+            // The first pass's length: measured rows as measured, the rest at their mean.
+            if (s.done_spp == 0 && row < height && opt.on_first_pass_estimate && !first_pass_estimated) {
+                const double done_s = since(pass_start);
+                const double estimate = done_s + done_s / double(row) * double(height - row);
+                if (!opt.time_limit_s || estimate > *opt.time_limit_s) {
+                    opt.on_first_pass_estimate(estimate);
+                    first_pass_estimated = true;
+                }
+            }
         }
         const double pass_s = since(pass_start);
         target.end_pass(n, pass_s);

@@ -35,7 +35,8 @@ struct ProgressiveOptions {
     // the first pass it drops that pass at once (there is nothing finished to keep).
     std::function<bool()> stop;
     std::function<void(const PassDone&)> on_pass;
-    // Once, after the first launch (the probe band): the first pass's seconds, estimated.
+    // At most once, during the first pass: its estimated seconds, once they exceed the
+    // time limit (without one: after the first launch).
     std::function<void(double first_pass_s)> on_first_pass_estimate;
 };
 

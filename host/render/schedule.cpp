@@ -27,16 +27,31 @@ std::uint32_t next_pass_samples(const ScheduleState& s, const ScheduleRules& rul
     return std::uint32_t(n);
 }
 
-std::uint32_t rows_per_launch(double seconds_per_sample, std::uint32_t width, std::uint32_t height,
-                              std::uint32_t samples, const ScheduleRules& rules) {
-    if (height == 0) return 0;
-    const double row_pixels = double(std::max<std::uint32_t>(width, 1));
-    double rows;
-    if (seconds_per_sample > 0.0 && std::isfinite(seconds_per_sample))
-        rows = rules.max_launch_s / (seconds_per_sample * row_pixels * double(std::max<std::uint32_t>(samples, 1)));
-    else
-        rows = rules.probe_pixels / row_pixels;
-    return std::uint32_t(std::clamp(std::floor(rows), 1.0, double(height)));
+std::uint32_t rows_per_launch(const std::vector<double>& row_cost, std::uint32_t row_begin, std::uint32_t width,
+                              std::uint32_t samples, std::uint32_t last_rows, const ScheduleRules& rules) {
+    const std::size_t height = row_cost.size();
+    if (row_begin >= height) return 0;
+    const std::uint32_t left = std::uint32_t(height - row_begin);
+    const double dearest = *std::max_element(row_cost.begin(), row_cost.end());
+    if (!(dearest > 0.0)) {
+        const double probe = std::floor(rules.probe_pixels / double(std::max<std::uint32_t>(width, 1)));
+        return std::uint32_t(std::clamp(probe, 1.0, double(left)));
+    }
+    const double budget = rules.max_launch_s / double(std::max<std::uint32_t>(samples, 1));
+    std::uint32_t rows = 0;
+    bool unmeasured = false;
+    double cost = 0.0;
+    for (std::size_t r = row_begin; r < height; ++r) {
+        const bool known = row_cost[r] > 0.0;
+        const double c = known ? row_cost[r] : dearest;
+        if (rows > 0 && cost + c > budget) break;
+        cost += c;
+        unmeasured |= !known;
+        ++rows;
+    }
+    if (unmeasured && last_rows > 0)
+        rows = std::min(rows, std::uint32_t(std::max(1.0, std::floor(rules.max_launch_growth * double(last_rows)))));
+    return std::max<std::uint32_t>(rows, 1);
 }
 
 double schedule_remaining_s(const ScheduleState& s) {

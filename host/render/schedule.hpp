@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 namespace facet {
 
@@ -16,6 +17,7 @@ struct ScheduleRules {
     double max_pass_s = 2.0;
     double max_growth = 2.0;      // a pass has at most this many times the last pass's samples
     double max_launch_s = 0.25;   // per kernel launch (GPU display watchdogs kill at ~2 s)
+    double max_launch_growth = 2.0;   // rows of a launch into unmeasured rows, over the last launch's
     double probe_pixels = 4096;   // the first launch of a render: pixels of one sample each
 };
 
@@ -37,12 +39,15 @@ bool schedule_done(const ScheduleState& s);
 // (at least 1). 0 when schedule_done().
 std::uint32_t next_pass_samples(const ScheduleState& s, const ScheduleRules& rules = {});
 
-// Rows of one launch adding `samples` samples per pixel, at the measured
-// `seconds_per_sample` (one sample at one pixel), so that a launch runs at most
-// max_launch_s: at least 1, at most `height`. Without a measurement (<= 0), the
-// probe's rows: about probe_pixels pixels.
-std::uint32_t rows_per_launch(double seconds_per_sample, std::uint32_t width, std::uint32_t height,
-                              std::uint32_t samples, const ScheduleRules& rules = {});
+// Rows of the next launch, from `row_begin`, adding `samples` samples per pixel: as
+// many as fit in max_launch_s by the measured cost of each row (`row_cost`, one entry a
+// row: seconds for one sample over the whole row, 0 where not measured yet). Rows not
+// measured count as the dearest measured one, and a launch reaching into them covers
+// at most max_launch_growth times `last_rows` (the previous launch's), since the rows
+// measured so far may be the cheap ones. Nothing measured: the probe band, about
+// probe_pixels pixels. At least 1 row, at most the rows left.
+std::uint32_t rows_per_launch(const std::vector<double>& row_cost, std::uint32_t row_begin, std::uint32_t width,
+                              std::uint32_t samples, std::uint32_t last_rows, const ScheduleRules& rules = {});
 
 // Seconds left to the target at the measured rate, or to the time limit if sooner.
 double schedule_remaining_s(const ScheduleState& s);
