@@ -29,6 +29,7 @@
 #include "host/bvh/bvh.hpp"
 #include "host/cl/runtime.hpp"
 #include "host/error.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/load.hpp"
 
@@ -296,10 +297,10 @@ nlohmann::json bench_scene(ClContext& ctx, const BenchCase& c, bool quick, bool 
     scene.settings.width = size;
     scene.settings.height = size;
     Renderer renderer(ctx, scene, bvh);
-    renderer.render(1);   // warm-up
+    render_fixed(renderer, 1);   // warm-up
     renderer.reset();
     std::uint32_t spp = quick ? 2 : 8;
-    renderer.render(spp);
+    render_fixed(renderer, spp);
     double rs = renderer.stats().render_seconds;
     j["render_spp"] = spp;
     j["render_msamples_per_s"] = double(spp) * size * size / rs * 1e-6;
@@ -328,9 +329,13 @@ nlohmann::json bench_quality(ClContext& ctx, bool quick) {
         scene.settings.width = scene.settings.height = size;
         Bvh bvh = build_bvh(scene.vertices);
         Renderer r(ctx, scene, bvh);
-        r.render(1);
+        render_fixed(r, 1);
         r.reset();
-        while (r.stats().render_seconds < seconds) r.render(2);
+        ProgressiveOptions po;   // passes of 2 samples for `seconds`
+        po.target_spp = std::uint64_t(1) << 40;
+        po.time_limit_s = seconds;
+        po.fixed_pass = 2;
+        render_progressive(r, po);
         Renderer::Halves h = r.halves();
         ErrorMetrics m = estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]);
         std::uint64_t spp = r.stats().samples_per_pixel;

@@ -11,6 +11,7 @@
 #include "bench/bench.hpp"
 #include "host/bvh/bvh.hpp"
 #include "host/film/error_metrics.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/environment_map.hpp"
 #include "host/scene/material.hpp"
@@ -47,7 +48,11 @@ std::vector<float> render_for(ClContext& ctx, Scene scene, int strategy, double 
     build_lights(scene);
     Bvh bvh = build_bvh(scene.vertices);
     Renderer r(ctx, scene, bvh);
-    while (r.stats().render_seconds < seconds) r.render(pass);
+    ProgressiveOptions po;
+    po.target_spp = std::uint64_t(1) << 40;
+    po.time_limit_s = seconds;
+    po.fixed_pass = pass;
+    render_progressive(r, po);
     *spp = r.stats().samples_per_pixel;
     return r.image();
 }

@@ -10,6 +10,7 @@
 #include "bench/bench.hpp"
 #include "host/bvh/bvh.hpp"
 #include "host/render/features.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/load.hpp"
 
@@ -60,7 +61,7 @@ nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, b
                 Scene tiny = scene;
                 tiny.settings.width = tiny.settings.height = 8;
                 Renderer r(ctx, tiny, bvh, generic, prelude);
-                r.render(1);
+                render_fixed(r, 1);
                 return std::pair{std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                                  r.build().program};
             };
@@ -68,10 +69,10 @@ nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, b
             const std::size_t binary_bytes = program_binary_bytes(program);   // outside the timed span
             double warm_s = first_image().first;
             Renderer r(ctx, scene, bvh, generic);
-            r.render(1);
+            render_fixed(r, 1);
             r.reset();
             std::uint32_t spp = quick ? 4 : 16;
-            r.render(spp);
+            render_fixed(r, spp);
             double rate = double(spp) * double(r.pixel_count()) / r.stats().render_seconds * 1e-6;
             bench_print("| {} | {} | {} | {:.2f} | {:.3f} | {:.0f} | {:.3f} |\n", name, generic ? "generic" : "specialised",
                        describe_features(mask), cold_s, warm_s, double(binary_bytes) / 1024.0, rate);

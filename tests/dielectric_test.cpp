@@ -11,6 +11,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "tests/dielectric_test_util.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/load.hpp"
 #include "host/scene/material.hpp"
@@ -180,7 +181,7 @@ TEST(Dielectric, McGuireCornellBoxesRenderClean) {
         EXPECT_TRUE(has_glass && has_mirror) << name;
         Bvh bvh = build_bvh(scene.vertices);
         Renderer r(test::context(), scene, bvh);
-        r.render(16);
+        render_fixed(r, 16);
         double rejected = -1.0;
         std::vector<float> img = r.image(&rejected);
         EXPECT_EQ(rejected, 0.0) << name;

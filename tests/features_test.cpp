@@ -9,6 +9,7 @@
 #include "host/bvh/bvh.hpp"
 #include "tests/cl_test_env.hpp"
 #include "host/render/features.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/load.hpp"
 #include "host/scene/material.hpp"
@@ -36,8 +37,8 @@ struct Pair {
 Pair render_both(Scene scene, std::uint32_t spp, Renderer** keep_specialised = nullptr) {
     Bvh bvh = build_bvh(scene.vertices);
     Renderer s(test::context(), scene, bvh, false), g(test::context(), scene, bvh, true);
-    s.render(spp);
-    g.render(spp);
+    render_fixed(s, spp);
+    render_fixed(g, spp);
     EXPECT_TRUE(prelude(g).empty()) << "the generic program has no prelude";
     return {s.halves(), g.halves()};
 }

@@ -10,6 +10,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "tests/cl_test_env.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/environment_map.hpp"
 #include "host/scene/material.hpp"
@@ -42,7 +43,7 @@ Furnace glass_sphere_in_white(float eta, float alpha, std::uint32_t spp, int sub
     build_lights(scene);
     Bvh bvh = build_bvh(scene.vertices);
     Renderer r(test::context(), scene, bvh);
-    for (std::uint32_t done = 0; done < spp; done += 16) r.render(std::min<std::uint32_t>(16, spp - done));
+    render_fixed(r, spp, 16);
     Furnace f;
     std::vector<float> img = r.image(&f.rejected);
     for (float v : img) {

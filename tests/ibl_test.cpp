@@ -10,6 +10,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "tests/cl_test_env.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/material.hpp"
 #include "host/scene/scene.hpp"
@@ -57,7 +58,7 @@ glm::dvec3 render_plane(const EnvironmentMap& env, int strategy, int size, std::
     build_lights(scene);
     Bvh bvh = build_bvh(scene.vertices);
     Renderer r(test::context(), scene, bvh);
-    for (std::uint32_t done = 0; done < spp; done += 256) r.render(std::min<std::uint32_t>(256, spp - done));
+    render_fixed(r, spp, 256);
     double rejected = -1.0;
     std::vector<float> img = r.image(&rejected);
     EXPECT_EQ(rejected, 0.0);

@@ -7,6 +7,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "tests/cl_test_env.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/material.hpp"
 #include "host/scene/scene.hpp"
@@ -38,7 +39,7 @@ std::vector<float> render(Scene& scene, std::uint32_t spp, double* rejected = nu
     build_lights(scene);
     Bvh bvh = build_bvh(scene.vertices);
     Renderer r(test::context(), scene, bvh);
-    r.render(spp);
+    render_fixed(r, spp);
     return r.image(rejected);
 }
 

@@ -7,6 +7,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "tests/cl_test_env.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/scene.hpp"
 
@@ -39,7 +40,7 @@ Scene furnace_scene(float albedo, float emission, int size, int spp) {
 std::vector<float> render(const Scene& scene, std::uint32_t spp, std::uint32_t pass, double* rejected = nullptr) {
     Bvh bvh = build_bvh(scene.vertices);
     Renderer r(test::context(), scene, bvh);
-    for (std::uint32_t done = 0; done < spp; done += pass) r.render(std::min(pass, spp - done));
+    render_fixed(r, spp, pass);
     return r.image(rejected);
 }
 

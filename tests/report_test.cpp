@@ -11,6 +11,7 @@
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/film/image_io.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/report/report.hpp"
 #include "host/scene/scene.hpp"
@@ -67,7 +68,7 @@ TEST(Report, FurnaceErrorConvergesAtMonteCarloRate) {
     std::vector<double> spp, rmse;
     ErrorMetrics last_true, last_est;
     for (std::uint32_t target = 1; target <= 64; target *= 2) {
-        r.render(target - std::uint32_t(r.stats().samples_per_pixel));
+        render_fixed(r, target - r.stats().samples_per_pixel);
         last_true = compare_images(r.image(), ones);
         Renderer::Halves h = r.halves();
         last_est = estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]);

@@ -1,15 +1,12 @@
-// `facet render SCENE`: progressive rendering. Passes start at one sample per pixel
-// and grow geometrically; each launch is kept short (row bands) so a GPU display
-// watchdog never fires. After every pass: progress, the error against a reference
-// and/or the half-buffer estimate, and the CSV report; snapshots on request; on
-// SIGINT/SIGTERM the current pass ends and everything is written (exit 130).
-#include <unistd.h>
-
+// `facet render SCENE`: load, render through the progressive driver
+// (render/progressive.hpp: passes that grow geometrically, every launch bounded), write.
+// After every pass: progress, the error against a reference and/or the half-buffer
+// estimate, and the CSV report; snapshots on request (best effort). On SIGINT, SIGTERM
+// or SIGHUP the current pass ends (the first is dropped) and everything is written
+// (exit 130); SIGPIPE is ignored (cli/stop_signals.hpp, cli/console.hpp).
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -18,12 +15,16 @@
 
 #include "host/bvh/bvh.hpp"
 #include "host/cli/commands.hpp"
+#include "host/cli/console.hpp"
 #include "host/cli/outputs.hpp"
+#include "host/cli/progress.hpp"
+#include "host/cli/stop_signals.hpp"
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/film/film_state.hpp"
 #include "host/film/image_io.hpp"
 #include "host/render/features.hpp"
+#include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/report/report.hpp"
 #include "host/scene/load.hpp"
@@ -33,13 +34,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::atomic<int> g_stop_signal{0};
-
-extern "C" void on_stop_signal(int sig) { g_stop_signal.store(sig); }
-
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-constexpr double kMaxLaunchSeconds = 0.25;   // per kernel launch (GPU watchdogs kill ~2 s)
 
 void apply_overrides(const RenderOptions& opt, Scene& scene) {
     RenderSettings& s = scene.settings;
@@ -72,7 +67,7 @@ bool save_film(const std::string& path, const Renderer& r, const Scene& scene, s
                                    r.accumulation()));
         return true;
     } catch (const Error& e) {
-        fmt::print(stderr, "facet: error: {}\n", e.what());
+        say(stderr, "facet: error: {}\n", e.what());
         return false;
     }
 }
@@ -88,24 +83,24 @@ bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const Re
     try {
         write_image(plan.image, rgb, r, scene, exposure, wall_s, false);
     } catch (const Error& e) {
-        fmt::print(stderr, "facet: error: {}\n", e.what());
+        say(stderr, "facet: error: {}\n", e.what());
         image_ok = false;
     }
     if (image_ok) {
         try {
             write_png(plan.png, r.width(), r.height(), rgb, exposure);
         } catch (const Error& e) {
-            fmt::print(stderr, "facet: error: {} (the linear image {} was written)\n", e.what(), plan.image);
+            say(stderr, "facet: error: {} (the linear image {} was written)\n", e.what(), plan.image);
             png_ok = false;
         }
     } else {
         const std::string rescue = rescue_path(plan.image);
         try {
             write_image(rescue, rgb, r, scene, exposure, wall_s, true);
-            fmt::print(stderr, "facet: the image was saved to {} (and {}) instead\n", rescue,
+            say(stderr, "facet: the image was saved to {} (and {}) instead\n", rescue,
                        replace_extension(rescue, ".png"));
         } catch (const Error& e) {
-            fmt::print(stderr, "facet: error: the image could not be saved to {} either: {}\n", rescue, e.what());
+            say(stderr, "facet: error: the image could not be saved to {} either: {}\n", rescue, e.what());
         }
     }
     const bool want_film = interrupted || plan.film_requested || !image_ok;
@@ -123,7 +118,7 @@ bool save_film_or_rescue(const OutputPlan& plan, const Renderer& r, const Scene&
         if (!save_film(film, r, scene, scene_hash)) film.clear();
     }
     if (!film.empty())
-        fmt::print(stderr, "facet: the film ({} spp) is saved in {}{}; continue with --resume {}\n",
+        say(stderr, "facet: the film ({} spp) is saved in {}{}; continue with --resume {}\n",
                    r.stats().samples_per_pixel, film, ok ? "" : " instead", film);
     return ok;
 }
@@ -155,48 +150,63 @@ private:
     bool armed_ = true;
 };
 
-std::string fmt_seconds(double s) {
-    if (!std::isfinite(s)) return "?";
-    if (s < 60) return fmt::format("{:.1f}s", s);
-    if (s < 3600) return fmt::format("{}m{:02d}s", int(s) / 60, int(s) % 60);
-    return fmt::format("{}h{:02d}m", int(s) / 3600, (int(s) % 3600) / 60);
-}
+// The passes, through the progressive driver: after each, the report row, the
+// progress line and (on request) a snapshot, which is best effort: a failed snapshot
+// is a warning and the render goes on.
+std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene, Renderer& renderer,
+                       const std::optional<ImageRGB>& reference, const std::string& out, const std::string& report,
+                       Clock::time_point start, const StopSignals& signals) {
+    std::vector<PassRecord> passes;
+    Progress progress(opt.quiet);
+    const std::uint64_t target = std::uint64_t(scene.settings.spp);
+    const double pixels = double(renderer.pixel_count());
+    const double compile_s = renderer.stats().compile_seconds;
+    double last_snapshot = 0.0;
+    ProgressiveOptions po;
+    po.target_spp = target;
+    po.time_limit_s = opt.time_limit;
+    po.stop = [&] { return signals.first() != 0; };
+    po.on_first_pass_estimate = [&](double first_pass_s) {
+        if (opt.time_limit && first_pass_s > *opt.time_limit)
+            say(stderr, "facet: warning: one sample per pixel takes about {}, more than --time {}; rendering one\n",
+                fmt_seconds(first_pass_s), *opt.time_limit);
+    };
+    po.on_pass = [&](const PassDone& d) {
+        PassRecord p;
+        p.pass = d.pass;
+        p.spp = d.spp;
+        p.wall_s = since(start);
+        p.render_s = renderer.stats().render_seconds;
+        p.compile_s = compile_s;
+        Renderer::Halves h = renderer.halves();
+        p.estimate = estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]);
+        if (reference) p.reference = compare_images(renderer.image(), reference->rgb, opt.reference);
+        passes.push_back(p);
+        write_report_csv(report, passes);
 
-// The progress display: a live line on a terminal, plain lines (at most one every
-// two seconds, and the last) otherwise.
-class Progress {
-public:
-    explicit Progress(bool quiet) : quiet_(quiet), tty_(isatty(STDOUT_FILENO)) {}
-
-    void update(const PassRecord& p, std::uint64_t target, double remaining, double msamples, bool last) {
-        if (quiet_) return;
-        std::string err;
-        if (p.reference) err = fmt::format("  rmse {:.3e}", p.reference->rmse);
-        else if (std::isfinite(p.estimate.rmse)) err = fmt::format("  rmse~{:.3e} (est.)", p.estimate.rmse);
-        std::string line = fmt::format("pass {:3d}  {:>7}/{} spp  {:>7} elapsed  {:>7} left  {:7.3f} Msamples/s{}", p.pass,
-                                       p.spp, target, fmt_seconds(p.wall_s), fmt_seconds(remaining), msamples, err);
-        if (tty_) {
-            fmt::print("\r{:<120}", line);
-            if (last) fmt::print("\n");
-        } else if (last || p.wall_s - last_print_ >= 2.0 || p.pass == 1) {
-            fmt::print("{}\n", line);
-            last_print_ = p.wall_s;
+        const double rate_spp = double(p.spp) / std::max(p.render_s, 1e-9);
+        progress.update(p, target, d.remaining_s, rate_spp * pixels * 1e-6, d.last);
+        if (opt.snapshot && p.wall_s - last_snapshot >= *opt.snapshot && !d.last) {
+            last_snapshot = p.wall_s;
+            try {
+                write_image(out, renderer.image(), renderer, scene, opt.exposure, p.wall_s);
+            } catch (const Error& e) {
+                say(stderr, "facet: warning: snapshot not written ({}); rendering goes on\n", e.what());
+            }
         }
-        std::fflush(stdout);
-    }
-
-private:
-    bool quiet_, tty_;
-    double last_print_ = -1e9;
-};
+    };
+    render_progressive(renderer, po);
+    return passes;
+}
 
 }  // namespace
 
 int run_render(const RenderOptions& opt) {
     auto start = Clock::now();
+    const SigpipeIgnored sigpipe_ignored;   // `facet render ... | head -1` renders on
     Scene scene = load_scene(opt.scene);
     apply_overrides(opt, scene);
-    for (const std::string& w : scene.warnings) fmt::print(stderr, "facet: warning: {}\n", w);
+    for (const std::string& w : scene.warnings) say(stderr, "facet: warning: {}\n", w);
     const OutputPlan plan = plan_outputs(opt);
     const std::string& out = plan.image;
     const std::string& report = plan.report;
@@ -217,74 +227,31 @@ int run_render(const RenderOptions& opt) {
     if (resumed) renderer.restore(resumed->sums, resumed->spp, resumed->render_seconds);
     FilmOnError film_on_error(plan, renderer, scene, scene_hash);
     if (!opt.quiet) {
-        fmt::print("device   {} / {}\n", ctx.desc().platform, ctx.desc().name);
-        fmt::print("scene    {}: {} triangles, {} lights; BVH {} nodes in {:.3f} s\n", scene.source_path,
-                   scene.triangle_count(), scene.lights.size(), bvh.stats.nodes, bvh.stats.build_seconds);
-        fmt::print("kernels  {} program ({}), built in {:.2f} s\n", opt.generic ? "generic" : "specialised",
-                   describe_features(renderer.stats().features), compile_s);
-        if (resumed) fmt::print("resumed  {} spp from {}\n", resumed->spp, opt.resume);
+        say(stdout, "device   {} / {}\n", ctx.desc().platform, ctx.desc().name);
+        say(stdout, "scene    {}: {} triangles, {} lights; BVH {} nodes in {:.3f} s\n", scene.source_path,
+            scene.triangle_count(), scene.lights.size(), bvh.stats.nodes, bvh.stats.build_seconds);
+        say(stdout, "kernels  {} program ({}), built in {:.2f} s\n", opt.generic ? "generic" : "specialised",
+            describe_features(renderer.stats().features), compile_s);
+        if (resumed) say(stdout, "resumed  {} spp from {}\n", resumed->spp, opt.resume);
     }
 
-    g_stop_signal.store(0);
-    std::signal(SIGINT, on_stop_signal);
-    std::signal(SIGTERM, on_stop_signal);
-    Progress progress(opt.quiet);
-    std::vector<PassRecord> passes;
-    const std::uint64_t target = std::uint64_t(scene.settings.spp);
-    const double pixels = double(renderer.pixel_count());
-    std::uint32_t pass_samples = 1;
-    double last_snapshot = 0.0;
-    while (renderer.stats().samples_per_pixel < target && g_stop_signal.load() == 0) {
-        const RenderStats& st = renderer.stats();
-        if (opt.time_limit && st.render_seconds >= *opt.time_limit) break;
-        // Samples this pass: the schedule's, no more than the target or the time left allows.
-        std::uint64_t n = std::min<std::uint64_t>(pass_samples, target - st.samples_per_pixel);
-        double per_sample = st.samples_per_pixel ? st.render_seconds / double(st.samples_per_pixel) : 0.0;
-        if (opt.time_limit && per_sample > 0)
-            n = std::clamp<std::uint64_t>(std::uint64_t((*opt.time_limit - st.render_seconds) / per_sample), 1, n);
-        // Rows per launch so that no launch runs longer than kMaxLaunchSeconds.
-        double pass_estimate = per_sample * double(n);
-        std::uint32_t rows = pass_estimate > kMaxLaunchSeconds
-            ? std::max<std::uint32_t>(1, std::uint32_t(scene.settings.height * kMaxLaunchSeconds / pass_estimate))
-            : 0;
-        renderer.render(std::uint32_t(n), rows);
-
-        PassRecord p;
-        p.pass = int(passes.size()) + 1;
-        p.spp = st.samples_per_pixel;
-        p.wall_s = since(start);
-        p.render_s = st.render_seconds;
-        p.compile_s = compile_s;
-        Renderer::Halves h = renderer.halves();
-        p.estimate = estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]);
-        if (reference) p.reference = compare_images(renderer.image(), reference->rgb, opt.reference);
-        passes.push_back(p);
-        write_report_csv(report, passes);
-
-        double rate_spp = double(p.spp) / std::max(p.render_s, 1e-9);
-        double remaining = double(target - p.spp) / rate_spp;
-        if (opt.time_limit) remaining = std::min(remaining, std::max(0.0, *opt.time_limit - p.render_s));
-        bool last = p.spp >= target || (opt.time_limit && p.render_s >= *opt.time_limit) || g_stop_signal.load();
-        progress.update(p, target, remaining, rate_spp * pixels * 1e-6, last);
-
-        if (opt.snapshot && p.wall_s - last_snapshot >= *opt.snapshot && !last) {
-            write_image(out, renderer.image(), renderer, scene, opt.exposure, p.wall_s);
-            last_snapshot = p.wall_s;
-        }
-        // Next pass: about a tenth of the time so far (log-spaced error points), at
-        // most twice the samples, at least 50 ms and at most 2 s of work.
-        double want_s = std::clamp(0.1 * p.render_s, 0.05, 2.0);
-        pass_samples = std::uint32_t(std::clamp(want_s * rate_spp, 1.0, 2.0 * double(n)));
+    // Held until every file is written: a second Ctrl-C during the writes is counted, not fatal.
+    StopSignals signals;
+    std::vector<PassRecord> passes = render_loop(opt, scene, renderer, reference, out, report, start, signals);
+    const bool interrupted = signals.first() != 0;
+    const RenderStats& st = renderer.stats();
+    if (st.samples_per_pixel == 0) {
+        say(stderr, "facet: interrupted before the first pass finished; nothing written\n");
+        return kExitInterrupted;
     }
-    const bool interrupted = g_stop_signal.load() != 0;
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
+    if (interrupted)
+        say(stderr, "facet: interrupted; writing the {} spp finished so far (further Ctrl-C is ignored until written)\n",
+            st.samples_per_pixel);
 
     double rejected = 0.0;
     std::vector<float> rgb = renderer.image(&rejected);
     const bool written = write_final(plan, rgb, renderer, scene, scene_hash, opt.exposure, since(start), interrupted);
     film_on_error.disarm();
-    const RenderStats& st = renderer.stats();
     ReportSummary summary;
     summary.scene = scene.source_path;
     summary.device = ctx.desc().platform + " / " + ctx.desc().name;
@@ -304,17 +271,15 @@ int run_render(const RenderOptions& opt) {
     write_error_plot_svg(plan.report_svg, passes, scene.source_path);
     if (!written) return kExitError;
 
-    if (interrupted)
-        fmt::print(stderr, "facet: interrupted; wrote the {} spp finished so far\n", st.samples_per_pixel);
+    if (interrupted) say(stderr, "facet: interrupted; wrote the {} spp finished so far\n", st.samples_per_pixel);
     if (rejected > 0)
-        fmt::print(stderr, "facet: warning: {} samples were NaN, infinite or negative and were dropped\n", rejected);
-    if (!summary.slope_warning.empty())
-        fmt::print(stderr, "facet: warning: {}\n", summary.slope_warning);
-    fmt::print("wrote    {} and {} ({} spp, {:.2f} s rendering, {:.2f} s in all)\n", out,
-               replace_extension(out, ".png"), st.samples_per_pixel, st.render_seconds, since(start));
+        say(stderr, "facet: warning: {} samples were NaN, infinite or negative and were dropped\n", rejected);
+    if (!summary.slope_warning.empty()) say(stderr, "facet: warning: {}\n", summary.slope_warning);
+    say(stdout, "wrote    {} and {} ({} spp, {:.2f} s rendering, {:.2f} s in all)\n", out,
+        replace_extension(out, ".png"), st.samples_per_pixel, st.render_seconds, since(start));
     if (!opt.quiet) {
-        fmt::print("report   {} (+ .json, .svg); RMSE ~ time^{:.2f} ({}{})\n", report, summary.slope,
-                   summary.slope_source, summary.slope_judged ? "" : ", too short a run to judge");
+        say(stdout, "report   {} (+ .json, .svg); RMSE ~ time^{:.2f} ({}{})\n", report, summary.slope,
+            summary.slope_source, summary.slope_judged ? "" : ", too short a run to judge");
     }
     return interrupted ? kExitInterrupted : kExitOk;
 }

@@ -134,30 +134,37 @@ void Renderer::restore(const std::vector<float>& sums, std::uint64_t spp, double
     stats_.render_seconds = render_seconds;
 }
 
+void Renderer::launch(std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count) {
+    if (count == 0 || row_begin >= params_.height) return;
+    cl_call("rendering a pass", [&] {
+        FcRenderParams p = params_;
+        p.sample_begin = std::uint32_t(stats_.samples_per_pixel);
+        p.sample_count = count;
+        p.row_begin = row_begin;
+        p.row_count = std::min(row_count, params_.height - row_begin);
+        // Blocking write: `p` lives on the stack.
+        ctx_.queue().enqueueWriteBuffer(params_buf_, CL_TRUE, 0, sizeof p, &p);
+        // A fixed work-group size and a global size rounded up to it: drivers that
+        // specialise kernels per launch geometry (PoCL does) then build them once.
+        std::size_t items = std::size_t(p.row_count) * params_.width;
+        std::size_t global = (items + local_size_ - 1) / local_size_ * local_size_;
+        ctx_.queue().enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global), cl::NDRange(local_size_));
+        ctx_.queue().finish();
+    });
+}
+
+void Renderer::end_pass(std::uint32_t count, double seconds) {
+    stats_.samples_per_pixel += count;
+    stats_.render_seconds += seconds;
+}
+
 void Renderer::render(std::uint32_t count, std::uint32_t max_rows_per_launch) {
     if (count == 0) return;
     auto start = Clock::now();
     std::uint32_t rows = max_rows_per_launch ? std::min<std::uint32_t>(max_rows_per_launch, params_.height)
                                              : params_.height;
-    cl_call("rendering a pass", [&] {
-        for (std::uint32_t row = 0; row < params_.height; row += rows) {
-            FcRenderParams p = params_;
-            p.sample_begin = std::uint32_t(stats_.samples_per_pixel);
-            p.sample_count = count;
-            p.row_begin = row;
-            p.row_count = std::min(rows, params_.height - row);
-            // Blocking write: `p` lives on the stack.
-            ctx_.queue().enqueueWriteBuffer(params_buf_, CL_TRUE, 0, sizeof p, &p);
-            // A fixed work-group size and a global size rounded up to it: drivers that
-            // specialise kernels per launch geometry (PoCL does) then build them once.
-            std::size_t items = std::size_t(p.row_count) * params_.width;
-            std::size_t global = (items + local_size_ - 1) / local_size_ * local_size_;
-            ctx_.queue().enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global), cl::NDRange(local_size_));
-        }
-        ctx_.queue().finish();
-    });
-    stats_.samples_per_pixel += count;
-    stats_.render_seconds += seconds_since(start);
+    for (std::uint32_t row = 0; row < params_.height; row += rows) launch(count, row, rows);
+    end_pass(count, seconds_since(start));
 }
 
 Renderer::Halves Renderer::halves() const {

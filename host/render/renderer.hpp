@@ -8,6 +8,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "host/cl/runtime.hpp"
+#include "host/render/pass_target.hpp"
 #include "host/scene/scene.hpp"
 
 namespace facet {
@@ -20,7 +21,7 @@ struct RenderStats {
     double render_seconds = 0.0;           // time inside render passes
 };
 
-class Renderer {
+class Renderer : public PassTarget {
 public:
     // Uploads `scene` (with its `bvh`) and builds the render program: specialised to
     // the features the scene uses (render/features.hpp), or with every feature when
@@ -31,8 +32,16 @@ public:
              const std::vector<std::string>& extra_prelude = {});
 
     // Adds `count` samples to every pixel, split into launches of at most
-    // `max_rows_per_launch` rows (0: the whole image) so no launch runs too long.
+    // `max_rows_per_launch` rows (0: the whole image). Renders run through the
+    // progressive driver (render/progressive.hpp), which bounds every launch.
     void render(std::uint32_t count, std::uint32_t max_rows_per_launch = 0);
+
+    // PassTarget: one launch over a band of rows, and the bookkeeping of a finished pass.
+    std::uint32_t target_width() const override { return std::uint32_t(width_); }
+    std::uint32_t target_height() const override { return std::uint32_t(height_); }
+    std::uint64_t finished_spp() const override { return stats_.samples_per_pixel; }
+    void launch(std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count) override;
+    void end_pass(std::uint32_t count, double seconds) override;
 
     // The mean radiance so far, linear RGB, row-major from the top row, 3 floats a
     // pixel. `rejected_samples` receives the number of samples the kernel dropped as
@@ -49,7 +58,7 @@ public:
     Halves halves() const;
 
     // Clears the accumulated samples.
-    void reset();
+    void reset() override;
 
     // The accumulation buffer as the kernel holds it, for a film (film/film_state.hpp):
     // 2 * pixel_count() RGBA sums, the even-sample half then the odd-sample half.
