@@ -62,14 +62,14 @@ bench: build
 	mkdir -p out/bench
 	$(BUILD)/facet_bench --json out/bench/bench.json --markdown out/bench/bench.md
 
-# AddressSanitizer + UBSan build of everything; runs the unit and cli tiers (docs/robustness.md).
+# AddressSanitizer + UBSan build of everything; runs the unit, render and cli tiers (docs/robustness.md).
 # Leaks inside the OpenCL driver stack (PoCL, LLVM) are suppressed, facet's are not.
 sanitize: deps
 	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_SANITIZE=ON -DFACET_BUILD_BENCH=OFF
 	cmake --build build-asan -j $(JOBS)
 	cd build-asan && ASAN_OPTIONS=$(SANITIZE_ASAN_OPTIONS) UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 		LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizer/lsan.supp:print_suppressions=0 \
-		ctest --output-on-failure -j $(JOBS) -L "unit|cli"
+		ctest --output-on-failure -j $(JOBS) -L "unit|render|cli"
 
 # Rewrites every tracked C++ and OpenCL C source as .clang-format says (clang-format 14);
 # ctest's Sources.ClangFormat (tests/format_check.sh) checks it without rewriting.
