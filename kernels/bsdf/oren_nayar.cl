@@ -29,7 +29,7 @@
 
 inline float3 oren_nayar_eval(const FcMaterial* m, float3 wo, float3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
-    float3 rho = fmax((float3)(m->diffuse[0], m->diffuse[1], m->diffuse[2]), (float3)(0.0f));
+    float3 rho = fmax(load3p(m->diffuse), (float3)(0.0f));
     /* sigma: NaN or negative -> Lambert */
     float sigma = (m->roughness > 0.0f) ? fmin(m->roughness, 1e6f) : 0.0f;
     float s2 = sigma * sigma;
