@@ -1,6 +1,6 @@
 /* Oren-Nayar diffuse reflection from a surface of Lambertian V-cavities (Oren &
  * Nayar 1994, "Generalization of Lambert's Reflectance Model", the qualitative
- * model without interreflections), in the form of the PV227 lecture:
+ * model without interreflections), in the form of Chmelik & Cejka's lecture (docs/brdf.md):
  *
  *   f = rho/pi (A + B max(0, cos(phi_i - phi_o)) sin(alpha) tan(beta))
  *   A = 1 - 0.5 s^2 / (s^2 + 0.57),  B = 0.45 s^2 / (s^2 + 0.09)
