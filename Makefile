@@ -9,6 +9,7 @@ FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 30
 SANITIZE_ASAN_OPTIONS ?= detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+CLANG_FORMAT ?= $(shell command -v clang-format-14 || echo clang-format)
 CMAKE_FLAGS ?=
 
 # Debian 12 packages facet needs to build, test and run on the CPU (PoCL).
@@ -74,7 +75,7 @@ sanitize: deps
 # Rewrites every tracked C++ and OpenCL C source as .clang-format says (clang-format 14);
 # ctest's Sources.ClangFormat (tests/format_check.sh) checks it without rewriting.
 format:
-	git ls-files '*.cpp' '*.hpp' '*.h' '*.cl' | xargs clang-format -i
+	git ls-files '*.cpp' '*.hpp' '*.h' '*.cl' | xargs $(CLANG_FORMAT) -i
 
 clean:
 	rm -rf $(BUILD) build-asan $(FUZZ_BUILD) out
