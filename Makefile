@@ -2,13 +2,14 @@
 #   make demo   installs what is missing, builds, renders the default scene into out/
 #   make test   installs what is missing, builds, runs the whole test suite (ctest), then
 #               each fuzz harness for FUZZ_SECONDS (30 s) on the stored corpus
-# Other targets: make build | deps | bench | sanitize | fuzz | clean (docs/robustness.md)
+# Other targets: make build | deps | bench | sanitize | fuzz | format | clean (docs/robustness.md)
 
 BUILD ?= build
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 30
 SANITIZE_ASAN_OPTIONS ?= detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+CLANG_FORMAT ?= $(shell command -v clang-format-14 || echo clang-format)
 CMAKE_FLAGS ?=
 
 # Debian 12 packages facet needs to build, test and run on the CPU (PoCL).
@@ -17,13 +18,13 @@ CMAKE_FLAGS ?=
 PACKAGES := build-essential cmake pkg-config \
 	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
 	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
-	libgtest-dev clang libclang-rt-14-dev \
+	libgtest-dev clang libclang-rt-14-dev clang-format \
 	libembree-dev zlib1g-dev \
 	fiu-utils
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test bench sanitize fuzz-build fuzz clean
+.PHONY: all deps configure build demo test bench sanitize fuzz-build fuzz format clean
 
 all: build
 
@@ -64,14 +65,19 @@ bench: build
 	mkdir -p out/bench
 	$(BUILD)/facet_bench --json out/bench/bench.json --markdown out/bench/bench.md
 
-# AddressSanitizer + UBSan build of everything; runs the unit and cli tiers (docs/robustness.md).
+# AddressSanitizer + UBSan build of everything; runs the unit, render and cli tiers (docs/robustness.md).
 # Leaks inside the OpenCL driver stack (PoCL, LLVM) are suppressed, facet's are not.
 sanitize: deps
 	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_SANITIZE=ON -DFACET_BUILD_BENCH=OFF
 	cmake --build build-asan -j $(JOBS)
 	cd build-asan && ASAN_OPTIONS=$(SANITIZE_ASAN_OPTIONS) UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 		LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizer/lsan.supp:print_suppressions=0 \
-		ctest --output-on-failure -j $(JOBS) -L "unit|cli"
+		ctest --output-on-failure -j $(JOBS) -L "unit|render|cli"
+
+# Rewrites every tracked C++ and OpenCL C source as .clang-format says (clang-format 14);
+# ctest's Sources.ClangFormat (tests/format_check.sh) checks it without rewriting.
+format:
+	git ls-files '*.cpp' '*.hpp' '*.h' '*.cl' | xargs $(CLANG_FORMAT) -i
 
 clean:
 	rm -rf $(BUILD) build-asan $(FUZZ_BUILD) out

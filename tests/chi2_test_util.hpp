@@ -1,5 +1,5 @@
 // A chi-square goodness-of-fit harness for direction samplers (implementation in
-// chi2_util_test.cpp, which holds no TESTs).
+// chi2_test_util.cpp).
 //
 // Method (after Mitsuba's chi2.py and pbrt-v4's bsdfs_test.cpp, adapted to narrow lobes):
 //  1. Chart. The sphere is cut into n_theta x n_phi cells in spherical coordinates about

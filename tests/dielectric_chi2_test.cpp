@@ -24,7 +24,7 @@ constexpr float kAlphas[] = {0.01f, 0.1f, 0.5f};
 constexpr int kChi2Tests = 4 * 3 * (3 + 1);
 const double kLevel = test::chi2::sidak(0.01, kChi2Tests);
 
-// Edges uniform in asinh((x - c) / w) over [lo, hi] (as chi2_util_test.cpp's).
+// Edges uniform in asinh((x - c) / w) over [lo, hi] (as chi2_test_util.cpp's).
 std::vector<double> warped(double lo, double hi, double c, double w, int n) {
     double a = std::asinh((lo - c) / w), b = std::asinh((hi - c) / w);
     std::vector<double> e(std::size_t(n) + 1);
@@ -110,14 +110,14 @@ void chi_square_ndf(int ndf, const std::vector<double>& angles) {
 
 // theta_o = 45, 60 and 80 are beyond the critical angle (41.8) for eta = 1/1.5: total
 // internal reflection, except through rough facets tilted toward wo.
-TEST(Dielectric, ChiSquareGgx) { chi_square_ndf(FC_NDF_GGX, {0.0, 45.0, 80.0}); }
+TEST(DielectricChi2, ChiSquareGgx) { chi_square_ndf(FC_NDF_GGX, {0.0, 45.0, 80.0}); }
 
-TEST(Dielectric, ChiSquareBeckmann) { chi_square_ndf(FC_NDF_BECKMANN, {60.0}); }
+TEST(DielectricChi2, ChiSquareBeckmann) { chi_square_ndf(FC_NDF_BECKMANN, {60.0}); }
 
 // Reflection plus transmission albedo (energy, i.e. with the radiance scaling 1/etap^2
 // undone) <= 1 for every eta, alpha and angle, from both sides. With visible-normal
 // sampling and the exact Smith G each sample's energy weight is G2 / G1(wo) <= 1.
-TEST(Models, EnergyDielectric) {
+TEST(DielectricChi2, EnergyDielectric) {
     const float alphas[] = {2e-4f, 0.01f, 0.1f, 0.3f, 0.5f, 1.0f};
     const double thetas[] = {0.0, 30.0, 60.0, 75.0, 85.0, 89.0};
     const float etas[] = {1.0001f, 1.33f, 1.5f, 1.0f / 1.5f, 2.4f, 20.0f, 0.05f};
@@ -149,7 +149,7 @@ TEST(Models, EnergyDielectric) {
 
 // The smooth limit: a nearly smooth rough interface splits energy as the exact Fresnel
 // equations do, R = F(theta_o), T = 1 - F, as the delta BSDF does exactly.
-TEST(Models, EnergyDielectricSmoothLimit) {
+TEST(DielectricChi2, EnergyDielectricSmoothLimit) {
     std::vector<FcMaterial> mats;
     std::vector<cl_float4> wo;
     for (float eta : kEtas)

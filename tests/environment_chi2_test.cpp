@@ -64,7 +64,7 @@ test::chi2::Result chi_square(const EnvironmentMap& e, int bu, int bv, std::uint
     return test::chi2::test(hist, mass, n, kLevel);
 }
 
-TEST(Environment, ChiSquareSunSky) {
+TEST(EnvironmentChi2, ChiSquareSunSky) {
     SunSkyParams p;
     SunSkyImage img = render_sun_sky(p, 2048);
     std::printf("[ chi2     ] sun and sky 2048x1024: the sun carries %.1f%% of the power\n",
@@ -83,7 +83,7 @@ TEST(Environment, ChiSquareSunSky) {
     EXPECT_TRUE(f.ok) << f.message;
 }
 
-TEST(Environment, ChiSquareSmooth) {
+TEST(EnvironmentChi2, ChiSquareSmooth) {
     std::vector<std::string> warnings;
     EnvironmentMap e = environment_from_pixels(256, 128, smooth_map(256, 128), glm::vec3(1.0f, 0.5f, 2.0f),
                                                test_rotation(), "smooth", warnings);
@@ -92,7 +92,7 @@ TEST(Environment, ChiSquareSmooth) {
     EXPECT_TRUE(r.ok) << r.message;
 }
 
-TEST(Environment, ChiSquareSunrise) {
+TEST(EnvironmentChi2, ChiSquareSunrise) {
     const std::filesystem::path file = std::filesystem::path(FACET_ASSETS_DIR) / "env_blender" / "sunrise.exr";
     if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
     std::vector<std::string> warnings;

@@ -35,12 +35,12 @@ void replay(const char* harness, const std::function<void(std::string_view)>& ta
     }
 }
 
-TEST(FuzzRegressions, SceneJson) { replay("scene_json", fuzz::scene_json); }
-TEST(FuzzRegressions, ObjMtl) { replay("obj_mtl", fuzz::obj_mtl); }
-TEST(FuzzRegressions, EnvMap) { replay("env_map", fuzz::env_map); }
+TEST(FuzzRegression, SceneJson) { replay("scene_json", fuzz::scene_json); }
+TEST(FuzzRegression, ObjMtl) { replay("obj_mtl", fuzz::obj_mtl); }
+TEST(FuzzRegression, EnvMap) { replay("env_map", fuzz::env_map); }
 
 // The stored seed corpus loads (or fails cleanly) too: the harnesses' conventions hold.
-TEST(FuzzRegressions, SeedCorpus) {
+TEST(FuzzRegression, SeedCorpus) {
     for (const char* h : {"scene_json", "obj_mtl", "env_map"}) {
         const std::filesystem::path dir = std::filesystem::path(FACET_FUZZ_DIR) / "corpus" / h;
         for (const auto& e : std::filesystem::directory_iterator(dir)) {

@@ -2,7 +2,7 @@
 // that leaves the sphere carries the factors 1 / eta^2 (entering) and eta^2 (leaving)
 // and Fresnel-chosen reflections of weight 1, so every pixel sees the environment's
 // radiance exactly (an analytic furnace for refraction, the radiance scaling, the
-// inside/outside decision and the ray offsets). Named Ibl.* (the statistical tier).
+// inside/outside decision and the ray offsets). Suite GlassRender (the render tier).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -54,7 +54,7 @@ Furnace glass_sphere_in_white(float eta, float alpha, std::uint32_t spp, int sub
     return f;
 }
 
-TEST(Ibl, GlassSphereInWhiteEnvironment) {
+TEST(GlassRender, GlassSphereInWhiteEnvironment) {
     for (float eta : {1.5f, 1.33f, 2.4f, 1.0f / 1.5f}) {
         Furnace f = glass_sphere_in_white(eta, 0.0f, 32);
         std::printf("[ furnace  ] smooth glass sphere eta %.4g: mean %.6f, worst pixel error %.3g\n", double(eta),
@@ -66,7 +66,7 @@ TEST(Ibl, GlassSphereInWhiteEnvironment) {
 
 // A rough sphere loses the energy of single scattering (multiple scattering between
 // microfacets is not modelled) but never creates any.
-TEST(Ibl, RoughGlassSphereInWhiteEnvironment) {
+TEST(GlassRender, RoughGlassSphereInWhiteEnvironment) {
     for (float alpha : {0.1f, 0.4f}) {
         Furnace f = glass_sphere_in_white(1.5f, alpha, 64);
         std::printf("[ furnace  ] rough glass sphere alpha %.2g: mean %.4f\n", double(alpha), f.mean);

@@ -12,7 +12,7 @@
 namespace facet {
 namespace {
 
-TEST(Models, PresetsFollowTheTable) {
+TEST(Material, PresetsFollowTheTable) {
     struct Row {
         const char* name;
         int diffuse, specular;
@@ -67,7 +67,7 @@ TEST(Models, PresetsFollowTheTable) {
     EXPECT_EQ(material_model_of(ggx), "microfacet");
 }
 
-TEST(Models, EnumNameTables) {
+TEST(Material, EnumNameTables) {
     const MaterialEnum kinds[] = {MaterialEnum::Diffuse, MaterialEnum::Specular, MaterialEnum::Ndf,
                                   MaterialEnum::Geometry, MaterialEnum::Fresnel, MaterialEnum::Sampling};
     const int counts[] = {FC_DIFFUSE_COUNT, FC_SPECULAR_COUNT, FC_NDF_COUNT, FC_G_COUNT, FC_FRESNEL_COUNT, 2};
@@ -87,7 +87,7 @@ TEST(Models, EnumNameTables) {
     EXPECT_EQ(enum_name_list(MaterialEnum::Ndf), "beckmann, ggx or blinn_phong");
 }
 
-TEST(Models, RoughnessShininessConversions) {
+TEST(Material, RoughnessShininessConversions) {
     // lecture: m = sqrt(2/(2+s)); blog and Walter 2007: s = 2/m^2 - 2. One relation.
     for (float s : {0.0f, 1.0f, 10.0f, 20.2f, 100.0f, 1000.0f, 1e5f}) {
         float m = roughness_from_shininess(s);
@@ -103,7 +103,7 @@ TEST(Models, RoughnessShininessConversions) {
     EXPECT_TRUE(std::isfinite(roughness_from_shininess(INFINITY)));
 }
 
-TEST(Models, F0Presets) {
+TEST(Material, F0Presets) {
     struct Row {
         const char* name;
         float lin[3], srgb[3];   // the two columns of the table
@@ -135,7 +135,7 @@ TEST(Models, F0Presets) {
     EXPECT_GE(f0_preset_names().size(), 10u);
 }
 
-TEST(Models, ValidateAndClamp) {
+TEST(Material, ValidateAndClamp) {
     FcMaterial m = make_material("ggx");
     EXPECT_EQ(validate_material(m), "");
     auto message = [](FcMaterial x) { return validate_material(x); };
@@ -167,7 +167,7 @@ TEST(Models, ValidateAndClamp) {
     EXPECT_TRUE(std::isnan(a.alpha_x));
 }
 
-TEST(Models, DescribeMaterial) {
+TEST(Material, DescribeMaterial) {
     std::string s = describe_material(make_material("ggx"));
     EXPECT_EQ(s.rfind("ggx:", 0), 0u) << s;
     for (const char* part : {"lambert_1mf0", "D=ggx", "G=smith_correlated", "F=schlick", "alpha=(0.3, 0.3)"})

@@ -49,11 +49,11 @@ void chi_square_ndf(int ndf) {
     std::printf("[ chi2     ] ndf %d: %d configurations, %d failed\n", ndf, run, failed);
 }
 
-TEST(Microfacet, ChiSquareGgx) { chi_square_ndf(FC_NDF_GGX); }
+TEST(MicrofacetChi2, ChiSquareGgx) { chi_square_ndf(FC_NDF_GGX); }
 
-TEST(Microfacet, ChiSquareBeckmann) { chi_square_ndf(FC_NDF_BECKMANN); }
+TEST(MicrofacetChi2, ChiSquareBeckmann) { chi_square_ndf(FC_NDF_BECKMANN); }
 
-TEST(Microfacet, ChiSquareBlinnPhongNdf) {
+TEST(MicrofacetChi2, ChiSquareBlinnPhongNdf) {
     for (float e : {2.0f, 20.0f, 200.0f, 2000.0f, 20000.0f})
         for (double deg : kAngles) {
             FcMaterial m = microfacet_material(FC_NDF_BLINN_PHONG, FC_SAMPLE_VISIBLE, 0.0f, 0.0f);
@@ -66,7 +66,7 @@ TEST(Microfacet, ChiSquareBlinnPhongNdf) {
 }
 
 // The normals themselves (h-space), against ndf_pdf.
-TEST(Microfacet, ChiSquareNormals) {
+TEST(MicrofacetChi2, ChiSquareNormals) {
     for (int ndf : {FC_NDF_GGX, FC_NDF_BECKMANN})
         for (int sampling : {FC_SAMPLE_VISIBLE, FC_SAMPLE_ALL})
             for (int a = 0; a < 3; ++a)
@@ -82,7 +82,7 @@ TEST(Microfacet, ChiSquareNormals) {
 }
 
 // The other lobes and mixtures, through bsdf_sample / bsdf_pdf.
-TEST(Microfacet, ChiSquareBsdf) {
+TEST(MicrofacetChi2, ChiSquareBsdf) {
     std::vector<std::pair<FcMaterial, double>> cases;   // material, lobe width
     auto add = [&](FcMaterial m, double w) { cases.emplace_back(m, w); };
     for (int model : {FC_SPECULAR_BLINN_PHONG, FC_SPECULAR_BLINN_PHONG_NORMALIZED})

@@ -80,7 +80,7 @@ std::vector<T> run_per_wo(const char* kernel, const std::vector<FcMaterial>& mat
 void set3(float* d, float a, float b, float c) { d[0] = a, d[1] = b, d[2] = c; }
 
 // --- the source formulas in double precision --------------------------------------------
-// Lecture (PV227, lesson 10) I_diff + I_spe per channel, mapped to f = I / (pi N.L);
+// Chmelík & Čejka's lecture (docs/brdf.md) I_diff + I_spe per channel, mapped to f = I / (pi N.L);
 // ggx from Hoffman's D_tr and Heitz 2014's height-correlated Smith G.
 double schlick(double f0, double vh) { return f0 + (1.0 - f0) * std::pow(1.0 - vh, 5.0); }
 

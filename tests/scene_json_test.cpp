@@ -20,7 +20,7 @@ std::string scene(const TempDir& d, const std::string& name, const std::string& 
     return d.write(name, "{\n" + body + "\n}\n");
 }
 
-TEST(Scene, JsonFullSceneLoads) {
+TEST(SceneJson, JsonFullSceneLoads) {
     TempDir d;
     d.write("m.mtl", "newmtl red\nKd 1 0 0\n");
     d.write("mesh.obj", "mtllib m.mtl\nusemtl red\n" + kTri);
@@ -64,7 +64,7 @@ TEST(Scene, JsonFullSceneLoads) {
     EXPECT_FLOAT_EQ(material("blue").ior, 1.4f);
 }
 
-TEST(Scene, JsonSyntaxErrorNamesLineAndColumn) {
+TEST(SceneJson, JsonSyntaxErrorNamesLineAndColumn) {
     TempDir d;
     const auto p = d.write("broken.json", "{\n  \"render\": {\"width\": 64\n  \"spp\": 4}\n}\n");
     expect_error([&] { load_scene(p); }, {"broken.json:3:", "syntax error"});
@@ -72,7 +72,7 @@ TEST(Scene, JsonSyntaxErrorNamesLineAndColumn) {
     expect_error([&] { load_scene(q); }, {"trunc.json:1:"});
 }
 
-TEST(Scene, JsonUnknownKeys) {
+TEST(SceneJson, JsonUnknownKeys) {
     TempDir d;
     expect_error([&] { load_scene(scene(d, "a.json", R"("materails": {})")); },
                  {"a.json", "unknown key 'materails' at top level", "did you mean 'materials'"});
@@ -91,7 +91,7 @@ TEST(Scene, JsonUnknownKeys) {
         {"c.json", "'colour'", "shapes[0]"});
 }
 
-TEST(Scene, JsonBadTypesAndValues) {
+TEST(SceneJson, JsonBadTypesAndValues) {
     TempDir d;
     const std::string shapes = R"(, "shapes": [)" + kQuadShape + "]";
     struct Case {
@@ -141,7 +141,7 @@ TEST(Scene, JsonBadTypesAndValues) {
                  {"u.json", "no geometry"});
 }
 
-TEST(Scene, JsonUnknownMaterial) {
+TEST(SceneJson, JsonUnknownMaterial) {
     TempDir d;
     d.write("tri.obj", kTri);
     expect_error(
@@ -160,7 +160,7 @@ TEST(Scene, JsonUnknownMaterial) {
         {"b.json: shapes[0].material", "'x'"});
 }
 
-TEST(Scene, JsonMissingMeshFile) {
+TEST(SceneJson, JsonMissingMeshFile) {
     TempDir d;
     expect_error(
         [&] { load_scene(scene(d, "a.json", R"("meshes": [{"file": "models/gone.obj"}])")); },
@@ -170,14 +170,14 @@ TEST(Scene, JsonMissingMeshFile) {
                  {"b.json", "meshes[0]", "bad.obj:4:"});
 }
 
-TEST(Scene, JsonWithoutCameraFramesTheScene) {
+TEST(SceneJson, JsonWithoutCameraFramesTheScene) {
     TempDir d;
     const Scene s = load_scene(scene(d, "a.json", R"("shapes": [)" + kQuadShape + "]"));
     EXPECT_EQ(s.camera.target, glm::vec3(0.5f, 0.5f, 0.0f));
     EXPECT_TRUE(test::contains(s.warnings, "no emitters"));
 }
 
-TEST(Scene, UnknownExtensionIsError) {
+TEST(SceneJson, UnknownExtensionIsError) {
     TempDir d;
     expect_error([&] { load_scene(d.write("scene.xml", "<scene/>")); }, {"scene.xml", ".xml"});
 }

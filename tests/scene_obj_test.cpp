@@ -21,7 +21,7 @@ Scene load(const std::string& path) {
     return s;
 }
 
-TEST(Scene, ObjBadNumberNamesLine) {
+TEST(SceneObj, ObjBadNumberNamesLine) {
     TempDir d;
     const auto p = d.write("bad.obj", "# comment\nv 0 0 0\nv 1 abc 0\nv 0 1 0\nf 1 2 3\n");
     expect_error([&] { load(p); }, {"bad.obj:3:", "abc"});
@@ -31,7 +31,7 @@ TEST(Scene, ObjBadNumberNamesLine) {
     expect_error([&] { load(r); }, {"vn.obj:4:"});
 }
 
-TEST(Scene, ObjBadIndicesNameLine) {
+TEST(SceneObj, ObjBadIndicesNameLine) {
     TempDir d;
     const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
     expect_error([&] { load(d.write("a.obj", verts + "f 1 2 4\n")); },
@@ -47,7 +47,7 @@ TEST(Scene, ObjBadIndicesNameLine) {
     expect_error([&] { load(d.write("g.obj", verts + "f 1/1/1/1 2 3\n")); }, {"g.obj:4:"});
 }
 
-TEST(Scene, ObjEmptyOrNonFiniteIsError) {
+TEST(SceneObj, ObjEmptyOrNonFiniteIsError) {
     TempDir d;
     expect_error([&] { load(d.write("empty.obj", "")); }, {"empty.obj", "no faces"});
     expect_error([&] { load(d.write("verts.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n")); },
@@ -59,7 +59,7 @@ TEST(Scene, ObjEmptyOrNonFiniteIsError) {
     expect_error([&] { load(d.path("does_not_exist.obj")); }, {"does_not_exist.obj"});
 }
 
-TEST(Scene, ObjCrlfQuadsNegativeIndices) {
+TEST(SceneObj, ObjCrlfQuadsNegativeIndices) {
     TempDir d;
     const auto p = d.write("q.obj",
                            "v 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\nf -4 -3 -2 -1\r\n"
@@ -74,7 +74,7 @@ TEST(Scene, ObjCrlfQuadsNegativeIndices) {
                  {"bad.obj:4:"});
 }
 
-TEST(Scene, ObjSmoothNormalsWhenMissing) {
+TEST(SceneObj, ObjSmoothNormalsWhenMissing) {
     TempDir d;
     // Triangle A (area 0.5) faces +z, triangle B (area 1) faces +y; they share vertices 1 and 2.
     const auto p = d.write("fold.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 2\nf 1 2 3\nf 1 4 2\n");
@@ -87,7 +87,7 @@ TEST(Scene, ObjSmoothNormalsWhenMissing) {
     EXPECT_NEAR(glm::length(vec(s.shading[1].n1) - glm::vec3(0, 1, 0)), 0.0f, 1e-5f);
 }
 
-TEST(Scene, ObjNormalsUsedWhenPresent) {
+TEST(SceneObj, ObjNormalsUsedWhenPresent) {
     TempDir d;
     const auto p = d.write("n.obj",
                            "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1 0 1\nvn 0 0 0\n"
@@ -101,7 +101,7 @@ TEST(Scene, ObjNormalsUsedWhenPresent) {
                 1e-5f);  // zero: face normal
 }
 
-TEST(Scene, ObjTransformAndMirror) {
+TEST(SceneObj, ObjTransformAndMirror) {
     TempDir d;
     const auto p = d.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     Scene s;
@@ -116,7 +116,7 @@ TEST(Scene, ObjTransformAndMirror) {
     EXPECT_NEAR(glm::dot(vec(m.shading[0].n0), n), 1.0f, 1e-6f);  // front face kept consistent
 }
 
-TEST(Scene, MtlMaterialsMapped) {
+TEST(SceneObj, MtlMaterialsMapped) {
     TempDir d;
     d.write("m.mtl",
             "newmtl shiny\nKd 0.1 0.2 0.3\nKs 0.5 0.5 0.5\nNs 98\nNi 1.33\n"
@@ -147,7 +147,7 @@ TEST(Scene, MtlMaterialsMapped) {
     EXPECT_FLOAT_EQ(b.ior, 1.5f);
 }
 
-TEST(Scene, MtlBadNumberNamesLine) {
+TEST(SceneObj, MtlBadNumberNamesLine) {
     TempDir d;
     d.write("bad.mtl", "newmtl a\nKd 0.5 abc 0.5\n");
     const auto p = d.write("x.obj", "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
@@ -160,7 +160,7 @@ TEST(Scene, MtlBadNumberNamesLine) {
     expect_error([&] { load(r); }, {"orphan.mtl:1:", "newmtl"});
 }
 
-TEST(Scene, MissingMtlIsWarning) {
+TEST(SceneObj, MissingMtlIsWarning) {
     TempDir d;
     const auto p =
         d.write("lonely.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n");
@@ -172,7 +172,7 @@ TEST(Scene, MissingMtlIsWarning) {
     EXPECT_FLOAT_EQ(s.materials[static_cast<std::size_t>(s.shading[0].material)].diffuse[0], 0.8f);
 }
 
-TEST(Scene, MissingTextureIsWarning) {
+TEST(SceneObj, MissingTextureIsWarning) {
     TempDir d;
     d.write("t.mtl", "newmtl a\nKd 1 1 1\nmap_Kd -bm 1 textures/wood.png\n");
     const auto p = d.write("t.obj", "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
@@ -183,7 +183,7 @@ TEST(Scene, MissingTextureIsWarning) {
     EXPECT_TRUE(test::contains(s.warnings, "missing"));
 }
 
-TEST(Scene, MaterialOverrides) {
+TEST(SceneObj, MaterialOverrides) {
     TempDir d;
     d.write("o.mtl", "newmtl a\nKd 0.1 0.1 0.1\nnewmtl b\nKd 0.2 0.2 0.2\n");
     const auto p = d.write("o.obj",
@@ -210,7 +210,7 @@ TEST(Scene, MaterialOverrides) {
 }
 
 // Mangled files load or give facet::Error, never another exception or a crash.
-TEST(Scene, MangledObjNeverCrashes) {
+TEST(SceneObj, MangledObjNeverCrashes) {
     const std::string base =
         "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\n"
         "usemtl a\nf 1/1/1 2/1/1 3/1/1 4/1/1\nf -1 -2 -3\n";

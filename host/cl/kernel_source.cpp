@@ -15,6 +15,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Tables registered besides the renderer's (tests, bench): filled before main() runs.
+std::vector<EmbeddedTable>& registered_tables() {
+    static std::vector<EmbeddedTable> tables;
+    return tables;
+}
+
 // Where sources come from: the embedded table, or a directory on disk.
 class SourceTree {
 public:
@@ -27,6 +33,8 @@ public:
             disk_root_ = kernels.parent_path();
         } else {
             for (const EmbeddedFile& f : embedded_kernel_files()) embedded_.emplace(f.path, f.content);
+            for (EmbeddedTable table : registered_tables())
+                for (const EmbeddedFile& f : table()) embedded_.emplace(f.path, f.content);
         }
     }
 
@@ -102,6 +110,11 @@ void append_file(const SourceTree& tree, const std::string& path, std::set<std::
 }
 
 }  // namespace
+
+bool register_embedded_kernel_files(EmbeddedTable table) {
+    registered_tables().push_back(table);
+    return true;
+}
 
 AssembledSource assemble_program(const std::string& entry, const std::vector<std::string>& prelude) {
     SourceTree tree;

@@ -16,7 +16,14 @@ struct EmbeddedFile {
     const char* content;
 };
 
+// The renderer's kernels (kernels/ less kernels/test and kernels/bench), embedded in facet_core.
 const std::vector<EmbeddedFile>& embedded_kernel_files();
+
+// Adds another embedded table to the lookup: the tests' kernels (kernels/test, linked into
+// facet_tests only) and the bench's (kernels/bench, into facet_bench only), whose generated
+// sources call this from a static initializer, so the shipped facet holds neither. Returns true.
+using EmbeddedTable = const std::vector<EmbeddedFile>& (*)();
+bool register_embedded_kernel_files(EmbeddedTable table);
 
 struct AssembledSource {
     std::string text;                   // the whole program

@@ -22,7 +22,7 @@
 #include "kernels/bsdf/fresnel.cl"
 
 inline float3 as_f0(const FcMaterial* m) {
-    return clamp((float3)(m->specular[0], m->specular[1], m->specular[2]), 0.0f, 1.0f);
+    return clamp(load3p(m->specular), 0.0f, 1.0f);
 }
 
 /* The exponent nu cos^2(phi_h) + nv sin^2(phi_h) of a half vector (any value at h = n,
@@ -94,7 +94,7 @@ inline bool ashikhmin_shirley_sample(const FcMaterial* m, float3 wo, float2 u, B
 /* The paper's eq. 5 diffuse term, which pairs with the specular lobe above. */
 inline float3 ashikhmin_shirley_diffuse_eval(const FcMaterial* m, float3 wo, float3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
-    float3 rd = fmax((float3)(m->diffuse[0], m->diffuse[1], m->diffuse[2]), (float3)(0.0f));
+    float3 rd = fmax(load3p(m->diffuse), (float3)(0.0f));
     float a = 1.0f - pow5(1.0f - 0.5f * fmin(wi.z, 1.0f));
     float b = 1.0f - pow5(1.0f - 0.5f * fmin(wo.z, 1.0f));
     return rd * ((float3)(1.0f) - as_f0(m)) * ((28.0f / (23.0f * FC_PI)) * a * b);

@@ -32,7 +32,7 @@ inline float fc_pow_cos(float c, float e) { return (c > 0.0f) ? pow(fmin(c, 1.0f
 inline float3 blinn_phong_eval(const FcMaterial* m, float3 wo, float3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
     float e = fc_phong_exponent(m->exponent_x);
-    float3 ks = fmax((float3)(m->specular[0], m->specular[1], m->specular[2]), (float3)(0.0f));
+    float3 ks = fmax(load3p(m->specular), (float3)(0.0f));
     /* wo + wi is never zero with both above the surface */
     float3 h = normalize(wo + wi);
     float scale = (m->specular_model == FC_SPECULAR_BLINN_PHONG_NORMALIZED) ? (e + 8.0f) * (0.125f * FC_INV_PI)

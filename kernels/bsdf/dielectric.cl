@@ -41,13 +41,14 @@
 #include "kernels/bsdf/fresnel.cl"
 #include "kernels/bsdf/ndf.cl"
 #include "kernels/bsdf/refraction.cl"
+#include "kernels/util/math.cl"
 
 inline bool dielectric_is_smooth(const FcMaterial* m) {
     float2 a = ndf_alpha(m);
     return !(fmax(a.x, a.y) >= FC_ALPHA_MIRROR);
 }
 
-inline float3 dielectric_tint(const FcMaterial* m) { return (float3)(m->specular[0], m->specular[1], m->specular[2]); }
+inline float3 dielectric_tint(const FcMaterial* m) { return load3p(m->specular); }
 
 /* Shadowing-masking for both sides: Lambda uses |w.z|. */
 inline float dielectric_G(const FcMaterial* m, float3 wo, float3 wi) {

@@ -9,9 +9,10 @@
 #include "kernels/bsdf/fresnel.cl"
 #include "kernels/bsdf/lambert.cl"
 #include "kernels/bsdf/oren_nayar.cl"
+#include "kernels/util/math.cl"
 
 inline float3 material_diffuse(const FcMaterial* m) {
-    return (float3)(m->diffuse[0], m->diffuse[1], m->diffuse[2]);
+    return load3p(m->diffuse);
 }
 
 inline float3 diffuse_eval(const FcMaterial* m, float3 wo, float3 wi) {

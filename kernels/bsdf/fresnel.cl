@@ -91,14 +91,13 @@ inline float3 fresnel_conductor(float cos_i, float3 eta, float3 k) {
 inline float3 fresnel_eval(const FcMaterial* m, float cos_d) {
     switch (m->fresnel) {
         case FC_FRESNEL_SCHLICK:
-            return fresnel_schlick((float3)(m->specular[0], m->specular[1], m->specular[2]), cos_d);
+            return fresnel_schlick(load3p(m->specular), cos_d);
         case FC_FRESNEL_SCHLICK_IOR:
             return fresnel_schlick((float3)(f0_from_ior(m->ior)), cos_d);
         case FC_FRESNEL_DIELECTRIC:
             return (float3)(fresnel_dielectric(cos_d, m->ior));
         case FC_FRESNEL_CONDUCTOR:
-            return fresnel_conductor(cos_d, (float3)(m->eta[0], m->eta[1], m->eta[2]),
-                                     (float3)(m->k[0], m->k[1], m->k[2]));
+            return fresnel_conductor(cos_d, load3p(m->eta), load3p(m->k));
         default:
             return (float3)(1.0f);
     }

@@ -1,6 +1,6 @@
 /* Oren-Nayar diffuse reflection from a surface of Lambertian V-cavities (Oren &
  * Nayar 1994, "Generalization of Lambert's Reflectance Model", the qualitative
- * model without interreflections), in the form of the PV227 lecture:
+ * model without interreflections), in the form of Chmelik & Cejka's lecture (docs/brdf.md):
  *
  *   f = rho/pi (A + B max(0, cos(phi_i - phi_o)) sin(alpha) tan(beta))
  *   A = 1 - 0.5 s^2 / (s^2 + 0.57),  B = 0.45 s^2 / (s^2 + 0.09)
@@ -29,7 +29,7 @@
 
 inline float3 oren_nayar_eval(const FcMaterial* m, float3 wo, float3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
-    float3 rho = fmax((float3)(m->diffuse[0], m->diffuse[1], m->diffuse[2]), (float3)(0.0f));
+    float3 rho = fmax(load3p(m->diffuse), (float3)(0.0f));
     /* sigma: NaN or negative -> Lambert */
     float sigma = (m->roughness > 0.0f) ? fmin(m->roughness, 1e6f) : 0.0f;
     float s2 = sigma * sigma;

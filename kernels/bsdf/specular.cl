@@ -10,6 +10,7 @@
 #include "kernels/bsdf/bsdf_sample.cl"
 #include "kernels/bsdf/fresnel.cl"
 #include "kernels/bsdf/microfacet.cl"
+#include "kernels/util/math.cl"
 
 inline float3 specular_eval(const FcMaterial* m, float3 wo, float3 wi) {
     switch (m->specular_model) {
@@ -80,7 +81,7 @@ inline float specular_weight(const FcMaterial* m, float3 wo) {
             return fmax(luminance(fresnel_eval(m, wo.z)), 0.0f);
         case FC_SPECULAR_BLINN_PHONG:
         case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
-            return fmax(luminance((float3)(m->specular[0], m->specular[1], m->specular[2])), 0.0f);
+            return fmax(luminance(load3p(m->specular)), 0.0f);
         default:
             return 0.0f;
     }

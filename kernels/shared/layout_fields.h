@@ -1,5 +1,5 @@
 /* Every shared struct and field, as an X-macro list, so the host (static_assert and
- * tests/layout_test.cpp) and a kernel (kernels/test/layout_kernels.cl) compute
+ * tests/layout_test.cpp) and a test kernel (layout_kernels.cl) compute
  * sizeof/offsetof over exactly the same list. Add new structs and fields here. */
 #ifndef FACET_SHARED_LAYOUT_FIELDS_H
 #define FACET_SHARED_LAYOUT_FIELDS_H

@@ -1,6 +1,6 @@
 /* Materials: a diffuse lobe plus a specular lobe, each chosen from a closed list, with
  * the specular microfacet terms D, G and F chosen independently (docs/brdf.md).
- * The named models of the source documents are presets of these choices
+ * The named models of docs/brdf.md are presets of these choices
  * (host/scene/material.cpp):
  *   lambert                 diffuse LAMBERT,            specular NONE
  *   oren_nayar              diffuse OREN_NAYAR,         specular NONE

@@ -7,6 +7,7 @@
 #define FACET_TRACE_TRIANGLE_CL
 
 #include "kernels/shared/bvh_layout.h"
+#include "kernels/util/math.cl"
 
 /* Per-ray part of the test (section 3 of the paper). */
 typedef struct {
@@ -86,9 +87,9 @@ inline bool intersect_triangle(const TriRay* r, float3 o, float3 p0, float3 p1, 
 
 inline bool intersect_fc_triangle(const TriRay* r, float3 o, __global const FcTriangle* tri,
                                   float tmax, float* t, float* u, float* v) {
-    float3 p0 = (float3)(tri->v0[0], tri->v0[1], tri->v0[2]);
-    float3 p1 = (float3)(tri->v1[0], tri->v1[1], tri->v1[2]);
-    float3 p2 = (float3)(tri->v2[0], tri->v2[1], tri->v2[2]);
+    float3 p0 = load3(tri->v0);
+    float3 p1 = load3(tri->v1);
+    float3 p2 = load3(tri->v2);
     return intersect_triangle(r, o, p0, p1, p2, tmax, t, u, v);
 }
 

@@ -1,5 +1,5 @@
-// The chi-square harness of chi2_test_util.hpp (helpers only; no TESTs here: the
-// harness's own checks are Microfacet.Chi2Harness* in microfacet_test.cpp).
+// The chi-square harness of chi2_test_util.hpp: its implementation, a helper source of
+// facet_tests (the harness's own checks are Microfacet.Chi2Harness in microfacet_test.cpp).
 #include <algorithm>
 #include <cmath>
 #include <numbers>
