@@ -46,6 +46,7 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
     if (opt.max_depth) s.max_depth = *opt.max_depth;
     if (opt.seed) s.seed = *opt.seed;
     if (opt.strategy) s.strategy = *opt.strategy;
+    if (opt.sampler) s.sampler = *opt.sampler;
 }
 
 std::string default_output(const std::string& scene_path) {
@@ -58,6 +59,7 @@ void write_image(const std::string& out, const std::vector<float>& rgb, const Re
     meta.ints.push_back({"facet:spp", int(r.stats().samples_per_pixel)});
     meta.ints.push_back({"facet:seed", int(scene.settings.seed)});
     meta.ints.push_back({"facet:max_depth", scene.settings.max_depth});
+    meta.strings.push_back({"facet:sampler", scene.settings.sampler == FC_SAMPLER_SOBOL ? "sobol" : "independent"});
     meta.floats.push_back({"facet:render_seconds", float(r.stats().render_seconds)});
     meta.floats.push_back({"facet:wall_seconds", float(wall_s)});
     meta.strings.push_back({"facet:device", r.context().desc().platform + " / " + r.context().desc().name});
@@ -211,6 +213,8 @@ int run_render(const RenderOptions& opt) {
     summary.compile_s = compile_s;
     summary.interrupted = interrupted;
     summary.rejected_samples = rejected;
+    summary.stratified = scene.settings.sampler == FC_SAMPLER_SOBOL;
+    summary.sampler = summary.stratified ? "sobol" : "independent";
     fit_convergence(passes, summary);
     write_report_csv(report, passes);
     write_report_json(replace_extension(report, ".json"), summary, passes);
