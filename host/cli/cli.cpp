@@ -57,6 +57,10 @@ int run_cli(int argc, char** argv) {
                        "or bsdf (BSDF sampling only); for measuring the strategies")
         ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT},
                                                                         {"bsdf", FC_STRATEGY_BSDF}}));
+    render->add_option("--sampler", opt.sampler,
+                       "Sample generator: sobol (default; Owen-scrambled Sobol', Burley 2020) or independent (PCG32)")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"sobol", FC_SAMPLER_SOBOL},
+                                                                        {"independent", FC_SAMPLER_INDEPENDENT}}));
     render->add_option("--device", opt.device, "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU)");
     render->add_option("--out", opt.out,
                        "Output image, linear 32-bit float: .exr (or .hdr, .tif, .pfm); the tone-mapped PNG is written "

@@ -12,6 +12,7 @@ struct RenderOptions {
     std::optional<int> spp, width, height, max_depth;
     std::optional<std::uint32_t> seed;
     std::optional<int> strategy;   // FC_STRATEGY_*
+    std::optional<int> sampler;    // FC_SAMPLER_*
     std::optional<double> time_limit;
     std::string device;
     std::string out;

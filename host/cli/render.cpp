@@ -44,6 +44,7 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
     if (opt.max_depth) s.max_depth = *opt.max_depth;
     if (opt.seed) s.seed = *opt.seed;
     if (opt.strategy) s.strategy = *opt.strategy;
+    if (opt.sampler) s.sampler = *opt.sampler;
 }
 
 void write_image(const std::string& out, const std::vector<float>& rgb, const Renderer& r, const Scene& scene,
@@ -52,6 +53,7 @@ void write_image(const std::string& out, const std::vector<float>& rgb, const Re
     meta.ints.push_back({"facet:spp", int(r.stats().samples_per_pixel)});
     meta.ints.push_back({"facet:seed", int(scene.settings.seed)});
     meta.ints.push_back({"facet:max_depth", scene.settings.max_depth});
+    meta.strings.push_back({"facet:sampler", scene.settings.sampler == FC_SAMPLER_SOBOL ? "sobol" : "independent"});
     meta.floats.push_back({"facet:render_seconds", float(r.stats().render_seconds)});
     meta.floats.push_back({"facet:wall_seconds", float(wall_s)});
     meta.strings.push_back({"facet:device", r.context().desc().platform + " / " + r.context().desc().name});
@@ -265,6 +267,8 @@ int run_render(const RenderOptions& opt) {
     summary.compile_s = compile_s;
     summary.interrupted = interrupted;
     summary.rejected_samples = rejected;
+    summary.stratified = scene.settings.sampler == FC_SAMPLER_SOBOL;
+    summary.sampler = summary.stratified ? "sobol" : "independent";
     fit_convergence(passes, summary);
     write_report_csv(report, passes);
     write_report_json(plan.report_json, summary, passes);

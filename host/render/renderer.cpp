@@ -57,6 +57,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
     params_.environment = scene.environment.params;
     params_.environment_light = scene.environment_light;
     params_.strategy = std::uint32_t(scene.settings.strategy);
+    params_.sampler = std::uint32_t(scene.settings.sampler);
 
     check_device_memory(ctx.desc(), {{"BVH nodes", bvh.nodes.size() * sizeof(FcBvhNode)},
                                      {"triangles", bvh.triangles.size() * sizeof(FcTriangle)},

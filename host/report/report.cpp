@@ -42,9 +42,11 @@ void fit_convergence(const std::vector<PassRecord>& passes, ReportSummary& summa
     summary.slope_warning.clear();
     summary.slope_judged = std::isfinite(summary.slope) && last_spp >= 10 * first_spp;
     if (!summary.slope_judged) return;   // too short a run to judge the rate
-    if (summary.slope > -0.35 || summary.slope < -0.65) {
+    const double steepest = summary.stratified ? -1.6 : -0.65;
+    if (summary.slope > -0.35 || summary.slope < steepest) {
         summary.slope_warning = fmt::format(
-            "RMSE falls as time^{:.2f}, far from the time^-0.5 of an unbiased estimator: {}", summary.slope,
+            "RMSE falls as time^{:.2f}, far from the time^{} of an unbiased estimator: {}", summary.slope,
+            summary.stratified ? "-0.5 to -1.5" : "-0.5",
             summary.slope > -0.35 ? (with_reference ? "the render may be biased against the reference (or it is wrong)"
                                                     : "a sampler may be broken")
                                   : "convergence faster than Monte Carlo: check the reference or the run length");
@@ -88,6 +90,7 @@ void write_report_json(const std::string& path, const ReportSummary& s, const st
     j["rmse_time_slope"] = std::isfinite(s.slope) ? nlohmann::json(s.slope) : nlohmann::json();
     j["rmse_time_slope_source"] = s.slope_source;
     j["rmse_time_slope_judged"] = s.slope_judged;
+    if (!s.sampler.empty()) j["sampler"] = s.sampler;
     j["estimator"] = "half-buffer: (a - b)^2 n_a n_b / n^2 per pixel, unbiased for the variance of the image";
     if (!s.slope_warning.empty()) j["warning"] = s.slope_warning;
     write_text_atomically(path, j.dump(2) + "\n");

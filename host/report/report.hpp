@@ -32,6 +32,11 @@ struct ReportSummary {
     std::string slope_source;   // "reference" or "estimate"
     std::string slope_warning;  // empty when the slope is near -1/2 (or not judged)
     bool slope_judged = false;  // the fit spans at least a decade of samples per pixel
+    // The sampler stratifies (scrambled Sobol'): RMSE may then fall faster than
+    // time^-1/2, down to about time^-3/2 for smooth pixels (Owen 1997), so only a slope
+    // steeper than that is suspicious. "sampler" names it in the JSON summary.
+    bool stratified = false;
+    std::string sampler;
 };
 
 // The fitted slope of RMSE against render time over the passes (reference RMSE when

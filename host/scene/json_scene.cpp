@@ -89,7 +89,7 @@ struct Loader {
     }
 
     void render(const Json& v, const std::string& path) {
-        r.object(v, path, {"width", "height", "spp", "max_depth", "rr_depth", "seed", "strategy"});
+        r.object(v, path, {"width", "height", "spp", "max_depth", "rr_depth", "seed", "strategy", "sampler"});
         RenderSettings& s = scene.settings;
         auto k = [&](const char* name) { return JsonReader::key(path, name); };
         auto get = [&](const char* name, std::int64_t lo, std::int64_t hi, auto& out) {
@@ -109,6 +109,13 @@ struct Loader {
             else if (name == "light") s.strategy = FC_STRATEGY_LIGHT;
             else if (name == "bsdf") s.strategy = FC_STRATEGY_BSDF;
             else r.fail(k, fmt::format("unknown strategy '{}' (expected mis, light or bsdf)", name));
+        }
+        if (v.contains("sampler")) {
+            const std::string k = JsonReader::key(path, "sampler");
+            const std::string name = r.string(v["sampler"], k);
+            if (name == "sobol") s.sampler = FC_SAMPLER_SOBOL;
+            else if (name == "independent") s.sampler = FC_SAMPLER_INDEPENDENT;
+            else r.fail(k, fmt::format("unknown sampler '{}' (expected sobol or independent)", name));
         }
     }
 

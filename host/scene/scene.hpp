@@ -32,6 +32,7 @@ struct RenderSettings {
     int rr_depth = 3;          // Russian roulette starts after this many bounces
     std::uint32_t seed = 0;
     int strategy = FC_STRATEGY_MIS;   // FC_STRATEGY_*: MIS, light sampling or BSDF sampling only
+    int sampler = FC_SAMPLER_SOBOL;   // FC_SAMPLER_*: scrambled Sobol' or independent numbers
 };
 
 // A point, spot or directional light as the scene file gives it (docs/lights.md).

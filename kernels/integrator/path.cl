@@ -21,16 +21,16 @@
 #include "kernels/camera/camera.cl"
 #include "kernels/lights/light.cl"
 #include "kernels/bsdf/bsdf.cl"
-#include "kernels/util/rng.cl"
+#include "kernels/util/sampler.cl"
 
 
 /* Next-event estimation at surface `s` seen from direction wo: one light sample,
  * weighted against the BSDF's density by the power heuristic (delta lights: weight 1).
  * Returns its contribution before throughput. */
 inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* frame,
-                            const FcMaterial* m, float3 wo_local, Rng* rng) {
-    float u_pick = rng_float(rng);
-    float2 u = rng_float2(rng);
+                            const FcMaterial* m, float3 wo_local, float3 u_light) {
+    float u_pick = u_light.x;
+    float2 u = u_light.yz;
     LightSample ls;
     if (!sample_light(sc, s->p, u_pick, u, &ls)) return (float3)(0.0f);
     /* Lights behind the surface count only through a dielectric; the shading frame
@@ -74,11 +74,12 @@ inline float bsdf_strategy_weight(uint strategy, float bsdf_pdf, float light_pdf
     return power_heuristic(bsdf_pdf, light_pdf);
 }
 
-inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
+inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sampler) {
     __constant const FcRenderParams* P = sc->params;
     float3 radiance = (float3)(0.0f);
     float3 throughput = (float3)(1.0f);
     float prev_bsdf_pdf = INFINITY;   /* density of the sampled direction; camera rays: a delta */
+    float3 prev_p = o;                /* the vertex the ray left (light sampling's point) */
     for (uint depth = 0;; ++depth) {
         Hit hit;
         if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) {
@@ -103,7 +104,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
         if (!is_black(le) && s.light >= 0) {
             float w = 1.0f;
             if (depth > 0u) {
-                float light_pdf = area_light_pdf_solid_angle(&sc->lights[s.light], hit.t, dot(s.ng, wo));
+                float light_pdf = area_light_pdf(&sc->lights[s.light], prev_p, hit.t, dot(s.ng, wo));
                 w = bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, light_pdf);
             }
             radiance += throughput * le * w;
@@ -127,9 +128,13 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
             wo_local = frame_to_local(&frame, wo);
         }
 
-        if (!bsdf_is_delta(m)) radiance += throughput * sample_direct(sc, &s, &frame, m, wo_local, rng);
+        if (!bsdf_is_delta(m)) {
+            float4 ul = sampler_get4(sampler, sampler_set_light(depth));
+            radiance += throughput * sample_direct(sc, &s, &frame, m, wo_local, ul.xyz);
+        }
 
-        float3 u = (float3)(rng_float2(rng), rng_float(rng));
+        float4 ub = sampler_get4(sampler, sampler_set_bsdf(depth));
+        float3 u = ub.xyz;
         BsdfSample bs;
         if (!bsdf_sample(m, wo_local, u, &bs)) break;
         float3 wi = frame_to_world(&frame, bs.wi);
@@ -142,9 +147,10 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Rng* rng) {
 
         if (depth + 1u >= P->rr_depth) {
             float survive = fmin(max3(throughput), 0.95f);
-            if (rng_float(rng) >= survive) break;
+            if (ub.w >= survive) break;
             throughput /= survive;
         }
+        prev_p = s.p;
         o = offset_ray_origin(s.p, side > 0.0f ? s.ng : -s.ng);
         d = wi;
     }
@@ -169,12 +175,12 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
     float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
     for (uint i = 0; i < params->sample_count; ++i) {
         uint index = params->sample_begin + i;
-        Rng rng = rng_init(params->seed, pixel, index);
-        float2 jitter = rng_float2(&rng);
+        Sampler sampler = sampler_init(params->sampler, params->seed, pixel, index);
+        float2 jitter = sampler_get4(&sampler, FC_SET_CAMERA).xy;
         float3 o, d;
         camera_ray(&params->camera, (float)x + jitter.x, (float)y + jitter.y, params->width,
                    params->height, &o, &d);
-        float3 l = path_radiance(&sc, o, d, &rng);
+        float3 l = path_radiance(&sc, o, d, &sampler);
         if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) sum[index & 1u].xyz += l;
         else sum[index & 1u].w += 1.0f;
     }

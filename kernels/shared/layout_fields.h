@@ -34,7 +34,7 @@
     F(FcRenderParams, sample_begin) F(FcRenderParams, sample_count) F(FcRenderParams, seed)       \
     F(FcRenderParams, max_depth) F(FcRenderParams, rr_depth) F(FcRenderParams, light_count)       \
     F(FcRenderParams, row_begin) F(FcRenderParams, row_count) F(FcRenderParams, environment)      \
-    F(FcRenderParams, environment_light) F(FcRenderParams, strategy)                              \
+    F(FcRenderParams, environment_light) F(FcRenderParams, strategy) F(FcRenderParams, sampler)                              \
     F(FcEnvironment, width) F(FcEnvironment, height) F(FcEnvironment, enabled)                    \
     F(FcEnvironment, scale) F(FcEnvironment, total) F(FcEnvironment, to_map)
 

@@ -16,6 +16,10 @@
 #define FC_STRATEGY_LIGHT 1   /* light sampling only */
 #define FC_STRATEGY_BSDF 2    /* BSDF sampling only */
 
+/* Sample generators (kernels/util/sampler.cl). */
+#define FC_SAMPLER_INDEPENDENT 0   /* independent uniform numbers (PCG32) */
+#define FC_SAMPLER_SOBOL 1         /* Owen-scrambled Sobol', shuffled per dimension set (Burley 2020) */
+
 /* A pinhole or orthographic camera. `right` and `up` span half the image plane:
  * for a perspective camera at distance 1 along `forward` (so |up| = tan(fov_y / 2)),
  * for an orthographic camera in world units. Image x grows along `right`, image y
@@ -49,12 +53,14 @@ typedef struct FcRenderParams {
     fc_uint row_count;
     fc_int environment_light;   /* index of the FC_LIGHT_ENVIRONMENT light, or -1 */
     fc_uint strategy;           /* FC_STRATEGY_*: how direct light is estimated */
+    fc_uint sampler;            /* FC_SAMPLER_*: where the sample values come from */
+    fc_uint pad_sampler[3];
     FcEnvironment environment;
 } FcRenderParams;
 
 FC_STATIC_ASSERT(sizeof(FcCamera) == 64, "FcCamera is 64 bytes");
 FC_STATIC_ASSERT(offsetof(FcCamera, up) == 48, "FcCamera offsets");
-FC_STATIC_ASSERT(sizeof(FcRenderParams) == 192, "FcRenderParams is 192 bytes");
+FC_STATIC_ASSERT(sizeof(FcRenderParams) == 208, "FcRenderParams is 208 bytes");
 FC_STATIC_ASSERT(offsetof(FcRenderParams, width) == 64 && offsetof(FcRenderParams, row_count) == 100, "FcRenderParams offsets");
 
 #endif

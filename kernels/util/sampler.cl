@@ -1,0 +1,98 @@
+/* The path tracer's sample generator: for sample `index` of a pixel it hands out
+ * 4-dimensional points of numbered "dimension sets", each set used for one fixed
+ * purpose (the camera, a bounce's light sample, a bounce's BSDF sample), so that a
+ * dimension means the same thing in every path whatever happened before it.
+ *
+ * FC_SAMPLER_SOBOL (the default): Owen-scrambled Sobol' points, padded and shuffled
+ * per dimension set by hashing, after Burley, "Practical Hash-based Owen Scrambling",
+ * JCGT 9(4), 2020 (the sampler Cycles calls Sobol-Burley). Each set draws a 4-D Sobol'
+ * point at a shuffled index (a nested uniform scramble of the sample index) and Owen-
+ * scrambles each coordinate with its own hashed seed: every point is uniformly
+ * distributed (so estimates stay unbiased), successive samples of a pixel are
+ * stratified in every set's 1-D to 4-D projections, and different sets are
+ * decorrelated.
+ *
+ * The even and odd samples of a pixel form the film's two half-images, whose
+ * difference estimates the error without a reference (host/film/error_metrics.hpp).
+ * That estimate needs two independent estimators, so each half is its own sequence,
+ * indexed by sample >> 1 and scrambled with a seed of its own: never two interleaved
+ * halves of one stratified sequence (tests/sampler_test.cpp checks the independence).
+ *
+ * FC_SAMPLER_INDEPENDENT: independent uniform numbers from the per-sample PCG32
+ * stream (kernels/util/rng.cl). */
+#ifndef FACET_UTIL_SAMPLER_CL
+#define FACET_UTIL_SAMPLER_CL
+
+#include "kernels/shared/render_layout.h"
+#include "kernels/util/rng.cl"
+#include "kernels/util/sobol_table.cl"
+
+typedef struct {
+    Rng rng;      /* FC_SAMPLER_INDEPENDENT's stream */
+    uint index;   /* the sample's index within its half */
+    uint seed;    /* the scramble seed of this pixel's half */
+    uint kind;    /* FC_SAMPLER_* */
+} Sampler;
+
+/* The dimension sets. The camera's; then two per bounce (depth 0 = the first hit). */
+#define FC_SET_CAMERA 0u
+inline uint sampler_set_light(uint depth) { return 1u + 2u * depth; }   /* pick, u, v, - */
+inline uint sampler_set_bsdf(uint depth) { return 2u + 2u * depth; }    /* u, v, lobe, roulette */
+
+inline uint reverse_bits32(uint x) {
+    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+    return (x >> 16) | (x << 16);
+}
+
+/* An Owen scramble of x's bits from the most significant down (Burley 2020, listing 3:
+ * the Laine-Karras hash applied to the reversed bits). */
+inline uint nested_uniform_scramble(uint x, uint seed) {
+    x = reverse_bits32(x);
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return reverse_bits32(x);
+}
+
+/* Sobol' dimension d in 1..3 of index i, from the 4-bit chunk tables. */
+inline uint sobol_dimension(uint i, uint d) {
+    __constant const uint* t = fc_sobol_chunks + (d - 1u) * 128u;
+    uint x = 0u;
+    for (uint c = 0u; c < 8u; ++c) x ^= t[c * 16u + ((i >> (4u * c)) & 15u)];
+    return x;
+}
+
+inline uint hash_pair(uint a, uint b) { return (uint)mix64(((ulong)a << 32) | (ulong)b); }
+
+inline float bits_to_unit(uint x) { return (float)(x >> 8) * 0x1p-24f; }
+
+inline Sampler sampler_init(uint kind, uint seed, uint pixel, uint sample) {
+    Sampler s;
+    s.kind = kind;
+    s.index = sample >> 1;
+    s.seed = (uint)mix64(mix64((ulong)seed ^ 0x5a17e5eedUL) ^ (((ulong)(sample & 1u) << 32) | (ulong)pixel));
+    s.rng = rng_init(seed, pixel, sample);
+    return s;
+}
+
+/* The point of dimension set `set`, each coordinate in [0, 1). */
+inline float4 sampler_get4(Sampler* s, uint set) {
+    if (s->kind == FC_SAMPLER_INDEPENDENT) {
+        float2 a = rng_float2(&s->rng);
+        return (float4)(a, rng_float2(&s->rng));
+    }
+    uint seed = hash_pair(s->seed, set);
+    uint i = nested_uniform_scramble(s->index, seed);
+    uint x0 = nested_uniform_scramble(reverse_bits32(i), hash_pair(seed, 1u));
+    uint x1 = nested_uniform_scramble(sobol_dimension(i, 1u), hash_pair(seed, 2u));
+    uint x2 = nested_uniform_scramble(sobol_dimension(i, 2u), hash_pair(seed, 3u));
+    uint x3 = nested_uniform_scramble(sobol_dimension(i, 3u), hash_pair(seed, 4u));
+    return (float4)(bits_to_unit(x0), bits_to_unit(x1), bits_to_unit(x2), bits_to_unit(x3));
+}
+
+#endif
