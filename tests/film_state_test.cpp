@@ -73,6 +73,7 @@ TEST(FilmState, RoundTrip) {
     EXPECT_EQ(b.max_depth, a.max_depth);
     EXPECT_EQ(b.rr_depth, a.rr_depth);
     EXPECT_EQ(b.strategy, a.strategy);
+    EXPECT_EQ(b.sampler, a.sampler);
     EXPECT_EQ(b.spp, 7u);
     EXPECT_EQ(b.render_seconds, 1.5);
     ASSERT_EQ(b.sums.size(), a.sums.size());
@@ -114,7 +115,8 @@ TEST(FilmState, RefusesAnotherSceneOrSettings) {
     other.materials[0].diffuse[0] = 0.5f;
     EXPECT_NE(film_scene_hash(other), hash);
     for (auto change : {+[](RenderSettings& s) { s.width = 7; }, +[](RenderSettings& s) { s.seed = 3; },
-                        +[](RenderSettings& s) { s.max_depth = 2; }, +[](RenderSettings& s) { s.strategy = FC_STRATEGY_BSDF; }}) {
+                        +[](RenderSettings& s) { s.max_depth = 2; }, +[](RenderSettings& s) { s.strategy = FC_STRATEGY_BSDF; },
+                        +[](RenderSettings& s) { s.sampler = FC_SAMPLER_INDEPENDENT; }}) {
         Scene changed = scene;
         change(changed.settings);
         const std::string msg = error_of([&] { check_film_matches(film, "f.film", changed, hash); });

@@ -91,6 +91,7 @@ FilmState make_film(const Scene& scene, std::uint64_t scene_hash, std::uint64_t 
     film.max_depth = scene.settings.max_depth;
     film.rr_depth = scene.settings.rr_depth;
     film.strategy = scene.settings.strategy;
+    film.sampler = scene.settings.sampler;
     film.spp = spp;
     film.render_seconds = render_seconds;
     film.sums = std::move(sums);
@@ -112,6 +113,7 @@ void write_film(const std::string& path, const FilmState& film) {
     h["max_depth"] = film.max_depth;
     h["rr_depth"] = film.rr_depth;
     h["strategy"] = film.strategy;
+    h["sampler"] = film.sampler;
     h["spp"] = film.spp;
     h["render_seconds"] = film.render_seconds;
     h["payload_floats"] = floats;
@@ -157,6 +159,7 @@ FilmState read_film(const std::string& path) {
         film.max_depth = h.at("max_depth").get<int>();
         film.rr_depth = h.at("rr_depth").get<int>();
         film.strategy = h.at("strategy").get<int>();
+        film.sampler = h.at("sampler").get<int>();
         film.spp = h.at("spp").get<std::uint64_t>();
         film.render_seconds = h.at("render_seconds").get<double>();
         floats = h.at("payload_floats").get<std::uint64_t>();
@@ -201,6 +204,11 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
              : v == FC_STRATEGY_BSDF ? std::string("bsdf") : std::to_string(v);
     };
     if (film.strategy != s.strategy) refuse("--strategy", strategy(film.strategy), strategy(s.strategy));
+    auto sampler = [](int v) {
+        return v == FC_SAMPLER_SOBOL ? std::string("sobol") : v == FC_SAMPLER_INDEPENDENT ? std::string("independent")
+                                                                                          : std::to_string(v);
+    };
+    if (film.sampler != s.sampler) refuse("--sampler", sampler(film.sampler), sampler(s.sampler));
 }
 
 }  // namespace facet
