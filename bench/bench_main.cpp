@@ -30,7 +30,7 @@
 #include "host/cl/runtime.hpp"
 #include "host/error.hpp"
 #include "host/render/renderer.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 
 namespace facet {
 namespace {

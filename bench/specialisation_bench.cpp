@@ -11,7 +11,7 @@
 #include "host/bvh/bvh.hpp"
 #include "host/render/features.hpp"
 #include "host/render/renderer.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 
 namespace facet {
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tests/cl_test_env.hpp"
+#include "host/scene/device_scene.hpp"
 #include "host/scene/material.hpp"
 
 namespace facet {
@@ -129,7 +130,7 @@ double reference_f(const std::string& model, const FcMaterial& m, int c, V3 v, V
 
 FcMaterial random_preset(const std::string& model, std::mt19937& rng) {
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    FcMaterial m = make_material(model);
+    FcMaterial m = device_material(make_material(model));
     set3(m.diffuse, 0.1f + 0.8f * u(rng), 0.1f + 0.8f * u(rng), 0.1f + 0.8f * u(rng));
     set3(m.specular, 0.02f + 0.9f * u(rng), 0.02f + 0.9f * u(rng), 0.02f + 0.9f * u(rng));
     m.alpha_x = m.alpha_y = 0.1f + 0.7f * u(rng);
@@ -218,7 +219,7 @@ struct Config {
 
 // A white material with one lobe and F = 1 (Fresnel ONE, or F0 = 1 for Schlick-only lobes).
 FcMaterial white(int diffuse_model, int specular_model) {
-    FcMaterial m = make_material("microfacet");
+    FcMaterial m = device_material(make_material("microfacet"));
     m.diffuse_model = diffuse_model, m.specular_model = specular_model;
     set3(m.diffuse, 1.0f, 1.0f, 1.0f);
     set3(m.specular, 1.0f, 1.0f, 1.0f);

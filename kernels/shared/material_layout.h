@@ -67,6 +67,10 @@
 /* Material flags (FcMaterial.flags). */
 #define FC_MAT_TWO_SIDED_EMISSION 1u
 
+/* Phong-style exponents are clamped to [0, FC_PHONG_EXPONENT_MAX] (the kernels'
+ * fc_phong_exponent, the host's shininess conversions and its clamp_material). */
+#define FC_PHONG_EXPONENT_MAX 1e6f
+
 /* Below this alpha a microfacet lobe is a perfect mirror (docs/brdf.md: stability). */
 #define FC_ALPHA_MIRROR 1e-4f
 
