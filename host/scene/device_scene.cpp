@@ -43,7 +43,7 @@ FcMaterial device_material(const Material& m) {
     d.exponent_x = m.exponent_x;
     d.exponent_y = m.exponent_y;
     d.ior = m.ior;
-    d.roughness = m.sigma;
+    d.sigma = m.sigma;
     d.flags = m.two_sided_emission ? FC_MAT_TWO_SIDED_EMISSION : 0u;
     return d;
 }
@@ -66,7 +66,7 @@ Material host_material(const FcMaterial& d) {
     m.exponent_x = d.exponent_x;
     m.exponent_y = d.exponent_y;
     m.ior = d.ior;
-    m.sigma = d.roughness;
+    m.sigma = d.sigma;
     m.two_sided_emission = (d.flags & FC_MAT_TWO_SIDED_EMISSION) != 0;
     return m;
 }

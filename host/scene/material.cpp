@@ -20,7 +20,8 @@ struct Preset {
     int diffuse, specular, ndf, geometry;
     int fresnel = FC_FRESNEL_SCHLICK;
 };
-// kernels/shared/material_layout.h's table; microfacet is ggx's lobes with any D, G, F.
+// The named models, once (docs/brdf.md describes them); microfacet is ggx's lobes with any
+// D, G, F.
 constexpr Preset kPresets[] = {
     {"lambert", FC_DIFFUSE_LAMBERT, FC_SPECULAR_NONE, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
     {"oren_nayar", FC_DIFFUSE_OREN_NAYAR, FC_SPECULAR_NONE, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
@@ -36,21 +37,15 @@ constexpr Preset kPresets[] = {
     {"dielectric", FC_DIFFUSE_NONE, FC_SPECULAR_DIELECTRIC, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_DIELECTRIC},
 };
 
-const std::vector<EnumName> kDiffuse = {{"none", FC_DIFFUSE_NONE}, {"lambert", FC_DIFFUSE_LAMBERT},
-    {"lambert_1mf0", FC_DIFFUSE_LAMBERT_1MF0}, {"oren_nayar", FC_DIFFUSE_OREN_NAYAR},
-    {"ashikhmin_shirley", FC_DIFFUSE_ASHIKHMIN_SHIRLEY}};
-const std::vector<EnumName> kSpecular = {{"none", FC_SPECULAR_NONE}, {"microfacet", FC_SPECULAR_MICROFACET},
-    {"blinn_phong", FC_SPECULAR_BLINN_PHONG}, {"blinn_phong_normalized", FC_SPECULAR_BLINN_PHONG_NORMALIZED},
-    {"ashikhmin_shirley", FC_SPECULAR_ASHIKHMIN_SHIRLEY}, {"dielectric", FC_SPECULAR_DIELECTRIC}};
-const std::vector<EnumName> kNdf = {
-    {"beckmann", FC_NDF_BECKMANN}, {"ggx", FC_NDF_GGX}, {"blinn_phong", FC_NDF_BLINN_PHONG}};
-const std::vector<EnumName> kGeometry = {{"implicit", FC_G_IMPLICIT}, {"cook_torrance", FC_G_COOK_TORRANCE},
-    {"smith_separable", FC_G_SMITH_SEPARABLE}, {"smith_correlated", FC_G_SMITH_CORRELATED},
-    {"smith_schlick", FC_G_SMITH_SCHLICK}, {"smith_walter", FC_G_SMITH_WALTER}};
-const std::vector<EnumName> kFresnel = {{"one", FC_FRESNEL_ONE}, {"schlick", FC_FRESNEL_SCHLICK},
-    {"schlick_ior", FC_FRESNEL_SCHLICK_IOR}, {"dielectric", FC_FRESNEL_DIELECTRIC},
-    {"conductor", FC_FRESNEL_CONDUCTOR}};
-const std::vector<EnumName> kSampling = {{"visible", FC_SAMPLE_VISIBLE}, {"all", FC_SAMPLE_ALL}};
+// The name tables, generated from material_layout.h's lists (value order).
+#define FC_ENUM_NAME(value, name) {name, value},
+const std::vector<EnumName> kDiffuse = {FC_DIFFUSE_LIST(FC_ENUM_NAME)};
+const std::vector<EnumName> kSpecular = {FC_SPECULAR_LIST(FC_ENUM_NAME)};
+const std::vector<EnumName> kNdf = {FC_NDF_LIST(FC_ENUM_NAME)};
+const std::vector<EnumName> kGeometry = {FC_G_LIST(FC_ENUM_NAME)};
+const std::vector<EnumName> kFresnel = {FC_FRESNEL_LIST(FC_ENUM_NAME)};
+const std::vector<EnumName> kSampling = {FC_SAMPLE_LIST(FC_ENUM_NAME)};
+#undef FC_ENUM_NAME
 
 struct ConductorRow {
     std::string_view name;

@@ -55,10 +55,9 @@ glm::vec3& specular_colour(Material& m);
 const glm::vec3& specular_colour(const Material& m);
 
 // --- named models ---------------------------------------------------------------------
-// "lambert", "oren_nayar", "cook_torrance", "blinn_phong", "blinn_phong_normalized",
-// "ashikhmin_shirley", "ggx" (the default), "microfacet", "conductor" (GGX with the
-// exact conductor Fresnel, aluminium's eta + i k, no diffuse lobe) and "dielectric"
-// (smooth clear glass, ior 1.5, no diffuse lobe), in that order.
+// The presets of material.cpp's kPresets, in its order: "lambert", ..., "ggx" (the
+// default), "microfacet", "conductor" (GGX with the exact conductor Fresnel, aluminium's
+// eta + i k, no diffuse lobe) and "dielectric" (smooth clear glass, ior 1.5).
 const std::vector<std::string_view>& material_model_names();
 inline constexpr std::string_view kDefaultMaterialModel = "ggx";
 
@@ -80,13 +79,8 @@ struct EnumName {
     std::string_view name;
     int value;
 };
-// Every name of the enum in value order (each value has exactly one name):
-//  Diffuse:  none lambert lambert_1mf0 oren_nayar ashikhmin_shirley
-//  Specular: none microfacet blinn_phong blinn_phong_normalized ashikhmin_shirley dielectric
-//  Ndf:      beckmann ggx blinn_phong
-//  Geometry: implicit cook_torrance smith_separable smith_correlated smith_schlick smith_walter
-//  Fresnel:  one schlick schlick_ior dielectric conductor
-//  Sampling: visible all
+// Every name of the enum in value order (each value has exactly one name), as the
+// lists of kernels/shared/material_layout.h (FC_DIFFUSE_LIST, ...) give them.
 const std::vector<EnumName>& enum_names(MaterialEnum kind);
 std::optional<int> enum_from_name(MaterialEnum kind, std::string_view name);
 // The name of a value; "invalid(<n>)" when out of range.
