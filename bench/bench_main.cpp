@@ -31,7 +31,7 @@
 #include "host/error.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 
 namespace facet {
 namespace {

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/bench.hpp"
+#include "host/scene/device_scene.hpp"
 #include "host/scene/material.hpp"
 
 namespace facet {
@@ -18,7 +19,7 @@ nlohmann::json bench_bsdfs(ClContext& ctx, bool quick) {
     nlohmann::json rows = nlohmann::json::array();
     bench_print("\n### BSDF throughput\n\n| model | eval + pdf M/s | sample M/s |\n|---|---|---|\n");
     for (std::string_view name : material_model_names()) {
-        FcMaterial m = make_material(std::string(name));
+        FcMaterial m = device_material(make_material(std::string(name)));
         cl::Buffer mb(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof m, &m);
         double rate[2];
         const char* kernels[2] = {"bsdf_eval_bench", "bsdf_sample_bench"};

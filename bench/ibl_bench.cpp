@@ -13,6 +13,7 @@
 #include "host/film/error_metrics.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
+#include "host/readers/environment_file.hpp"
 #include "host/scene/environment_map.hpp"
 #include "host/scene/material.hpp"
 #include "host/scene/scene.hpp"
@@ -23,10 +24,10 @@ namespace {
 
 Scene spheres_under(const EnvironmentMap& env) {
     Scene scene;
-    FcMaterial diffuse = make_material("lambert");
-    FcMaterial glossy = make_material("ggx");
+    Material diffuse = make_material("lambert");
+    Material glossy = make_material("ggx");
     glossy.alpha_x = glossy.alpha_y = 0.1f;
-    for (int c = 0; c < 3; ++c) diffuse.diffuse[c] = 0.7f, glossy.diffuse[c] = 0.2f, glossy.specular[c] = 0.5f;
+    for (int c = 0; c < 3; ++c) diffuse.diffuse[c] = 0.7f, glossy.diffuse[c] = 0.2f, glossy.f0[c] = 0.5f;
     add_material(scene, diffuse, "diffuse");
     add_material(scene, glossy, "glossy");
     add_sphere(scene, glm::vec3(-1.1f, 0.0f, 0.0f), 1.0f, 4, 0, false);

@@ -12,7 +12,7 @@
 #include "host/render/features.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 
 namespace facet {
 

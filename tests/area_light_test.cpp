@@ -130,10 +130,11 @@ TEST(AreaLight, SphericalTriangleIsUniformInSolidAngle) {
 // solid-angle density that light sampling used).
 TEST(AreaLight, StrategiesAgreeNearTheLight) {
     Scene scene;
-    FcMaterial floor = default_material();
-    for (float& d : floor.diffuse) d = 0.8f;
-    FcMaterial lamp = default_material();
-    for (int i = 0; i < 3; ++i) lamp.diffuse[i] = 0.0f, lamp.emission[i] = 5.0f;
+    Material floor = default_material();
+    floor.diffuse = glm::vec3(0.8f);
+    Material lamp = default_material();
+    lamp.diffuse = glm::vec3(0.0f);
+    lamp.emission = glm::vec3(5.0f);
     const int m_floor = add_material(scene, floor, "floor"), m_lamp = add_material(scene, lamp, "lamp");
     add_quad(scene, glm::vec3(-1.0f, 0.0f, -1.0f), glm::vec3(0.0f, 0.0f, 2.0f), glm::vec3(2.0f, 0.0f, 0.0f), m_floor);
     add_triangle(scene, glm::vec3(-0.2f, 0.15f, -0.2f), glm::vec3(0.25f, 0.15f, -0.1f), glm::vec3(0.0f, 0.15f, 0.25f),

@@ -51,6 +51,9 @@ expect too-big-for-device 1 "MiB" -- "$FACET" render "$SCENES/cornell_box.json" 
 expect bad-time-nan 2 "--time.*not a finite" -- "$FACET" render "$SCENES/cornell_box.json" --time nan
 expect bad-time-inf 2 "--time.*not a finite" -- "$FACET" render "$SCENES/cornell_box.json" --time inf
 expect bad-time-negative 2 "--time" -- "$FACET" render "$SCENES/cornell_box.json" --time -1
+# Ranges are said in words (not as DBL_MAX's digits), from the one table of settings limits.
+expect bad-time-zero 2 "--time: Value 0 is not a finite number of seconds > 0" -- "$FACET" render "$SCENES/cornell_box.json" --time 0
+expect bad-spp-range-words 2 "--spp: Value 0 is not an integer in \[1, 16777216\]" -- "$FACET" render "$SCENES/cornell_box.json" --spp 0
 expect bad-snapshot-nan 2 "--snapshot.*not a finite" -- "$FACET" render "$SCENES/cornell_box.json" --snapshot nan
 expect bad-exposure-nan 2 "--exposure.*not a finite" -- "$FACET" render "$SCENES/cornell_box.json" --exposure nan
 expect bad-width-negative 2 "--width" -- "$FACET" render "$SCENES/cornell_box.json" --width -5

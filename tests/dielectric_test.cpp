@@ -13,9 +13,9 @@
 #include "tests/dielectric_test_util.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 #include "host/scene/material.hpp"
-#include "host/scene/mtl_material.hpp"
+#include "host/readers/mtl_material.hpp"
 
 namespace facet {
 namespace {
@@ -132,11 +132,11 @@ TEST(Dielectric, ConductorPresetsAgreeWithF0Table) {
     }
     EXPECT_FALSE(conductor_preset("unobtainium").has_value());
     EXPECT_TRUE(conductor_preset("Aluminum").has_value());
-    FcMaterial m = make_material("conductor");
+    Material m = make_material("conductor");
     EXPECT_EQ(m.fresnel, FC_FRESNEL_CONDUCTOR);
     EXPECT_EQ(m.diffuse_model, FC_DIFFUSE_NONE);
     EXPECT_EQ(material_model_of(m), "conductor");
-    FcMaterial g = make_material("dielectric");
+    Material g = make_material("dielectric");
     EXPECT_EQ(g.specular_model, FC_SPECULAR_DIELECTRIC);
     EXPECT_EQ(material_model_of(g), "dielectric");
     EXPECT_EQ(validate_material(g), "");
@@ -151,18 +151,18 @@ TEST(Dielectric, MtlGlassAndMirror) {
                           "newmtl grey\nTf 0.1 0.1 0.1\nNi 2.5\nillum 7\n",
                           warnings);
     ASSERT_EQ(mats.size(), 3u);
-    const FcMaterial& mirror = mats[0].material;
+    const Material& mirror = mats[0].material;
     EXPECT_EQ(mirror.specular_model, FC_SPECULAR_MICROFACET);
     EXPECT_EQ(mirror.diffuse_model, FC_DIFFUSE_NONE);
     EXPECT_LT(std::max(mirror.alpha_x, mirror.alpha_y), FC_ALPHA_MIRROR);
-    EXPECT_FLOAT_EQ(mirror.specular[1], 0.8f);
-    const FcMaterial& glass_m = mats[1].material;
+    EXPECT_FLOAT_EQ(mirror.f0[1], 0.8f);
+    const Material& glass_m = mats[1].material;
     EXPECT_EQ(glass_m.specular_model, FC_SPECULAR_DIELECTRIC);
     EXPECT_FLOAT_EQ(glass_m.ior, 1.33f);
-    EXPECT_FLOAT_EQ(glass_m.specular[0], 0.5f) << "sqrt(Tf) per refraction";
-    EXPECT_FLOAT_EQ(glass_m.specular[1], 1.0f);
+    EXPECT_FLOAT_EQ(glass_m.transmittance[0], 0.5f) << "sqrt(Tf) per refraction";
+    EXPECT_FLOAT_EQ(glass_m.transmittance[1], 1.0f);
     // Only Tf's hue is kept (McGuire's clear glass says Tf 0.1): grey Tf is clear glass.
-    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(mats[2].material.specular[c], 1.0f);
+    for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(mats[2].material.transmittance[c], 1.0f);
 }
 
 // McGuire's Cornell boxes with a mirror sphere and glass (or water) render without a
@@ -174,7 +174,7 @@ TEST(Dielectric, McGuireCornellBoxesRenderClean) {
         Scene scene = load_scene(file);
         scene.settings.width = scene.settings.height = 32;
         bool has_glass = false, has_mirror = false;
-        for (const FcMaterial& m : scene.materials) {
+        for (const Material& m : scene.materials) {
             has_glass |= m.specular_model == FC_SPECULAR_DIELECTRIC;
             has_mirror |= m.specular_model == FC_SPECULAR_MICROFACET && m.alpha_x < FC_ALPHA_MIRROR;
         }

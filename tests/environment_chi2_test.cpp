@@ -15,6 +15,7 @@
 
 #include "tests/chi2_test_util.hpp"
 #include "tests/environment_test_util.hpp"
+#include "host/readers/environment_file.hpp"
 #include "host/scene/sky.hpp"
 
 namespace facet {

@@ -11,7 +11,7 @@
 #include "host/render/features.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 #include "host/scene/material.hpp"
 #include "kernels/shared/feature_flags.h"
 
@@ -125,7 +125,7 @@ TEST(Features, EveryFlagIsExercised) {
         return s;
     };
     std::vector<std::pair<std::string, Scene>> cases;
-    auto with_material = [&](const std::string& label, FcMaterial m) {
+    auto with_material = [&](const std::string& label, Material m) {
         Scene s = base();
         add_material(s, m, label);
         add_sphere(s, glm::vec3(0.0f), 1.0f, 2, 0, false);
@@ -133,7 +133,7 @@ TEST(Features, EveryFlagIsExercised) {
         PunctualLight p;
         p.position = glm::vec3(2, 3, 2);
         s.punctual_lights.push_back(p);
-        FcMaterial e = make_material("lambert");
+        Material e = make_material("lambert");
         e.emission[0] = e.emission[1] = e.emission[2] = 2.0f;
         add_material(s, e, "emitter");
         add_quad(s, glm::vec3(-1, 3, -1), glm::vec3(0, 0, 2), glm::vec3(2, 0, 0), 1);
@@ -147,7 +147,7 @@ TEST(Features, EveryFlagIsExercised) {
     with_material("ggx", make_material("ggx"));
     with_material("beckmann", make_material("cook_torrance"));
     with_material("dielectric", make_material("dielectric"));
-    FcMaterial rough_glass = make_material("dielectric");
+    Material rough_glass = make_material("dielectric");
     rough_glass.ndf = FC_NDF_BECKMANN;
     rough_glass.alpha_x = rough_glass.alpha_y = 0.2f;
     with_material("rough dielectric (beckmann)", rough_glass);

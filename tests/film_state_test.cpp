@@ -23,10 +23,10 @@ namespace fs = std::filesystem;
 // A diffuse box lit by an emitting quad: noisy enough that sample indices matter.
 Scene lit_scene(int size) {
     Scene scene;
-    FcMaterial white = default_material();
-    for (int c = 0; c < 3; ++c) white.diffuse[c] = 0.7f;
-    FcMaterial light = default_material();
-    for (int c = 0; c < 3; ++c) light.emission[c] = 5.0f;
+    Material white = default_material();
+    white.diffuse = glm::vec3(0.7f);
+    Material light = default_material();
+    light.emission = glm::vec3(5.0f);
     int w = add_material(scene, white, "white");
     int l = add_material(scene, light, "light");
     add_sphere(scene, glm::vec3(0.0f), 2.0f, 2, w, /*inward=*/true);

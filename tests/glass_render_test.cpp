@@ -25,7 +25,7 @@ struct Furnace {
 
 Furnace glass_sphere_in_white(float eta, float alpha, std::uint32_t spp, int subdivisions = 3) {
     Scene scene;
-    FcMaterial m = make_material("dielectric");
+    Material m = make_material("dielectric");
     m.ior = eta;
     m.alpha_x = m.alpha_y = alpha;
     add_material(scene, m, "glass");

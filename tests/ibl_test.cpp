@@ -42,7 +42,7 @@ glm::dvec3 exact_plane_radiance(const EnvironmentMap& env) {
 
 glm::dvec3 render_plane(const EnvironmentMap& env, int strategy, int size, std::uint32_t spp) {
     Scene scene;
-    FcMaterial m = make_material("lambert");
+    Material m = make_material("lambert");
     for (int c = 0; c < 3; ++c) m.diffuse[c] = kRho;
     add_material(scene, m, "plane");
     add_quad(scene, glm::vec3(-50, 0, 50), glm::vec3(100, 0, 0), glm::vec3(0, 0, -100), 0);

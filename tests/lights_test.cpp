@@ -21,7 +21,7 @@ constexpr float kAlbedo = 0.6f;
 // covering [-2, 2]^2: pixel (i, j) sees the point x = -2 + 4 (i + 0.5) / n, z likewise.
 Scene plane_scene(int n) {
     Scene scene;
-    FcMaterial m = make_material("lambert");
+    Material m = make_material("lambert");
     for (int c = 0; c < 3; ++c) m.diffuse[c] = kAlbedo;
     add_material(scene, m, "plane");
     add_quad(scene, glm::vec3(-10, 0, 10), glm::vec3(20, 0, 0), glm::vec3(0, 0, -20), 0);
@@ -108,7 +108,7 @@ TEST(Lights, SpotAndDirectionalLights) {
 // in every direction, so it reflects exactly L: every pixel is L.
 TEST(Lights, ConstantEnvironmentFurnace) {
     Scene scene;
-    FcMaterial m = make_material("lambert");
+    Material m = make_material("lambert");
     for (int c = 0; c < 3; ++c) m.diffuse[c] = 1.0f;
     add_material(scene, m, "white");
     add_sphere(scene, glm::vec3(0.0f), 1.0f, 4, 0, false);
@@ -134,7 +134,7 @@ TEST(Lights, ConstantEnvironmentFurnace) {
 // A white rough conductor with F = 1 loses energy to shadowing-masking: <= L.
 TEST(Lights, RoughConductorInEnvironmentReflectsAtMostL) {
     Scene scene;
-    FcMaterial m = make_material("microfacet");
+    Material m = make_material("microfacet");
     m.diffuse_model = FC_DIFFUSE_NONE;
     m.fresnel = FC_FRESNEL_ONE;
     m.ndf = FC_NDF_GGX;

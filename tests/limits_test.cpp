@@ -11,8 +11,9 @@
 #include "host/cl/runtime.hpp"
 #include "tests/cl_test_env.hpp"
 #include "host/film/image_io.hpp"
+#include "host/readers/environment_file.hpp"
 #include "host/scene/environment_map.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 #include "tests/scene_test_util.hpp"
 
 namespace facet {
@@ -144,9 +145,9 @@ TEST(Limits, MtlParameters) {
     d.write("t.mtl", "newmtl a\nKd 1.9 0.5 0.5\nKs 2 0 0\n");
     Scene s = load_scene(d.path("t.obj"));
     EXPECT_TRUE(contains(s.warnings, "t.obj: material 'a': a reflectance (Kd, Ks) above 1"));
-    for (const FcMaterial& m : s.materials) {
+    for (const Material& m : s.materials) {
         EXPECT_LE(m.diffuse[0], 1.0f);
-        EXPECT_LE(m.specular[0], 1.0f);
+        EXPECT_LE(specular_colour(m)[0], 1.0f);
     }
 }
 

@@ -31,29 +31,29 @@ TEST(Material, PresetsFollowTheTable) {
     for (const Row& r : rows) {
         // conductor and dielectric: their own colours (dielectric_test.cpp checks them)
         if (r.diffuse == FC_DIFFUSE_NONE) {
-            FcMaterial m = make_material(r.name);
+            Material m = make_material(r.name);
             EXPECT_EQ(m.diffuse_model, r.diffuse) << r.name;
             EXPECT_EQ(m.specular_model, r.specular) << r.name;
             EXPECT_EQ(validate_material(m), "") << r.name;
             EXPECT_EQ(material_model_of(m), r.name);
             continue;
         }
-        FcMaterial m = make_material(r.name);
+        Material m = make_material(r.name);
         EXPECT_EQ(m.diffuse_model, r.diffuse) << r.name;
         EXPECT_EQ(m.specular_model, r.specular) << r.name;
         EXPECT_EQ(validate_material(m), "") << r.name;
         EXPECT_EQ(m.diffuse[1], 0.5f);
-        EXPECT_EQ(m.specular[2], 0.04f);
+        EXPECT_EQ(specular_colour(m)[2], 0.04f);
         EXPECT_EQ(m.alpha_x, 0.3f);
         if (std::string(r.name) != "microfacet") {
             EXPECT_EQ(material_model_of(m), r.name);
         }
     }
-    FcMaterial ct = make_material("cook_torrance");
+    Material ct = make_material("cook_torrance");
     EXPECT_EQ(ct.ndf, FC_NDF_BECKMANN);
     EXPECT_EQ(ct.geometry, FC_G_COOK_TORRANCE);
     EXPECT_EQ(ct.fresnel, FC_FRESNEL_SCHLICK);
-    FcMaterial ggx = make_material(std::string(kDefaultMaterialModel));
+    Material ggx = make_material(std::string(kDefaultMaterialModel));
     EXPECT_EQ(ggx.ndf, FC_NDF_GGX);
     EXPECT_EQ(ggx.geometry, FC_G_SMITH_CORRELATED);
     EXPECT_FALSE(material_preset("phong").has_value());
@@ -136,34 +136,34 @@ TEST(Material, F0Presets) {
 }
 
 TEST(Material, ValidateAndClamp) {
-    FcMaterial m = make_material("ggx");
+    Material m = make_material("ggx");
     EXPECT_EQ(validate_material(m), "");
-    auto message = [](FcMaterial x) { return validate_material(x); };
-    FcMaterial a = m;
+    auto message = [](Material x) { return validate_material(x); };
+    Material a = m;
     a.alpha_x = NAN;
     EXPECT_NE(message(a).find("alpha_x"), std::string::npos) << message(a);
     a = m, a.exponent_y = -1.0f;
     EXPECT_NE(message(a).find("exponent_y"), std::string::npos) << message(a);
     a = m, a.diffuse[1] = 1.5f;
     EXPECT_NE(message(a).find("diffuse"), std::string::npos) << message(a);
-    a = m, a.specular[0] = -0.1f;
+    a = m, a.f0[0] = -0.1f;
     EXPECT_NE(message(a).find("specular"), std::string::npos) << message(a);
     a = m, a.emission[2] = INFINITY;
     EXPECT_NE(message(a).find("emission"), std::string::npos) << message(a);
     a = m, a.ior = 0.0f;
     EXPECT_NE(message(a).find("ior"), std::string::npos) << message(a);
-    a = m, a.roughness = NAN;
-    EXPECT_NE(message(a).find("roughness"), std::string::npos) << message(a);
+    a = m, a.sigma = NAN;
+    EXPECT_NE(message(a).find("sigma"), std::string::npos) << message(a);
     a = m, a.geometry = FC_G_COUNT;
     EXPECT_NE(message(a).find("geometry"), std::string::npos) << message(a);
     a = m, a.emission[0] = 50.0f;
     EXPECT_EQ(message(a), "");
 
-    a = m, a.exponent_x = 1e9f, a.alpha_y = -2.0f, a.roughness = 9.0f, a.alpha_x = NAN;
+    a = m, a.exponent_x = 1e9f, a.alpha_y = -2.0f, a.sigma = 9.0f, a.alpha_x = NAN;
     clamp_material(a);
     EXPECT_EQ(a.exponent_x, 1e6f);
     EXPECT_EQ(a.alpha_y, 0.0f);
-    EXPECT_LE(a.roughness, 1.5708f);
+    EXPECT_LE(a.sigma, 1.5708f);
     EXPECT_TRUE(std::isnan(a.alpha_x));
 }
 

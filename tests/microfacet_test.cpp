@@ -75,7 +75,7 @@ FcMaterial random_material(std::mt19937& rng, double lo) {
     m.exponent_x = float(std::pow(10.0, 4.0 * u(rng)));
     m.exponent_y = float(std::pow(10.0, 4.0 * u(rng)));
     m.ior = float(1.0 + 3.0 * u(rng));
-    m.roughness = float(1.5 * u(rng));
+    m.sigma = float(1.5 * u(rng));
     for (int c = 0; c < 3; ++c) {
         m.diffuse[c] = float(u(rng));
         m.specular[c] = float(u(rng));

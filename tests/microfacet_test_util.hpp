@@ -58,7 +58,7 @@ inline FcMaterial lobe_material(int diffuse_model, int specular_model) {
     m.alpha_x = m.alpha_y = 0.3f;
     m.exponent_x = m.exponent_y = 20.0f;
     m.ior = 1.5f;
-    m.roughness = 0.5f;
+    m.sigma = 0.5f;
     m.sampling = FC_SAMPLE_VISIBLE;
     return m;
 }

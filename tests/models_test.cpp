@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tests/cl_test_env.hpp"
+#include "host/scene/device_scene.hpp"
 #include "host/scene/material.hpp"
 
 namespace facet {
@@ -96,7 +97,7 @@ double reference_f(const std::string& model, const FcMaterial& m, int c, V3 v, V
         V3 pv = add(v, scale({0, 0, 1}, -nv)), pl = add(l, scale({0, 0, 1}, -nl));
         double lv = std::sqrt(dot(pv, pv)), ll = std::sqrt(dot(pl, pl));
         double cos_phi = (lv > 0 && ll > 0) ? dot(pv, pl) / (lv * ll) : 0.0;
-        double s2 = double(m.roughness) * double(m.roughness), a = 1.0 - 0.5 * s2 / (s2 + 0.57), b = 0.45 * s2 / (s2 + 0.09);
+        double s2 = double(m.sigma) * double(m.sigma), a = 1.0 - 0.5 * s2 / (s2 + 0.57), b = 0.45 * s2 / (s2 + 0.09);
         // the lecture writes (A + B max(0, cos phi)) C; the model is A + B max(0, cos phi) C
         i_diff = cd * nl * (a + b * std::max(0.0, cos_phi) * std::sin(alpha) * std::tan(beta));
     }
@@ -129,13 +130,13 @@ double reference_f(const std::string& model, const FcMaterial& m, int c, V3 v, V
 
 FcMaterial random_preset(const std::string& model, std::mt19937& rng) {
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    FcMaterial m = make_material(model);
+    FcMaterial m = device_material(make_material(model));
     set3(m.diffuse, 0.1f + 0.8f * u(rng), 0.1f + 0.8f * u(rng), 0.1f + 0.8f * u(rng));
     set3(m.specular, 0.02f + 0.9f * u(rng), 0.02f + 0.9f * u(rng), 0.02f + 0.9f * u(rng));
     m.alpha_x = m.alpha_y = 0.1f + 0.7f * u(rng);
     m.exponent_x = 1.0f + 199.0f * u(rng);
     m.exponent_y = 1.0f + 299.0f * u(rng);
-    m.roughness = 1.2f * u(rng);
+    m.sigma = 1.2f * u(rng);
     return m;
 }
 
@@ -218,7 +219,7 @@ struct Config {
 
 // A white material with one lobe and F = 1 (Fresnel ONE, or F0 = 1 for Schlick-only lobes).
 FcMaterial white(int diffuse_model, int specular_model) {
-    FcMaterial m = make_material("microfacet");
+    FcMaterial m = device_material(make_material("microfacet"));
     m.diffuse_model = diffuse_model, m.specular_model = specular_model;
     set3(m.diffuse, 1.0f, 1.0f, 1.0f);
     set3(m.specular, 1.0f, 1.0f, 1.0f);
@@ -320,7 +321,7 @@ TEST(Models, EnergyDiffuse) {
         configs.push_back({"ashikhmin_shirley diffuse (F0 = 0)", "rho 1", t, m});
         for (float sigma : {0.0f, 0.1f, 0.25f, 0.5f, 1.0f, 1.5f}) {
             FcMaterial o = white(FC_DIFFUSE_OREN_NAYAR, FC_SPECULAR_NONE);
-            o.roughness = sigma;
+            o.sigma = sigma;
             configs.push_back({"oren_nayar", "sigma " + std::to_string(sigma).substr(0, 4), t, o});
         }
     }
@@ -369,7 +370,7 @@ TEST(Models, SampleMatchesEvalAndExtremes) {
         for (float e : exps)
             for (V3 v : dirs) {
                 FcMaterial m = white(FC_DIFFUSE_OREN_NAYAR, model);
-                m.exponent_x = e, m.exponent_y = 100.0f, m.roughness = e;
+                m.exponent_x = e, m.exponent_y = 100.0f, m.sigma = e;
                 mats.push_back(m), wo.push_back(v);
             }
     std::vector<int> c = run_per_wo<int>("models_sample_consistency", mats, wo, 4096, 2);

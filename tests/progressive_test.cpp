@@ -246,11 +246,9 @@ TEST(Progressive, TimeLimitEndsTheRender) {
 // On PoCL: a pass in launches of one row gives the same image, bit for bit, as one launch.
 TEST(Progressive, DriverBandsMatchOneLaunchOnTheDevice) {
     Scene scene;
-    FcMaterial m = default_material();
-    for (int c = 0; c < 3; ++c) {
-        m.diffuse[c] = 0.5f;
-        m.emission[c] = 1.0f;
-    }
+    Material m = default_material();
+    m.diffuse = glm::vec3(0.5f);
+    m.emission = glm::vec3(1.0f);
     scene.materials.push_back(m);
     scene.material_names.push_back("furnace");
     add_sphere(scene, glm::vec3(0.0f), 1.0f, 3, 0, /*inward=*/true);

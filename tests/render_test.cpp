@@ -18,7 +18,7 @@ namespace {
 // a and emits radiance e. Every path sees L = e + a L, so L = e / (1 - a).
 Scene furnace_scene(float albedo, float emission, int size, int spp) {
     Scene scene;
-    FcMaterial m = default_material();
+    Material m = default_material();
     for (int c = 0; c < 3; ++c) {
         m.diffuse[c] = albedo;
         m.emission[c] = emission;

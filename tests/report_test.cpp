@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 
 Scene furnace(int size) {
     Scene scene;
-    FcMaterial m = default_material();
+    Material m = default_material();
     for (int c = 0; c < 3; ++c) m.diffuse[c] = m.emission[c] = 0.5f;
     scene.materials.push_back(m);
     scene.material_names.push_back("furnace");

@@ -13,7 +13,7 @@
 #include "host/bvh/bvh.hpp"
 #include "host/cl/runtime.hpp"
 #include "host/render/renderer.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 #include "kernels/shared/render_layout.h"
 #include "tests/cl_test_env.hpp"
 

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 #include "tests/scene_test_util.hpp"
 
 namespace facet {
@@ -57,9 +57,9 @@ TEST(SceneJson, JsonFullSceneLoads) {
             if (s.material_names[i] == name) return s.materials[i];
         }
         ADD_FAILURE() << "no material " << name;
-        return FcMaterial{};
+        return Material{};
     };
-    EXPECT_TRUE(material("lamp").flags & FC_MAT_TWO_SIDED_EMISSION);
+    EXPECT_TRUE(material("lamp").two_sided_emission);
     EXPECT_FLOAT_EQ(material("blue").alpha_y, 0.3f);
     EXPECT_FLOAT_EQ(material("blue").ior, 1.4f);
 }

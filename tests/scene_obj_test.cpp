@@ -5,7 +5,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
+#include "host/readers/obj_reader.hpp"
 #include "tests/scene_test_util.hpp"
 
 namespace facet {
@@ -127,10 +128,10 @@ TEST(SceneObj, MtlMaterialsMapped) {
     const Scene s = load(p);
     EXPECT_TRUE(s.warnings.empty());
     ASSERT_EQ(s.triangle_count(), 2u);
-    const FcMaterial& a = s.materials[static_cast<std::size_t>(s.shading[0].material)];
-    const FcMaterial& b = s.materials[static_cast<std::size_t>(s.shading[1].material)];
+    const Material& a = s.materials[static_cast<std::size_t>(s.shading[0].material)];
+    const Material& b = s.materials[static_cast<std::size_t>(s.shading[1].material)];
     EXPECT_FLOAT_EQ(a.diffuse[2], 0.3f);
-    EXPECT_FLOAT_EQ(a.specular[0], 0.5f);
+    EXPECT_FLOAT_EQ(a.ks[0], 0.5f);
     EXPECT_FLOAT_EQ(a.ior, 1.33f);
     EXPECT_NEAR(a.alpha_x, std::sqrt(2.0f / 100.0f), 1e-6f);
     EXPECT_FLOAT_EQ(a.alpha_y, a.alpha_x);
@@ -141,7 +142,7 @@ TEST(SceneObj, MtlMaterialsMapped) {
     EXPECT_EQ(b.specular_model, FC_SPECULAR_MICROFACET);
     EXPECT_EQ(b.ndf, FC_NDF_GGX);
     EXPECT_FLOAT_EQ(b.diffuse[1], 0.0f);
-    EXPECT_FLOAT_EQ(b.specular[1], 0.7f);
+    EXPECT_FLOAT_EQ(b.f0[1], 0.7f);
     EXPECT_FLOAT_EQ(b.alpha_x, 0.0625f);
     EXPECT_FLOAT_EQ(b.emission[2], 3.0f);
     EXPECT_FLOAT_EQ(b.ior, 1.5f);

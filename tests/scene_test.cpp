@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 #include "host/scene/scene.hpp"
 #include "tests/scene_test_util.hpp"
 
@@ -115,13 +115,13 @@ TEST(Scene, QuadShape) {
 
 TEST(Scene, LightPickPdfsFollowPower) {
     Scene s;
-    FcMaterial dim = default_material(), bright = default_material(), twin = default_material();
+    Material dim = default_material(), bright = default_material(), twin = default_material();
     for (int c = 0; c < 3; ++c) {
         dim.emission[c] = 1.0f;
         bright.emission[c] = 3.0f;
         twin.emission[c] = 1.0f;
     }
-    twin.flags = FC_MAT_TWO_SIDED_EMISSION;
+    twin.two_sided_emission = true;
     const int m_plain = add_material(s, default_material(), "plain");
     const int m_dim = add_material(s, dim, "dim");
     const int m_bright = add_material(s, bright, "bright");
@@ -159,7 +159,7 @@ TEST(Scene, LightPickPdfsFollowPower) {
 
 TEST(Scene, LightEdgesFaceTheShadingNormal) {
     Scene s;
-    FcMaterial m = default_material();
+    Material m = default_material();
     m.emission[0] = 1.0f;
     const int mat = add_material(s, m, "e");
     // Wound clockwise seen from +z, but shading normals say +z.
@@ -195,7 +195,7 @@ TEST(Scene, ObjWithoutEmittersGetsDefaultLightAndCamera) {
     const Scene s = load_scene(obj);
     EXPECT_EQ(s.triangle_count(), 3u);  // the mesh and the two-sided light quad
     EXPECT_EQ(s.lights.size(), 2u);
-    EXPECT_TRUE(s.materials.back().flags & FC_MAT_TWO_SIDED_EMISSION);
+    EXPECT_TRUE(s.materials.back().two_sided_emission);
     EXPECT_EQ(s.camera.target, glm::vec3(0, 1, 0));
     EXPECT_GT(s.camera.eye.z, 2.0f);
     EXPECT_GT(s.camera.eye.y, 1.0f);

@@ -15,14 +15,10 @@
 
 #include "host/error.hpp"
 #include "host/film/safe_write.hpp"
+#include "host/util/strings.hpp"
 
 namespace facet {
 namespace {
-
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-    return s;
-}
 
 std::string trimmed(std::string s) {
     while (!s.empty() && (s.back() == '\0' || std::isspace(static_cast<unsigned char>(s.back())))) s.pop_back();

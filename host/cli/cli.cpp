@@ -1,6 +1,7 @@
 // `facet devices | info | render`: argument parsing and dispatch.
 #include "host/cli/cli.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +13,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/error.hpp"
+#include "host/scene/settings_limits.hpp"
 #include "kernels/shared/render_layout.h"
 
 namespace facet {
@@ -27,6 +29,31 @@ const CLI::Validator kFinite(
         return std::isfinite(v) ? std::string() : "Value " + text + " is not a finite number";
     },
     "FINITE");
+
+// An integer option within its setting's range (host/scene/settings_limits.hpp), the
+// range said in words when it is not.
+CLI::Validator in_range(SettingRange range) {
+    return CLI::Validator(
+        [range](std::string& text) {
+            char* end = nullptr;
+            errno = 0;
+            const long long v = std::strtoll(text.c_str(), &end, 10);
+            if (end == text.c_str() || *end != '\0') return std::string();   // left to the conversion's message
+            if (errno == ERANGE || !range.contains(v)) return fmt::format("Value {} is not {}", text, range.words());
+            return std::string();
+        },
+        range.words());
+}
+
+// A number of seconds > 0 (after kFinite).
+const CLI::Validator kSeconds(
+    [](std::string& text) {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0') return std::string();   // left to the conversion's message
+        return v > 0.0 ? std::string() : fmt::format("Value {} is not {}", text, limits::kTimeWords);
+    },
+    "SECONDS > 0");
 
 }  // namespace
 
@@ -44,14 +71,15 @@ int run_cli(int argc, char** argv) {
     RenderOptions opt;
     CLI::App* render = app.add_subcommand("render", "Render a scene progressively to EXR + PNG");
     render->add_option("scene", opt.scene, "Scene file (.json) or mesh (.obj)")->required();
-    render->add_option("--spp", opt.spp, "Samples per pixel (default: the scene's)")->check(CLI::Range(1, 1 << 24));
+    render->add_option("--spp", opt.spp, "Samples per pixel (default: the scene's)")->check(in_range(limits::kSpp));
     render->add_option("--time", opt.time_limit, "Stop after this many seconds of rendering (whichever of --spp and --time ends first)")
-        ->check(kFinite & CLI::PositiveNumber);
-    render->add_option("--width", opt.width, "Image width in pixels (default: the scene's)")->check(CLI::Range(1, 16384));
-    render->add_option("--height", opt.height, "Image height in pixels (default: the scene's)")->check(CLI::Range(1, 16384));
+        ->check(kFinite & kSeconds);
+    render->add_option("--width", opt.width, "Image width in pixels (default: the scene's)")->check(in_range(limits::kWidth));
+    render->add_option("--height", opt.height, "Image height in pixels (default: the scene's)")->check(in_range(limits::kHeight));
     render->add_option("--max-depth", opt.max_depth, "Maximum number of bounces (1 = direct light only)")
-        ->check(CLI::Range(1, 1024));
-    render->add_option("--seed", opt.seed, "Seed of the random stream (same seed and settings give the same image)");
+        ->check(in_range(limits::kMaxDepth));
+    render->add_option("--seed", opt.seed, "Seed of the random stream (same seed and settings give the same image)")
+        ->check(in_range(limits::kSeed));
     render->add_option("--strategy", opt.strategy,
                        "Direct light from area lights and the environment: mis (default), light (light sampling only) "
                        "or bsdf (BSDF sampling only); for measuring the strategies")
@@ -66,7 +94,7 @@ int run_cli(int argc, char** argv) {
                        "Output image, linear 32-bit float: .exr (or .hdr, .tif, .pfm); the tone-mapped PNG is written "
                        "beside it with .png (so --out cannot be a .png); default out/<scene>.exr");
     render->add_option("--snapshot", opt.snapshot, "Write the image so far (and the report) every SECONDS")
-        ->check(kFinite & CLI::PositiveNumber);
+        ->check(kFinite & kSeconds);
     render->add_option("--reference", opt.reference, "Reference image (EXR/HDR) to measure the error against, per pass");
     render->add_option("--report", opt.report, "Error-against-time report (CSV; .json summary and .svg plot beside it); default beside --out");
     render->add_option("--film", opt.film,

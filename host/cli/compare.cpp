@@ -1,4 +1,4 @@
-// `facet compare A B` and `facet plot REPORT.csv`.
+// `facet compare IMAGE REFERENCE`: error metrics of an image against a reference.
 #include <cmath>
 #include <utility>
 
@@ -8,8 +8,6 @@
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/film/image_io.hpp"
-#include "host/report/report.hpp"
-#include "host/scene/sky.hpp"
 
 namespace facet {
 
@@ -33,24 +31,6 @@ int run_compare(const CompareOptions& opt) {
                    mean[2] / n);
     }
     fmt::print("mse     {:.6e}\nrmse    {:.6e}\nrelmse  {:.6e}\n", m.mse, m.rmse, m.relmse);
-    return kExitOk;
-}
-
-int run_sky(const SkyOptions& opt) {
-    SunSkyParams params;
-    params.elevation_degrees = opt.elevation;
-    params.azimuth_degrees = opt.azimuth;
-    params.turbidity = opt.turbidity;
-    write_sun_sky_exr(opt.out, opt.width, params);
-    fmt::print("wrote    {} ({}x{})\n", opt.out, opt.width, opt.width / 2);
-    return kExitOk;
-}
-
-int run_plot(const PlotOptions& opt) {
-    std::vector<PassRecord> passes = read_report_csv(opt.report);
-    std::string out = opt.out.empty() ? replace_extension(opt.report, ".svg") : opt.out;
-    write_error_plot_svg(out, passes, opt.report);
-    fmt::print("wrote    {}\n", out);
     return kExitOk;
 }
 

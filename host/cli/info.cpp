@@ -4,7 +4,7 @@
 #include "host/bvh/bvh.hpp"
 #include "host/cli/commands.hpp"
 #include "host/render/features.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 #include "host/scene/material.hpp"
 
 namespace facet {
@@ -22,7 +22,7 @@ int run_info(const InfoOptions& opt) {
     fmt::print("triangles   {}\n", scene.triangle_count());
     fmt::print("materials   {}\n", scene.materials.size());
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-        const FcMaterial& m = scene.materials[i];
+        const Material& m = scene.materials[i];
         bool emits = m.emission[0] > 0 || m.emission[1] > 0 || m.emission[2] > 0;
         fmt::print("  [{}] {:<20} {}{}\n", i, scene.material_names[i], describe_material(m),
                    emits ? fmt::format(" emission ({:.3f}, {:.3f}, {:.3f})", m.emission[0], m.emission[1], m.emission[2]) : "");

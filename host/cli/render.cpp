@@ -27,7 +27,7 @@
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/report/report.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
 
 namespace facet {
 namespace {

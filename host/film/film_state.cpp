@@ -11,6 +11,7 @@
 #include "host/error.hpp"
 #include "host/film/safe_write.hpp"
 #include "host/scene/scene.hpp"
+#include "host/scene/device_scene.hpp"
 
 namespace facet {
 namespace {
@@ -66,7 +67,8 @@ std::uint64_t film_scene_hash(const Scene& scene) {
     Fnv f;
     f.vec(scene.vertices);
     f.vec(scene.shading);
-    f.vec(scene.materials);
+    // The device layout of each material: plain floats and ints, no padding to hash.
+    for (const Material& m : scene.materials) f.value(device_material(m));
     f.vec(scene.lights);
     f.vec(scene.light_cdf);
     f.value(scene.environment_light);

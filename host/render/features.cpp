@@ -51,7 +51,7 @@ FeatureMask scene_features(const Scene& scene) {
         if (s.material >= 0 && std::size_t(s.material) < used.size()) used[std::size_t(s.material)] = true;
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         if (!used[i]) continue;
-        const FcMaterial& m = scene.materials[i];
+        const Material& m = scene.materials[i];
         if (m.diffuse_model == FC_DIFFUSE_OREN_NAYAR) mask |= kOREN_NAYAR;
         if (m.diffuse_model == FC_DIFFUSE_ASHIKHMIN_SHIRLEY || m.specular_model == FC_SPECULAR_ASHIKHMIN_SHIRLEY)
             mask |= kASHIKHMIN_SHIRLEY;

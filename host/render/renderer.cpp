@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <initializer_list>
+#include <span>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "host/error.hpp"
 #include "host/render/features.hpp"
+#include "host/scene/device_scene.hpp"
 
 namespace facet {
 namespace {
@@ -19,9 +21,10 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 
 // A read-only buffer holding `v` (OpenCL forbids empty buffers: at least one element).
 template <typename T>
-cl::Buffer upload(const cl::Context& ctx, const std::vector<T>& v) {
-    std::vector<T> copy = v.empty() ? std::vector<T>(1) : v;
-    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, copy.size() * sizeof(T), copy.data());
+cl::Buffer upload(const cl::Context& ctx, std::span<const T> v) {
+    const T zero{};
+    const std::span<const T> data = v.empty() ? std::span<const T>(&zero, 1) : v;
+    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size_bytes(), const_cast<T*>(data.data()));
 }
 
 // Fails before any upload when a buffer exceeds the device's largest allocation or all
@@ -47,25 +50,16 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
                    const std::vector<std::string>& extra_prelude)
     : ctx_(ctx), width_(scene.settings.width), height_(scene.settings.height) {
     if (width_ < 1 || height_ < 1) throw Error(fmt::format("invalid image size {}x{}", width_, height_));
-    params_.camera = make_camera(scene.camera, float(width_) / float(height_));
-    params_.width = std::uint32_t(width_);
-    params_.height = std::uint32_t(height_);
-    params_.seed = scene.settings.seed;
-    params_.max_depth = std::uint32_t(scene.settings.max_depth);
-    params_.rr_depth = std::uint32_t(scene.settings.rr_depth);
-    params_.light_count = std::uint32_t(scene.lights.size());
-    params_.environment = scene.environment.params;
-    params_.environment_light = scene.environment_light;
-    params_.strategy = std::uint32_t(scene.settings.strategy);
-    params_.sampler = std::uint32_t(scene.settings.sampler);
+    const DeviceScene dev = compile(scene, bvh);
+    params_ = dev.params;
 
-    check_device_memory(ctx.desc(), {{"BVH nodes", bvh.nodes.size() * sizeof(FcBvhNode)},
-                                     {"triangles", bvh.triangles.size() * sizeof(FcTriangle)},
-                                     {"shading data", scene.shading.size() * sizeof(FcTriShading)},
-                                     {"materials", scene.materials.size() * sizeof(FcMaterial)},
-                                     {"lights", scene.lights.size() * sizeof(FcLight)},
-                                     {"environment map", scene.environment.texels.size() * sizeof(float)},
-                                     {"environment distribution", scene.environment.distribution.size() * sizeof(float)},
+    check_device_memory(ctx.desc(), {{"BVH nodes", dev.nodes.size_bytes()},
+                                     {"triangles", dev.triangles.size_bytes()},
+                                     {"shading data", dev.shading.size_bytes()},
+                                     {"materials", dev.materials.size() * sizeof(FcMaterial)},
+                                     {"lights", dev.lights.size_bytes()},
+                                     {"environment map", dev.environment_texels.size_bytes()},
+                                     {"environment distribution", dev.environment_distribution.size_bytes()},
                                      {"image", 2 * pixel_count() * sizeof(cl_float4)}});
 
     stats_.features = generic ? all_features() : scene_features(scene);
@@ -82,14 +76,14 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
         std::size_t max_wg = kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(ctx.device());
         local_size_ = std::max<std::size_t>(1, std::min<std::size_t>(64, max_wg));
         params_buf_ = cl::Buffer(c, CL_MEM_READ_ONLY, sizeof(FcRenderParams));
-        nodes_ = upload(c, bvh.nodes);
-        tris_ = upload(c, bvh.triangles);
-        shading_ = upload(c, scene.shading);
-        materials_ = upload(c, scene.materials);
-        lights_ = upload(c, scene.lights);
-        light_cdf_ = upload(c, scene.light_cdf);
-        env_texels_ = upload(c, scene.environment.texels);
-        env_dist_ = upload(c, scene.environment.distribution);
+        nodes_ = upload(c, dev.nodes);
+        tris_ = upload(c, dev.triangles);
+        shading_ = upload(c, dev.shading);
+        materials_ = upload(c, std::span<const FcMaterial>(dev.materials));
+        lights_ = upload(c, dev.lights);
+        light_cdf_ = upload(c, dev.light_cdf);
+        env_texels_ = upload(c, dev.environment_texels);
+        env_dist_ = upload(c, dev.environment_distribution);
         accum_ = cl::Buffer(c, CL_MEM_READ_WRITE, 2 * pixel_count() * sizeof(cl_float4));
         kernel_.setArg(0, params_buf_);
         kernel_.setArg(1, nodes_);

@@ -1,21 +1,17 @@
-// Environment maps: loading, sanitising and the sampling distribution
+// Environment maps: sanitising and the sampling distribution
 // (environment.hpp documents the buffers, docs/environment.md the reasons).
 #include "host/scene/environment_map.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <fmt/format.h>
 
 #include "host/error.hpp"
-#include "host/film/image_io.hpp"
+#include "host/util/color.hpp"
+#include "host/util/math.hpp"
 
 namespace facet {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-double luminance(double r, double g, double b) { return 0.2126 * r + 0.7152 * g + 0.0722 * b; }
 
 // Solid angle of one texel of row y (all texels of a row are equal).
 double texel_solid_angle(int y, int width, int height) {
@@ -33,7 +29,6 @@ void check_scale(const glm::vec3& s, const std::string& what) {
 // in energy (luminance x solid angle) relative to the map after the change.
 void sanitise(int width, int height, std::vector<float>& rgb, const std::string& name,
               std::vector<std::string>& warnings) {
-    static const double kWeight[3] = {0.2126, 0.7152, 0.0722};
     long long bad = 0, non_finite = 0;
     double removed = 0.0, kept = 0.0;
     for (int y = 0; y < height; ++y) {
@@ -43,10 +38,10 @@ void sanitise(int width, int height, std::vector<float>& rgb, const std::string&
             bool changed = false, inf_nan = false;
             for (int c = 0; c < 3; ++c) {
                 if (std::isfinite(t[c]) && t[c] >= 0.0f) {
-                    kept += kWeight[c] * double(t[c]) * omega;
+                    kept += kLuminanceWeights[c] * double(t[c]) * omega;
                     continue;
                 }
-                if (std::isfinite(t[c])) removed += kWeight[c] * -double(t[c]) * omega;
+                if (std::isfinite(t[c])) removed += kLuminanceWeights[c] * -double(t[c]) * omega;
                 else inf_nan = true;
                 t[c] = 0.0f;
                 changed = true;
@@ -178,12 +173,6 @@ EnvironmentMap environment_from_pixels(int width, int height, std::vector<float>
     const bool black = env.params.width == 0 ? env.mean_luminance <= 0.0 : !(env.params.total > 0.0f);
     if (black) warnings.push_back(fmt::format("{}: the map is black: it lights nothing", name));
     return env;
-}
-
-EnvironmentMap load_environment_map(const std::string& path, const glm::vec3& scale, const glm::mat3& world_to_map,
-                                    std::vector<std::string>& warnings) {
-    ImageRGB img = read_image(path);   // throws facet::Error naming the file
-    return environment_from_pixels(img.width, img.height, std::move(img.rgb), scale, world_to_map, path, warnings);
 }
 
 }  // namespace facet

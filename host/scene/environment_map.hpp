@@ -1,5 +1,5 @@
-// The environment light on the host: constant radiance or an equirectangular map read
-// through OpenImageIO (EXR, Radiance .hdr, anything read_image takes), sanitised, with
+// The environment light on the host: constant radiance or an equirectangular map
+// (read from a file by host/readers/environment_file.hpp), sanitised, with
 // the sampling distribution the kernels use (kernels/lights/environment.cl). The
 // direction <-> texel convention is the comment of kernels/shared/environment_layout.h;
 // docs/environment.md explains units, sanitising and the distribution.
@@ -59,11 +59,6 @@ EnvironmentMap constant_environment(const glm::vec3& radiance);
 EnvironmentMap environment_from_pixels(int width, int height, std::vector<float> rgb, const glm::vec3& scale,
                                        const glm::mat3& world_to_map, const std::string& name,
                                        std::vector<std::string>& warnings);
-
-// Reads `path` through OpenImageIO and builds the map (environment_from_pixels).
-// Throws facet::Error naming the file when it cannot be read.
-EnvironmentMap load_environment_map(const std::string& path, const glm::vec3& scale, const glm::mat3& world_to_map,
-                                    std::vector<std::string>& warnings);
 
 // Builds params.total, the distribution and mean_luminance from the texels and scale.
 void build_environment_distribution(EnvironmentMap& env);

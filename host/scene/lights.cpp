@@ -13,23 +13,12 @@
 #include <glm/trigonometric.hpp>
 
 #include "host/scene/scene.hpp"
+#include "host/util/color.hpp"
+#include "host/util/math.hpp"
+#include "host/util/vec3.hpp"
 
 namespace facet {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-double luminance(const float rgb[3]) {
-    return 0.2126 * double(rgb[0]) + 0.7152 * double(rgb[1]) + 0.0722 * double(rgb[2]);
-}
-
-double luminance(glm::vec3 c) { return 0.2126 * double(c.x) + 0.7152 * double(c.y) + 0.0722 * double(c.z); }
-
-void store(float out[3], glm::vec3 v) {
-    out[0] = v.x;
-    out[1] = v.y;
-    out[2] = v.z;
-}
 
 // The area light of triangle t: edges ordered so that cross(e1, e2) points to the
 // side its shading normals face (the emitting side).
@@ -69,9 +58,7 @@ FcLight punctual_light(const PunctualLight& p, double* power, double radius) {
 
 double bounding_radius(const Scene& scene) {
     if (scene.vertices.empty()) return 1.0;
-    glm::vec3 lo(INFINITY), hi(-INFINITY);
-    for (const glm::vec3& v : scene.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
-    double r = 0.5 * double(glm::length(hi - lo));
+    const double r = double(scene_bounds(scene).radius());
     return r > 0.0 && std::isfinite(r) ? r : 1.0;
 }
 
@@ -85,13 +72,13 @@ void build_lights(Scene& scene) {
         FcTriShading& sh = scene.shading[t];
         sh.light = -1;
         if (sh.material < 0 || static_cast<std::size_t>(sh.material) >= scene.materials.size()) continue;
-        const FcMaterial& m = scene.materials[static_cast<std::size_t>(sh.material)];
+        const Material& m = scene.materials[static_cast<std::size_t>(sh.material)];
         const double lum = luminance(m.emission);
         if (!(lum > 0.0)) continue;
         const glm::vec3* v = &scene.vertices[3 * t];
         const float area = 0.5f * glm::length(glm::cross(v[1] - v[0], v[2] - v[0]));
         if (!(area > 0.0f) || !std::isfinite(area)) continue;
-        const double sides = (m.flags & FC_MAT_TWO_SIDED_EMISSION) ? 2.0 : 1.0;
+        const double sides = m.two_sided_emission ? 2.0 : 1.0;
         sh.light = static_cast<fc_int>(scene.lights.size());
         scene.lights.push_back(triangle_light(scene, t, area));
         power.push_back(kPi * double(area) * lum * sides);

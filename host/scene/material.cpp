@@ -1,48 +1,27 @@
 #include "host/scene/material.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <numbers>
 
 #include <fmt/format.h>
 
 #include "host/error.hpp"
+#include "host/util/math.hpp"
+#include "host/util/strings.hpp"
 
 namespace facet {
 namespace {
 
-constexpr float kExponentMax = 1e6f;   // FC_PHONG_EXPONENT_MAX in kernels/bsdf/blinn_phong.cl
+constexpr float kExponentMax = FC_PHONG_EXPONENT_MAX;
 constexpr float kDefaultAlpha = 0.3f;
-
-void set3(float* dst, float v) { dst[0] = dst[1] = dst[2] = v; }
-
-FcMaterial base_material() {
-    FcMaterial m{};
-    set3(m.diffuse, 0.5f);
-    set3(m.specular, 0.04f);
-    set3(m.eta, 1.5f);
-    set3(m.k, 0.0f);
-    m.diffuse_model = FC_DIFFUSE_LAMBERT;
-    m.specular_model = FC_SPECULAR_NONE;
-    m.ndf = FC_NDF_GGX;
-    m.geometry = FC_G_SMITH_CORRELATED;
-    m.fresnel = FC_FRESNEL_SCHLICK;
-    m.alpha_x = m.alpha_y = kDefaultAlpha;
-    m.exponent_x = m.exponent_y = 2.0f / (kDefaultAlpha * kDefaultAlpha) - 2.0f;
-    m.ior = 1.5f;
-    m.roughness = 0.3f;
-    m.flags = 0;
-    m.sampling = FC_SAMPLE_VISIBLE;
-    return m;
-}
 
 struct Preset {
     std::string_view name;
     int diffuse, specular, ndf, geometry;
     int fresnel = FC_FRESNEL_SCHLICK;
 };
-// kernels/shared/material_layout.h's table; microfacet is ggx's lobes with any D, G, F.
+// The named models, once (docs/brdf.md describes them); microfacet is ggx's lobes with any
+// D, G, F.
 constexpr Preset kPresets[] = {
     {"lambert", FC_DIFFUSE_LAMBERT, FC_SPECULAR_NONE, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
     {"oren_nayar", FC_DIFFUSE_OREN_NAYAR, FC_SPECULAR_NONE, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
@@ -58,21 +37,15 @@ constexpr Preset kPresets[] = {
     {"dielectric", FC_DIFFUSE_NONE, FC_SPECULAR_DIELECTRIC, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_DIELECTRIC},
 };
 
-const std::vector<EnumName> kDiffuse = {{"none", FC_DIFFUSE_NONE}, {"lambert", FC_DIFFUSE_LAMBERT},
-    {"lambert_1mf0", FC_DIFFUSE_LAMBERT_1MF0}, {"oren_nayar", FC_DIFFUSE_OREN_NAYAR},
-    {"ashikhmin_shirley", FC_DIFFUSE_ASHIKHMIN_SHIRLEY}};
-const std::vector<EnumName> kSpecular = {{"none", FC_SPECULAR_NONE}, {"microfacet", FC_SPECULAR_MICROFACET},
-    {"blinn_phong", FC_SPECULAR_BLINN_PHONG}, {"blinn_phong_normalized", FC_SPECULAR_BLINN_PHONG_NORMALIZED},
-    {"ashikhmin_shirley", FC_SPECULAR_ASHIKHMIN_SHIRLEY}, {"dielectric", FC_SPECULAR_DIELECTRIC}};
-const std::vector<EnumName> kNdf = {
-    {"beckmann", FC_NDF_BECKMANN}, {"ggx", FC_NDF_GGX}, {"blinn_phong", FC_NDF_BLINN_PHONG}};
-const std::vector<EnumName> kGeometry = {{"implicit", FC_G_IMPLICIT}, {"cook_torrance", FC_G_COOK_TORRANCE},
-    {"smith_separable", FC_G_SMITH_SEPARABLE}, {"smith_correlated", FC_G_SMITH_CORRELATED},
-    {"smith_schlick", FC_G_SMITH_SCHLICK}, {"smith_walter", FC_G_SMITH_WALTER}};
-const std::vector<EnumName> kFresnel = {{"one", FC_FRESNEL_ONE}, {"schlick", FC_FRESNEL_SCHLICK},
-    {"schlick_ior", FC_FRESNEL_SCHLICK_IOR}, {"dielectric", FC_FRESNEL_DIELECTRIC},
-    {"conductor", FC_FRESNEL_CONDUCTOR}};
-const std::vector<EnumName> kSampling = {{"visible", FC_SAMPLE_VISIBLE}, {"all", FC_SAMPLE_ALL}};
+// The name tables, generated from material_layout.h's lists (value order).
+#define FC_ENUM_NAME(value, name) {name, value},
+const std::vector<EnumName> kDiffuse = {FC_DIFFUSE_LIST(FC_ENUM_NAME)};
+const std::vector<EnumName> kSpecular = {FC_SPECULAR_LIST(FC_ENUM_NAME)};
+const std::vector<EnumName> kNdf = {FC_NDF_LIST(FC_ENUM_NAME)};
+const std::vector<EnumName> kGeometry = {FC_G_LIST(FC_ENUM_NAME)};
+const std::vector<EnumName> kFresnel = {FC_FRESNEL_LIST(FC_ENUM_NAME)};
+const std::vector<EnumName> kSampling = {FC_SAMPLE_LIST(FC_ENUM_NAME)};
+#undef FC_ENUM_NAME
 
 struct ConductorRow {
     std::string_view name;
@@ -118,15 +91,20 @@ constexpr ConductorRow kConductors[] = {
     {"iron", {2.88f, 2.80f, 2.55f}, {3.05f, 2.95f, 2.80f}},
 };
 
-std::string lower(std::string_view s) {
-    std::string r(s);
-    std::transform(r.begin(), r.end(), r.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return r;
-}
-
-std::string rgb(const float* c) { return fmt::format("({:g}, {:g}, {:g})", c[0], c[1], c[2]); }
+std::string rgb(const glm::vec3& c) { return fmt::format("({:g}, {:g}, {:g})", c[0], c[1], c[2]); }
 
 }  // namespace
+
+glm::vec3& specular_colour(Material& m) {
+    switch (m.specular_model) {
+        case FC_SPECULAR_BLINN_PHONG:
+        case FC_SPECULAR_BLINN_PHONG_NORMALIZED: return m.ks;
+        case FC_SPECULAR_DIELECTRIC: return m.transmittance;
+        default: return m.f0;
+    }
+}
+
+const glm::vec3& specular_colour(const Material& m) { return specular_colour(const_cast<Material&>(m)); }
 
 const std::vector<std::string_view>& material_model_names() {
     static const std::vector<std::string_view> names = [] {
@@ -137,38 +115,36 @@ const std::vector<std::string_view>& material_model_names() {
     return names;
 }
 
-std::optional<FcMaterial> material_preset(std::string_view model) {
+std::optional<Material> material_preset(std::string_view model) {
     for (const Preset& p : kPresets) {
         if (p.name != model) continue;
-        FcMaterial m = base_material();
+        Material m;
         m.diffuse_model = p.diffuse;
         m.specular_model = p.specular;
         m.ndf = p.ndf;
         m.geometry = p.geometry;
         m.fresnel = p.fresnel;
         if (p.specular == FC_SPECULAR_DIELECTRIC) {
-            set3(m.specular, 1.0f);   // clear: no absorption at the refractions
+            m.f0 = m.ks = m.transmittance = glm::vec3(1.0f);   // clear: no absorption at the refractions
             m.alpha_x = m.alpha_y = 0.0f;   // smooth glass
         }
         if (p.fresnel == FC_FRESNEL_CONDUCTOR) {
             ConductorIndex c = *conductor_preset("aluminium");
             std::array<float, 3> f0 = *f0_preset("aluminium");
-            for (int i = 0; i < 3; ++i) m.eta[i] = c.eta[i], m.k[i] = c.k[i], m.specular[i] = f0[i];
-            set3(m.diffuse, 0.0f);
+            for (int i = 0; i < 3; ++i) m.eta[i] = c.eta[i], m.k[i] = c.k[i], m.f0[i] = m.ks[i] = m.transmittance[i] = f0[i];
+            m.diffuse = glm::vec3(0.0f);
         }
         return m;
     }
     return std::nullopt;
 }
 
-FcMaterial make_material(const std::string& model) {
+Material make_material(const std::string& model) {
     if (auto m = material_preset(model)) return *m;
-    std::string list;
-    for (std::string_view n : material_model_names()) list += (list.empty() ? "" : ", ") + std::string(n);
-    throw Error(fmt::format("unknown material model '{}' (expected one of {})", model, list));
+    throw Error(unknown_name("material model", model, name_list(material_model_names())));
 }
 
-std::string material_model_of(const FcMaterial& m) {
+std::string material_model_of(const Material& m) {
     for (const Preset& p : kPresets) {
         if (p.name == "microfacet" || m.diffuse_model != p.diffuse || m.specular_model != p.specular) continue;
         bool microfacet = p.specular == FC_SPECULAR_MICROFACET;
@@ -265,10 +241,11 @@ float srgb_to_linear(float c) {
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-std::string validate_material(const FcMaterial& m) {
+std::string validate_material(const Material& m) {
     auto bad = [](float v, bool ok) { return !std::isfinite(v) || !ok; };
-    const struct { const char* name; const float* v; float hi; } colours[] = {
-        {"diffuse", m.diffuse, 1.0f}, {"specular", m.specular, 1.0f}, {"emission", m.emission, INFINITY},
+    const struct { const char* name; const glm::vec3& v; float hi; } colours[] = {
+        {"diffuse", m.diffuse, 1.0f}, {"specular f0", m.f0, 1.0f}, {"specular ks", m.ks, 1.0f}, {"specular transmittance", m.transmittance, 1.0f},
+        {"emission", m.emission, INFINITY},
         {"k", m.k, INFINITY}};
     for (const auto& c : colours)
         for (int i = 0; i < 3; ++i)
@@ -278,7 +255,7 @@ std::string validate_material(const FcMaterial& m) {
     for (int i = 0; i < 3; ++i)
         if (bad(m.eta[i], m.eta[i] > 0.0f)) return fmt::format("eta must be finite numbers > 0 (got {})", rgb(m.eta));
     const struct { const char* name; float v; } scalars[] = {{"alpha_x", m.alpha_x}, {"alpha_y", m.alpha_y},
-        {"exponent_x", m.exponent_x}, {"exponent_y", m.exponent_y}, {"roughness", m.roughness}};
+        {"exponent_x", m.exponent_x}, {"exponent_y", m.exponent_y}, {"sigma", m.sigma}};
     for (const auto& s : scalars)
         if (bad(s.v, s.v >= 0.0f)) return fmt::format("{} must be a finite number >= 0 (got {:g})", s.name, s.v);
     if (bad(m.ior, m.ior > 0.0f)) return fmt::format("ior must be a finite number > 0 (got {:g})", m.ior);
@@ -292,13 +269,27 @@ std::string validate_material(const FcMaterial& m) {
     return {};
 }
 
-void clamp_material(FcMaterial& m) {
+std::string clamp_reflectance(Material& m, std::string_view names) {
+    bool clamped = false;
+    for (int c = 0; c < 3; ++c) {
+        for (glm::vec3* colour : {&m.diffuse, &m.f0, &m.ks, &m.transmittance}) {
+            clamped = clamped || (*colour)[c] > 1.0f;
+            (*colour)[c] = std::min((*colour)[c], 1.0f);
+        }
+    }
+    return clamped ? fmt::format("a reflectance{}{} above 1 creates energy; clamped to 1", names.empty() ? "" : " ", names)
+                   : "";
+}
+
+void clamp_material(Material& m) {
     auto clampf = [](float& v, float lo, float hi) {
         if (!std::isnan(v)) v = std::clamp(v, lo, hi);
     };
     for (int i = 0; i < 3; ++i) {
         clampf(m.diffuse[i], 0.0f, INFINITY);
-        clampf(m.specular[i], 0.0f, INFINITY);
+        clampf(m.f0[i], 0.0f, INFINITY);
+        clampf(m.ks[i], 0.0f, INFINITY);
+        clampf(m.transmittance[i], 0.0f, INFINITY);
         clampf(m.emission[i], 0.0f, INFINITY);
         clampf(m.k[i], 0.0f, INFINITY);
     }
@@ -306,21 +297,21 @@ void clamp_material(FcMaterial& m) {
     clampf(m.exponent_y, 0.0f, kExponentMax);
     clampf(m.alpha_x, 0.0f, 10.0f);
     clampf(m.alpha_y, 0.0f, 10.0f);
-    clampf(m.roughness, 0.0f, std::numbers::pi_v<float> / 2.0f);
+    clampf(m.sigma, 0.0f, kPiF / 2.0f);
 }
 
-std::string describe_material(const FcMaterial& m) {
+std::string describe_material(const Material& m) {
     std::string s = material_model_of(m) + ":";
     if (m.diffuse_model != FC_DIFFUSE_NONE) {
         s += fmt::format(" diffuse {} {}", enum_to_name(MaterialEnum::Diffuse, m.diffuse_model), rgb(m.diffuse));
-        if (m.diffuse_model == FC_DIFFUSE_OREN_NAYAR) s += fmt::format(" sigma={:g}", m.roughness);
+        if (m.diffuse_model == FC_DIFFUSE_OREN_NAYAR) s += fmt::format(" sigma={:g}", m.sigma);
     }
     switch (m.specular_model) {
         case FC_SPECULAR_MICROFACET:
             s += fmt::format(" specular microfacet D={} G={} F={}", enum_to_name(MaterialEnum::Ndf, m.ndf),
                              enum_to_name(MaterialEnum::Geometry, m.geometry),
                              enum_to_name(MaterialEnum::Fresnel, m.fresnel));
-            if (m.fresnel == FC_FRESNEL_SCHLICK) s += " F0=" + rgb(m.specular);
+            if (m.fresnel == FC_FRESNEL_SCHLICK) s += " F0=" + rgb(m.f0);
             if (m.fresnel == FC_FRESNEL_SCHLICK_IOR || m.fresnel == FC_FRESNEL_DIELECTRIC)
                 s += fmt::format(" ior={:g}", m.ior);
             if (m.fresnel == FC_FRESNEL_CONDUCTOR) s += " eta=" + rgb(m.eta) + " k=" + rgb(m.k);
@@ -331,15 +322,15 @@ std::string describe_material(const FcMaterial& m) {
         case FC_SPECULAR_BLINN_PHONG:
         case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
             s += fmt::format(" specular {} Ks={} exponent={:g}", enum_to_name(MaterialEnum::Specular, m.specular_model),
-                             rgb(m.specular), m.exponent_x);
+                             rgb(m.ks), m.exponent_x);
             break;
         case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
-            s += fmt::format(" specular ashikhmin_shirley F0={} nu={:g} nv={:g}", rgb(m.specular), m.exponent_x,
+            s += fmt::format(" specular ashikhmin_shirley F0={} nu={:g} nv={:g}", rgb(m.f0), m.exponent_x,
                              m.exponent_y);
             break;
         case FC_SPECULAR_DIELECTRIC:
             s += fmt::format(" specular dielectric ior={:g} D={} transmittance={}", m.ior,
-                             enum_to_name(MaterialEnum::Ndf, m.ndf), rgb(m.specular));
+                             enum_to_name(MaterialEnum::Ndf, m.ndf), rgb(m.transmittance));
             if (std::max(m.alpha_x, m.alpha_y) < FC_ALPHA_MIRROR) s += " smooth";
             else s += fmt::format(" alpha=({:g}, {:g})", m.alpha_x, m.alpha_y);
             break;

@@ -1,7 +1,9 @@
-// The host side of materials (kernels/shared/material_layout.h holds the layout and enums):
-// the named models of the source documents as presets, the name tables the scene
-// parser and `facet info` use, roughness <-> shininess conversions, normal-incidence
-// Fresnel presets, and validation. docs/brdf.md describes every model.
+// The host side of materials: the host's Material (a model's lobe choices and its
+// parameters, which the readers fill and host/scene/device_scene.cpp compiles into the
+// kernels' FcMaterial of kernels/shared/material_layout.h), the named models of the
+// source documents as presets, the name tables the scene parser and `facet info` use,
+// roughness <-> shininess conversions, normal-incidence Fresnel presets, and
+// validation. docs/brdf.md describes every model.
 #pragma once
 
 #include <array>
@@ -10,28 +12,65 @@
 #include <string_view>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "kernels/shared/material_layout.h"
 
 namespace facet {
 
+// A material as the host holds it: the model (a diffuse lobe and a specular lobe, the
+// microfacet terms D, G, F and the sampling, each an FC_* value of material_layout.h)
+// and its parameters, colours in linear RGB. The defaults are facet's (see
+// material_preset) with Lambert's lobes.
+struct Material {
+    int diffuse_model = FC_DIFFUSE_LAMBERT;
+    int specular_model = FC_SPECULAR_NONE;
+    int ndf = FC_NDF_GGX;
+    int geometry = FC_G_SMITH_CORRELATED;
+    int fresnel = FC_FRESNEL_SCHLICK;
+    int sampling = FC_SAMPLE_VISIBLE;
+    glm::vec3 diffuse{0.5f};
+    // The specular lobe's colour, one field per meaning; the lobe reads one of them
+    // (specular_colour below). A preset sets all three to its one colour, so that a
+    // material switched to another lobe keeps it.
+    glm::vec3 f0{0.04f};              // Schlick Fresnel at normal incidence (microfacet,
+                                      // Ashikhmin-Shirley; also the (1 - F0) diffuse lobes)
+    glm::vec3 ks{0.04f};              // Blinn-Phong's specular colour Ks
+    glm::vec3 transmittance{0.04f};   // dielectric: the tint at each refraction
+    glm::vec3 emission{0.0f};
+    glm::vec3 eta{1.5f};             // conductor: the complex index eta + i k
+    glm::vec3 k{0.0f};
+    float alpha_x = 0.3f;            // microfacet roughness along the tangent and bitangent
+    float alpha_y = 0.3f;
+    float exponent_x = 2.0f / (0.3f * 0.3f) - 2.0f;   // Phong-style exponents (alpha 0.3)
+    float exponent_y = 2.0f / (0.3f * 0.3f) - 2.0f;
+    float ior = 1.5f;                // relative index (Schlick from ior, dielectric)
+    float sigma = 0.3f;              // Oren-Nayar's sigma, radians
+    bool two_sided_emission = false;
+};
+
+// The colour field the material's specular lobe reads: ks for the Blinn-Phong lobes,
+// transmittance for the dielectric, f0 otherwise (the kernels' FcMaterial.specular).
+glm::vec3& specular_colour(Material& m);
+const glm::vec3& specular_colour(const Material& m);
+
 // --- named models ---------------------------------------------------------------------
-// "lambert", "oren_nayar", "cook_torrance", "blinn_phong", "blinn_phong_normalized",
-// "ashikhmin_shirley", "ggx" (the default), "microfacet", "conductor" (GGX with the
-// exact conductor Fresnel, aluminium's eta + i k, no diffuse lobe) and "dielectric"
-// (smooth clear glass, ior 1.5, no diffuse lobe), in that order.
+// The presets of material.cpp's kPresets, in its order: "lambert", ..., "ggx" (the
+// default), "microfacet", "conductor" (GGX with the exact conductor Fresnel, aluminium's
+// eta + i k, no diffuse lobe) and "dielectric" (smooth clear glass, ior 1.5).
 const std::vector<std::string_view>& material_model_names();
 inline constexpr std::string_view kDefaultMaterialModel = "ggx";
 
 // The preset of a named model with facet's defaults: diffuse 0.5 grey, specular
-// (F0 / Ks) 0.04, alpha 0.3 (exponents 2/0.3^2 - 2 = 20.2), Oren-Nayar sigma 0.3 rad,
+// colour (F0 / Ks) 0.04, alpha 0.3 (exponents 2/0.3^2 - 2 = 20.2), Oren-Nayar sigma 0.3 rad,
 // ior 1.5, no emission, visible-normal sampling. nullopt for an unknown name.
-std::optional<FcMaterial> material_preset(std::string_view model);
+std::optional<Material> material_preset(std::string_view model);
 // The same, throwing facet::Error ("unknown material model 'x' (expected one of ...)").
-FcMaterial make_material(const std::string& model);
+Material make_material(const std::string& model);
 // The named model whose lobe choices (diffuse/specular model, and for microfacet
 // presets D, G, F) a material has; "microfacet" for other microfacet combinations,
 // "custom" otherwise.
-std::string material_model_of(const FcMaterial& m);
+std::string material_model_of(const Material& m);
 
 // --- enum name tables (string <-> FC_* value) ------------------------------------------
 enum class MaterialEnum { Diffuse, Specular, Ndf, Geometry, Fresnel, Sampling };
@@ -40,13 +79,8 @@ struct EnumName {
     std::string_view name;
     int value;
 };
-// Every name of the enum in value order (each value has exactly one name):
-//  Diffuse:  none lambert lambert_1mf0 oren_nayar ashikhmin_shirley
-//  Specular: none microfacet blinn_phong blinn_phong_normalized ashikhmin_shirley dielectric
-//  Ndf:      beckmann ggx blinn_phong
-//  Geometry: implicit cook_torrance smith_separable smith_correlated smith_schlick smith_walter
-//  Fresnel:  one schlick schlick_ior dielectric conductor
-//  Sampling: visible all
+// Every name of the enum in value order (each value has exactly one name), as the
+// lists of kernels/shared/material_layout.h (FC_DIFFUSE_LIST, ...) give them.
 const std::vector<EnumName>& enum_names(MaterialEnum kind);
 std::optional<int> enum_from_name(MaterialEnum kind, std::string_view name);
 // The name of a value; "invalid(<n>)" when out of range.
@@ -88,17 +122,21 @@ float srgb_to_linear(float c);
 // --- validation -----------------------------------------------------------------------
 // Empty when every field is usable, else a message naming the first bad field, e.g.
 // "alpha_x must be a finite number >= 0 (got nan)". Checks: colours finite and >= 0
-// (diffuse and specular also <= 1), enums in range, alpha_x/alpha_y/exponents/roughness
+// (diffuse, f0, ks and transmittance also <= 1), enums in range, alpha_x/alpha_y/exponents/sigma
 // finite and >= 0, ior, eta finite and > 0, k finite and >= 0.
-std::string validate_material(const FcMaterial& m);
+std::string validate_material(const Material& m);
+// Clamps the diffuse and specular colours (f0, ks, transmittance) to <= 1 (above 1 a surface creates energy);
+// the warning to give when it did ("a reflectance <names> above 1 creates energy;
+// clamped to 1", `names` e.g. "(Kd, Ks)" for the file's own), else empty.
+std::string clamp_reflectance(Material& m, std::string_view names = {});
 // Brings finite values into the kernels' working ranges (exponents to [0, 1e6], alpha to
 // [0, 10], sigma to [0, pi/2], colours to >= 0): what the kernels would do anyway, made
 // visible to `facet info`. Leaves NaN alone (validate_material reports it).
-void clamp_material(FcMaterial& m);
+void clamp_material(Material& m);
 
 // One line for `facet info`, e.g. "ggx: diffuse lambert_1mf0 (0.5, 0.5, 0.5), specular
 // microfacet D=ggx G=smith_correlated F=schlick F0=(0.04, 0.04, 0.04) alpha=(0.3, 0.3)
 // sampling=visible".
-std::string describe_material(const FcMaterial& m);
+std::string describe_material(const Material& m);
 
 }  // namespace facet

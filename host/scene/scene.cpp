@@ -1,6 +1,7 @@
 #include "host/scene/scene.hpp"
 
 #include "host/scene/material.hpp"
+#include "host/util/vec3.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,16 +13,10 @@
 
 namespace facet {
 
-FcMaterial default_material() {
-    FcMaterial m = make_material("lambert");
-    for (int c = 0; c < 3; ++c) m.diffuse[c] = 0.8f;
+Material default_material() {
+    Material m = make_material("lambert");
+    m.diffuse = glm::vec3(0.8f);
     return m;
-}
-
-static void store(float out[3], glm::vec3 v) {
-    out[0] = v.x;
-    out[1] = v.y;
-    out[2] = v.z;
 }
 
 FcCamera make_camera(const CameraDesc& desc, float aspect) {
@@ -41,25 +36,31 @@ FcCamera make_camera(const CameraDesc& desc, float aspect) {
     return cam;
 }
 
-int add_material(Scene& scene, const FcMaterial& material, const std::string& name) {
+int add_material(Scene& scene, const Material& material, const std::string& name) {
     scene.materials.push_back(material);
     scene.material_names.push_back(name);
     return static_cast<int>(scene.materials.size() - 1);
 }
 
+float Bounds::radius() const { return 0.5f * glm::length(hi - lo); }
+
+Bounds scene_bounds(const Scene& scene) {
+    Bounds b{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(-std::numeric_limits<float>::max())};
+    for (const glm::vec3& v : scene.vertices) {
+        b.lo = glm::min(b.lo, v);
+        b.hi = glm::max(b.hi, v);
+    }
+    return b;
+}
+
 CameraDesc frame_camera(const Scene& scene) {
     constexpr float fov = 40.0f;
-    glm::vec3 lo(std::numeric_limits<float>::max());
-    glm::vec3 hi(-std::numeric_limits<float>::max());
-    for (const glm::vec3& v : scene.vertices) {
-        lo = glm::min(lo, v);
-        hi = glm::max(hi, v);
-    }
     CameraDesc cam;
     cam.fov_y_degrees = fov;
     if (scene.vertices.empty()) return cam;
-    const glm::vec3 center = 0.5f * (lo + hi);
-    float radius = 0.5f * glm::length(hi - lo);
+    const Bounds bounds = scene_bounds(scene);
+    const glm::vec3 center = bounds.center();
+    float radius = bounds.radius();
     if (!(radius > 0.0f)) radius = 1.0f;
     // The bounding sphere fits the vertical fov at this distance.
     const float distance = radius / std::sin(0.5f * glm::radians(fov));

@@ -1,6 +1,7 @@
 // The scene as the host holds it: a triangle soup with per-triangle shading data,
 // materials, lights, a camera and render settings. Loaded from a JSON scene file
-// or directly from an OBJ (host/scene/scene_file.cpp, host/scene/obj_loader.cpp).
+// or directly from an OBJ (host/readers/load_scene.hpp); compiled into the device's
+// arrays by host/scene/device_scene.hpp.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "host/scene/environment_map.hpp"
+#include "host/scene/material.hpp"
 #include "kernels/shared/scene_layout.h"
 #include "kernels/shared/render_layout.h"
 
@@ -48,7 +50,7 @@ struct PunctualLight {
 struct Scene {
     std::vector<glm::vec3> vertices;         // 3 per triangle
     std::vector<FcTriShading> shading;       // 1 per triangle
-    std::vector<FcMaterial> materials;
+    std::vector<Material> materials;
     std::vector<std::string> material_names; // parallel to materials
     std::vector<PunctualLight> punctual_lights;
     EnvironmentMap environment = no_environment();
@@ -64,7 +66,7 @@ struct Scene {
 };
 
 // A material with Lambertian defaults (diffuse 0.8 grey, no emission).
-FcMaterial default_material();
+Material default_material();
 
 // Camera parameters as the kernels see them, for an image of the given aspect ratio.
 FcCamera make_camera(const CameraDesc& desc, float aspect);
@@ -89,11 +91,20 @@ void add_quad(Scene& scene, glm::vec3 corner, glm::vec3 e1, glm::vec3 e2, int ma
 void add_triangle(Scene& scene, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 n0,
                   glm::vec3 n1, glm::vec3 n2, int material);
 
+// The axis-aligned box around every vertex (lo > hi when there are none).
+struct Bounds {
+    glm::vec3 lo, hi;
+    bool empty() const { return !(lo.x <= hi.x); }
+    glm::vec3 center() const { return 0.5f * (lo + hi); }
+    float radius() const;   // of the bounding sphere about center(): half the diagonal
+};
+Bounds scene_bounds(const Scene& scene);
+
 // A camera that frames the scene's bounding box: looking at its centre from +z and
 // slightly above, far enough that the bounding sphere fits a 40 degree vertical fov.
 CameraDesc frame_camera(const Scene& scene);
 
 // Appends a material (with its name) and returns its index.
-int add_material(Scene& scene, const FcMaterial& material, const std::string& name);
+int add_material(Scene& scene, const Material& material, const std::string& name);
 
 }  // namespace facet

@@ -8,15 +8,10 @@
 #include <glm/geometric.hpp>
 
 #include "host/scene/scene.hpp"
+#include "host/util/vec3.hpp"
 
 namespace facet {
 namespace {
-
-void store(float out[3], glm::vec3 v) {
-    out[0] = v.x;
-    out[1] = v.y;
-    out[2] = v.z;
-}
 
 // Unit normal, or +z for a degenerate direction (such triangles are never hit).
 glm::vec3 safe_normalize(glm::vec3 v) {

@@ -3,17 +3,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include <fmt/format.h>
 
 #include "host/error.hpp"
 #include "host/film/image_io.hpp"
+#include "host/util/color.hpp"
+#include "host/util/math.hpp"
 
 namespace facet {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
 struct Vec {
@@ -73,8 +73,6 @@ void xyY_to_rgb(double x, double y, double Y, float out[3]) {
                            0.0556434 * X - 0.2040259 * Y + 1.0572252 * Z};
     for (int c = 0; c < 3; ++c) out[c] = float(std::max(rgb[c], 0.0));
 }
-
-double luminance(const float* c) { return 0.2126 * double(c[0]) + 0.7152 * double(c[1]) + 0.0722 * double(c[2]); }
 
 double texel_solid_angle(int y, int w, int h) {
     return 2.0 * kPi / w * (std::cos(kPi * y / h) - std::cos(kPi * (y + 1) / h));

@@ -21,7 +21,6 @@
 #include "kernels/util/math.cl"
 #include "kernels/bsdf/bsdf_sample.cl"
 
-#define FC_PHONG_EXPONENT_MAX 1e6f
 
 /* A Phong-style exponent clamped to [0, FC_PHONG_EXPONENT_MAX]; NaN gives 0. */
 inline float fc_phong_exponent(float e) { return (e > 0.0f) ? fmin(e, FC_PHONG_EXPONENT_MAX) : 0.0f; }

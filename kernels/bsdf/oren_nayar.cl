@@ -6,7 +6,7 @@
  *   A = 1 - 0.5 s^2 / (s^2 + 0.57),  B = 0.45 s^2 / (s^2 + 0.09)
  *   alpha = max(theta_i, theta_o),   beta = min(theta_i, theta_o)
  *
- * Parameters: rho = FcMaterial.diffuse (albedo, [0, 1]), s = FcMaterial.roughness,
+ * Parameters: rho = FcMaterial.diffuse (albedo, [0, 1]), s = FcMaterial.sigma,
  * the standard deviation of the facet slope angle in radians ([0, ~1]; 0 is
  * Lambert). The paper's qualitative model prints 0.33 in A; 0.57 (the lecture's) is
  * the common variant that partly stands in for the dropped interreflection term.
@@ -31,7 +31,7 @@ inline float3 oren_nayar_eval(const FcMaterial* m, float3 wo, float3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
     float3 rho = fmax(load3p(m->diffuse), (float3)(0.0f));
     /* sigma: NaN or negative -> Lambert */
-    float sigma = (m->roughness > 0.0f) ? fmin(m->roughness, 1e6f) : 0.0f;
+    float sigma = (m->sigma > 0.0f) ? fmin(m->sigma, 1e6f) : 0.0f;
     float s2 = sigma * sigma;
     float a = 1.0f - 0.5f * s2 / (s2 + 0.57f);
     float b = 0.45f * s2 / (s2 + 0.09f);

@@ -1,17 +1,7 @@
 /* Materials: a diffuse lobe plus a specular lobe, each chosen from a closed list, with
  * the specular microfacet terms D, G and F chosen independently (docs/brdf.md).
- * The named models of docs/brdf.md are presets of these choices
- * (host/scene/material.cpp):
- *   lambert                 diffuse LAMBERT,            specular NONE
- *   oren_nayar              diffuse OREN_NAYAR,         specular NONE
- *   cook_torrance           diffuse LAMBERT,            specular MICROFACET (Beckmann, Cook-Torrance G, Schlick F0)
- *   blinn_phong             diffuse LAMBERT,            specular BLINN_PHONG (original, 1977)
- *   blinn_phong_normalized  diffuse LAMBERT,            specular BLINN_PHONG_NORMALIZED ((n+8)/8pi)
- *   ashikhmin_shirley       diffuse ASHIKHMIN_SHIRLEY,  specular ASHIKHMIN_SHIRLEY
- *   ggx (the default)       diffuse LAMBERT_1MF0,       specular MICROFACET (GGX, height-correlated Smith, Schlick F0)
- *   microfacet              any diffuse, MICROFACET with any D, G, F
- *   conductor               diffuse NONE, MICROFACET (GGX, correlated Smith, exact conductor F, eta + i k)
- *   dielectric              diffuse NONE, DIELECTRIC (glass, water: the whole BSDF, any diffuse ignored)
+ * The named models of docs/brdf.md ("lambert", "ggx", "dielectric", ...) are presets of
+ * these choices, listed once in host/scene/material.cpp (kPresets).
  * The dielectric reads ior as n_below / n_above (inside over outside), the microfacet
  * terms as the microfacet lobe does, and `specular` as a transmittance applied at each
  * refraction (kernels/bsdf/dielectric.cl). */
@@ -20,61 +10,83 @@
 
 #include "kernels/shared/types.h"
 
+/* Each closed list of a material's choices is written once, here, as X(VALUE, "name")
+ * in value order from 0 (the X-macro idiom of feature_flags.h): the FC_* constants are
+ * generated below, the host's name tables (host/scene/material.cpp), which the scene
+ * format and `facet info` use, from the same lists. */
+
 /* Diffuse lobes (FcMaterial.diffuse_model). */
-#define FC_DIFFUSE_NONE 0
-#define FC_DIFFUSE_LAMBERT 1
-#define FC_DIFFUSE_LAMBERT_1MF0 2       /* Lambert weighted by (1 - F0), tri-Ace (Gotanda 2010) */
-#define FC_DIFFUSE_OREN_NAYAR 3         /* the A, B, sin(alpha) tan(beta) form (Oren & Nayar 1994) */
-#define FC_DIFFUSE_ASHIKHMIN_SHIRLEY 4  /* 28/23 energy-conserving term (Ashikhmin & Shirley 2000) */
-#define FC_DIFFUSE_COUNT 5
+#define FC_DIFFUSE_LIST(X)                                                                       \
+    X(FC_DIFFUSE_NONE, "none")                                                                   \
+    X(FC_DIFFUSE_LAMBERT, "lambert")                                                             \
+    X(FC_DIFFUSE_LAMBERT_1MF0, "lambert_1mf0")           /* Lambert x (1 - F0), tri-Ace (Gotanda 2010) */ \
+    X(FC_DIFFUSE_OREN_NAYAR, "oren_nayar")               /* the A, B, sin(alpha) tan(beta) form (Oren & Nayar 1994) */ \
+    X(FC_DIFFUSE_ASHIKHMIN_SHIRLEY, "ashikhmin_shirley") /* 28/23 energy-conserving term (Ashikhmin & Shirley 2000) */
 
 /* Specular lobes (FcMaterial.specular_model). */
-#define FC_SPECULAR_NONE 0
-#define FC_SPECULAR_MICROFACET 1              /* D G F / (4 cos_o cos_i) */
-#define FC_SPECULAR_BLINN_PHONG 2             /* Ks (n.h)^e / pi, the original (Blinn 1977) */
-#define FC_SPECULAR_BLINN_PHONG_NORMALIZED 3  /* Ks (e + 8) / (8 pi) (n.h)^e */
-#define FC_SPECULAR_ASHIKHMIN_SHIRLEY 4       /* anisotropic Phong (Ashikhmin & Shirley 2000) */
-#define FC_SPECULAR_DIELECTRIC 5              /* reflection + refraction, smooth or rough (Walter 2007) */
-#define FC_SPECULAR_COUNT 6
+#define FC_SPECULAR_LIST(X)                                                                      \
+    X(FC_SPECULAR_NONE, "none")                                                                  \
+    X(FC_SPECULAR_MICROFACET, "microfacet")                          /* D G F / (4 cos_o cos_i) */ \
+    X(FC_SPECULAR_BLINN_PHONG, "blinn_phong")                        /* Ks (n.h)^e / pi, the original (Blinn 1977) */ \
+    X(FC_SPECULAR_BLINN_PHONG_NORMALIZED, "blinn_phong_normalized")  /* Ks (e + 8) / (8 pi) (n.h)^e */ \
+    X(FC_SPECULAR_ASHIKHMIN_SHIRLEY, "ashikhmin_shirley")            /* anisotropic Phong (Ashikhmin & Shirley 2000) */ \
+    X(FC_SPECULAR_DIELECTRIC, "dielectric")                          /* reflection + refraction, smooth or rough (Walter 2007) */
 
 /* Normal distributions (FcMaterial.ndf). */
-#define FC_NDF_BECKMANN 0
-#define FC_NDF_GGX 1
-#define FC_NDF_BLINN_PHONG 2   /* (e + 2) / (2 pi) cos^e, e = exponent_x */
-#define FC_NDF_COUNT 3
+#define FC_NDF_LIST(X)                                                                           \
+    X(FC_NDF_BECKMANN, "beckmann")                                                               \
+    X(FC_NDF_GGX, "ggx")                                                                         \
+    X(FC_NDF_BLINN_PHONG, "blinn_phong")   /* (e + 2) / (2 pi) cos^e, e = exponent_x */
 
 /* Geometry (shadowing-masking) terms (FcMaterial.geometry). */
-#define FC_G_IMPLICIT 0             /* (n.l)(n.v) */
-#define FC_G_COOK_TORRANCE 1        /* min(1, 2(n.h)(n.v)/(v.h), 2(n.h)(n.l)/(v.h)) */
-#define FC_G_SMITH_SEPARABLE 2      /* G1(v) G1(l), exact Lambda of the NDF */
-#define FC_G_SMITH_CORRELATED 3     /* 1 / (1 + Lambda(v) + Lambda(l)) (Heitz 2014) */
-#define FC_G_SMITH_SCHLICK 4        /* Schlick's approximation of Smith, k = alpha sqrt(2/pi) */
-#define FC_G_SMITH_WALTER 5         /* Walter et al. 2007's rational approximation (Beckmann) */
-#define FC_G_COUNT 6
+#define FC_G_LIST(X)                                                                             \
+    X(FC_G_IMPLICIT, "implicit")                  /* (n.l)(n.v) */                               \
+    X(FC_G_COOK_TORRANCE, "cook_torrance")        /* min(1, 2(n.h)(n.v)/(v.h), 2(n.h)(n.l)/(v.h)) */ \
+    X(FC_G_SMITH_SEPARABLE, "smith_separable")    /* G1(v) G1(l), exact Lambda of the NDF */     \
+    X(FC_G_SMITH_CORRELATED, "smith_correlated")  /* 1 / (1 + Lambda(v) + Lambda(l)) (Heitz 2014) */ \
+    X(FC_G_SMITH_SCHLICK, "smith_schlick")        /* Schlick's approximation of Smith, k = alpha sqrt(2/pi) */ \
+    X(FC_G_SMITH_WALTER, "smith_walter")          /* Walter et al. 2007's rational approximation (Beckmann) */
 
 /* Fresnel terms (FcMaterial.fresnel). */
-#define FC_FRESNEL_ONE 0            /* F = 1, for tests */
-#define FC_FRESNEL_SCHLICK 1        /* Schlick from the RGB F0 in `specular` */
-#define FC_FRESNEL_SCHLICK_IOR 2    /* Schlick with F0 = ((n - 1)/(n + 1))^2, n = ior */
-#define FC_FRESNEL_DIELECTRIC 3     /* exact, unpolarised, relative index ior */
-#define FC_FRESNEL_CONDUCTOR 4      /* exact, complex index eta + i k per channel */
-#define FC_FRESNEL_COUNT 5
+#define FC_FRESNEL_LIST(X)                                                                       \
+    X(FC_FRESNEL_ONE, "one")                 /* F = 1, for tests */                              \
+    X(FC_FRESNEL_SCHLICK, "schlick")         /* Schlick from the RGB F0 in `specular` */         \
+    X(FC_FRESNEL_SCHLICK_IOR, "schlick_ior") /* Schlick with F0 = ((n - 1)/(n + 1))^2, n = ior */ \
+    X(FC_FRESNEL_DIELECTRIC, "dielectric")   /* exact, unpolarised, relative index ior */        \
+    X(FC_FRESNEL_CONDUCTOR, "conductor")     /* exact, complex index eta + i k per channel */
 
 /* Microfacet sampling (FcMaterial.sampling). */
-#define FC_SAMPLE_VISIBLE 0         /* distribution of visible normals */
-#define FC_SAMPLE_ALL 1             /* D(m) cos(theta_m) */
+#define FC_SAMPLE_LIST(X)                                                                        \
+    X(FC_SAMPLE_VISIBLE, "visible")   /* distribution of visible normals */                      \
+    X(FC_SAMPLE_ALL, "all")           /* D(m) cos(theta_m) */
+
+/* The constants: 0, 1, ... in list order, and FC_*_COUNT after each list. */
+#define FC_MATERIAL_ENUM_VALUE(value, name) value,
+enum { FC_DIFFUSE_LIST(FC_MATERIAL_ENUM_VALUE) FC_DIFFUSE_COUNT };
+enum { FC_SPECULAR_LIST(FC_MATERIAL_ENUM_VALUE) FC_SPECULAR_COUNT };
+enum { FC_NDF_LIST(FC_MATERIAL_ENUM_VALUE) FC_NDF_COUNT };
+enum { FC_G_LIST(FC_MATERIAL_ENUM_VALUE) FC_G_COUNT };
+enum { FC_FRESNEL_LIST(FC_MATERIAL_ENUM_VALUE) FC_FRESNEL_COUNT };
+enum { FC_SAMPLE_LIST(FC_MATERIAL_ENUM_VALUE) FC_SAMPLE_COUNT };
+#undef FC_MATERIAL_ENUM_VALUE
 
 /* Material flags (FcMaterial.flags). */
 #define FC_MAT_TWO_SIDED_EMISSION 1u
 
+/* Phong-style exponents are clamped to [0, FC_PHONG_EXPONENT_MAX] (the kernels'
+ * fc_phong_exponent, the host's shininess conversions and its clamp_material). */
+#define FC_PHONG_EXPONENT_MAX 1e6f
+
 /* Below this alpha a microfacet lobe is a perfect mirror (docs/brdf.md: stability). */
 #define FC_ALPHA_MIRROR 1e-4f
 
-/* A material. Colours are linear RGB. `specular` is F0 for the Schlick Fresnel and the
- * specular colour Ks of the Blinn-Phong lobes. alpha_x/alpha_y are the microfacet
- * roughness along the tangent and bitangent; exponent_x/exponent_y the Phong-style
- * exponents (Blinn-Phong uses exponent_x; Ashikhmin-Shirley nu = exponent_x, nv =
- * exponent_y); `roughness` is Oren-Nayar's sigma (radians). */
+/* A material. Colours are linear RGB. `specular` is the specular lobe's colour, by model:
+ * F0 for the Schlick Fresnel (microfacet, Ashikhmin-Shirley), Ks for the Blinn-Phong
+ * lobes, the transmittance at each refraction for the dielectric (the host's Material
+ * names the three apart). alpha_x/alpha_y are the microfacet roughness (alpha) along
+ * the tangent and bitangent; exponent_x/exponent_y the Phong-style exponents
+ * (Blinn-Phong uses exponent_x; Ashikhmin-Shirley nu = exponent_x, nv = exponent_y);
+ * `sigma` is Oren-Nayar's sigma (radians). */
 typedef struct FcMaterial {
     float diffuse[3];
     fc_int diffuse_model;
@@ -91,7 +103,7 @@ typedef struct FcMaterial {
     float exponent_x;
     float exponent_y;
     float ior;
-    float roughness;
+    float sigma;
     fc_uint flags;
     fc_int sampling;
 } FcMaterial;

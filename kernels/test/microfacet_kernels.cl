@@ -180,7 +180,7 @@ inline FcMaterial sweep_material(Rng* r) {
     m.exponent_x = 2.0f / (m.alpha_x * m.alpha_x) - 2.0f;   /* 0 to 2e14 */
     m.exponent_y = 2.0f / (m.alpha_y * m.alpha_y) - 2.0f;
     m.ior = 1.0f + 19.0f * rng_float(r);
-    m.roughness = 0.5f * FC_PI * rng_float(r);
+    m.sigma = 0.5f * FC_PI * rng_float(r);
     for (int c = 0; c < 3; ++c) {
         m.diffuse[c] = rng_float(r);
         m.specular[c] = rng_float(r);

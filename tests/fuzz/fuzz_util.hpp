@@ -80,7 +80,7 @@ inline void check_scene(const Scene& s) {
         if (sh.light >= int(s.lights.size())) broken("light index in range");
     }
     if (s.material_names.size() != s.materials.size()) broken("a name per material");
-    for (const FcMaterial& m : s.materials)
+    for (const Material& m : s.materials)
         if (!validate_material(m).empty()) broken(("valid materials: " + validate_material(m)).c_str());
     const RenderSettings& r = s.settings;
     if (r.width < 1 || r.width > 16384 || r.height < 1 || r.height > 16384) broken("image size in [1, 16384]");

@@ -19,8 +19,10 @@
 #include "host/error.hpp"
 #include "host/film/image_io.hpp"
 #include "tests/fuzz/fuzz_util.hpp"
+#include "host/readers/environment_file.hpp"
 #include "host/scene/environment_map.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/load_scene.hpp"
+#include "host/readers/obj_reader.hpp"
 
 namespace facet::fuzz {
 

@@ -1,4 +1,4 @@
-#include "host/scene/mtl_material.hpp"
+#include "host/readers/mtl_material.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "host/error.hpp"
 #include "host/scene/material.hpp"
 #include "host/scene/scene.hpp"
-#include "host/scene/text_parse.hpp"
+#include "host/readers/text_parse.hpp"
 
 namespace facet {
 namespace {
@@ -42,7 +42,7 @@ struct MtlLine {
     }
 
     // "Kd r g b" or "Kd r" (grey); colours must not be negative.
-    void color(float out[3]) const {
+    void color(glm::vec3& out) const {
         if (f.size() >= 2 && (f[1] == "spectral" || f[1] == "xyz")) {
             fail(fmt::format("'{} {}' is not supported; give linear RGB numbers", f[0], f[1]));
         }
@@ -69,7 +69,7 @@ struct Pending {
     float pr = 0.0f;
     bool has_ns = false;
     float ns = 0.0f;
-    float tf[3] = {1.0f, 1.0f, 1.0f};
+    glm::vec3 tf{1.0f};
 };
 
 // Chooses the model from what the MTL gives (docs/scene-format.md, "MTL materials"):
@@ -89,44 +89,46 @@ struct Pending {
 // - otherwise Lambert with Kd.
 MtlMaterial finish(Pending& p) {
     MtlMaterial m = p.m;
-    FcMaterial& mat = m.material;
+    Material& mat = m.material;
     const float shininess = p.has_ns ? p.ns : 10.0f;
     const bool pbr = p.has_pr || p.has_pm;
-    const bool has_ks = p.has_ks && (mat.specular[0] > 0.0f || mat.specular[1] > 0.0f || mat.specular[2] > 0.0f);
-    FcMaterial base = mat;
+    const bool has_ks = p.has_ks && (mat.ks[0] > 0.0f || mat.ks[1] > 0.0f || mat.ks[2] > 0.0f);
+    Material base = mat;
     if (m.illum == 5 && !pbr) {
         mat = make_material("conductor");
         mat.fresnel = FC_FRESNEL_SCHLICK;
-        for (int c = 0; c < 3; ++c) mat.specular[c] = p.has_ks ? std::min(base.specular[c], 1.0f) : 1.0f;
+        for (int c = 0; c < 3; ++c) mat.f0[c] = p.has_ks ? std::min(base.ks[c], 1.0f) : 1.0f;
         mat.alpha_x = mat.alpha_y = 0.0f;
     } else if (m.illum == 7 && !pbr) {
         mat = make_material("dielectric");
         const float tf_max = std::max({p.tf[0], p.tf[1], p.tf[2]});
         for (int c = 0; c < 3; ++c)
-            mat.specular[c] = tf_max > 0.0f ? std::sqrt(std::clamp(p.tf[c] / tf_max, 0.0f, 1.0f)) : 1.0f;
+            mat.transmittance[c] = tf_max > 0.0f ? std::sqrt(std::clamp(p.tf[c] / tf_max, 0.0f, 1.0f)) : 1.0f;
     } else if (pbr) {
         mat = make_material("ggx");
         float alpha = p.has_pr ? std::max(p.pr * p.pr, 1e-3f) : roughness_from_shininess(shininess);
         float f0 = ((base.ior - 1.0f) / (base.ior + 1.0f)) * ((base.ior - 1.0f) / (base.ior + 1.0f));
         for (int c = 0; c < 3; ++c) {
             mat.diffuse[c] = base.diffuse[c] * (1.0f - m.metallic);
-            mat.specular[c] = f0 + (base.diffuse[c] - f0) * m.metallic;
+            mat.f0[c] = f0 + (base.diffuse[c] - f0) * m.metallic;
         }
         mat.diffuse_model = FC_DIFFUSE_LAMBERT;
         mat.alpha_x = mat.alpha_y = alpha;
         mat.exponent_x = mat.exponent_y = shininess_from_roughness(alpha);
     } else if (has_ks && m.illum >= 2) {
         mat = make_material("blinn_phong_normalized");
-        for (int c = 0; c < 3; ++c) mat.diffuse[c] = base.diffuse[c], mat.specular[c] = base.specular[c];
+        mat.diffuse = base.diffuse;
+        mat.ks = base.ks;
         mat.exponent_x = mat.exponent_y = shininess;
         mat.alpha_x = mat.alpha_y = roughness_from_shininess(shininess);
     } else {
         mat = make_material("lambert");
-        for (int c = 0; c < 3; ++c) mat.diffuse[c] = base.diffuse[c], mat.specular[c] = base.specular[c];
+        mat.diffuse = base.diffuse;
+        mat.ks = base.ks;   // as read; no lobe of Lambert's reads it
     }
     for (int c = 0; c < 3; ++c) mat.emission[c] = base.emission[c];
     mat.ior = base.ior;
-    mat.flags = base.flags;
+    mat.two_sided_emission = base.two_sided_emission;
     return m;
 }
 
@@ -156,11 +158,11 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
         if (!known && !is_texture_statement(kw)) continue;  // Ka, Tr, ...: not used
         if (list.empty()) l.fail(fmt::format("'{}' before any 'newmtl'", kw));
         Pending& p = list.back();
-        FcMaterial& mat = p.m.material;
+        Material& mat = p.m.material;
         if (kw == "Kd")
             l.color(mat.diffuse);
         else if (kw == "Ks") {
-            l.color(mat.specular);
+            l.color(mat.ks);
             p.has_ks = true;
         }
         else if (kw == "Ke")

@@ -1,5 +1,5 @@
-// Loading scenes from files. Every function throws facet::Error with a message that
-// names the file (and the line where there is one) and says what is wrong.
+// OBJ meshes (with their MTL materials) appended to a Scene (host/readers/obj_reader.cpp).
+// Errors are facet::Error naming the file and line.
 #pragma once
 
 #include <map>
@@ -10,10 +10,6 @@
 #include "host/scene/scene.hpp"
 
 namespace facet {
-
-// Loads a JSON scene (*.json) or a mesh (*.obj, framed by a default camera and lit
-// by a default light). Calls build_lights() before returning.
-Scene load_scene(const std::string& path);
 
 // Appends the triangles and materials of an OBJ (and its MTL) to `scene`.
 // `transform` is applied to positions (its inverse transpose to normals);

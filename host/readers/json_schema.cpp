@@ -1,4 +1,4 @@
-#include "host/scene/json_schema.hpp"
+#include "host/readers/json_schema.hpp"
 
 #include <algorithm>
 #include <cmath>

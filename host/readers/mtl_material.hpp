@@ -1,19 +1,19 @@
 // Wavefront MTL materials: a strict reader (every number checked, errors name the
-// file and line) and the mapping of MTL parameters onto FcMaterial.
+// file and line) and the mapping of MTL parameters onto the host's Material.
 #pragma once
 
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "kernels/shared/scene_layout.h"
+#include "host/scene/material.hpp"
 
 namespace facet {
 
 struct MtlMaterial {
     std::string name;
-    FcMaterial material{};
-    // Kept as read for the models still to come; FcMaterial has no field for them yet.
+    Material material;
+    // Kept as read for the models still to come; Material has no field for them yet.
     float dissolve = 1.0f;  // d (1 = opaque)
     float metallic = 0.0f;  // Pm
     int illum = 2;

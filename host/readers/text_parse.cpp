@@ -1,4 +1,4 @@
-#include "host/scene/text_parse.hpp"
+#include "host/readers/text_parse.hpp"
 
 #include <charconv>
 #include <filesystem>

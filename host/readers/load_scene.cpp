@@ -1,24 +1,24 @@
 // load_scene: a JSON scene file, or a bare OBJ framed by a default camera and lit
 // by a default light when it has no emitters of its own.
-#include <algorithm>
-#include <cctype>
+#include "host/readers/load_scene.hpp"
+
 #include <cmath>
 #include <filesystem>
-#include <limits>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
 #include "host/error.hpp"
-#include "host/scene/json_scene.hpp"
-#include "host/scene/load.hpp"
+#include "host/readers/json_scene.hpp"
+#include "host/readers/obj_reader.hpp"
+#include "host/util/strings.hpp"
 
 namespace facet {
 namespace {
 
 bool has_emitter(const Scene& scene) {
     for (const FcTriShading& sh : scene.shading) {
-        const FcMaterial& m = scene.materials[static_cast<std::size_t>(sh.material)];
+        const Material& m = scene.materials[static_cast<std::size_t>(sh.material)];
         if (m.emission[0] > 0.0f || m.emission[1] > 0.0f || m.emission[2] > 0.0f) return true;
     }
     return false;
@@ -30,23 +30,19 @@ bool has_emitter(const Scene& scene) {
 // the default camera it lies above the top of the image. A white Lambertian surface
 // facing it receives about 0.8 x 4 x (solid angle) and so looks roughly mid-grey to white.
 void add_default_light(Scene& scene) {
-    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (const glm::vec3& v : scene.vertices) {
-        lo = glm::min(lo, v);
-        hi = glm::max(hi, v);
-    }
-    const glm::vec3 center = 0.5f * (lo + hi);
-    float r = 0.5f * glm::length(hi - lo);
+    const Bounds bounds = scene_bounds(scene);
+    const glm::vec3 center = bounds.center();
+    float r = bounds.radius();
     if (!(r > 0.0f)) r = 1.0f;
     const glm::vec3 p = center + r * glm::vec3(0.0f, 2.0f, 1.0f);
     const glm::vec3 w = glm::normalize(center - p);  // facing the model
     const glm::vec3 v(1.0f, 0.0f, 0.0f);
     glm::vec3 u = glm::normalize(glm::cross(w, v));
     if (glm::dot(glm::cross(u, v), w) < 0.0f) u = -u;  // cross(e1, e2) along w
-    FcMaterial m = default_material();
-    for (float& c : m.diffuse) c = 0.0f;
-    for (float& c : m.emission) c = 4.0f;
-    m.flags |= FC_MAT_TWO_SIDED_EMISSION;
+    Material m = default_material();
+    m.diffuse = glm::vec3(0.0f);
+    m.emission = glm::vec3(4.0f);
+    m.two_sided_emission = true;
     const int material = add_material(scene, m, "default_light");
     add_quad(scene, p - r * u - r * v, 2.0f * r * u, 2.0f * r * v, material);
 }
@@ -68,19 +64,12 @@ void check_geometry(const Scene& scene, const std::string& path) {
     }
 }
 
-std::string lower_extension(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
-
 }  // namespace
 
 Scene load_scene(const std::string& path) {
     Scene scene;
     scene.source_path = path;
-    const std::string ext = lower_extension(path);
+    const std::string ext = lower(std::filesystem::path(path).extension().string());
     if (ext == ".obj") {
         load_obj(path, scene);
         check_geometry(scene, path);

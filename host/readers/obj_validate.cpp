@@ -1,11 +1,11 @@
-#include "host/scene/obj_validate.hpp"
+#include "host/readers/obj_validate.hpp"
 
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "host/error.hpp"
-#include "host/scene/text_parse.hpp"
+#include "host/readers/text_parse.hpp"
 
 namespace facet {
 namespace {

@@ -1,0 +1,15 @@
+#include "host/readers/environment_file.hpp"
+
+#include <utility>
+
+#include "host/film/image_io.hpp"
+
+namespace facet {
+
+EnvironmentMap load_environment_map(const std::string& path, const glm::vec3& scale, const glm::mat3& world_to_map,
+                                    std::vector<std::string>& warnings) {
+    ImageRGB img = read_image(path);   // throws facet::Error naming the file
+    return environment_from_pixels(img.width, img.height, std::move(img.rgb), scale, world_to_map, path, warnings);
+}
+
+}  // namespace facet

@@ -1,0 +1,171 @@
+// JSON scene files: materials (docs/scene-format.md, "Materials"): a named model's
+// preset (host/scene/material.hpp), then its parameters, and references to materials.
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "host/readers/json_loader.hpp"
+#include "host/scene/material.hpp"
+#include "host/util/strings.hpp"
+
+namespace facet {
+namespace {
+
+// One material's keys, read against its JSON path.
+struct MaterialKeys {
+    const JsonReader& r;
+    const Json& v;
+    const std::string& path;
+
+    std::string key(const std::string& k) const { return JsonReader::key(path, k); }
+    bool has(const char* k) const { return v.contains(k); }
+    glm::vec3 color(const char* k) const { return r.color(v[k], key(k)); }
+    float number(const std::string& k, double lo, double hi) const { return r.number_in(v[k], key(k), lo, hi); }
+    std::string string(const char* k) const { return r.string(v[k], key(k)); }
+};
+
+Material preset(const MaterialKeys& m) {
+    const std::string model = m.has("model") ? m.string("model") : "lambert";
+    std::optional<Material> preset = material_preset(model);
+    if (!preset) m.r.fail(m.key("model"), unknown_name("model", model, name_list(material_model_names())));
+    return *preset;
+}
+
+// "specular", "f0" and "transmittance" all give the specular lobe's colour: F0 for the
+// Schlick Fresnel, Ks for the Blinn-Phong lobes, the dielectric's transmittance
+// (specular_colour in material.hpp). Whichever the file writes, the colour goes to the
+// field the lobe chosen in the end reads (the lobe may be set after the colour: see
+// JsonLoader::material); the last one written wins.
+using SpecularColour = std::optional<glm::vec3>;
+
+// "diffuse", "specular", "f0" (numbers or a preset name) and "emission".
+void colours(const MaterialKeys& k, Material& m, SpecularColour& specular) {
+    if (k.has("diffuse")) m.diffuse = k.color("diffuse");
+    if (k.has("specular")) specular = k.color("specular");
+    if (k.has("f0")) {
+        if (k.v["f0"].is_string()) {
+            const std::string preset_name = k.string("f0");
+            std::optional<std::array<float, 3>> f0 = f0_preset(preset_name);
+            if (!f0) k.r.fail(k.key("f0"), unknown_name("F0 preset", preset_name, name_list(f0_preset_names())));
+            specular = glm::vec3((*f0)[0], (*f0)[1], (*f0)[2]);
+        } else {
+            specular = k.color("f0");
+        }
+    }
+    if (k.has("emission")) m.emission = k.color("emission");
+}
+
+// A lobe's width in the two quantities the models read: the microfacet roughness alpha
+// and the Phong-style exponent (Blinn-Phong's shininess, Ashikhmin-Shirley's nu/nv),
+// related by the lecture's alpha = sqrt(2 / (2 + exponent)) (material.hpp).
+struct LobeWidth {
+    float alpha, exponent;
+    static LobeWidth from_roughness(float r) { return {r, shininess_from_roughness(r)}; }
+    static LobeWidth from_shininess(float s) { return {roughness_from_shininess(s), s}; }
+    void set_x(Material& m) const { m.alpha_x = alpha, m.exponent_x = exponent; }
+    void set_y(Material& m) const { m.alpha_y = alpha, m.exponent_y = exponent; }
+};
+
+// The width keys, one knob in the units users write, each model given its own quantity:
+//   "roughness" r in [0, 1]   microfacet alpha = r, exponent = 2 / r^2 - 2, and
+//                             Oren-Nayar's sigma = r (radians)
+//   "shininess" s in [0, 1e6] exponent = s, alpha = sqrt(2 / (2 + s))
+//   "sigma" in [0, pi/2]      Oren-Nayar's sigma alone
+// "_x" / "_y" set one axis (alpha and exponent only). Applied in this order: roughness,
+// then shininess; the pair, then each axis; then sigma.
+void lobe_widths(const MaterialKeys& k, Material& m) {
+    if (k.has("roughness")) {
+        const float r = k.number("roughness", 0, 1);
+        LobeWidth::from_roughness(r).set_x(m);
+        LobeWidth::from_roughness(r).set_y(m);
+        m.sigma = r;
+    }
+    if (k.has("roughness_x")) LobeWidth::from_roughness(k.number("roughness_x", 0, 1)).set_x(m);
+    if (k.has("roughness_y")) LobeWidth::from_roughness(k.number("roughness_y", 0, 1)).set_y(m);
+    const double max_exponent = double(FC_PHONG_EXPONENT_MAX);
+    if (k.has("shininess")) {
+        const float s = k.number("shininess", 0, max_exponent);
+        LobeWidth::from_shininess(s).set_x(m);
+        LobeWidth::from_shininess(s).set_y(m);
+    }
+    if (k.has("shininess_x")) LobeWidth::from_shininess(k.number("shininess_x", 0, max_exponent)).set_x(m);
+    if (k.has("shininess_y")) LobeWidth::from_shininess(k.number("shininess_y", 0, max_exponent)).set_y(m);
+    if (k.has("sigma")) m.sigma = k.number("sigma", 0, 1.5707963);
+}
+
+// "conductor": a metal's complex index, with its Schlick F0 beside it for "fresnel": "schlick".
+void conductor(const MaterialKeys& k, Material& m, SpecularColour& specular) {
+    const std::string metal = k.string("conductor");
+    std::optional<ConductorIndex> c = conductor_preset(metal);
+    if (!c) k.r.fail(k.key("conductor"), unknown_name("conductor", metal, name_list(conductor_preset_names())));
+    const std::array<float, 3> f0 = *f0_preset(metal);
+    for (int i = 0; i < 3; ++i) m.eta[i] = c->eta[i], m.k[i] = c->k[i];
+    specular = glm::vec3(f0[0], f0[1], f0[2]);
+    m.fresnel = FC_FRESNEL_CONDUCTOR;
+}
+
+// The lobe choices by name: "diffuse_model", "specular_model", "ndf", "geometry",
+// "fresnel", "sampling".
+void lobe_choices(const MaterialKeys& k, Material& m) {
+    auto choice = [&](const char* key, MaterialEnum kind, int& field) {
+        if (!k.has(key)) return;
+        const std::string value = k.string(key);
+        std::optional<int> e = enum_from_name(kind, value);
+        if (!e) k.r.fail(k.key(key), unknown_name(enum_kind_name(kind), value, enum_name_list(kind)));
+        field = *e;
+    };
+    choice("diffuse_model", MaterialEnum::Diffuse, m.diffuse_model);
+    choice("specular_model", MaterialEnum::Specular, m.specular_model);
+    choice("ndf", MaterialEnum::Ndf, m.ndf);
+    choice("geometry", MaterialEnum::Geometry, m.geometry);
+    choice("fresnel", MaterialEnum::Fresnel, m.fresnel);
+    choice("sampling", MaterialEnum::Sampling, m.sampling);
+}
+
+}  // namespace
+
+void JsonLoader::material(const std::string& name, const Json& v, const std::string& path) {
+    r.object(v, path,
+             {"model", "diffuse", "specular", "f0", "emission", "two_sided_emission", "roughness", "roughness_x",
+              "roughness_y", "shininess", "shininess_x", "shininess_y", "sigma", "ior", "eta", "k", "diffuse_model",
+              "specular_model", "ndf", "geometry", "fresnel", "sampling", "conductor", "transmittance"});
+    const MaterialKeys k{r, v, path};
+    Material m = preset(k);
+    SpecularColour specular;
+    colours(k, m, specular);
+    lobe_widths(k, m);
+    if (k.has("ior")) m.ior = k.number("ior", 1e-3, 100);
+    if (k.has("conductor")) conductor(k, m, specular);
+    if (k.has("transmittance")) specular = k.color("transmittance");
+    if (k.has("eta")) m.eta = k.color("eta");
+    if (k.has("k")) m.k = k.color("k");
+    lobe_choices(k, m);
+    if (specular) specular_colour(m) = *specular;
+    if (k.has("two_sided_emission") && r.boolean(v["two_sided_emission"], k.key("two_sided_emission")))
+        m.two_sided_emission = true;
+    if (std::string warning = clamp_reflectance(m); !warning.empty())
+        scene.warnings.push_back(fmt::format("{}: {}: {}", r.file(), path, warning));
+    if (std::string problem = validate_material(m); !problem.empty()) r.fail(path, problem);
+    materials[name] = add_material(scene, m, name);
+}
+
+int JsonLoader::material_ref(const Json& v, const std::string& path) {
+    const std::string name = r.string(v, path);
+    auto it = materials.find(name);
+    if (it == materials.end()) {
+        const std::string known = name_list(materials, [](const auto& m) { return fmt::format("'{}'", m.first); });
+        r.fail(path, fmt::format("unknown material '{}' (defined: {})", name, known.empty() ? "none" : known));
+    }
+    return it->second;
+}
+
+int JsonLoader::optional_material(const Json& obj, const std::string& path) {
+    if (obj.contains("material")) return material_ref(obj["material"], JsonReader::key(path, "material"));
+    if (default_index < 0) default_index = add_material(scene, default_material(), "default");
+    return default_index;
+}
+
+}  // namespace facet

@@ -1,0 +1,259 @@
+// OBJ meshes (with their MTL materials) appended to a Scene. The text is checked
+// line by line first (obj_validate.cpp, mtl_material.cpp) so that malformed files
+// give "file:LINE: ..." errors; tinyobjloader then reads it (triangulating polygons).
+#include "host/readers/obj_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include <fmt/format.h>
+#include <tiny_obj_loader.h>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include "host/error.hpp"
+#include "host/scene/material.hpp"
+#include "host/readers/mtl_material.hpp"
+#include "host/readers/obj_validate.hpp"
+#include "host/readers/text_parse.hpp"
+
+namespace facet {
+namespace {
+
+// Reads every material library the OBJ names. A missing one is a warning (faces
+// using it get the default material); a malformed one is an error.
+std::vector<MtlMaterial> read_mtllibs(const std::string& path, const ObjScan& scan, Scene& scene,
+                                      std::string& all_mtl_text) {
+    std::vector<MtlMaterial> materials;
+    const std::string dir = text::directory_of(path);
+    for (const ObjNamedRef& lib : scan.mtllibs) {
+        const std::string mtl_path = text::join_path(dir, lib.name);
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(mtl_path, ec)) {
+            scene.warnings.push_back(fmt::format(
+                "{}:{}: material library '{}' not found (looked for '{}'); its materials "
+                "get the default material",
+                path, lib.line, lib.name, mtl_path));
+            continue;
+        }
+        const std::string mtl_text = text::read_file(mtl_path, "MTL file");
+        auto parsed = parse_mtl(mtl_path, mtl_text, scene.warnings);
+        materials.insert(materials.end(), parsed.begin(), parsed.end());
+        all_mtl_text += mtl_text;
+        all_mtl_text += "\n";
+    }
+    return materials;
+}
+
+glm::vec3 face_normal(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2) {
+    const glm::vec3 c = glm::cross(p1 - p0, p2 - p0);
+    const float len = glm::length(c);
+    return len > 0.0f && std::isfinite(len) ? c / len : glm::vec3(0.0f, 0.0f, 1.0f);
+}
+
+bool usable(glm::vec3 n) {
+    const float len = glm::length(n);
+    return len > 0.0f && std::isfinite(len);
+}
+
+
+// A mesh as tinyobjloader reads it, with the MTL materials facet read beside it.
+struct ParsedObj {
+    ObjScan scan;
+    std::vector<MtlMaterial> mtl;
+    tinyobj::ObjReader reader;
+};
+
+void parse(const std::string& path, Scene& scene, ParsedObj& obj) {
+    const std::string obj_text = text::read_file(path, "OBJ file");
+    obj.scan = validate_obj(path, obj_text);
+    std::string mtl_text;
+    obj.mtl = read_mtllibs(path, obj.scan, scene, mtl_text);
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    if (!obj.reader.ParseFromString(obj_text, mtl_text, config)) throw Error(fmt::format("{}: {}", path, obj.reader.Error()));
+}
+
+bool defines(const std::vector<MtlMaterial>& mtl, const std::string& name) {
+    for (const MtlMaterial& m : mtl)
+        if (m.name == name) return true;
+    return false;
+}
+
+// Every overridden name must exist; a 'usemtl' of an unknown name is a warning (once).
+void check_material_names(const std::string& path, const ParsedObj& obj, const ObjLoadOptions& options,
+                          Scene& scene) {
+    for (const auto& [name, index] : options.material_map) {
+        if (!defines(obj.mtl, name))
+            throw Error(fmt::format("{}: material override names '{}', which no material library of this OBJ defines",
+                                    path, name));
+    }
+    std::map<std::string, int> warned;
+    for (const ObjNamedRef& use : obj.scan.usemtls) {
+        const bool libraries_missing = obj.mtl.empty() && !obj.scan.mtllibs.empty();   // warned already
+        if (!libraries_missing && !defines(obj.mtl, use.name) && warned[use.name]++ == 0)
+            scene.warnings.push_back(fmt::format("{}:{}: 'usemtl {}' names no material of the "
+                                                 "material libraries; the default material is used",
+                                                 path, use.line, use.name));
+    }
+}
+
+// The scene material of each tinyobjloader material id, added on first use.
+class ObjMaterials {
+public:
+    ObjMaterials(const std::string& path, const ParsedObj& obj, const ObjLoadOptions& options, Scene& scene)
+        : path_(path), obj_(obj), options_(options), scene_(scene) {}
+
+    int index(int tiny_id) {
+        if (options_.material_override >= 0) return options_.material_override;
+        const auto& tiny = obj_.reader.GetMaterials();
+        if (tiny_id < 0 || static_cast<std::size_t>(tiny_id) >= tiny.size()) {
+            if (default_index_ < 0) default_index_ = add_material(scene_, default_material(), "default");
+            return default_index_;
+        }
+        const std::string& name = tiny[static_cast<std::size_t>(tiny_id)].name;
+        if (auto it = options_.material_map.find(name); it != options_.material_map.end()) return it->second;
+        if (auto it = by_name_.find(name); it != by_name_.end()) return it->second;
+        return by_name_[name] = add_material(scene_, converted(name), name);
+    }
+
+private:
+    Material converted(const std::string& name) {
+        Material m = default_material();
+        for (const MtlMaterial& candidate : obj_.mtl)
+            if (candidate.name == name) m = candidate.material;   // the last definition wins
+        // As for JSON materials: a reflectance (Kd, Ks) above 1 is clamped, with a warning.
+        if (std::string warning = clamp_reflectance(m, "(Kd, Ks)"); !warning.empty())
+            scene_.warnings.push_back(fmt::format("{}: material '{}': {}", path_, name, warning));
+        if (std::string problem = validate_material(m); !problem.empty())
+            throw Error(fmt::format("{}: material '{}': {}", path_, name, problem));
+        return m;
+    }
+
+    const std::string& path_;
+    const ParsedObj& obj_;
+    const ObjLoadOptions& options_;
+    Scene& scene_;
+    std::map<std::string, int> by_name_;
+    int default_index_ = -1;
+};
+
+// Every index tinyobjloader returns is checked against its own arrays: the validator
+// counts statements the same way, but an index out of range here must never be read.
+void check_indices(const std::string& path, const tinyobj::ObjReader& reader) {
+    const auto& attrib = reader.GetAttrib();
+    for (const auto& shape : reader.GetShapes()) {
+        for (const tinyobj::index_t& i : shape.mesh.indices) {
+            const bool vertex_ok = i.vertex_index >= 0 && std::size_t(i.vertex_index) < attrib.vertices.size() / 3;
+            const bool normal_ok = i.normal_index == -1 ||
+                                   (i.normal_index >= 0 && std::size_t(i.normal_index) < attrib.normals.size() / 3);
+            if (!vertex_ok || !normal_ok)
+                throw Error(fmt::format("{}: a face index is out of range for what tinyobjloader read (it reads some "
+                                        "statements differently from facet's checks); the file is malformed",
+                                        path));
+        }
+    }
+}
+
+// The mesh in world space: positions, OBJ normals by the inverse transpose, and smooth,
+// area-weighted vertex normals for corners without an OBJ normal. A mirroring transform
+// reverses the winding (and the sign of position cross products): triangles are stored
+// with two corners swapped to keep the front face.
+struct WorldMesh {
+    const tinyobj::attrib_t& attrib;
+    std::vector<glm::vec3> pos, smooth;
+    glm::mat3 normal_matrix;
+    bool mirrored;
+    float side;
+
+    WorldMesh(const tinyobj::ObjReader& reader, const glm::mat4& transform)
+        : attrib(reader.GetAttrib()),
+          normal_matrix(glm::transpose(glm::inverse(glm::mat3(transform)))),
+          mirrored(glm::determinant(glm::mat3(transform)) < 0.0f),
+          side(mirrored ? -1.0f : 1.0f) {
+        const std::size_t npos = attrib.vertices.size() / 3;
+        pos.resize(npos);
+        for (std::size_t i = 0; i < npos; ++i) {
+            const glm::vec4 p(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2], 1.0f);
+            pos[i] = glm::vec3(transform * p);
+        }
+        smooth.assign(npos, glm::vec3(0.0f));
+        for (const auto& shape : reader.GetShapes()) {
+            const auto& idx = shape.mesh.indices;
+            for (std::size_t k = 0; k + 2 < idx.size(); k += 3) {
+                const std::size_t a = std::size_t(idx[k].vertex_index), b = std::size_t(idx[k + 1].vertex_index),
+                                  c = std::size_t(idx[k + 2].vertex_index);
+                const glm::vec3 area2 = glm::cross(pos[b] - pos[a], pos[c] - pos[a]);
+                for (std::size_t v : {a, b, c}) smooth[v] += side * area2;
+            }
+        }
+    }
+
+    // The corner's OBJ normal, else the smooth one, else (zero or invalid) the face's own.
+    glm::vec3 normal(const tinyobj::index_t& i, glm::vec3 face_n) const {
+        glm::vec3 n = smooth[static_cast<std::size_t>(i.vertex_index)];
+        if (i.normal_index >= 0) {
+            const std::size_t k = static_cast<std::size_t>(i.normal_index);
+            n = normal_matrix * glm::vec3(attrib.normals[3 * k], attrib.normals[3 * k + 1], attrib.normals[3 * k + 2]);
+        }
+        return usable(n) ? n : face_n;
+    }
+};
+
+// Triangles of zero area (repeated or collinear corners, also from triangulating a
+// degenerate polygon) are never hit and carry no light: dropped, with a warning.
+void add_faces(const std::string& path, const tinyobj::ObjReader& reader, const WorldMesh& mesh,
+               ObjMaterials& materials, Scene& scene) {
+    std::size_t degenerate = 0, kept = 0;
+    for (const auto& shape : reader.GetShapes()) {
+        const auto& idx = shape.mesh.indices;
+        for (std::size_t f = 0; 3 * f + 2 < idx.size(); ++f) {
+            glm::vec3 p[3], n[3];
+            for (std::size_t c = 0; c < 3; ++c) p[c] = mesh.pos[static_cast<std::size_t>(idx[3 * f + c].vertex_index)];
+            if (!(glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) > 0.0f)) {
+                ++degenerate;
+                continue;
+            }
+            ++kept;
+            const glm::vec3 fn = mesh.side * face_normal(p[0], p[1], p[2]);
+            for (std::size_t c = 0; c < 3; ++c) n[c] = mesh.normal(idx[3 * f + c], fn);
+            if (mesh.mirrored) {
+                std::swap(p[1], p[2]);
+                std::swap(n[1], n[2]);
+            }
+            const int tiny_id = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
+            add_triangle(scene, p[0], p[1], p[2], n[0], n[1], n[2], materials.index(tiny_id));
+        }
+    }
+    if (kept == 0)
+        throw Error(fmt::format("{}: every face has zero area ({} triangles): nothing to render", path, degenerate));
+    if (degenerate > 0)
+        scene.warnings.push_back(fmt::format("{}: {} of {} triangles have zero area and were dropped", path,
+                                             degenerate, degenerate + kept));
+}
+
+}  // namespace
+
+void load_obj(const std::string& path, Scene& scene, const glm::mat4& transform,
+              int material_override) {
+    ObjLoadOptions options;
+    options.transform = transform;
+    options.material_override = material_override;
+    load_obj(path, scene, options);
+}
+
+void load_obj(const std::string& path, Scene& scene, const ObjLoadOptions& options) {
+    ParsedObj obj;
+    parse(path, scene, obj);
+    check_material_names(path, obj, options, scene);
+    ObjMaterials materials(path, obj, options, scene);
+    check_indices(path, obj.reader);
+    const WorldMesh mesh(obj.reader, options.transform);
+    add_faces(path, obj.reader, mesh, materials, scene);
+}
+
+}  // namespace facet

@@ -1,0 +1,92 @@
+#include "host/scene/device_scene.hpp"
+
+#include <cstdint>
+
+#include "host/util/vec3.hpp"
+
+namespace facet {
+namespace {
+
+FcRenderParams render_params(const Scene& scene) {
+    const RenderSettings& s = scene.settings;
+    FcRenderParams p{};
+    p.camera = make_camera(scene.camera, float(s.width) / float(s.height));
+    p.width = std::uint32_t(s.width);
+    p.height = std::uint32_t(s.height);
+    p.seed = s.seed;
+    p.max_depth = std::uint32_t(s.max_depth);
+    p.rr_depth = std::uint32_t(s.rr_depth);
+    p.light_count = std::uint32_t(scene.lights.size());
+    p.environment = scene.environment.params;
+    p.environment_light = scene.environment_light;
+    p.strategy = std::uint32_t(s.strategy);
+    p.sampler = std::uint32_t(s.sampler);
+    return p;
+}
+
+}  // namespace
+
+FcMaterial device_material(const Material& m) {
+    FcMaterial d{};
+    store(d.diffuse, m.diffuse);
+    store(d.specular, specular_colour(m));
+    store(d.emission, m.emission);
+    store(d.eta, m.eta);
+    store(d.k, m.k);
+    d.diffuse_model = m.diffuse_model;
+    d.specular_model = m.specular_model;
+    d.ndf = m.ndf;
+    d.geometry = m.geometry;
+    d.fresnel = m.fresnel;
+    d.sampling = m.sampling;
+    d.alpha_x = m.alpha_x;
+    d.alpha_y = m.alpha_y;
+    d.exponent_x = m.exponent_x;
+    d.exponent_y = m.exponent_y;
+    d.ior = m.ior;
+    d.sigma = m.sigma;
+    d.flags = m.two_sided_emission ? FC_MAT_TWO_SIDED_EMISSION : 0u;
+    return d;
+}
+
+Material host_material(const FcMaterial& d) {
+    Material m;
+    m.diffuse = load(d.diffuse);
+    m.f0 = m.ks = m.transmittance = load(d.specular);
+    m.emission = load(d.emission);
+    m.eta = load(d.eta);
+    m.k = load(d.k);
+    m.diffuse_model = d.diffuse_model;
+    m.specular_model = d.specular_model;
+    m.ndf = d.ndf;
+    m.geometry = d.geometry;
+    m.fresnel = d.fresnel;
+    m.sampling = d.sampling;
+    m.alpha_x = d.alpha_x;
+    m.alpha_y = d.alpha_y;
+    m.exponent_x = d.exponent_x;
+    m.exponent_y = d.exponent_y;
+    m.ior = d.ior;
+    m.sigma = d.sigma;
+    m.two_sided_emission = (d.flags & FC_MAT_TWO_SIDED_EMISSION) != 0;
+    return m;
+}
+
+std::string describe_material(const FcMaterial& d) { return describe_material(host_material(d)); }
+
+DeviceScene compile(const Scene& scene, const Bvh& bvh) {
+    DeviceScene d;
+    d.params = render_params(scene);
+    d.nodes = bvh.nodes;
+    d.triangles = bvh.triangles;
+    d.shading = scene.shading;
+    d.lights = scene.lights;
+    d.light_cdf = scene.light_cdf;
+    d.environment_texels = scene.environment.texels;
+    d.environment_distribution = scene.environment.distribution;
+    d.materials.reserve(scene.materials.size());
+    for (const Material& m : scene.materials) d.materials.push_back(device_material(m));
+    return d;
+}
+
+}  // namespace facet

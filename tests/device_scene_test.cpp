@@ -1,0 +1,102 @@
+// DeviceScene.*: the host scene compiled into the kernels' arrays (host/scene/device_scene.hpp).
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "host/bvh/bvh.hpp"
+#include "host/scene/device_scene.hpp"
+#include "host/scene/material.hpp"
+#include "host/scene/scene.hpp"
+
+namespace facet {
+namespace {
+
+void expect_same(const Material& a, const Material& b, std::string_view what) {
+    EXPECT_EQ(a.diffuse_model, b.diffuse_model) << what;
+    EXPECT_EQ(a.specular_model, b.specular_model) << what;
+    EXPECT_EQ(a.ndf, b.ndf) << what;
+    EXPECT_EQ(a.geometry, b.geometry) << what;
+    EXPECT_EQ(a.fresnel, b.fresnel) << what;
+    EXPECT_EQ(a.sampling, b.sampling) << what;
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(a.diffuse[c], b.diffuse[c]) << what;
+        EXPECT_EQ(a.f0[c], b.f0[c]) << what;
+        EXPECT_EQ(a.ks[c], b.ks[c]) << what;
+        EXPECT_EQ(a.transmittance[c], b.transmittance[c]) << what;
+        EXPECT_EQ(a.emission[c], b.emission[c]) << what;
+        EXPECT_EQ(a.eta[c], b.eta[c]) << what;
+        EXPECT_EQ(a.k[c], b.k[c]) << what;
+    }
+    EXPECT_EQ(a.alpha_x, b.alpha_x) << what;
+    EXPECT_EQ(a.alpha_y, b.alpha_y) << what;
+    EXPECT_EQ(a.exponent_x, b.exponent_x) << what;
+    EXPECT_EQ(a.exponent_y, b.exponent_y) << what;
+    EXPECT_EQ(a.ior, b.ior) << what;
+    EXPECT_EQ(a.sigma, b.sigma) << what;
+    EXPECT_EQ(a.two_sided_emission, b.two_sided_emission) << what;
+}
+
+TEST(DeviceScene, MaterialsRoundTrip) {
+    for (std::string_view name : material_model_names()) {
+        Material m = make_material(std::string(name));
+        m.emission = glm::vec3(1.0f, 2.0f, 3.0f);
+        m.two_sided_emission = true;
+        m.sigma = 0.7f;
+        m.alpha_y = 0.2f;
+        const FcMaterial d = device_material(m);
+        EXPECT_EQ(d.flags, FC_MAT_TWO_SIDED_EMISSION) << name;
+        EXPECT_EQ(d.emission[2], 3.0f) << name;
+        EXPECT_EQ(d.alpha_y, 0.2f) << name;
+        expect_same(host_material(d), m, name);
+        EXPECT_EQ(describe_material(d), describe_material(m)) << name;
+    }
+}
+
+TEST(DeviceScene, SpecularColourByLobe) {
+    Material m = make_material("ggx");
+    m.f0 = glm::vec3(0.1f), m.ks = glm::vec3(0.2f), m.transmittance = glm::vec3(0.3f);
+    EXPECT_EQ(device_material(m).specular[0], 0.1f);
+    m.specular_model = FC_SPECULAR_BLINN_PHONG_NORMALIZED;
+    EXPECT_EQ(device_material(m).specular[0], 0.2f);
+    m.specular_model = FC_SPECULAR_DIELECTRIC;
+    EXPECT_EQ(device_material(m).specular[0], 0.3f);
+    m.specular_model = FC_SPECULAR_NONE;   // the (1 - F0) diffuse lobes read F0
+    EXPECT_EQ(device_material(m).specular[0], 0.1f);
+    EXPECT_EQ(device_material(m).sigma, m.sigma);
+}
+
+TEST(DeviceScene, CompileViewsTheSceneAndConvertsMaterials) {
+    Scene s;
+    Material lamp = default_material();
+    lamp.emission = glm::vec3(2.0f);
+    add_material(s, default_material(), "white");
+    add_material(s, lamp, "lamp");
+    add_sphere(s, glm::vec3(0.0f), 1.0f, 1, 0, false);
+    add_quad(s, glm::vec3(-1, 3, -1), glm::vec3(0, 0, 2), glm::vec3(2, 0, 0), 1);
+    s.settings.width = 32;
+    s.settings.height = 16;
+    s.settings.seed = 7;
+    build_lights(s);
+    const Bvh bvh = build_bvh(s.vertices);
+    const DeviceScene d = compile(s, bvh);
+    EXPECT_EQ(d.params.width, 32u);
+    EXPECT_EQ(d.params.height, 16u);
+    EXPECT_EQ(d.params.seed, 7u);
+    EXPECT_EQ(d.params.light_count, 2u);
+    EXPECT_EQ(d.params.sample_count, 0u);
+    EXPECT_EQ(d.nodes.data(), bvh.nodes.data());
+    EXPECT_EQ(d.triangles.size(), bvh.triangles.size());
+    EXPECT_EQ(d.shading.data(), s.shading.data());
+    EXPECT_EQ(d.lights.size(), s.lights.size());
+    EXPECT_EQ(d.light_cdf.size(), s.light_cdf.size());
+    EXPECT_EQ(d.environment_texels.size(), s.environment.texels.size());
+    EXPECT_EQ(d.environment_distribution.size(), s.environment.distribution.size());
+    ASSERT_EQ(d.materials.size(), 2u);
+    EXPECT_EQ(d.materials[1].emission[0], 2.0f);
+    EXPECT_EQ(d.materials[0].diffuse[1], 0.8f);
+    const FcMaterial expected = device_material(lamp);
+    EXPECT_EQ(std::memcmp(&d.materials[1], &expected, sizeof expected), 0);
+}
+
+}  // namespace
+}  // namespace facet
