@@ -13,6 +13,7 @@
 
 #include "host/error.hpp"
 #include "host/scene/json_schema.hpp"
+#include "host/util/wide_vector.hpp"
 #include "host/scene/material.hpp"
 #include "host/scene/sky.hpp"
 #include "host/scene/load.hpp"
@@ -311,7 +312,7 @@ struct Loader {
             const glm::vec3 corner = r.vec3(v["corner"], k("corner"));
             const glm::vec3 e1 = r.vec3(v["edge1"], k("edge1"));
             const glm::vec3 e2 = r.vec3(v["edge2"], k("edge2"));
-            if (!(glm::length(glm::cross(e1, e2)) > 0.0f))
+            if (!(glm::length(wide_cross(e1, e2)) > 0.0))
                 r.fail(path, "edge1 and edge2 span no area");
             add_quad(scene, corner, e1, e2, optional_material(v, path));
         } else {

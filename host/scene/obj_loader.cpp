@@ -18,6 +18,7 @@
 #include "host/scene/mtl_material.hpp"
 #include "host/scene/obj_validate.hpp"
 #include "host/scene/text_parse.hpp"
+#include "host/util/wide_vector.hpp"
 
 namespace facet {
 namespace {
@@ -47,15 +48,9 @@ std::vector<MtlMaterial> read_mtllibs(const std::string& path, const ObjScan& sc
     return materials;
 }
 
-glm::vec3 face_normal(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2) {
-    const glm::vec3 c = glm::cross(p1 - p0, p2 - p0);
-    const float len = glm::length(c);
-    return len > 0.0f && std::isfinite(len) ? c / len : glm::vec3(0.0f, 0.0f, 1.0f);
-}
-
 bool usable(glm::vec3 n) {
-    const float len = glm::length(n);
-    return len > 0.0f && std::isfinite(len);
+    const double len = wide_length(n);
+    return len > 0.0 && std::isfinite(len);
 }
 
 }  // namespace
@@ -173,16 +168,16 @@ void load_obj(const std::string& path, Scene& scene, const ObjLoadOptions& optio
     };
 
     // Smooth, area-weighted vertex normals for corners without an OBJ normal.
-    std::vector<glm::vec3> smooth(npos, glm::vec3(0.0f));
+    std::vector<glm::dvec3> smooth(npos, glm::dvec3(0.0));
     for (const auto& shape : reader.GetShapes()) {
         const auto& idx = shape.mesh.indices;
         for (std::size_t k = 0; k + 2 < idx.size(); k += 3) {
             const int a = idx[k].vertex_index, b = idx[k + 1].vertex_index,
                       c = idx[k + 2].vertex_index;
-            const glm::vec3 area2 =
-                glm::cross(pos[static_cast<std::size_t>(b)] - pos[static_cast<std::size_t>(a)],
+            const glm::dvec3 area2 =
+                wide_cross(pos[static_cast<std::size_t>(b)] - pos[static_cast<std::size_t>(a)],
                            pos[static_cast<std::size_t>(c)] - pos[static_cast<std::size_t>(a)]);
-            for (int v : {a, b, c}) smooth[static_cast<std::size_t>(v)] += side * area2;
+            for (int v : {a, b, c}) smooth[static_cast<std::size_t>(v)] += double(side) * area2;
         }
     }
 
@@ -195,16 +190,16 @@ void load_obj(const std::string& path, Scene& scene, const ObjLoadOptions& optio
             glm::vec3 p[3], n[3];
             for (int c = 0; c < 3; ++c)
                 p[c] = pos[static_cast<std::size_t>(idx[3 * f + c].vertex_index)];
-            if (!(glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) > 0.0f)) {
+            if (!(triangle_area(p[0], p[1], p[2]) > 0.0)) {
                 ++degenerate;
                 continue;
             }
             ++kept;
-            const glm::vec3 fn = side * face_normal(p[0], p[1], p[2]);
+            const glm::vec3 fn = side * triangle_normal(p[0], p[1], p[2]);
             for (int c = 0; c < 3; ++c) {
                 const tinyobj::index_t& i = idx[3 * f + c];
                 n[c] = i.normal_index >= 0 ? obj_normal(i.normal_index)
-                                           : smooth[static_cast<std::size_t>(i.vertex_index)];
+                                           : unit_or(smooth[static_cast<std::size_t>(i.vertex_index)], fn);
                 if (!usable(n[c])) n[c] = fn;  // zero or invalid normal: the face's own
             }
             if (mirrored) {
