@@ -3,6 +3,7 @@
 #include "host/scene/environment_map.hpp"
 
 #include <cmath>
+#include <new>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -183,7 +184,12 @@ EnvironmentMap environment_from_pixels(int width, int height, std::vector<float>
 EnvironmentMap load_environment_map(const std::string& path, const glm::vec3& scale, const glm::mat3& world_to_map,
                                     std::vector<std::string>& warnings) {
     ImageRGB img = read_image(path);   // throws facet::Error naming the file
-    return environment_from_pixels(img.width, img.height, std::move(img.rgb), scale, world_to_map, path, warnings);
+    try {
+        return environment_from_pixels(img.width, img.height, std::move(img.rgb), scale, world_to_map, path, warnings);
+    } catch (const std::bad_alloc&) {
+        throw Error(fmt::format("environment map '{}': not enough memory for its {}x{} texels and sampling tables",
+                                path, img.width, img.height));
+    }
 }
 
 }  // namespace facet

@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "host/error.hpp"
+#include "kernels/shared/render_layout.h"
 #include "host/scene/json_schema.hpp"
 #include "host/util/wide_vector.hpp"
 #include "host/scene/material.hpp"
@@ -263,7 +264,7 @@ struct Loader {
         const std::string file = r.string(v["file"], JsonReader::key(path, "file"));
         const std::string full = text::join_path(dir, file);
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(full, ec)) {
+        if (!std::filesystem::exists(full, ec)) {   // a non-regular one: the reader says so
             r.fail(JsonReader::key(path, "file"),
                    fmt::format("mesh file '{}' not found (looked for '{}')", file, full));
         }
@@ -347,10 +348,18 @@ struct Loader {
         }
         r.require(v, path, "color");
         l.color = r.color(v["color"], k("color"));
+        check_radiance(l.color, k("color"));
         if (v.contains("inner")) l.inner_degrees = r.number_in(v["inner"], k("inner"), 0, 180);
         if (v.contains("outer")) l.outer_degrees = r.number_in(v["outer"], k("outer"), 0, 180);
         if (l.outer_degrees < l.inner_degrees) r.fail(k("outer"), "must not be smaller than 'inner'");
         scene.punctual_lights.push_back(l);
+    }
+
+    // Colours that become radiance: at most FC_MAX_RADIANCE, so the image stays finite.
+    void check_radiance(const glm::vec3& c, const std::string& key) {
+        for (int i = 0; i < 3; ++i)
+            if (!(c[i] <= FC_MAX_RADIANCE))
+                r.fail(key, fmt::format("must be at most {:g} (got {:g}): the image would overflow", FC_MAX_RADIANCE, c[i]));
     }
 
     // The environment: a map file, a constant radiance or the generated sun and sky
@@ -369,12 +378,14 @@ struct Loader {
         if (v.contains("rotate")) map_to_world = glm::mat3(transform(Json{{"rotate", v["rotate"]}}, path));
         const glm::mat3 world_to_map = glm::transpose(map_to_world);
         if (v.contains("constant")) {
-            scene.environment = constant_environment(r.color(v["constant"], k("constant")) * scale);
+            const glm::vec3 constant = r.color(v["constant"], k("constant")) * scale;
+            check_radiance(constant, k("constant"));
+            scene.environment = constant_environment(constant);
         } else if (v.contains("file")) {
             const std::string file = r.string(v["file"], k("file"));
             const std::string full = text::join_path(dir, file);
             std::error_code ec;
-            if (!std::filesystem::is_regular_file(full, ec))
+            if (!std::filesystem::exists(full, ec))   // a non-regular one: the reader says so
                 r.fail(k("file"), fmt::format("environment map '{}' not found (looked for '{}')", file, full));
             try {
                 scene.environment = load_environment_map(full, scale, world_to_map, scene.warnings);
@@ -409,7 +420,9 @@ struct Loader {
 }  // namespace
 
 bool load_json_scene(const std::string& path, Scene& scene) {
-    const Json root = parse_json(path, text::read_file(path, "scene file"));
+    const std::string content = text::read_file(path, "scene file");
+    const Json root = parse_json(path, content);
+    for (std::string& w : duplicate_json_keys(path, content)) scene.warnings.push_back(std::move(w));
     Loader l{JsonReader(path), text::directory_of(path), scene, {}, -1};
     l.r.object(root, "", {"camera", "render", "materials", "meshes", "shapes", "lights", "environment"});
     if (root.contains("render")) l.render(root["render"], "render");

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
+#include "kernels/shared/render_layout.h"
 
 namespace facet {
 namespace {
@@ -268,13 +269,13 @@ float srgb_to_linear(float c) {
 std::string validate_material(const FcMaterial& m) {
     auto bad = [](float v, bool ok) { return !std::isfinite(v) || !ok; };
     const struct { const char* name; const float* v; float hi; } colours[] = {
-        {"diffuse", m.diffuse, 1.0f}, {"specular", m.specular, 1.0f}, {"emission", m.emission, INFINITY},
+        {"diffuse", m.diffuse, 1.0f}, {"specular", m.specular, 1.0f}, {"emission", m.emission, FC_MAX_RADIANCE},
         {"k", m.k, INFINITY}};
     for (const auto& c : colours)
         for (int i = 0; i < 3; ++i)
             if (bad(c.v[i], c.v[i] >= 0.0f && c.v[i] <= c.hi))
                 return fmt::format("{} must be finite numbers >= 0{} (got {})", c.name,
-                                   std::isinf(c.hi) ? "" : " and <= 1", rgb(c.v));
+                                   std::isinf(c.hi) ? "" : fmt::format(" and <= {:g}", c.hi), rgb(c.v));
     for (int i = 0; i < 3; ++i)
         if (bad(m.eta[i], m.eta[i] > 0.0f)) return fmt::format("eta must be finite numbers > 0 (got {})", rgb(m.eta));
     const struct { const char* name; float v; } scalars[] = {{"alpha_x", m.alpha_x}, {"alpha_y", m.alpha_y},

@@ -26,7 +26,7 @@ struct MtlLine {
     float number(std::size_t i) const {
         float v = 0.0f;
         if (!text::parse_float(f[i], v)) {
-            fail(fmt::format("'{}': '{}' is not a valid number", f[0], f[i]));
+            fail(fmt::format("'{}': '{}' is {}", f[0], f[i], text::number_problem(f[i])));
         }
         if (!std::isfinite(v)) fail(fmt::format("'{}': '{}' is not finite", f[0], f[i]));
         return v;
@@ -147,6 +147,12 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             if (f.size() < 2) l.fail("'newmtl' without a name");
             Pending p;
             p.m.name = std::string(text::rest_after_keyword(lines[li]));
+            for (const Pending& q : list)
+                if (q.m.name == p.m.name) {
+                    warnings.push_back(fmt::format("{}:{}: material '{}' is defined again; the last definition is used",
+                                                   path, l.line, p.m.name));
+                    break;
+                }
             p.m.material = default_material();
             list.push_back(p);
             continue;

@@ -32,7 +32,7 @@ std::vector<MtlMaterial> read_mtllibs(const std::string& path, const ObjScan& sc
     for (const ObjNamedRef& lib : scan.mtllibs) {
         const std::string mtl_path = text::join_path(dir, lib.name);
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(mtl_path, ec)) {
+        if (!std::filesystem::exists(mtl_path, ec)) {   // a non-regular one: read_file says so
             scene.warnings.push_back(fmt::format(
                 "{}:{}: material library '{}' not found (looked for '{}'); its materials "
                 "get the default material",
@@ -41,6 +41,10 @@ std::vector<MtlMaterial> read_mtllibs(const std::string& path, const ObjScan& sc
         }
         const std::string mtl_text = text::read_file(mtl_path, "MTL file");
         auto parsed = parse_mtl(mtl_path, mtl_text, scene.warnings);
+        if (parsed.empty())
+            scene.warnings.push_back(fmt::format("{}:{}: material library '{}' defines no material (empty, or not "
+                                                 "an MTL file)",
+                                                 path, lib.line, mtl_path));
         materials.insert(materials.end(), parsed.begin(), parsed.end());
         all_mtl_text += mtl_text;
         all_mtl_text += "\n";
@@ -90,7 +94,11 @@ void load_obj(const std::string& path, Scene& scene, const ObjLoadOptions& optio
     }
     std::map<std::string, int> warned;
     for (const ObjNamedRef& use : scan.usemtls) {
-        bool found = mtl.empty() && !scan.mtllibs.empty();  // libraries missing: warned already
+        bool found = false;   // a library that is missing was warned about already
+        for (const ObjNamedRef& lib : scan.mtllibs) {
+            std::error_code ec;
+            found = found || !std::filesystem::exists(text::join_path(text::directory_of(path), lib.name), ec);
+        }
         for (const MtlMaterial& m : mtl) found = found || m.name == use.name;
         if (!found && warned[use.name]++ == 0) {
             scene.warnings.push_back(
