@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <set>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -136,6 +138,7 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
                                    std::vector<std::string>& warnings) {
     std::vector<MtlMaterial> out;
     std::vector<Pending> list;
+    std::set<std::string> names;   // to warn about a second definition
     const std::string dir = text::directory_of(path);
     const auto lines = text::split_lines(content);
     for (std::size_t li = 0; li < lines.size(); ++li) {
@@ -147,12 +150,9 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             if (f.size() < 2) l.fail("'newmtl' without a name");
             Pending p;
             p.m.name = std::string(text::rest_after_keyword(lines[li]));
-            for (const Pending& q : list)
-                if (q.m.name == p.m.name) {
-                    warnings.push_back(fmt::format("{}:{}: material '{}' is defined again; the last definition is used",
-                                                   path, l.line, p.m.name));
-                    break;
-                }
+            if (!names.insert(p.m.name).second)
+                warnings.push_back(fmt::format("{}:{}: material '{}' is defined again; the last definition is used",
+                                               path, l.line, p.m.name));
             p.m.material = default_material();
             list.push_back(p);
             continue;
