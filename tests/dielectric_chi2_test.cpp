@@ -147,6 +147,25 @@ TEST(DielectricChi2, EnergyDielectric) {
     }
 }
 
+// An index-matched interface (ior 1), smooth or rough, from either side: no reflection,
+// all the energy straight through (a rough one lost ~80% as a degenerate half vector).
+TEST(DielectricChi2, EnergyDielectricIndexMatched) {
+    std::vector<FcMaterial> mats;
+    std::vector<cl_float4> wo;
+    for (float a : {0.0f, 0.1f, 0.5f, 1.0f})
+        for (double deg : {0.0, 45.0, 85.0, 120.0, 170.0}) {
+            mats.push_back(glass(FC_NDF_GGX, 1.0f, a));
+            wo.push_back(f4(direction(deg, 0.7)));
+        }
+    std::vector<Albedo> r = albedo(mats, wo, 10000);
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+        SCOPED_TRACE(testing::Message() << "alpha " << mats[i].alpha_x << " cos_o " << wo[i].s[2]);
+        EXPECT_EQ(r[i].bad, 0.0);
+        EXPECT_EQ(r[i].r, 0.0);
+        EXPECT_NEAR(r[i].t, 1.0, 1e-5);
+    }
+}
+
 // The smooth limit: a nearly smooth rough interface splits energy as the exact Fresnel
 // equations do, R = F(theta_o), T = 1 - F, as the delta BSDF does exactly.
 TEST(DielectricChi2, EnergyDielectricSmoothLimit) {

@@ -9,12 +9,14 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <new>
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include "host/error.hpp"
 #include "host/film/safe_write.hpp"
+#include "host/util/input_file.hpp"
 
 namespace facet {
 namespace {
@@ -22,6 +24,12 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 28;
+// The most decoded bytes (float RGB) an image file may hold per byte of file: above any
+// real compression of a real image (deflate stops near 1032:1 on half floats, 2064:1 as
+// float), so a 117-byte .hdr or a small EXR that claims 16000x16000 is refused before
+// the 3 GB are allocated. Images up to kSmallImageBytes decoded are not checked.
+constexpr std::uint64_t kMaxDecodedPerFileByte = 8192;
+constexpr std::uint64_t kSmallImageBytes = std::uint64_t(64) << 20;
 using OIIO::ImageOutput;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
@@ -98,9 +106,8 @@ void write_png(const std::string& path, int width, int height, const std::vector
     write_image_file(path, spec, TypeDesc::UINT8, bytes.data());
 }
 
-ImageRGB read_image(const std::string& path) {
-    if (!fs::exists(path)) throw Error(fmt::format("{}: no such file", path));
-    check_image_header(path);
+// read_image after the file's checks; the decoded size is checked against the file's.
+static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_size) {
     std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
     if (!in) throw Error(fmt::format("{}: cannot read image: {}", path, OIIO::geterror()));
     const ImageSpec& spec = in->spec();
@@ -111,6 +118,11 @@ ImageRGB read_image(const std::string& path) {
         throw Error(fmt::format("{}: the image claims {}x{} pixels: at most 2^28 pixels are supported", path,
                                 spec.width, spec.height));
     const int channels = std::min(spec.nchannels, 3);   // R, G, B (or grey); alpha and the rest unused
+    const std::uint64_t decoded = std::uint64_t(spec.width) * std::uint64_t(spec.height) * 3u * sizeof(float);
+    if (decoded > kSmallImageBytes && decoded / kMaxDecodedPerFileByte > file_size)
+        throw Error(fmt::format("{}: the image claims {}x{} pixels ({} MiB decoded) but the file has only {} bytes: "
+                                "it is truncated or corrupt",
+                                path, spec.width, spec.height, decoded >> 20, file_size));
     std::vector<float> all(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
     if (!in->read_image(0, 0, 0, channels, TypeDesc::FLOAT, all.data()))
         throw Error(fmt::format("{}: cannot read pixels: {}", path, in->geterror()));
@@ -123,6 +135,16 @@ ImageRGB read_image(const std::string& path) {
         for (int c = 0; c < 3; ++c)
             img.rgb[3 * i + c] = all[i * std::size_t(channels) + std::size_t(std::min(c, channels - 1))];
     return img;
+}
+
+ImageRGB read_image(const std::string& path) {
+    const std::uint64_t file_size = check_input_file(path, "image");
+    check_image_header(path);
+    try {
+        return read_image_checked(path, file_size);
+    } catch (const std::bad_alloc&) {
+        throw Error(fmt::format("image '{}': not enough memory to read it", path));
+    }
 }
 
 ImageRGB read_reference(const std::string& path, int width, int height) {
@@ -164,6 +186,7 @@ void check_image_header(const std::string& path) {
     bool have_window = false;
     std::int64_t width = 0, height = 0;
     int compression = 0;
+    std::int64_t tile_w = 0, tile_h = 0;
     while (at < head.size() && head[at] != '\0') {
         const std::size_t name_end = head.find('\0', at);
         const std::size_t type_end = name_end == std::string::npos ? name_end : head.find('\0', name_end + 1);
@@ -182,6 +205,9 @@ void check_image_header(const std::string& path) {
             width = std::int64_t(int32_at(value + 8)) - int32_at(value) + 1;
             height = std::int64_t(int32_at(value + 12)) - int32_at(value + 4) + 1;
             have_window = true;
+        } else if (name == "tiles" && type == "tiledesc" && size == 9) {
+            tile_w = std::uint32_t(int32_at(value));
+            tile_h = std::uint32_t(int32_at(value + 4));
         } else if (name == "compression" && size == 1) {
             compression = std::uint8_t(head[value]);
         }
@@ -192,6 +218,16 @@ void check_image_header(const std::string& path) {
         throw Error(fmt::format("{}: the EXR header claims a data window of {}x{} pixels: at most 2^28 pixels are "
                                 "supported",
                                 path, width, height));
+    // A single-part tiled file: the offset table holds at least one entry per tile of
+    // the full-resolution level (1x1 tiles over 16000x16000 claim a 2 GB table).
+    const bool single_part_tiles = (flags & 0x1a00u) == 0x200u;
+    if (single_part_tiles && tile_w > 0 && tile_h > 0) {
+        const std::uint64_t tiles = std::uint64_t((width + tile_w - 1) / tile_w) * std::uint64_t((height + tile_h - 1) / tile_h);
+        if (tiles * 8u > file_size)
+            throw Error(fmt::format("{}: the EXR header claims {} tiles of {}x{} over {}x{} pixels, whose offset table "
+                                    "alone needs {} bytes, but the file has {}: it is truncated or corrupt",
+                                    path, tiles, tile_w, tile_h, width, height, tiles * 8u, file_size));
+    }
     if (!single_part_scanlines) return;
     // Scanlines per chunk by compression: none, RLE, ZIPS 1; ZIP, PXR24 16; PIZ, B44(A),
     // DWAA 32; DWAB 256 (unknown: the largest).

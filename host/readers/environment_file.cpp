@@ -1,7 +1,11 @@
 #include "host/readers/environment_file.hpp"
 
+#include <new>
 #include <utility>
 
+#include <fmt/format.h>
+
+#include "host/error.hpp"
 #include "host/film/image_io.hpp"
 
 namespace facet {
@@ -9,7 +13,12 @@ namespace facet {
 EnvironmentMap load_environment_map(const std::string& path, const glm::vec3& scale, const glm::mat3& world_to_map,
                                     std::vector<std::string>& warnings) {
     ImageRGB img = read_image(path);   // throws facet::Error naming the file
-    return environment_from_pixels(img.width, img.height, std::move(img.rgb), scale, world_to_map, path, warnings);
+    try {
+        return environment_from_pixels(img.width, img.height, std::move(img.rgb), scale, world_to_map, path, warnings);
+    } catch (const std::bad_alloc&) {
+        throw Error(fmt::format("environment map '{}': not enough memory for its {}x{} texels and sampling tables",
+                                path, img.width, img.height));
+    }
 }
 
 }  // namespace facet

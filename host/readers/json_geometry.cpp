@@ -8,6 +8,7 @@
 #include "host/error.hpp"
 #include "host/readers/json_loader.hpp"
 #include "host/readers/obj_reader.hpp"
+#include "host/util/wide_vector.hpp"
 
 namespace facet {
 namespace {
@@ -98,7 +99,7 @@ void quad(JsonLoader& l, const Json& v, const std::string& path) {
     const glm::vec3 corner = r.vec3(v["corner"], k("corner"));
     const glm::vec3 e1 = r.vec3(v["edge1"], k("edge1"));
     const glm::vec3 e2 = r.vec3(v["edge2"], k("edge2"));
-    if (!(glm::length(glm::cross(e1, e2)) > 0.0f)) r.fail(path, "edge1 and edge2 span no area");
+    if (!(glm::length(wide_cross(e1, e2)) > 0.0)) r.fail(path, "edge1 and edge2 span no area");
     add_quad(l.scene, corner, e1, e2, l.optional_material(v, path));
 }
 

@@ -10,8 +10,20 @@
 #include "host/readers/environment_file.hpp"
 #include "host/readers/json_loader.hpp"
 #include "host/scene/sky.hpp"
+#include "kernels/shared/render_layout.h"
 
 namespace facet {
+
+namespace {
+
+// Colours that become radiance: at most FC_MAX_RADIANCE, so the image stays finite.
+void check_radiance(JsonReader& r, const glm::vec3& c, const std::string& key) {
+    for (int i = 0; i < 3; ++i)
+        if (!(c[i] <= FC_MAX_RADIANCE))
+            r.fail(key, fmt::format("must be at most {:g} (got {:g}): the image would overflow", FC_MAX_RADIANCE, c[i]));
+}
+
+}  // namespace
 
 void JsonLoader::light(const Json& v, const std::string& path) {
     r.object(v, path, {"type", "position", "direction", "color", "inner", "outer"});
@@ -38,6 +50,7 @@ void JsonLoader::light(const Json& v, const std::string& path) {
     }
     r.require(v, path, "color");
     l.color = r.color(v["color"], k("color"));
+    check_radiance(r, l.color, k("color"));
     if (v.contains("inner")) l.inner_degrees = r.number_in(v["inner"], k("inner"), 0, 180);
     if (v.contains("outer")) l.outer_degrees = r.number_in(v["outer"], k("outer"), 0, 180);
     if (l.outer_degrees < l.inner_degrees) r.fail(k("outer"), "must not be smaller than 'inner'");
@@ -79,7 +92,9 @@ void JsonLoader::environment(const Json& v, const std::string& path) {
     if (v.contains("rotate")) map_to_world = glm::mat3(transform(Json{{"rotate", v["rotate"]}}, path));
     const glm::mat3 world_to_map = glm::transpose(map_to_world);
     if (v.contains("constant")) {
-        scene.environment = constant_environment(r.color(v["constant"], k("constant")) * scale);
+        const glm::vec3 constant = r.color(v["constant"], k("constant")) * scale;
+        check_radiance(r, constant, k("constant"));
+        scene.environment = constant_environment(constant);
     } else if (v.contains("file")) {
         const std::string full = existing_file(v["file"], k("file"), "environment map");
         try {

@@ -79,7 +79,7 @@ std::string JsonLoader::existing_file(const Json& v, const std::string& path, co
     const std::string file = r.string(v, path);
     const std::string full = text::join_path(dir, file);
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(full, ec))
+    if (!std::filesystem::exists(full, ec))   // a non-regular one: the reader says so
         r.fail(path, fmt::format("{} '{}' not found (looked for '{}')", what, file, full));
     return full;
 }
@@ -98,7 +98,9 @@ void for_each_in(JsonLoader& l, const Json& root, const char* name, F each) {
 }  // namespace
 
 bool load_json_scene(const std::string& path, Scene& scene) {
-    const Json root = parse_json(path, text::read_file(path, "scene file"));
+    const std::string content = text::read_file(path, "scene file");
+    const Json root = parse_json(path, content);
+    for (std::string& w : duplicate_json_keys(path, content)) scene.warnings.push_back(std::move(w));
     JsonLoader l{JsonReader(path), text::directory_of(path), scene, {}, -1};
     l.r.object(root, "", {"camera", "render", "materials", "meshes", "shapes", "lights", "environment"});
     if (root.contains("render")) l.render(root["render"], "render");

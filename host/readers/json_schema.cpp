@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
+#include <string>
 #include <vector>
 
 #include <fmt/format.h>
@@ -49,6 +51,30 @@ std::string type_name(const Json& v) {
 }
 
 }  // namespace
+
+std::vector<std::string> duplicate_json_keys(const std::string& file, const std::string& text) {
+    std::vector<std::set<std::string>> open;   // the keys seen in each enclosing object
+    std::vector<std::string> out;
+    Json::parser_callback_t check = [&](int, Json::parse_event_t event, Json& parsed) {
+        if (event == Json::parse_event_t::object_start) {
+            open.emplace_back();
+        } else if (event == Json::parse_event_t::object_end) {
+            if (!open.empty()) open.pop_back();
+        } else if (event == Json::parse_event_t::key && !open.empty() && parsed.is_string()) {
+            const std::string key = parsed.get<std::string>();
+            if (!open.back().insert(key).second)
+                out.push_back(fmt::format("{}: key '{}' is given twice in one object; the last value is used", file, key));
+        }
+        return true;
+    };
+    try {
+        const Json parsed = Json::parse(text, check);
+        (void)parsed;
+    } catch (const Json::exception&) {
+        // syntax errors are parse_json's to report
+    }
+    return out;
+}
 
 Json parse_json(const std::string& file, const std::string& text) {
     try {

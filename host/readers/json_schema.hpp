@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <string>
+#include <vector>
 #include <string_view>
 
 #include <glm/vec3.hpp>
@@ -18,6 +19,10 @@ using Json = nlohmann::json;
 
 // Parses `text`; a syntax error becomes "file:LINE:COLUMN: JSON syntax error: ...".
 Json parse_json(const std::string& file, const std::string& text);
+
+// Keys given twice in one object (the parser keeps the last silently), as warnings
+// "file: key 'K' is given twice in one object; the last value is used".
+std::vector<std::string> duplicate_json_keys(const std::string& file, const std::string& text);
 
 class JsonReader {
 public:

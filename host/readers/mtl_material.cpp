@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <set>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -26,7 +28,7 @@ struct MtlLine {
     float number(std::size_t i) const {
         float v = 0.0f;
         if (!text::parse_float(f[i], v)) {
-            fail(fmt::format("'{}': '{}' is not a valid number", f[0], f[i]));
+            fail(fmt::format("'{}': '{}' is {}", f[0], f[i], text::number_problem(f[i])));
         }
         if (!std::isfinite(v)) fail(fmt::format("'{}': '{}' is not finite", f[0], f[i]));
         return v;
@@ -138,6 +140,7 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
                                    std::vector<std::string>& warnings) {
     std::vector<MtlMaterial> out;
     std::vector<Pending> list;
+    std::set<std::string> names;   // to warn about a second definition
     const std::string dir = text::directory_of(path);
     const auto lines = text::split_lines(content);
     for (std::size_t li = 0; li < lines.size(); ++li) {
@@ -149,6 +152,9 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             if (f.size() < 2) l.fail("'newmtl' without a name");
             Pending p;
             p.m.name = std::string(text::rest_after_keyword(lines[li]));
+            if (!names.insert(p.m.name).second)
+                warnings.push_back(fmt::format("{}:{}: material '{}' is defined again; the last definition is used",
+                                               path, l.line, p.m.name));
             p.m.material = default_material();
             list.push_back(p);
             continue;

@@ -19,6 +19,7 @@
 #include "host/readers/mtl_material.hpp"
 #include "host/readers/obj_validate.hpp"
 #include "host/readers/text_parse.hpp"
+#include "host/util/wide_vector.hpp"
 
 namespace facet {
 namespace {
@@ -32,7 +33,7 @@ std::vector<MtlMaterial> read_mtllibs(const std::string& path, const ObjScan& sc
     for (const ObjNamedRef& lib : scan.mtllibs) {
         const std::string mtl_path = text::join_path(dir, lib.name);
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(mtl_path, ec)) {
+        if (!std::filesystem::exists(mtl_path, ec)) {   // a non-regular one: read_file says so
             scene.warnings.push_back(fmt::format(
                 "{}:{}: material library '{}' not found (looked for '{}'); its materials "
                 "get the default material",
@@ -41,6 +42,10 @@ std::vector<MtlMaterial> read_mtllibs(const std::string& path, const ObjScan& sc
         }
         const std::string mtl_text = text::read_file(mtl_path, "MTL file");
         auto parsed = parse_mtl(mtl_path, mtl_text, scene.warnings);
+        if (parsed.empty())
+            scene.warnings.push_back(fmt::format("{}:{}: material library '{}' defines no material (empty, or not "
+                                                 "an MTL file)",
+                                                 path, lib.line, mtl_path));
         materials.insert(materials.end(), parsed.begin(), parsed.end());
         all_mtl_text += mtl_text;
         all_mtl_text += "\n";
@@ -48,15 +53,9 @@ std::vector<MtlMaterial> read_mtllibs(const std::string& path, const ObjScan& sc
     return materials;
 }
 
-glm::vec3 face_normal(glm::vec3 p0, glm::vec3 p1, glm::vec3 p2) {
-    const glm::vec3 c = glm::cross(p1 - p0, p2 - p0);
-    const float len = glm::length(c);
-    return len > 0.0f && std::isfinite(len) ? c / len : glm::vec3(0.0f, 0.0f, 1.0f);
-}
-
 bool usable(glm::vec3 n) {
-    const float len = glm::length(n);
-    return len > 0.0f && std::isfinite(len);
+    const double len = wide_length(n);
+    return len > 0.0 && std::isfinite(len);
 }
 
 
@@ -94,7 +93,12 @@ void check_material_names(const std::string& path, const ParsedObj& obj, const O
     }
     std::map<std::string, int> warned;
     for (const ObjNamedRef& use : obj.scan.usemtls) {
-        const bool libraries_missing = obj.mtl.empty() && !obj.scan.mtllibs.empty();   // warned already
+        bool libraries_missing = false;   // a library that is missing was warned about already
+        for (const ObjNamedRef& lib : obj.scan.mtllibs) {
+            std::error_code ec;
+            libraries_missing = libraries_missing ||
+                                !std::filesystem::exists(text::join_path(text::directory_of(path), lib.name), ec);
+        }
         if (!libraries_missing && !defines(obj.mtl, use.name) && warned[use.name]++ == 0)
             scene.warnings.push_back(fmt::format("{}:{}: 'usemtl {}' names no material of the "
                                                  "material libraries; the default material is used",
@@ -165,7 +169,8 @@ void check_indices(const std::string& path, const tinyobj::ObjReader& reader) {
 // with two corners swapped to keep the front face.
 struct WorldMesh {
     const tinyobj::attrib_t& attrib;
-    std::vector<glm::vec3> pos, smooth;
+    std::vector<glm::vec3> pos;
+    std::vector<glm::dvec3> smooth;   // area-weighted sums, in double (edges up to 1e18)
     glm::mat3 normal_matrix;
     bool mirrored;
     float side;
@@ -181,21 +186,21 @@ struct WorldMesh {
             const glm::vec4 p(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2], 1.0f);
             pos[i] = glm::vec3(transform * p);
         }
-        smooth.assign(npos, glm::vec3(0.0f));
+        smooth.assign(npos, glm::dvec3(0.0));
         for (const auto& shape : reader.GetShapes()) {
             const auto& idx = shape.mesh.indices;
             for (std::size_t k = 0; k + 2 < idx.size(); k += 3) {
                 const std::size_t a = std::size_t(idx[k].vertex_index), b = std::size_t(idx[k + 1].vertex_index),
                                   c = std::size_t(idx[k + 2].vertex_index);
-                const glm::vec3 area2 = glm::cross(pos[b] - pos[a], pos[c] - pos[a]);
-                for (std::size_t v : {a, b, c}) smooth[v] += side * area2;
+                const glm::dvec3 area2 = wide_cross(pos[b] - pos[a], pos[c] - pos[a]);
+                for (std::size_t v : {a, b, c}) smooth[v] += double(side) * area2;
             }
         }
     }
 
     // The corner's OBJ normal, else the smooth one, else (zero or invalid) the face's own.
     glm::vec3 normal(const tinyobj::index_t& i, glm::vec3 face_n) const {
-        glm::vec3 n = smooth[static_cast<std::size_t>(i.vertex_index)];
+        glm::vec3 n = unit_or(smooth[static_cast<std::size_t>(i.vertex_index)], face_n);
         if (i.normal_index >= 0) {
             const std::size_t k = static_cast<std::size_t>(i.normal_index);
             n = normal_matrix * glm::vec3(attrib.normals[3 * k], attrib.normals[3 * k + 1], attrib.normals[3 * k + 2]);
@@ -214,12 +219,12 @@ void add_faces(const std::string& path, const tinyobj::ObjReader& reader, const 
         for (std::size_t f = 0; 3 * f + 2 < idx.size(); ++f) {
             glm::vec3 p[3], n[3];
             for (std::size_t c = 0; c < 3; ++c) p[c] = mesh.pos[static_cast<std::size_t>(idx[3 * f + c].vertex_index)];
-            if (!(glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) > 0.0f)) {
+            if (!(triangle_area(p[0], p[1], p[2]) > 0.0)) {
                 ++degenerate;
                 continue;
             }
             ++kept;
-            const glm::vec3 fn = mesh.side * face_normal(p[0], p[1], p[2]);
+            const glm::vec3 fn = mesh.side * triangle_normal(p[0], p[1], p[2]);
             for (std::size_t c = 0; c < 3; ++c) n[c] = mesh.normal(idx[3 * f + c], fn);
             if (mesh.mirrored) {
                 std::swap(p[1], p[2]);

@@ -31,7 +31,7 @@ void check_numbers(const LineCtx& ctx, const std::vector<std::string_view>& f, s
     for (std::size_t i = 1; i < f.size(); ++i) {
         float value = 0.0f;
         if (!text::parse_float(f[i], value)) {
-            ctx.fail(fmt::format("'{}': field {} ('{}') is not a valid number", kw, i, f[i]));
+            ctx.fail(fmt::format("'{}': field {} ('{}') is {}", kw, i, f[i], text::number_problem(f[i])));
         }
         if (finite_xyz && i <= 3 && !std::isfinite(value)) {
             ctx.fail(

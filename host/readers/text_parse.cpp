@@ -8,20 +8,12 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
+#include "host/util/input_file.hpp"
 
 namespace facet::text {
 
 std::string read_file(const std::string& path, const char* what) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        throw Error(fmt::format("{} '{}': is a directory, not a file", what, path));
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(fmt::format("{} '{}': cannot open (does it exist?)", what, path));
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) throw Error(fmt::format("{} '{}': read error", what, path));
-    return ss.str();
+    return read_input_file(path, what);   // regular files only, size-capped, errno named
 }
 
 std::vector<std::string_view> split_lines(std::string_view text) {
@@ -77,6 +69,15 @@ bool parse_float(std::string_view field, float& out) {
     auto [ptr, ec] = std::from_chars(first, last, out);
     if (ec == std::errc::result_out_of_range) return false;
     return ec == std::errc() && ptr == last;
+}
+
+const char* number_problem(std::string_view field) {
+    if (!field.empty() && field[0] == '+') field.remove_prefix(1);
+    float v = 0.0f;
+    const auto [ptr, ec] = std::from_chars(field.data(), field.data() + field.size(), v);
+    if (ec == std::errc::result_out_of_range && ptr == field.data() + field.size())
+        return "out of range for a float (about 1.2e-38 to 3.4e38 in magnitude)";
+    return "not a valid number";
 }
 
 bool parse_int(std::string_view field, long& out) {

@@ -8,7 +8,8 @@
 
 namespace facet::text {
 
-// The whole file; throws facet::Error "<what> '<path>': cannot open" when unreadable.
+// The whole file (read_input_file: a regular file within kMaxInputFileBytes); throws
+// facet::Error "<what> '<path>': <reason>" when it cannot be read.
 std::string read_file(const std::string& path, const char* what);
 
 // Lines without their terminators ("\n", "\r\n" or a lone "\r"); lines[i] is line i + 1.
@@ -24,6 +25,10 @@ std::string_view rest_after_keyword(std::string_view line);
 // numbers; "1.0abc" and "" are not).
 bool parse_float(std::string_view field, float& out);
 bool parse_int(std::string_view field, long& out);
+
+// Why parse_float refused a field: "out of range for a float (about 1.2e-38 to 3.4e38)"
+// or "not a valid number".
+const char* number_problem(std::string_view field);
 
 // The directory part of a path ("" for a bare file name), and `rel` resolved against it.
 std::string directory_of(const std::string& path);

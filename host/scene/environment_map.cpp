@@ -3,6 +3,7 @@
 #include "host/scene/environment_map.hpp"
 
 #include <cmath>
+#include <new>
 
 #include <fmt/format.h>
 

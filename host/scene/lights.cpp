@@ -16,6 +16,7 @@
 #include "host/util/color.hpp"
 #include "host/util/math.hpp"
 #include "host/util/vec3.hpp"
+#include "host/util/wide_vector.hpp"
 
 namespace facet {
 namespace {
@@ -28,7 +29,7 @@ FcLight triangle_light(const Scene& scene, std::size_t t, float area) {
     glm::vec3 e1 = v[1] - v[0], e2 = v[2] - v[0];
     const glm::vec3 shading_n = glm::vec3(sh.n0[0], sh.n0[1], sh.n0[2]) + glm::vec3(sh.n1[0], sh.n1[1], sh.n1[2]) +
                                 glm::vec3(sh.n2[0], sh.n2[1], sh.n2[2]);
-    if (glm::dot(glm::cross(e1, e2), shading_n) < 0.0f) std::swap(e1, e2);
+    if (glm::dot(wide_cross(e1, e2), glm::dvec3(shading_n)) < 0.0) std::swap(e1, e2);
     FcLight light{};
     store(light.p0, v[0]);
     store(light.e1, e1);
@@ -76,7 +77,7 @@ void build_lights(Scene& scene) {
         const double lum = luminance(m.emission);
         if (!(lum > 0.0)) continue;
         const glm::vec3* v = &scene.vertices[3 * t];
-        const float area = 0.5f * glm::length(glm::cross(v[1] - v[0], v[2] - v[0]));
+        const float area = static_cast<float>(triangle_area(v[0], v[1], v[2]));
         if (!(area > 0.0f) || !std::isfinite(area)) continue;
         const double sides = m.two_sided_emission ? 2.0 : 1.0;
         sh.light = static_cast<fc_int>(scene.lights.size());

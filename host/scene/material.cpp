@@ -8,6 +8,7 @@
 #include "host/error.hpp"
 #include "host/util/math.hpp"
 #include "host/util/strings.hpp"
+#include "kernels/shared/render_layout.h"
 
 namespace facet {
 namespace {
@@ -245,13 +246,13 @@ std::string validate_material(const Material& m) {
     auto bad = [](float v, bool ok) { return !std::isfinite(v) || !ok; };
     const struct { const char* name; const glm::vec3& v; float hi; } colours[] = {
         {"diffuse", m.diffuse, 1.0f}, {"specular f0", m.f0, 1.0f}, {"specular ks", m.ks, 1.0f}, {"specular transmittance", m.transmittance, 1.0f},
-        {"emission", m.emission, INFINITY},
+        {"emission", m.emission, FC_MAX_RADIANCE},
         {"k", m.k, INFINITY}};
     for (const auto& c : colours)
         for (int i = 0; i < 3; ++i)
             if (bad(c.v[i], c.v[i] >= 0.0f && c.v[i] <= c.hi))
                 return fmt::format("{} must be finite numbers >= 0{} (got {})", c.name,
-                                   std::isinf(c.hi) ? "" : " and <= 1", rgb(c.v));
+                                   std::isinf(c.hi) ? "" : fmt::format(" and <= {:g}", c.hi), rgb(c.v));
     for (int i = 0; i < 3; ++i)
         if (bad(m.eta[i], m.eta[i] > 0.0f)) return fmt::format("eta must be finite numbers > 0 (got {})", rgb(m.eta));
     const struct { const char* name; float v; } scalars[] = {{"alpha_x", m.alpha_x}, {"alpha_y", m.alpha_y},

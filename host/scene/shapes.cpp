@@ -9,16 +9,13 @@
 
 #include "host/scene/scene.hpp"
 #include "host/util/vec3.hpp"
+#include "host/util/wide_vector.hpp"
 
 namespace facet {
 namespace {
 
 // Unit normal, or +z for a degenerate direction (such triangles are never hit).
-glm::vec3 safe_normalize(glm::vec3 v) {
-    const float len = glm::length(v);
-    if (!(len > 0.0f) || !std::isfinite(len)) return glm::vec3(0.0f, 0.0f, 1.0f);
-    return v / len;
-}
+glm::vec3 safe_normalize(glm::vec3 v) { return unit_or(glm::dvec3(v), glm::vec3(0.0f, 0.0f, 1.0f)); }
 
 using Tri = std::array<int, 3>;
 
@@ -75,7 +72,7 @@ void add_triangle(Scene& scene, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::v
 }
 
 void add_quad(Scene& scene, glm::vec3 corner, glm::vec3 e1, glm::vec3 e2, int material) {
-    const glm::vec3 n = safe_normalize(glm::cross(e1, e2));
+    const glm::vec3 n = unit_or(wide_cross(e1, e2), glm::vec3(0.0f, 0.0f, 1.0f));
     add_triangle(scene, corner, corner + e1, corner + e1 + e2, n, n, n, material);
     add_triangle(scene, corner, corner + e1 + e2, corner + e2, n, n, n, material);
 }
@@ -91,7 +88,7 @@ void add_sphere(Scene& scene, glm::vec3 center, float radius, int subdivisions, 
         glm::vec3 p1 = center + radius * verts[static_cast<std::size_t>(f[1])];
         glm::vec3 p2 = center + radius * verts[static_cast<std::size_t>(f[2])];
         if (inward) std::swap(p1, p2);
-        const glm::vec3 n = safe_normalize(glm::cross(p1 - p0, p2 - p0));
+        const glm::vec3 n = triangle_normal(p0, p1, p2);
         add_triangle(scene, p0, p1, p2, n, n, n, material);
     }
 }

@@ -20,8 +20,8 @@
  *   refracts otherwise (Walter 2007, section 5.3), so the density of wi is
  *       reflection  F pdf_h / (4 |wo.h|)                               (eq. 14)
  *       refraction  (1 - F) pdf_h n_i^2 |wi.h| / (n_i wi.h + n_o wo.h)^2 (eq. 17).
- * - Smooth (alpha below FC_ALPHA_MIRROR): a delta BSDF. Sampling reflects with
- *   probability F(cos_o) (exact Fresnel, fresnel_dielectric: 1 under total internal
+ * - Smooth (alpha below FC_ALPHA_MIRROR, or an index-matched ior within FC_IOR_MATCHED
+ *   of 1): a delta BSDF. Sampling reflects with probability F(cos_o) (exact Fresnel, fresnel_dielectric: 1 under total internal
  *   reflection) and refracts otherwise (refraction.cl); the weight is 1 for the
  *   reflection and specular / etap^2 for the refraction; eval and pdf give 0.
  *
@@ -43,7 +43,14 @@
 #include "kernels/bsdf/refraction.cl"
 #include "kernels/util/math.cl"
 
+/* An index-matched interface (|ior - 1| below FC_IOR_MATCHED) does not scatter: the
+ * refracted direction is -wo whatever the microfacet, F = 0, and Walter's half vector
+ * wo + etap wi vanishes (a rough one would lose the light as degenerate). It is treated
+ * as smooth, so light passes straight through as a delta lobe of weight 1. */
+#define FC_IOR_MATCHED 1e-5f
+
 inline bool dielectric_is_smooth(const FcMaterial* m) {
+    if (fabs(m->ior - 1.0f) < FC_IOR_MATCHED) return true;
     float2 a = ndf_alpha(m);
     return !(fmax(a.x, a.y) >= FC_ALPHA_MIRROR);
 }

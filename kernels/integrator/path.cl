@@ -13,7 +13,8 @@
  * from the geometric normal's side of wo.
  *
  * Samples whose radiance is NaN, infinite or negative are not added; they are
- * counted in the accumulation buffer's w channel so that tests can demand zero. */
+ * counted in the accumulation buffer's w channel so that tests can demand zero.
+ * Finite ones are clamped to FC_MAX_RADIANCE per channel, so the sums stay finite. */
 #ifndef FACET_INTEGRATOR_PATH_CL
 #define FACET_INTEGRATOR_PATH_CL
 
@@ -181,7 +182,7 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
         camera_ray(&params->camera, (float)x + jitter.x, (float)y + jitter.y, params->width,
                    params->height, &o, &d);
         float3 l = path_radiance(&sc, o, d, &sampler);
-        if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) sum[index & 1u].xyz += l;
+        if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) sum[index & 1u].xyz += fmin(l, (float3)(FC_MAX_RADIANCE));
         else sum[index & 1u].w += 1.0f;
     }
     accum[pixel] += sum[0];

@@ -25,7 +25,7 @@ inline Surface surface_at(__global const FcTriangle* tris, __global const FcTriS
     __global const FcTriShading* sh = &shading[hit->prim];
     Surface s;
     s.p = v0 + hit->u * e1 + hit->v * e2;
-    s.ng = normalize_or(cross(e1, e2), (float3)(0.0f, 0.0f, 1.0f));
+    s.ng = normalize_scaled_or(cross(e1, e2), (float3)(0.0f, 0.0f, 1.0f));
     float w = 1.0f - hit->u - hit->v;
     s.ns = normalize_or(w * load3(sh->n0) + hit->u * load3(sh->n1) + hit->v * load3(sh->n2), s.ng);
     if (dot(s.ng, s.ns) < 0.0f) s.ng = -s.ng;

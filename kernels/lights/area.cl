@@ -18,7 +18,7 @@ inline float2 square_to_triangle(float2 u) {
 }
 
 inline float3 area_light_normal(__global const FcLight* l) {
-    return normalize_or(cross(load3(l->e1), load3(l->e2)), (float3)(0.0f, 0.0f, 1.0f));
+    return normalize_scaled_or(cross(load3(l->e1), load3(l->e2)), (float3)(0.0f, 0.0f, 1.0f));
 }
 
 /* A point uniformly distributed over the light's triangle. */

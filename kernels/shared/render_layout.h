@@ -20,6 +20,12 @@
 #define FC_SAMPLER_INDEPENDENT 0   /* independent uniform numbers (PCG32) */
 #define FC_SAMPLER_SOBOL 1         /* Owen-scrambled Sobol', shuffled per dimension set (Burley 2020) */
 
+/* The largest radiance one sample adds to a pixel, per channel (larger ones are
+ * clamped to it), and the largest emission, light colour and environment radiance a
+ * scene may give: 2^24 samples (the most a render takes) of it sum to 1.7e37, so the
+ * float accumulation, the image and the report stay finite. */
+#define FC_MAX_RADIANCE 1e30f
+
 /* A pinhole or orthographic camera. `right` and `up` span half the image plane:
  * for a perspective camera at distance 1 along `forward` (so |up| = tan(fov_y / 2)),
  * for an orthographic camera in world units. Image x grows along `right`, image y

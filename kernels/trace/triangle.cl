@@ -77,6 +77,9 @@ inline bool intersect_triangle(const TriRay* r, float3 o, float3 p0, float3 p1, 
     cz *= r->sz;
     float tt = u * az + v * bz + w * cz;
     float t = tt / det;
+    /* Edge functions ~ size^2 times distances ~ size overflow past ~5e12 (the scene
+     * format allows 1e18): then weight the distances by the barycentrics instead. */
+    if (!isfinite(tt)) t = (u / det) * az + (v / det) * bz + (w / det) * cz;
     if (!(t > 0.0f && t < tmax)) return false;
     float inv = 1.0f / det;
     *t_out = t;

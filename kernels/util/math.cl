@@ -31,6 +31,15 @@ inline float3 normalize_or(float3 v, float3 fallback) {
     return (len2 > 0.0f && isfinite(len2)) ? v * rsqrt(len2) : fallback;
 }
 
+/* normalize_or for a vector of any finite size, scaled by its largest component first:
+ * a geometric normal cross(e1, e2) of edges above ~4e9 (or below ~1e-10) has a squared
+ * length beyond the float range, and the scene format allows edges to 2e18. */
+inline float3 normalize_scaled_or(float3 v, float3 fallback) {
+    float m = fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v.z));
+    if (!(m > 0.0f) || !isfinite(m)) return fallback;
+    return normalize_or(v / m, fallback);
+}
+
 /* Veach's power heuristic with beta = 2, for two strategies with one sample each
  * (Veach 1997, section 9.2.4). Safe for infinite pdfs (delta lobes) and zeros. */
 inline float power_heuristic(float pdf_a, float pdf_b) {
