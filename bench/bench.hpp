@@ -17,7 +17,7 @@ namespace facet {
 
 // A batch of rays as both facet's trace kernel and Embree take them.
 struct RayBatch {
-    std::vector<cl_float4> origins, dirs;   // dirs[i].w = tmax
+    std::vector<cl_float4> origins, dirs;  // dirs[i].w = tmax
 };
 
 // Wall time and the CPU time of the whole process (every thread, the OpenCL driver's

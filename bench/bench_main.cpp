@@ -69,8 +69,8 @@ class Tracer {
 public:
     Tracer(ClContext& ctx, const Bvh& bvh, std::size_t local = 64) : ctx_(ctx), local_(local) {
         program_ = build_program(ctx, "kernels/bench/trace_bench.cl").program;
-        nodes_ = cl::Buffer(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, bvh.nodes.size() * sizeof(FcBvhNode),
-                            const_cast<FcBvhNode*>(bvh.nodes.data()));
+        nodes_ = cl::Buffer(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
+                            bvh.nodes.size() * sizeof(FcBvhNode), const_cast<FcBvhNode*>(bvh.nodes.data()));
         tris_ = cl::Buffer(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                            std::max<std::size_t>(1, bvh.triangles.size()) * sizeof(FcTriangle),
                            const_cast<FcTriangle*>(bvh.triangles.data()));
@@ -109,7 +109,7 @@ private:
     }
     Timing time_kernel(cl::Kernel& k, std::size_t n, int reps) {
         Timing best{1e30, 1e30};
-        for (int r = 0; r < reps + 1; ++r) {   // the first launch warms up
+        for (int r = 0; r < reps + 1; ++r) {  // the first launch warms up
             auto start = Clock::now();
             double cpu0 = process_cpu_seconds();
             // A fixed local size (PoCL specialises kernels per launch geometry), the
@@ -131,8 +131,8 @@ private:
 
 // Diffuse bounce rays: from every camera-ray hit, `per_hit` cosine-distributed directions
 // about the face normal on the side the camera ray came from.
-RayBatch diffuse_rays(const Scene& scene, const RayBatch& cam, const std::vector<float>& t, const std::vector<int>& prim,
-                      int per_hit) {
+RayBatch diffuse_rays(const Scene& scene, const RayBatch& cam, const std::vector<float>& t,
+                      const std::vector<int>& prim, int per_hit) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
     RayBatch b;
@@ -144,7 +144,7 @@ RayBatch diffuse_rays(const Scene& scene, const RayBatch& cam, const std::vector
         glm::vec3 n = glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0]));
         if (glm::dot(n, d) > 0.0f) n = -n;
         glm::vec3 p = o + t[i] * d;
-        p += n * (1e-4f * std::max(1.0f, glm::length(p)));   // enough offset for a bench ray
+        p += n * (1e-4f * std::max(1.0f, glm::length(p)));  // enough offset for a bench ray
         glm::vec3 a = std::abs(n.x) > 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
         glm::vec3 s = glm::normalize(glm::cross(a, n)), tt = glm::cross(n, s);
         for (int k = 0; k < per_hit; ++k) {
@@ -164,8 +164,7 @@ double mrays(std::size_t n, double s) { return s > 0.0 ? double(n) / s * 1e-6 : 
 std::string fmt_rate(double v) { return v > 0.0 ? fmt::format("{:.2f}", v) : std::string("—"); }
 
 nlohmann::json bench_scene(ClContext& ctx, const BenchCase& c, bool quick, bool build_only, std::size_t local,
-                           const BvhOptions& bvh_options,
-                           Markdown& build_md, Markdown& trace_md, Markdown& render_md) {
+                           const BvhOptions& bvh_options, Markdown& build_md, Markdown& trace_md, Markdown& render_md) {
     Scene scene = load_scene(c.path);
     nlohmann::json j;
     j["scene"] = c.name;
@@ -281,7 +280,8 @@ nlohmann::json bench_scene(ClContext& ctx, const BenchCase& c, bool quick, bool 
         } else {
             for (int q = 0; q < 2; ++q)
                 trace_md.row({c.name, bname, q == 0 ? "closest" : "any", std::to_string(n),
-                              fmt_rate(rate(n, q == 0 ? closest_s : any_s)), "—", "—", "—", "—", "—", "—", "—", "—", ""});
+                              fmt_rate(rate(n, q == 0 ? closest_s : any_s)), "—", "—", "—", "—", "—", "—", "—", "—",
+                              ""});
         }
         j["trace"][bname] = b;
     }
@@ -297,7 +297,7 @@ nlohmann::json bench_scene(ClContext& ctx, const BenchCase& c, bool quick, bool 
     scene.settings.width = size;
     scene.settings.height = size;
     Renderer renderer(ctx, scene, bvh);
-    render_fixed(renderer, 1);   // warm-up
+    render_fixed(renderer, 1);  // warm-up
     renderer.reset();
     std::uint32_t spp = quick ? 2 : 8;
     render_fixed(renderer, spp);
@@ -331,7 +331,7 @@ nlohmann::json bench_quality(ClContext& ctx, bool quick) {
         Renderer r(ctx, scene, bvh);
         render_fixed(r, 1);
         r.reset();
-        ProgressiveOptions po;   // passes of 2 samples for `seconds`
+        ProgressiveOptions po;  // passes of 2 samples for `seconds`
         po.target_spp = std::uint64_t(1) << 40;
         po.time_limit_s = seconds;
         po.fixed_pass = 2;
@@ -342,15 +342,20 @@ nlohmann::json bench_quality(ClContext& ctx, bool quick) {
         double rate = double(spp) * double(r.pixel_count()) / r.stats().render_seconds * 1e-6;
         bench_print("| {} | {} | {:.3f} | {:.4g} | {:.4g} |\n", f.stem().string(), spp, rate, m.rmse, m.relmse);
         std::fflush(stdout);
-        rows.push_back({{"scene", f.stem().string()}, {"seconds", r.stats().render_seconds}, {"spp", spp},
-                        {"msamples_per_s", rate}, {"est_rmse", m.rmse}, {"est_relmse", m.relmse}});
+        rows.push_back({{"scene", f.stem().string()},
+                        {"seconds", r.stats().render_seconds},
+                        {"spp", spp},
+                        {"msamples_per_s", rate},
+                        {"est_rmse", m.rmse},
+                        {"est_relmse", m.relmse}});
     }
     return rows;
 }
 
 int run(int argc, char** argv) {
-    CLI::App app{"facet_bench: BVH build, trace (against Embree), render throughput, program build and equal-time "
-                 "error (figures, not tests)"};
+    CLI::App app{
+        "facet_bench: BVH build, trace (against Embree), render throughput, program build and equal-time "
+        "error (figures, not tests)"};
     std::string device, assets = (fs::path(FACET_SOURCE_DIR) / ".." / "shared" / "assets").string(), json_out, md_out;
     std::string cache = (fs::temp_directory_path() / "facet_bench").string();
     bool quick = false;
@@ -370,17 +375,19 @@ int run(int argc, char** argv) {
     std::string scene_filter;
     app.add_option("--scene", scene_filter, "Trace section: only the scenes whose name contains this");
     std::string only;
-    app.add_option("--only", only, "Run one section: trace (with build), build (alone), bsdf, ibl, specialisation or quality");
+    app.add_option("--only", only,
+                   "Run one section: trace (with build), build (alone), bsdf, ibl, specialisation or quality");
     CLI11_PARSE(app, argc, argv);
-    if (!only.empty() && only != "trace" && only != "build" && only != "bsdf" && only != "ibl" && only != "specialisation" &&
-        only != "quality")
+    if (!only.empty() && only != "trace" && only != "build" && only != "bsdf" && only != "ibl" &&
+        only != "specialisation" && only != "quality")
         throw Error(fmt::format("--only {}: expected trace, build, bsdf, ibl, specialisation or quality", only));
     auto wanted = [&](const char* section) {
         return only.empty() || only == section || (only == "build" && std::string(section) == "trace");
     };
 
     ClContext ctx = ClContext::create(device);
-    std::vector<BenchCase> cases = {{"cornell_box", (fs::path(FACET_SOURCE_DIR) / "scenes" / "cornell_box.json").string()}};
+    std::vector<BenchCase> cases = {
+        {"cornell_box", (fs::path(FACET_SOURCE_DIR) / "scenes" / "cornell_box.json").string()}};
     if (wanted("trace")) {
         for (auto [name, rel] : {std::pair{"bunny", "meshes_common3d/stanford-bunny.obj"},
                                  std::pair{"dragon_res2", "dragon_stanford/dragon_vrip_res2.obj"}}) {
@@ -395,9 +402,8 @@ int run(int argc, char** argv) {
         else if (!ply_gz_to_obj(ply.string(), obj.string(), &why)) bench_print("skipping dragon: {}\n", why);
         else cases.push_back({"dragon", obj.string()});
     }
-    const std::string device_label =
-        fmt::format("{} / {} ({}, {} compute units)", ctx.desc().platform, ctx.desc().name, ctx.desc().driver,
-                    ctx.desc().compute_units);
+    const std::string device_label = fmt::format("{} / {} ({}, {} compute units)", ctx.desc().platform, ctx.desc().name,
+                                                 ctx.desc().driver, ctx.desc().compute_units);
     bench_print("## facet bench\n\nDevice: {}. Host: {} hardware threads.\n", device_label,
                 std::thread::hardware_concurrency());
     nlohmann::json all;
@@ -410,28 +416,32 @@ int run(int argc, char** argv) {
         if (!embree_available(&why) && only != "build") bench_print("\nEmbree figures skipped: {}.\n", why);
         const int threads = int(std::max<std::uint32_t>(1, ctx.desc().compute_units));
         Markdown build_md({"scene", "triangles", "facet build ms", "facet Mtris/s (1 thread)", "SAH cost",
-                           "plain 12-bin Mtris/s", "plain 12-bin SAH", "device bytes/tri", "Embree build Mtris/s (1 thread)"});
+                           "plain 12-bin Mtris/s", "plain 12-bin SAH", "device bytes/tri",
+                           "Embree build Mtris/s (1 thread)"});
         Markdown trace_md({"scene", "rays", "query", "rays in batch", "facet Mrays/s", "Embree 1t ×1",
                            "Embree 1t packet", "Embree 1t stream", fmt::format("Embree {}t ×1", threads),
                            fmt::format("Embree {}t packet", threads), fmt::format("Embree {}t stream", threads),
-                           fmt::format("facet ÷ Embree {}t ×1", threads),
-                           std::string("same, per CPU-second"), "hit/t mismatches"});
+                           fmt::format("facet ÷ Embree {}t ×1", threads), std::string("same, per CPU-second"),
+                           "hit/t mismatches"});
         Markdown render_md({"scene", "image", "render Msamples/s", "render program build s"});
         for (const BenchCase& c : cases) {
             if (!scene_filter.empty() && c.name.find(scene_filter) == std::string::npos) continue;
             fmt::print("  [{}]\n", c.name);
             std::fflush(stdout);
-            all["scenes"].push_back(bench_scene(ctx, c, quick, only == "build", trace_local, bvh_options, build_md, trace_md, render_md));
+            all["scenes"].push_back(
+                bench_scene(ctx, c, quick, only == "build", trace_local, bvh_options, build_md, trace_md, render_md));
         }
-        bench_print("\n### BVH build (one thread; SAH cost normalised by the root's area, traversal = intersection = 1)\n\n{}",
-                    build_md.str());
+        bench_print(
+            "\n### BVH build (one thread; SAH cost normalised by the root's area, traversal = intersection = 1)\n\n{}",
+            build_md.str());
         if (only != "build") {
-        bench_print("\n### Trace: the same rays, facet's kernel on the OpenCL device against Embree on the host\n\n"
-                    "×1 = rtcIntersect1 / rtcOccluded1; packet = rtcIntersect{{N}}/rtcOccluded{{N}} with the widest native "
-                    "N; stream = rtcIntersect1M (incoherent flag). {}t = as many threads as the device's compute units; "
-                    "the ratio column (bold) is facet against Embree ×1 on {} threads by wall time (the goal's ratio); \"per CPU-second\" divides each side's rays by the CPU time the whole process used, which other processes on a shared machine do not inflate. Embree's hit/t mismatches count rays where it and facet disagree on hit or miss / on the distance (1e-3 relative). facet's trace kernels run in work-groups of {}.\n\n{}",
-                    threads, threads, trace_local, trace_md.str());
-        bench_print("\n### Render\n\n{}", render_md.str());
+            bench_print(
+                "\n### Trace: the same rays, facet's kernel on the OpenCL device against Embree on the host\n\n"
+                "×1 = rtcIntersect1 / rtcOccluded1; packet = rtcIntersect{{N}}/rtcOccluded{{N}} with the widest native "
+                "N; stream = rtcIntersect1M (incoherent flag). {}t = as many threads as the device's compute units; "
+                "the ratio column (bold) is facet against Embree ×1 on {} threads by wall time (the goal's ratio); \"per CPU-second\" divides each side's rays by the CPU time the whole process used, which other processes on a shared machine do not inflate. Embree's hit/t mismatches count rays where it and facet disagree on hit or miss / on the distance (1e-3 relative). facet's trace kernels run in work-groups of {}.\n\n{}",
+                threads, threads, trace_local, trace_md.str());
+            bench_print("\n### Render\n\n{}", render_md.str());
         }
     }
     if (wanted("bsdf")) all["bsdfs"] = bench_bsdfs(ctx, quick);

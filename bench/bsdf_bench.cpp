@@ -32,7 +32,7 @@ nlohmann::json bench_bsdfs(ClContext& ctx, bool quick) {
                 ctx.queue().enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange(items), cl::NDRange(64));
                 ctx.queue().finish();
                 double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                if (rep > 0) best = std::min(best, s);   // the first launch warms up
+                if (rep > 0) best = std::min(best, s);  // the first launch warms up
             }
             rate[k] = double(items) * iterations / best * 1e-6;
         }

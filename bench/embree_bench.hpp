@@ -17,17 +17,17 @@ namespace facet {
 bool embree_available(std::string* why);
 
 struct EmbreeTimes {
-    double build_s = 0.0;          // rtcCommitScene, one build thread, medium quality
+    double build_s = 0.0;  // rtcCommitScene, one build thread, medium quality
     // Best-of-reps wall and CPU seconds for the whole batch; [0] one thread, [1] `threads` threads.
-    Timing closest1[2];   // rtcIntersect1
-    Timing closestP[2];   // rtcIntersect<packet> (width in packet_width)
-    Timing closestS[2];   // rtcIntersect1M stream
-    Timing any1[2];       // rtcOccluded1
-    Timing anyP[2];       // rtcOccluded<packet>
+    Timing closest1[2];  // rtcIntersect1
+    Timing closestP[2];  // rtcIntersect<packet> (width in packet_width)
+    Timing closestS[2];  // rtcIntersect1M stream
+    Timing any1[2];      // rtcOccluded1
+    Timing anyP[2];      // rtcOccluded<packet>
     int packet_width = 0;
     int threads = 1;
-    std::size_t hit_mismatches = 0;   // rays where Embree's hit/miss differs from facet's
-    std::size_t t_mismatches = 0;     // hits whose distance differs by more than 1e-3 relative
+    std::size_t hit_mismatches = 0;  // rays where Embree's hit/miss differs from facet's
+    std::size_t t_mismatches = 0;    // hits whose distance differs by more than 1e-3 relative
 };
 
 // Builds Embree's BVH over `vertices` (3 per triangle) and traces `rays` closest-hit

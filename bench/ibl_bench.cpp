@@ -65,7 +65,8 @@ std::pair<double, double> sampling_cost(ClContext& ctx, const cl::Program& progr
     for (int rep = 0; rep < 3; ++rep) {
         auto t0 = std::chrono::steady_clock::now();
         build_environment_distribution(env);
-        build_ms = std::min(build_ms, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        build_ms = std::min(build_ms,
+                            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     }
     const cl::Context& c = ctx.context();
     cl::Buffer params(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(FcEnvironment), &env.params);
@@ -83,7 +84,7 @@ std::pair<double, double> sampling_cost(ClContext& ctx, const cl::Program& progr
     k.setArg(4, per_item);
     k.setArg(5, out);
     double best_s = 1e30;
-    for (int rep = 0; rep < 4; ++rep) {   // the first launch warms up
+    for (int rep = 0; rep < 4; ++rep) {  // the first launch warms up
         auto t0 = std::chrono::steady_clock::now();
         ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(items), cl::NDRange(64));
         ctx.queue().finish();
@@ -111,7 +112,8 @@ nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick) 
     }
     nlohmann::json sampling = nlohmann::json::array();
     {
-        bench_print("\n### Environment sampling (distribution built on one host thread, best of 3; env_sample on the device)\n\n");
+        bench_print(
+            "\n### Environment sampling (distribution built on one host thread, best of 3; env_sample on the device)\n\n");
         bench_print("| map | size | distribution build ms | env_sample M/s |\n|---|---|---|---|\n");
         cl::Program program = build_program(ctx, "kernels/bench/ibl_bench.cl").program;
         std::vector<std::pair<std::string, EnvironmentMap>> timed = {
@@ -119,10 +121,14 @@ nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick) 
         for (std::size_t i = 1; i < maps.size(); ++i) timed.push_back(maps[i]);
         for (auto& [name, env] : timed) {
             auto [build_ms, rate] = sampling_cost(ctx, program, env, quick);
-            bench_print("| {} | {}x{} | {:.1f} | {:.1f} |\n", name, env.params.width, env.params.height, build_ms, rate);
+            bench_print("| {} | {}x{} | {:.1f} | {:.1f} |\n", name, env.params.width, env.params.height, build_ms,
+                        rate);
             std::fflush(stdout);
-            sampling.push_back({{"map", name}, {"width", env.params.width}, {"height", env.params.height},
-                                {"distribution_build_ms", build_ms}, {"env_sample_m_per_s", rate}});
+            sampling.push_back({{"map", name},
+                                {"width", env.params.width},
+                                {"height", env.params.height},
+                                {"distribution_build_ms", build_ms},
+                                {"env_sample_m_per_s", rate}});
         }
     }
     const double budget = quick ? 0.5 : 2.0;
@@ -139,7 +145,7 @@ nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick) 
                                        std::pair{"mis", FC_STRATEGY_MIS}}) {
             std::uint64_t spp = 0;
             Scene s = scene;
-            s.settings.seed = 1234;   // independent of the reference's samples
+            s.settings.seed = 1234;  // independent of the reference's samples
             std::vector<float> img = render_for(ctx, s, strategy, budget, 4, &spp);
             double rmse = compare_images(img, ref).rmse;
             row[label] = {{"rmse", rmse}, {"spp", spp}};

@@ -111,7 +111,7 @@ bool ply_gz_to_obj(const std::string& ply_gz, const std::string& obj_out, std::s
             }
             p = next;
         }
-        for (long k = 1; k + 1 < n; ++k)   // fan
+        for (long k = 1; k + 1 < n; ++k)  // fan
             out << "f " << idx[0] + 1 << ' ' << idx[k] + 1 << ' ' << idx[k + 1] + 1 << '\n';
     }
     out.close();

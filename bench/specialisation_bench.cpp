@@ -23,9 +23,10 @@ nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, b
         scenes.push_back({s, (fs::path(FACET_SOURCE_DIR) / "scenes" / s).string()});
     fs::path dragon = fs::path(assets) / "dragon_stanford" / "dragon_vrip_res2.obj";
     if (fs::exists(dragon)) scenes.push_back({"dragon_res2.obj", dragon.string()});
-    bench_print("\n### Program build: kernel specialisation\n\nTime to first image = program build + the first launch (PoCL generates\n"
-               "machine code at the first launch); cold: a nonce kernel defeats the driver's caches; warm: the\n"
-               "same program again. The first row is the driver's own floor: a one-line program, cold.\n\n");
+    bench_print(
+        "\n### Program build: kernel specialisation\n\nTime to first image = program build + the first launch (PoCL generates\n"
+        "machine code at the first launch); cold: a nonce kernel defeats the driver's caches; warm: the\n"
+        "same program again. The first row is the driver's own floor: a one-line program, cold.\n\n");
     bench_print("| scene | program | features | cold build + first launch s | warm s | binary KiB | Msamples/s |\n");
     bench_print("|---|---|---|---|---|---|---|\n");
     nlohmann::json rows = nlohmann::json::array();
@@ -36,8 +37,8 @@ nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, b
     // which would otherwise land on the first row.
     const double floor_s = [&] {
         auto start = std::chrono::steady_clock::now();
-        cl::Program p(ctx.context(), fmt::format("__kernel void fc_floor(__global int* o) {{ o[0] = {}; }}",
-                                                 nonce % 1000000007));
+        cl::Program p(ctx.context(),
+                      fmt::format("__kernel void fc_floor(__global int* o) {{ o[0] = {}; }}", nonce % 1000000007));
         p.build({ctx.device()}, default_build_options().c_str());
         cl::Kernel k(p, "fc_floor");
         cl::Buffer b(ctx.context(), CL_MEM_WRITE_ONLY, sizeof(cl_int));
@@ -66,7 +67,7 @@ nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, b
                                  r.build().program};
             };
             auto [cold_s, program] = first_image();
-            const std::size_t binary_bytes = program_binary_bytes(program);   // outside the timed span
+            const std::size_t binary_bytes = program_binary_bytes(program);  // outside the timed span
             double warm_s = first_image().first;
             Renderer r(ctx, scene, bvh, generic);
             render_fixed(r, 1);
@@ -74,12 +75,16 @@ nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, b
             std::uint32_t spp = quick ? 4 : 16;
             render_fixed(r, spp);
             double rate = double(spp) * double(r.pixel_count()) / r.stats().render_seconds * 1e-6;
-            bench_print("| {} | {} | {} | {:.2f} | {:.3f} | {:.0f} | {:.3f} |\n", name, generic ? "generic" : "specialised",
-                       describe_features(mask), cold_s, warm_s, double(binary_bytes) / 1024.0, rate);
+            bench_print("| {} | {} | {} | {:.2f} | {:.3f} | {:.0f} | {:.3f} |\n", name,
+                        generic ? "generic" : "specialised", describe_features(mask), cold_s, warm_s,
+                        double(binary_bytes) / 1024.0, rate);
             std::fflush(stdout);
-            rows.push_back({{"scene", name}, {"program", generic ? "generic" : "specialised"},
-                            {"features", describe_features(mask)}, {"cold_first_image_s", cold_s},
-                            {"warm_first_image_s", warm_s}, {"binary_bytes", binary_bytes},
+            rows.push_back({{"scene", name},
+                            {"program", generic ? "generic" : "specialised"},
+                            {"features", describe_features(mask)},
+                            {"cold_first_image_s", cold_s},
+                            {"warm_first_image_s", warm_s},
+                            {"binary_bytes", binary_bytes},
                             {"msamples_per_s", rate}});
         }
     }

@@ -60,7 +60,7 @@ int hit_index(D3 p, D3 w, const std::vector<Tri>& tris) {
         double u = dot(s, q) / det;
         D3 r = cross(s, e1);
         double v = dot(w, r) / det, t = dot(e2, r) / det;
-        const double eps = 1e-5;   // float directions
+        const double eps = 1e-5;  // float directions
         if (u >= -eps && v >= -eps && u + v <= 1.0 + eps && t > 0.0) return int(i);
     }
     return -1;
@@ -100,7 +100,7 @@ TEST(AreaLight, SphericalTriangleIsUniformInSolidAngle) {
 
         const double total = solid_angle(c.p, c.tri.v0, c.tri.v1, c.tri.v2);
         EXPECT_NEAR(double(om), total, 1e-5 * total + 1e-7) << c.what;
-        const std::vector<Tri> cells = subdivide(c.tri, 3);   // 64 cells
+        const std::vector<Tri> cells = subdivide(c.tri, 3);  // 64 cells
         std::vector<double> expected(cells.size());
         for (std::size_t i = 0; i < cells.size(); ++i)
             expected[i] = double(n) * solid_angle(c.p, cells[i].v0, cells[i].v1, cells[i].v2) / total;
@@ -118,7 +118,8 @@ TEST(AreaLight, SphericalTriangleIsUniformInSolidAngle) {
         EXPECT_EQ(refused, 0u) << c.what;
         EXPECT_LE(missed, n / 10000) << c.what << ": directions that miss the triangle";
         double chi2 = 0.0;
-        for (std::size_t i = 0; i < cells.size(); ++i) chi2 += (count[i] - expected[i]) * (count[i] - expected[i]) / expected[i];
+        for (std::size_t i = 0; i < cells.size(); ++i)
+            chi2 += (count[i] - expected[i]) * (count[i] - expected[i]) / expected[i];
         const double dof = double(cells.size() - 1);
         const double p = test::chi2::gamma_q(0.5 * dof, 0.5 * chi2);
         EXPECT_GT(p, level) << c.what << ": chi2 " << chi2 << " over " << dof << " degrees of freedom";
@@ -166,8 +167,8 @@ TEST(AreaLight, StrategiesAgreeNearTheLight) {
     EXPECT_GT(mis.sum, 0.0);
     for (const Result* other : {&light, &bsdf}) {
         const double z = (other->sum - mis.sum) / std::sqrt(other->var + mis.var);
-        EXPECT_LT(std::fabs(z), 4.0) << (other == &light ? "light" : "bsdf") << " sampling against MIS: "
-                                     << other->sum << " vs " << mis.sum;
+        EXPECT_LT(std::fabs(z), 4.0) << (other == &light ? "light" : "bsdf") << " sampling against MIS: " << other->sum
+                                     << " vs " << mis.sum;
     }
     EXPECT_LT(light.var, bsdf.var) << "solid-angle light sampling should be the better strategy here";
 }

@@ -36,8 +36,8 @@ inline IndexedMesh make_torus(int nu, int nv, float R, float r) {
         for (int j = 0; j < nv; ++j) {
             float a = two_pi * static_cast<float>(i) / static_cast<float>(nu);
             float b = two_pi * static_cast<float>(j) / static_cast<float>(nv);
-            m.positions.emplace_back((R + r * std::cos(b)) * std::cos(a),
-                                     (R + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+            m.positions.emplace_back((R + r * std::cos(b)) * std::cos(a), (R + r * std::cos(b)) * std::sin(a),
+                                     r * std::sin(b));
         }
     auto at = [&](int i, int j) { return (i % nu) * nv + (j % nv); };
     for (int i = 0; i < nu; ++i)
@@ -84,8 +84,9 @@ inline IndexedMesh make_grid_cube(int n) {
 inline std::vector<glm::vec3> make_degenerate_soup(int count, std::size_t& unusable) {
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f);
-    auto rnd = [&](float lo, float hi) { return glm::vec3(lo + (hi - lo) * u01(rng), lo + (hi - lo) * u01(rng),
-                                                          lo + (hi - lo) * u01(rng)); };
+    auto rnd = [&](float lo, float hi) {
+        return glm::vec3(lo + (hi - lo) * u01(rng), lo + (hi - lo) * u01(rng), lo + (hi - lo) * u01(rng));
+    };
     std::vector<glm::vec3> v;
     unusable = 0;
     const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -94,37 +95,40 @@ inline std::vector<glm::vec3> make_degenerate_soup(int count, std::size_t& unusa
         glm::vec3 c = rnd(-1.0f, 1.0f);
         glm::vec3 a, b, d;
         switch (i % 10) {
-            case 0:   // ordinary
+            case 0:  // ordinary
                 a = c + rnd(-0.1f, 0.1f), b = c + rnd(-0.1f, 0.1f), d = c + rnd(-0.1f, 0.1f);
                 break;
-            case 1:   // exact duplicate of the previous triangle
-                if (i > 0) { a = v[v.size() - 3], b = v[v.size() - 2], d = v[v.size() - 1]; break; }
+            case 1:  // exact duplicate of the previous triangle
+                if (i > 0) {
+                    a = v[v.size() - 3], b = v[v.size() - 2], d = v[v.size() - 1];
+                    break;
+                }
                 [[fallthrough]];
-            case 2:   // sliver: the third vertex a hair off the first edge
+            case 2:  // sliver: the third vertex a hair off the first edge
                 a = c, b = c + rnd(-0.3f, 0.3f);
                 d = 0.5f * (a + b) + glm::vec3(0.0f, 1e-6f, 0.0f);
                 break;
-            case 3:   // zero area: repeated vertex, or three on an axis-parallel line
+            case 3:  // zero area: repeated vertex, or three on an axis-parallel line
                 a = c, b = (i % 20 == 3) ? c : c + glm::vec3(0.25f, 0.0f, 0.0f);
                 d = c + glm::vec3(0.5f, 0.0f, 0.0f);
                 ++unusable;
                 break;
-            case 4:   // coplanar and overlapping, on z = 0.25
+            case 4:  // coplanar and overlapping, on z = 0.25
                 a = glm::vec3(c.x, c.y, 0.25f), b = a + glm::vec3(0.3f, 0.0f, 0.0f),
                 d = a + glm::vec3(0.0f, 0.3f, 0.0f);
                 break;
-            case 5:   // huge
+            case 5:  // huge
                 a = rnd(-1e3f, 1e3f), b = rnd(-1e3f, 1e3f), d = rnd(-1e3f, 1e3f);
-                if (i % 30 != 5) a.z = b.z = d.z = -2.0f;   // mostly a floor below the rest
+                if (i % 30 != 5) a.z = b.z = d.z = -2.0f;  // mostly a floor below the rest
                 break;
-            case 6:   // tiny
+            case 6:  // tiny
                 a = c, b = c + rnd(-1e-5f, 1e-5f), d = c + rnd(-1e-5f, 1e-5f);
                 break;
-            case 7:   // non-finite vertex
+            case 7:  // non-finite vertex
                 a = c, b = c + glm::vec3(0.1f, 0.0f, 0.0f), d = glm::vec3(nan, 0.0f, inf);
                 ++unusable;
                 break;
-            default:   // axis-aligned (flat boxes) sharing an edge with a neighbour
+            default:  // axis-aligned (flat boxes) sharing an edge with a neighbour
                 a = c, b = c + glm::vec3(0.2f, 0.0f, 0.0f), d = c + glm::vec3(0.0f, 0.2f, 0.0f);
                 v.push_back(b), v.push_back(d), v.push_back(c + glm::vec3(0.2f, 0.2f, 0.0f));
                 break;

@@ -22,7 +22,7 @@ using test::IndexedMesh;
 // ---- host-side structure ------------------------------------------------------------
 
 struct Walk {
-    std::vector<int> seen;   // leaf visits per triangle
+    std::vector<int> seen;  // leaf visits per triangle
     int max_depth = 0;
     std::size_t leaves = 0;
 };
@@ -33,8 +33,7 @@ bool encloses(const float* lo, const float* hi, const float* p) {
     return true;
 }
 
-void walk_child(const Bvh& bvh, const float* lo, const float* hi, int index, int count, int depth,
-                Walk& w);
+void walk_child(const Bvh& bvh, const float* lo, const float* hi, int index, int count, int depth, Walk& w);
 
 void walk_node(const Bvh& bvh, int node, int depth, Walk& w) {
     ASSERT_GE(node, 0);
@@ -57,9 +56,8 @@ bool encloses_children(const float* lo, const float* hi, const FcBvhNode& c) {
     return true;
 }
 
-void walk_child(const Bvh& bvh, const float* lo, const float* hi, int index, int count, int depth,
-                Walk& w) {
-    if (lo[0] > hi[0]) {   // empty slot
+void walk_child(const Bvh& bvh, const float* lo, const float* hi, int index, int count, int depth, Walk& w) {
+    if (lo[0] > hi[0]) {  // empty slot
         EXPECT_EQ(count, 0);
         EXPECT_EQ(index, 0);
         EXPECT_TRUE(std::isinf(lo[0]) && std::isinf(hi[0]));
@@ -200,8 +198,8 @@ TEST(Bvh, StructureValidAcrossBuilderPaths) {
 // ---- device: BVH against brute force -------------------------------------------------
 
 struct Rays {
-    std::vector<glm::vec4> o;   // xyz
-    std::vector<glm::vec4> d;   // xyz, w = tmax
+    std::vector<glm::vec4> o;  // xyz
+    std::vector<glm::vec4> d;  // xyz, w = tmax
     void add(glm::vec3 origin, glm::vec3 dir, float tmax = INFINITY) {
         o.emplace_back(origin, 0.0f);
         d.emplace_back(dir, tmax);
@@ -209,7 +207,7 @@ struct Rays {
 };
 
 struct Result {
-    std::vector<glm::vec4> hit;   // t, u, v, as_float(prim)
+    std::vector<glm::vec4> hit;  // t, u, v, as_float(prim)
     std::vector<int> any;
     int prim(std::size_t i) const {
         int p;
@@ -221,7 +219,7 @@ struct Result {
 template <typename T>
 cl::Buffer upload(const std::vector<T>& v) {
     auto& ctx = test::context();
-    std::size_t bytes = std::max<std::size_t>(v.size() * sizeof(T), 64);   // never 0 bytes
+    std::size_t bytes = std::max<std::size_t>(v.size() * sizeof(T), 64);  // never 0 bytes
     cl::Buffer b(ctx.context(), CL_MEM_READ_ONLY, bytes);
     if (!v.empty()) ctx.queue().enqueueWriteBuffer(b, CL_TRUE, 0, v.size() * sizeof(T), v.data());
     return b;
@@ -277,7 +275,7 @@ Result expect_agreement(const Bvh& bvh, const std::vector<glm::vec3>& soup, cons
         if (ok && fh && b.prim(i) == f.prim(i))
             ok = std::fabs(tb - tf) <= 1e-5f * tf && std::fabs(b.hit[i].y - f.hit[i].y) <= 1e-5f &&
                  std::fabs(b.hit[i].z - f.hit[i].z) <= 1e-5f;
-        if (ok && fh && b.prim(i) != f.prim(i)) {   // a tie, in exact arithmetic
+        if (ok && fh && b.prim(i) != f.prim(i)) {  // a tie, in exact arithmetic
             glm::vec3 o(rays.o[i]), d(rays.d[i]);
             double pb = plane_t(soup, b.prim(i), o, d), pf = plane_t(soup, f.prim(i), o, d);
             ok = std::fabs(pb - pf) <= 1e-5 * std::fabs(pf) && std::fabs(tb - tf) <= 1e-3f * tf;
@@ -301,13 +299,13 @@ Rays random_rays(const std::vector<glm::vec3>& soup, std::size_t count, float ex
     for (std::size_t i = 0; i < count; ++i) {
         glm::vec3 o(u(rng) * extent, u(rng) * extent, u(rng) * extent);
         glm::vec3 d(u(rng), u(rng), u(rng));
-        if (i % 2 == 0 && tris > 0) {   // aim at a triangle
+        if (i % 2 == 0 && tris > 0) {  // aim at a triangle
             std::size_t t = std::uniform_int_distribution<std::size_t>(0, tris - 1)(rng);
             float a = u01(rng), b = u01(rng) * (1.0f - a);
             glm::vec3 p = soup[3 * t] + a * (soup[3 * t + 1] - soup[3 * t]) + b * (soup[3 * t + 2] - soup[3 * t]);
             if (std::isfinite(p.x + p.y + p.z)) d = p - o;
         }
-        if (i % 16 == 3) d = glm::vec3(0.0f, 0.0f, u(rng) < 0.0f ? -1.0f : 1.0f);   // zero components
+        if (i % 16 == 3) d = glm::vec3(0.0f, 0.0f, u(rng) < 0.0f ? -1.0f : 1.0f);  // zero components
         float tmax = (i % 5 == 0) ? u01(rng) * 2.0f : INFINITY;
         rays.add(o, d, tmax);
     }
@@ -345,30 +343,29 @@ TEST(Bvh, MatchesBruteForceDegenerateMesh) {
     expect_agreement(bvh, soup, random_rays(soup, 100000, 1.5f, 3));
 }
 
-
 // Rays aimed exactly at shared edges and vertices of closed meshes, from outside and
 // from inside, must hit (Woop et al. 2013): on the integer grid cube the edge
 // functions come out exactly zero; on the torus the rays are oblique.
 TEST(Bvh, EdgesAndVerticesAreWatertight) {
     Rays rays;
-    std::vector<float> expect_t;   // expected distance; ray directions are not normalised
+    std::vector<float> expect_t;  // expected distance; ray directions are not normalised
     const int n = 6;
     IndexedMesh cube = test::make_grid_cube(n);
     const glm::vec3 centre(0.5f * n);
     for (int axis = 0; axis < 3; ++axis)
         for (int side = 0; side < 2; ++side)
             for (int i = 0; i <= 2 * n; ++i)
-                for (int j = 0; j <= 2 * n; ++j) {   // vertices, edge midpoints, diagonals
+                for (int j = 0; j <= 2 * n; ++j) {  // vertices, edge midpoints, diagonals
                     glm::vec3 p, out(0.0f);
                     p[axis] = static_cast<float>(side * n);
                     p[(axis + 1) % 3] = 0.5f * static_cast<float>(i);
                     p[(axis + 2) % 3] = 0.5f * static_cast<float>(j);
                     out[axis] = side ? 1.0f : -1.0f;
-                    rays.add(p + 2.0f * out, -out), expect_t.push_back(2.0f);   // straight in
-                    rays.add(centre, p - centre), expect_t.push_back(1.0f);     // from inside
+                    rays.add(p + 2.0f * out, -out), expect_t.push_back(2.0f);  // straight in
+                    rays.add(centre, p - centre), expect_t.push_back(1.0f);    // from inside
                     glm::vec3 d = -out;
-                    d[(axis + 1) % 3] = 0.25f, d[(axis + 2) % 3] = -0.5f;        // oblique, exact
-                    rays.add(p - 2.0f * d, d), expect_t.push_back(-2.0f);       // any t <= 2
+                    d[(axis + 1) % 3] = 0.25f, d[(axis + 2) % 3] = -0.5f;  // oblique, exact
+                    rays.add(p - 2.0f * d, d), expect_t.push_back(-2.0f);  // any t <= 2
                 }
     Bvh cube_bvh = build_bvh(cube.soup());
     std::vector<glm::vec3> cube_soup = cube.soup();
@@ -410,14 +407,15 @@ TEST(Bvh, EmptyAndSingleTriangle) {
         for (int a = 0; a < 3; ++a) EXPECT_TRUE(std::isinf(lo[a]) && lo[a] > 0.0f && std::isinf(hi[a]) && hi[a] < 0.0f);
     };
     Rays rays = random_rays({}, 200, 2.0f, 4);
-    rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f));          // hits at t = 1
-    rays.add(glm::vec3(0.25f, 0.5f, -2.0f), glm::vec3(0.0f, 0.0f, 2.0f));          // from behind
-    rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f), 0.5f);    // tmax short
-    rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, 1.0f));           // away
+    rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f));        // hits at t = 1
+    rays.add(glm::vec3(0.25f, 0.5f, -2.0f), glm::vec3(0.0f, 0.0f, 2.0f));        // from behind
+    rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f), 0.5f);  // tmax short
+    rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, 1.0f));         // away
 
     // Empty, and only unusable triangles: a root with two empty children, all rays miss.
     const glm::vec3 z(0.0f), x(1.0f, 0.0f, 0.0f);
-    for (const std::vector<glm::vec3>& input : {std::vector<glm::vec3>{}, std::vector<glm::vec3>{z, z, x, z, x, 2.0f * x}}) {
+    for (const std::vector<glm::vec3>& input :
+         {std::vector<glm::vec3>{}, std::vector<glm::vec3>{z, z, x, z, x, 2.0f * x}}) {
         std::size_t skipped = 99;
         Bvh bvh = build_bvh(input, {}, &skipped);
         EXPECT_EQ(skipped, input.size() / 3);
@@ -439,8 +437,8 @@ TEST(Bvh, EmptyAndSingleTriangle) {
     const std::size_t k = rays.o.size() - 4;
     EXPECT_EQ(r.prim(k), 0);
     EXPECT_FLOAT_EQ(r.hit[k].x, 1.0f);
-    EXPECT_FLOAT_EQ(r.hit[k].y, 0.25f);   // weight of v1 = x
-    EXPECT_FLOAT_EQ(r.hit[k].z, 0.5f);    // weight of v2 = y
+    EXPECT_FLOAT_EQ(r.hit[k].y, 0.25f);  // weight of v1 = x
+    EXPECT_FLOAT_EQ(r.hit[k].z, 0.5f);   // weight of v2 = y
     EXPECT_EQ(r.prim(k + 1), 0);
     EXPECT_FLOAT_EQ(r.hit[k + 1].x, 1.0f);
     EXPECT_EQ(r.prim(k + 2), -1);
@@ -467,7 +465,7 @@ TEST(Bvh, OffsetOriginAvoidsSelfHits) {
             float s = u01(rng), w = u01(rng) * (1.0f - s);
             glm::vec3 ng = glm::normalize(glm::cross(b - a, c - a));
             glm::vec3 d(u(rng), u(rng), u(rng));
-            if (glm::dot(d, ng) < 0.0f) ng = -ng;   // the side the ray leaves from
+            if (glm::dot(d, ng) < 0.0f) ng = -ng;  // the side the ray leaves from
             points.emplace_back(a + s * (b - a) + w * (c - a), 0.0f);
             normals.emplace_back(ng, 0.0f);
             dirs.push_back(d);

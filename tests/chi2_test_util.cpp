@@ -55,8 +55,7 @@ Chart make_chart(double theta_c, double phi_c, double w_theta, double w_phi, int
     // The horizon on an edge: move the nearest inner edge onto pi/2.
     int best = 1;
     for (int i = 1; i < n_theta; ++i)
-        if (std::abs(c.theta_edges[std::size_t(i)] - kPi / 2) <
-            std::abs(c.theta_edges[std::size_t(best)] - kPi / 2))
+        if (std::abs(c.theta_edges[std::size_t(i)] - kPi / 2) < std::abs(c.theta_edges[std::size_t(best)] - kPi / 2))
             best = i;
     c.theta_edges[std::size_t(best)] = kPi / 2;
     c.phi0 = phi_c - kPi;
@@ -95,8 +94,7 @@ Quadrature make_quadrature(const Chart& chart, int order) {
                     d.s[2] = float(ct);
                     d.s[3] = 0.0f;
                     q.dirs.push_back(d);
-                    q.weights.push_back(0.25 * (t1 - t0) * (p1 - p0) * gw[std::size_t(i)] *
-                                        gw[std::size_t(j)] * st);
+                    q.weights.push_back(0.25 * (t1 - t0) * (p1 - p0) * gw[std::size_t(i)] * gw[std::size_t(j)] * st);
                 }
             }
         }
@@ -110,8 +108,7 @@ std::vector<double> cell_masses(const Quadrature& q, const std::vector<float>& p
     return m;
 }
 
-Result test(const std::vector<std::uint32_t>& hist, const std::vector<double>& mass, std::uint64_t n,
-            double level) {
+Result test(const std::vector<std::uint32_t>& hist, const std::vector<double>& mass, std::uint64_t n, double level) {
     Result r;
     std::size_t cells = mass.size();
     r.refused = hist[cells];
@@ -154,8 +151,8 @@ Result test(const std::vector<std::uint32_t>& hist, const std::vector<double>& m
     r.ok = r.invalid == 0 && !impossible && r.dof >= 1 && r.p_value >= level;
     std::ostringstream s;
     s << "chi2 = " << r.chi2 << ", dof = " << r.dof << ", p = " << r.p_value << " (level " << level
-      << "), pdf mass = " << r.mass << ", refused = " << r.refused << "/" << n
-      << ", invalid = " << r.invalid << (impossible ? ", samples where the pdf is 0" : "");
+      << "), pdf mass = " << r.mass << ", refused = " << r.refused << "/" << n << ", invalid = " << r.invalid
+      << (impossible ? ", samples where the pdf is 0" : "");
     r.message = s.str();
     return r;
 }

@@ -36,8 +36,8 @@
 namespace facet::test::chi2 {
 
 struct Chart {
-    std::vector<double> theta_edges;   // n_theta + 1 edges in [0, pi]
-    std::vector<double> phi_edges;     // n_phi + 1 edges in [0, 2pi], relative to phi0
+    std::vector<double> theta_edges;  // n_theta + 1 edges in [0, pi]
+    std::vector<double> phi_edges;    // n_phi + 1 edges in [0, 2pi], relative to phi0
     double phi0 = 0.0;
     int n_theta() const { return int(theta_edges.size()) - 1; }
     int n_phi() const { return int(phi_edges.size()) - 1; }
@@ -46,20 +46,18 @@ struct Chart {
 
 // A chart about the axis (theta_c, phi_c) with widths w_theta, w_phi (radians; large
 // widths give nearly uniform cells).
-Chart make_chart(double theta_c, double phi_c, double w_theta, double w_phi, int n_theta = 64,
-                 int n_phi = 128);
+Chart make_chart(double theta_c, double phi_c, double w_theta, double w_phi, int n_theta = 64, int n_phi = 128);
 
 // A chart for a lobe about direction `axis` (unit, local frame) of angular widths w_theta
 // along theta and w_perp across it (w_phi = w_perp / sin(theta_c), at most pi). A
 // reflection lobe of roughness alpha seen from wo has w_theta ~ 2 alpha and w_perp ~
 // 2 alpha cos(theta_o): reflection about h scales tilts of h across the plane of
 // incidence by 2 (wo.h), which is small at grazing angles.
-Chart make_lobe_chart(const double axis[3], double w_theta, double w_perp, int n_theta = 64,
-                      int n_phi = 128);
+Chart make_lobe_chart(const double axis[3], double w_theta, double w_perp, int n_theta = 64, int n_phi = 128);
 
 struct Quadrature {
-    std::vector<cl_float4> dirs;    // order^2 points per cell, cell-major
-    std::vector<double> weights;    // solid-angle weight of each point
+    std::vector<cl_float4> dirs;  // order^2 points per cell, cell-major
+    std::vector<double> weights;  // solid-angle weight of each point
     int per_cell = 0;
 };
 
@@ -76,13 +74,12 @@ struct Result {
     double mass = 0.0;          // integral of the pdf over the sphere
     std::uint64_t refused = 0;  // samples the sampler refused
     std::uint64_t invalid = 0;
-    std::string message;        // a one-line summary
+    std::string message;  // a one-line summary
 };
 
 // `hist`: chart.cells() counts, then refused, then invalid; `mass`: cell_masses();
 // `n`: samples drawn; `level`: the per-test significance.
-Result test(const std::vector<std::uint32_t>& hist, const std::vector<double>& mass, std::uint64_t n,
-            double level);
+Result test(const std::vector<std::uint32_t>& hist, const std::vector<double>& mass, std::uint64_t n, double level);
 
 // Q(a, x) = Gamma(a, x) / Gamma(a), the regularised upper incomplete gamma function.
 double gamma_q(double a, double x);

@@ -60,7 +60,7 @@ TEST(DeviceScene, SpecularColourByLobe) {
     EXPECT_EQ(device_material(m).specular[0], 0.2f);
     m.specular_model = FC_SPECULAR_DIELECTRIC;
     EXPECT_EQ(device_material(m).specular[0], 0.3f);
-    m.specular_model = FC_SPECULAR_NONE;   // the (1 - F0) diffuse lobes read F0
+    m.specular_model = FC_SPECULAR_NONE;  // the (1 - F0) diffuse lobes read F0
     EXPECT_EQ(device_material(m).specular[0], 0.1f);
     EXPECT_EQ(device_material(m).sigma, m.sigma);
 }

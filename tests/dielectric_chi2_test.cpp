@@ -100,12 +100,12 @@ void chi_square_ndf(int ndf, const std::vector<double>& angles) {
                 failed += r.ok ? 0 : 1;
                 p_min = std::min(p_min, r.p_value);
                 p_max = std::max(p_max, r.p_value);
-                EXPECT_TRUE(r.ok) << "ndf " << ndf << " eta " << eta << " alpha " << alpha << " theta_o " << deg
-                                  << ": " << r.message;
+                EXPECT_TRUE(r.ok) << "ndf " << ndf << " eta " << eta << " alpha " << alpha << " theta_o " << deg << ": "
+                                  << r.message;
                 EXPECT_EQ(r.invalid, 0u);
             }
-    std::printf("[ chi2     ] dielectric ndf %d: %d configurations, %d failed, p in [%.3g, %.3g]\n", ndf, run,
-                failed, p_min, p_max);
+    std::printf("[ chi2     ] dielectric ndf %d: %d configurations, %d failed, p in [%.3g, %.3g]\n", ndf, run, failed,
+                p_min, p_max);
 }
 
 // theta_o = 45, 60 and 80 are beyond the critical angle (41.8) for eta = 1/1.5: total

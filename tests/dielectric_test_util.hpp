@@ -62,8 +62,7 @@ struct Albedo {
 };
 
 // dl_albedo: energy albedos of reflection and transmission from `samples` draws each.
-inline std::vector<Albedo> albedo(const std::vector<FcMaterial>& mats, const std::vector<cl_float4>& wo,
-                                  int samples) {
+inline std::vector<Albedo> albedo(const std::vector<FcMaterial>& mats, const std::vector<cl_float4>& wo, int samples) {
     using namespace mf;
     cl::Buffer mb = upload(mats), a = upload(wo);
     cl::Buffer out(context().context(), CL_MEM_WRITE_ONLY, 8 * mats.size() * sizeof(float));

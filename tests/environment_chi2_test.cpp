@@ -99,7 +99,7 @@ TEST(EnvironmentChi2, ChiSquareSunrise) {
     std::vector<std::string> warnings;
     EnvironmentMap e = load_environment_map(file.string(), glm::vec3(1.0f), test_rotation(), warnings);
     for (const std::string& w : warnings) std::printf("[ warning  ] %s\n", w.c_str());
-    int block = 1;   // the largest power of 2 that tiles the map in cells of >= 1/128 of its width
+    int block = 1;  // the largest power of 2 that tiles the map in cells of >= 1/128 of its width
     while (2 * block <= e.params.width / 128 && e.params.width % (2 * block) == 0 && e.params.height % (2 * block) == 0)
         block *= 2;
     auto r = chi_square(e, block, block, 14u);

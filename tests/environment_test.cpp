@@ -107,7 +107,7 @@ TEST(Environment, PdfIntegratesToOne) {
     set_environment_rotation(sky, test_rotation());
     EXPECT_NEAR(pdf_integral(sky), 1.0, 1e-4);
     EXPECT_NEAR(pdf_integral(smooth_env(256, 128, glm::mat3(1.0f))), 1.0, 1e-4);
-    EXPECT_NEAR(pdf_integral(smooth_env(64, 64, glm::mat3(1.0f))), 1.0, 1e-4);   // not 2:1
+    EXPECT_NEAR(pdf_integral(smooth_env(64, 64, glm::mat3(1.0f))), 1.0, 1e-4);  // not 2:1
     // mean luminance: the solid-angle mean of the radiance's luminance
     EXPECT_NEAR(constant_environment(glm::vec3(1.0f, 2.0f, 3.0f)).mean_luminance, 0.2126 + 1.4304 + 0.2166, 1e-6);
 }
@@ -130,8 +130,8 @@ TEST(Environment, RotationAndConvention) {
     EnvironmentMap id = environment_from_pixels(w, h, rgb, glm::vec3(1.0f), glm::mat3(1.0f), "ids", warnings);
     std::vector<cl_float4> probe = {{{0, 0, 1, 0}}, {{0, 1, 0, 0}}, {{-1, 0, 0, 0}}};
     std::vector<cl_float4> v = eval_batch(id, probe);
-    EXPECT_EQ(v[0].s[0], float(16 * w + w / 2 + 1));   // row h/2, column w/2 (the texel right of centre)
-    EXPECT_TRUE(v[1].s[0] >= 1.0f && v[1].s[0] <= float(w));   // row 0 (any column at the pole)
+    EXPECT_EQ(v[0].s[0], float(16 * w + w / 2 + 1));          // row h/2, column w/2 (the texel right of centre)
+    EXPECT_TRUE(v[1].s[0] >= 1.0f && v[1].s[0] <= float(w));  // row 0 (any column at the pole)
     EXPECT_EQ(v[2].s[0], float(16 * w + 3 * w / 4 + 1));
     // world -> map -> world and world -> (u, v) -> world
     DeviceEnv d(e);
@@ -164,7 +164,7 @@ TEST(Environment, SanitisesBadTexels) {
     rgb[3 * 20 + 2] = -INFINITY;
     rgb[3 * 40] = -2.0f;
     rgb[3 * 41 + 1] = -0.5f;
-    rgb[3 * 41 + 2] = -0.5f;   // same texel: counted once
+    rgb[3 * 41 + 2] = -0.5f;  // same texel: counted once
     write_exr(path, w, h, rgb);
     std::vector<std::string> warnings;
     EnvironmentMap e = load_environment_map(path, glm::vec3(1.0f), glm::mat3(1.0f), warnings);
@@ -175,14 +175,14 @@ TEST(Environment, SanitisesBadTexels) {
     EXPECT_NE(warnings[0].find("% of the map's energy changed"), std::string::npos);
     for (float v : e.texels) ASSERT_TRUE(std::isfinite(v) && v >= 0.0f);
     EXPECT_EQ(e.texels[4 * 40], 0.0f);
-    EXPECT_EQ(e.texels[4 * 40 + 1], 1.0f);   // only the bad channels change
+    EXPECT_EQ(e.texels[4 * 40 + 1], 1.0f);  // only the bad channels change
     check_consistency(e, 1u << 14, "sanitised");
 }
 
 TEST(Environment, OneByOneIsConstant) {
     std::vector<std::string> warnings;
-    EnvironmentMap one = environment_from_pixels(1, 1, {0.5f, 1.0f, 2.0f}, glm::vec3(2.0f), glm::mat3(1.0f), "1x1",
-                                                 warnings);
+    EnvironmentMap one =
+        environment_from_pixels(1, 1, {0.5f, 1.0f, 2.0f}, glm::vec3(2.0f), glm::mat3(1.0f), "1x1", warnings);
     EnvironmentMap con = constant_environment(glm::vec3(1.0f, 2.0f, 4.0f));
     EXPECT_TRUE(warnings.empty());
     std::vector<cl_float4> dirs = {{{0, 0, 1, 0}}, {{0, -1, 0, 0}}, {{0.6f, 0.0f, 0.8f, 0}}};
@@ -195,15 +195,15 @@ TEST(Environment, OneByOneIsConstant) {
 
 TEST(Environment, NonTwoToOneMaps) {
     std::vector<std::string> warnings;
-    EnvironmentMap e = environment_from_pixels(40, 40, smooth_map(40, 40), glm::vec3(1.0f), test_rotation(), "square",
-                                               warnings);
+    EnvironmentMap e =
+        environment_from_pixels(40, 40, smooth_map(40, 40), glm::vec3(1.0f), test_rotation(), "square", warnings);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("square: the map is 40x40, not 2:1: it is stretched onto the sphere"),
               std::string::npos);
     EXPECT_LT(check_consistency(e, 1u << 16, "square"), 1e-3);
     EXPECT_NEAR(pdf_integral(e), 1.0, 1e-4);
-    EnvironmentMap tall = environment_from_pixels(3, 7, smooth_map(3, 7), glm::vec3(1.0f), glm::mat3(1.0f), "tall",
-                                                  warnings);
+    EnvironmentMap tall =
+        environment_from_pixels(3, 7, smooth_map(3, 7), glm::vec3(1.0f), glm::mat3(1.0f), "tall", warnings);
     EXPECT_NEAR(pdf_integral(tall), 1.0, 1e-4);
 }
 
@@ -224,8 +224,8 @@ TEST(Environment, BlackMapLightsNothing) {
     // a black 1x1 map and a zero scale are black too
     environment_from_pixels(1, 1, {0.0f, 0.0f, 0.0f}, glm::vec3(1.0f), glm::mat3(1.0f), "black1", warnings);
     EXPECT_EQ(warnings.back(), "black1: the map is black: it lights nothing");
-    EnvironmentMap zero = environment_from_pixels(8, 4, smooth_map(8, 4), glm::vec3(0.0f), glm::mat3(1.0f), "zero",
-                                                  warnings);
+    EnvironmentMap zero =
+        environment_from_pixels(8, 4, smooth_map(8, 4), glm::vec3(0.0f), glm::mat3(1.0f), "zero", warnings);
     EXPECT_EQ(sample_batch(zero, 64, 1u).dir_pdf[0].s[3], 0.0f);
     EXPECT_EQ(sample_batch(constant_environment(glm::vec3(0.0f)), 64, 1u).dir_pdf[0].s[3], 0.0f);
     EXPECT_THROW(environment_from_pixels(8, 4, smooth_map(8, 4), glm::vec3(-1.0f), glm::mat3(1.0f), "neg", warnings),

@@ -109,14 +109,16 @@ TEST(FilmState, RefusesAnotherSceneOrSettings) {
     Scene other = scene;
     other.camera.eye.x += 0.01f;
     EXPECT_NE(film_scene_hash(other), hash);
-    EXPECT_NE(error_of([&] { check_film_matches(film, "f.film", other, film_scene_hash(other)); }).find("another scene"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of([&] { check_film_matches(film, "f.film", other, film_scene_hash(other)); }).find("another scene"),
+        std::string::npos);
     other = scene;
     other.materials[0].diffuse[0] = 0.5f;
     EXPECT_NE(film_scene_hash(other), hash);
-    for (auto change : {+[](RenderSettings& s) { s.width = 7; }, +[](RenderSettings& s) { s.seed = 3; },
-                        +[](RenderSettings& s) { s.max_depth = 2; }, +[](RenderSettings& s) { s.strategy = FC_STRATEGY_BSDF; },
-                        +[](RenderSettings& s) { s.sampler = FC_SAMPLER_INDEPENDENT; }}) {
+    for (auto change :
+         {+[](RenderSettings& s) { s.width = 7; }, +[](RenderSettings& s) { s.seed = 3; },
+          +[](RenderSettings& s) { s.max_depth = 2; }, +[](RenderSettings& s) { s.strategy = FC_STRATEGY_BSDF; },
+          +[](RenderSettings& s) { s.sampler = FC_SAMPLER_INDEPENDENT; }}) {
         Scene changed = scene;
         change(changed.settings);
         const std::string msg = error_of([&] { check_film_matches(film, "f.film", changed, hash); });

@@ -81,8 +81,8 @@ TEST(GlassRender, RoughGlassSphereInWhiteEnvironment) {
 TEST(GlassRender, IndexMatchedGlassSphereInWhiteEnvironment) {
     for (float alpha : {0.0f, 0.1f, 0.4f}) {
         Furnace f = glass_sphere_in_white(1.0f, alpha, 16);
-        std::printf("[ furnace  ] index-matched sphere alpha %.2g: mean %.6f, worst pixel error %.3g\n",
-                    double(alpha), f.mean, f.worst);
+        std::printf("[ furnace  ] index-matched sphere alpha %.2g: mean %.6f, worst pixel error %.3g\n", double(alpha),
+                    f.mean, f.worst);
         EXPECT_EQ(f.rejected, 0.0) << "alpha " << alpha;
         EXPECT_LT(f.worst, 0.01) << "alpha " << alpha << ": every pixel within 1% of the environment";
     }

@@ -30,7 +30,8 @@ using test::TempDir;
 
 namespace fs = std::filesystem;
 
-const std::string kQuad = R"("shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]}])";
+const std::string kQuad =
+    R"("shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]}])";
 
 std::string scene(const TempDir& d, const std::string& name, const std::string& body) {
     return d.write(name, "{\n" + body + "\n}\n");
@@ -40,16 +41,26 @@ std::string scene(const TempDir& d, const std::string& name, const std::string& 
 
 TEST(InputLimits, RadianceBeyondTheLimitIsRefused) {
     TempDir d;
-    expect_error([&] { load_scene(scene(d, "e.json", R"("materials": {"lamp": {"emission": [3e38, 1, 1]}},
-        "shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0], "material": "lamp"}])")); },
-                 {"e.json", "lamp", "emission", "1e+30"});
-    expect_error([&] { load_scene(scene(d, "p.json", R"("lights": [{"type": "point", "position": [0, 1, 0], "color": [1e37, 1e37, 1e37]}],)" + kQuad)); },
-                 {"p.json", "lights[0].color", "1e+30"});
-    expect_error([&] { load_scene(scene(d, "c.json", R"("environment": {"constant": [1e20, 1, 1], "scale": 1e20},)" + kQuad)); },
-                 {"c.json", "environment.constant", "1e+30"});
+    expect_error(
+        [&] {
+            load_scene(scene(d, "e.json", R"("materials": {"lamp": {"emission": [3e38, 1, 1]}},
+        "shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0], "material": "lamp"}])"));
+        },
+        {"e.json", "lamp", "emission", "1e+30"});
+    expect_error(
+        [&] {
+            load_scene(
+                scene(d, "p.json",
+                      R"("lights": [{"type": "point", "position": [0, 1, 0], "color": [1e37, 1e37, 1e37]}],)" + kQuad));
+        },
+        {"p.json", "lights[0].color", "1e+30"});
+    expect_error(
+        [&] { load_scene(scene(d, "c.json", R"("environment": {"constant": [1e20, 1, 1], "scale": 1e20},)" + kQuad)); },
+        {"c.json", "environment.constant", "1e+30"});
     d.write("m.mtl", "newmtl hot\nKe 3e38 3e38 3e38\n");
-    expect_error([&] { load_scene(d.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl hot\nf 1 2 3\n")); },
-                 {"m.obj", "hot", "emission"});
+    expect_error(
+        [&] { load_scene(d.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl hot\nf 1 2 3\n")); },
+        {"m.obj", "hot", "emission"});
 }
 
 // Built in code (past the reader's limits): an emitter of 3e38 and a point light of 1e37
@@ -117,7 +128,7 @@ TEST(InputLimits, HeaderClaimingHugeImageIsRefusedBeforeAllocating) {
     const std::string tag = std::string("dataWindow\0box2i\0", 17);
     for (std::size_t at = bytes.find(tag); at != std::string::npos; at = bytes.find(tag, at + 1)) {
         const std::size_t value = at + tag.size() + 4;
-        for (std::size_t i : {value + 8, value + 12}) {   // xMax, yMax = 15999
+        for (std::size_t i : {value + 8, value + 12}) {  // xMax, yMax = 15999
             const std::uint32_t v = 15999;
             for (int b = 0; b < 4; ++b) bytes[i + std::size_t(b)] = char((v >> (8 * b)) & 0xff);
         }
@@ -158,7 +169,7 @@ TEST(InputLimits, UnreadableFilesSayWhy) {
     expect_error([&] { load_scene(file + "/scene.json"); }, {"scene.json", "Not a directory"});
     expect_error([&] { load_scene(d.path("missing.json")); }, {"missing.json", "no such file"});
     expect_error([&] { read_image(d.path("missing.exr")); }, {"missing.exr", "no such file"});
-    if (::geteuid() != 0) {   // root reads anything
+    if (::geteuid() != 0) {  // root reads anything
         const std::string locked = scene(d, "locked.json", kQuad);
         ::chmod(locked.c_str(), 0);
         expect_error([&] { load_scene(locked); }, {locked, "Permission denied"});
@@ -188,7 +199,8 @@ TEST(InputLimits, DuplicatesAndEmptyLibrariesWarn) {
 
     for (const char* body : {"", "this is not an MTL file\n\x01\x02\n"}) {
         d.write("bad.mtl", body);
-        const Scene c = load_scene(d.write("bad.obj", "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n"));
+        const Scene c =
+            load_scene(d.write("bad.obj", "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n"));
         EXPECT_TRUE(contains(c.warnings, "defines no material")) << "body '" << body << "'";
         EXPECT_TRUE(contains(c.warnings, "'usemtl red' names no material")) << "body '" << body << "'";
     }

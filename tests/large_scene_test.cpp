@@ -49,11 +49,11 @@ std::vector<float> lit_wall(float s) {
     Material wall = default_material();
     wall.diffuse = glm::vec3(0.8f);
     const int w = add_material(scene, wall, "wall");
-    add_quad(scene, s * glm::vec3(0.0f, -1.0f, -1.0f), s * glm::vec3(0.0f, 2.0f, 0.0f),
-             s * glm::vec3(0.0f, 0.0f, 2.0f), w);
+    add_quad(scene, s * glm::vec3(0.0f, -1.0f, -1.0f), s * glm::vec3(0.0f, 2.0f, 0.0f), s * glm::vec3(0.0f, 0.0f, 2.0f),
+             w);
     // The emitter faces down: cross(e1, e2) = cross(+x, +z) = -y.
-    add_quad(scene, s * glm::vec3(0.0f, 2.0f, -1.0f), s * glm::vec3(2.0f, 0.0f, 0.0f),
-             s * glm::vec3(0.0f, 0.0f, 2.0f), emitter(scene, 5.0f));
+    add_quad(scene, s * glm::vec3(0.0f, 2.0f, -1.0f), s * glm::vec3(2.0f, 0.0f, 0.0f), s * glm::vec3(0.0f, 0.0f, 2.0f),
+             emitter(scene, 5.0f));
     build_lights(scene);
     scene.camera.eye = s * glm::vec3(3.0f, 0.0f, 0.0f);
     scene.camera.target = glm::vec3(0.0f);

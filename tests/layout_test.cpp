@@ -15,11 +15,11 @@ namespace {
 TEST(Layout, DeviceMatchesHost) {
     std::vector<int> host;
     std::vector<std::string> names;
-#define FC_SIZE(T)                 \
+#define FC_SIZE(T)                  \
     host.push_back(int(sizeof(T))); \
     names.push_back("sizeof(" #T ")");
-#define FC_OFFSET(T, f)                      \
-    host.push_back(int(offsetof(T, f)));     \
+#define FC_OFFSET(T, f)                  \
+    host.push_back(int(offsetof(T, f))); \
     names.push_back("offsetof(" #T ", " #f ")");
     FC_LAYOUT_STRUCTS(FC_SIZE)
     FC_LAYOUT_FIELDS(FC_OFFSET)

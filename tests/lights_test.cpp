@@ -56,7 +56,7 @@ TEST(Lights, PointLightAbovePlane) {
     light.position = glm::vec3(0.3f, 1.5f, -0.2f);
     light.color = glm::vec3(2.0f, 1.0f, 0.5f);
     scene.punctual_lights.push_back(light);
-    std::vector<float> img = render(scene, 256);   // pixel jitter averages the footprint
+    std::vector<float> img = render(scene, 256);  // pixel jitter averages the footprint
     for (auto [i, j] : {std::pair{32, 32}, std::pair{10, 50}, std::pair{60, 5}, std::pair{40, 20}}) {
         glm::vec3 p = plane_point(n, i, j);
         glm::vec3 to = light.position - p;
@@ -145,7 +145,7 @@ TEST(Lights, RoughConductorInEnvironmentReflectsAtMostL) {
     scene.environment = constant_environment(glm::vec3(1.0f));
     scene.camera.eye = glm::vec3(0, 0, 4);
     scene.camera.target = glm::vec3(0.0f);
-    scene.camera.fov_y_degrees = 20.0f;   // only the sphere in view
+    scene.camera.fov_y_degrees = 20.0f;  // only the sphere in view
     scene.settings.width = scene.settings.height = 24;
     scene.settings.max_depth = 64;
     std::vector<float> img = render(scene, 64);

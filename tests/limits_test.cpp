@@ -23,7 +23,8 @@ using test::contains;
 using test::expect_error;
 using test::TempDir;
 
-const std::string kQuad = R"("shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]}])";
+const std::string kQuad =
+    R"("shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]}])";
 
 std::string scene(const TempDir& d, const std::string& name, const std::string& body) {
     return d.write(name, "{\n" + body + "\n}\n");
@@ -33,12 +34,17 @@ std::string scene(const TempDir& d, const std::string& name, const std::string& 
 TEST(Limits, RenderSettingsOutOfRange) {
     TempDir d;
     const char* cases[][2] = {
-        {R"("render": {"width": -5})", "render.width"},      {R"("render": {"width": 1e9})", "render.width"},
-        {R"("render": {"height": 0})", "render.height"},     {R"("render": {"spp": -1})", "render.spp"},
-        {R"("render": {"spp": 1e9})", "render.spp"},         {R"("render": {"max_depth": 0})", "render.max_depth"},
-        {R"("render": {"max_depth": -3})", "render.max_depth"}, {R"("render": {"rr_depth": -1})", "render.rr_depth"},
-        {R"("render": {"seed": -1})", "render.seed"},        {R"("render": {"seed": 1e12})", "render.seed"},
-        {R"("render": {"width": 1e400})", "render.width"},   // the parser overflows it to inf: "must be finite"
+        {R"("render": {"width": -5})", "render.width"},
+        {R"("render": {"width": 1e9})", "render.width"},
+        {R"("render": {"height": 0})", "render.height"},
+        {R"("render": {"spp": -1})", "render.spp"},
+        {R"("render": {"spp": 1e9})", "render.spp"},
+        {R"("render": {"max_depth": 0})", "render.max_depth"},
+        {R"("render": {"max_depth": -3})", "render.max_depth"},
+        {R"("render": {"rr_depth": -1})", "render.rr_depth"},
+        {R"("render": {"seed": -1})", "render.seed"},
+        {R"("render": {"seed": 1e12})", "render.seed"},
+        {R"("render": {"width": 1e400})", "render.width"},  // the parser overflows it to inf: "must be finite"
     };
     int i = 0;
     for (const auto& c : cases) {
@@ -55,8 +61,9 @@ TEST(Limits, NumbersBeyondFloatRange) {
                  {"a.json: camera.eye[2]", "32-bit float"});
     expect_error(
         [&] {
-            load_scene(scene(d, "b.json",
-                             R"("shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [-1e300, 0, 0], "edge2": [0, 1, 0]}])"));
+            load_scene(scene(
+                d, "b.json",
+                R"("shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [-1e300, 0, 0], "edge2": [0, 1, 0]}])"));
         },
         {"b.json: shapes[0].edge1[0]", "32-bit float"});
 }
@@ -70,25 +77,43 @@ TEST(Limits, GeometryBeyondTheFloatRange) {
         {"m.json", "triangle 0", "finite and within"});
     expect_error(
         [&] {
-            load_scene(scene(d, "q.json",
-                             R"("shapes": [{"type": "quad", "corner": [3e38, 0, 0], "edge1": [3e38, 0, 0], "edge2": [0, 1, 0]}])"));
+            load_scene(scene(
+                d, "q.json",
+                R"("shapes": [{"type": "quad", "corner": [3e38, 0, 0], "edge1": [3e38, 0, 0], "edge2": [0, 1, 0]}])"));
         },
         {"q.json", "triangle", "finite and within"});
     expect_error([&] { load_scene(d.write("big.obj", "v 0 0 0\nv 3e38 0 0\nv 0 1 0\nf 1 2 3\n")); },
                  {"big.obj", "triangle 0"});
-    expect_error([&] { load_scene(scene(d, "c.json", R"("camera": {"eye": [3e38, 0, 0], "target": [-3e38, 0, 0]},)" + kQuad)); },
-                 {"c.json: camera", "too far apart"});
+    expect_error(
+        [&] { load_scene(scene(d, "c.json", R"("camera": {"eye": [3e38, 0, 0], "target": [-3e38, 0, 0]},)" + kQuad)); },
+        {"c.json: camera", "too far apart"});
 }
 
 // Punctual lights: a direction that cannot be normalised, a position beyond the scene limit.
 TEST(Limits, PunctualLights) {
     TempDir d;
-    expect_error([&] { load_scene(scene(d, "l.json", R"("lights": [{"type": "directional", "direction": [3e38, 3e38, 0], "color": [1, 1, 1]}],)" + kQuad)); },
-                 {"l.json: lights[0].direction", "unit vector"});
-    expect_error([&] { load_scene(scene(d, "p.json", R"("lights": [{"type": "point", "position": [0, 1e30, 0], "color": [1, 1, 1]}],)" + kQuad)); },
-                 {"p.json: lights[0].position", "1e18"});
-    expect_error([&] { load_scene(scene(d, "z.json", R"("lights": [{"type": "spot", "position": [0, 1, 0], "direction": [0, 0, 0], "color": [1, 1, 1]}],)" + kQuad)); },
-                 {"z.json: lights[0].direction", "zero"});
+    expect_error(
+        [&] {
+            load_scene(scene(
+                d, "l.json",
+                R"("lights": [{"type": "directional", "direction": [3e38, 3e38, 0], "color": [1, 1, 1]}],)" + kQuad));
+        },
+        {"l.json: lights[0].direction", "unit vector"});
+    expect_error(
+        [&] {
+            load_scene(
+                scene(d, "p.json",
+                      R"("lights": [{"type": "point", "position": [0, 1e30, 0], "color": [1, 1, 1]}],)" + kQuad));
+        },
+        {"p.json: lights[0].position", "1e18"});
+    expect_error(
+        [&] {
+            load_scene(scene(
+                d, "z.json",
+                R"("lights": [{"type": "spot", "position": [0, 1, 0], "direction": [0, 0, 0], "color": [1, 1, 1]}],)" +
+                    kQuad));
+        },
+        {"z.json: lights[0].direction", "zero"});
 }
 
 // A camera whose up vector is zero or along the view direction has no frame.
@@ -96,11 +121,15 @@ TEST(Limits, DegenerateCamera) {
     TempDir d;
     expect_error([&] { load_scene(scene(d, "u.json", R"("camera": {"up": [0, 0, 0]},)" + kQuad)); }, {"camera.up"});
     expect_error(
-        [&] { load_scene(scene(d, "v.json", R"("camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 0, 2]},)" + kQuad)); },
+        [&] {
+            load_scene(
+                scene(d, "v.json", R"("camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 0, 2]},)" + kQuad));
+        },
         {"camera.up"});
     expect_error([&] { load_scene(scene(d, "f.json", R"("camera": {"fov": 180},)" + kQuad)); }, {"camera.fov"});
-    expect_error([&] { load_scene(scene(d, "h.json", R"("camera": {"projection": "orthographic", "height": 0},)" + kQuad)); },
-                 {"camera.height"});
+    expect_error(
+        [&] { load_scene(scene(d, "h.json", R"("camera": {"projection": "orthographic", "height": 0},)" + kQuad)); },
+        {"camera.height"});
 }
 
 // Negative, zero or out-of-range material parameters, named by their key.
@@ -135,7 +164,8 @@ TEST(Limits, MaterialParameters) {
 TEST(Limits, MtlParameters) {
     TempDir d;
     d.write("t.obj", "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
-    const char* cases[] = {"Kd -0.5 0.5 0.5", "Kd nan 0 0", "Ke inf 1 1", "Ns -1", "Ni 0", "Pr 2", "d nan", "illum 1.5"};
+    const char* cases[] = {"Kd -0.5 0.5 0.5", "Kd nan 0 0", "Ke inf 1 1", "Ns -1", "Ni 0", "Pr 2",
+                           "d nan",           "illum 1.5"};
     for (const char* c : cases) {
         SCOPED_TRACE(c);
         d.write("t.mtl", std::string("newmtl a\n") + c + "\n");
@@ -155,18 +185,22 @@ TEST(Limits, MtlParameters) {
 // a count; a mesh of nothing but zero-area triangles is an error; NaN normals are replaced.
 TEST(Limits, ObjDegenerateAndNonFinite) {
     TempDir d;
-    expect_error([&] { load_scene(d.write("n.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n")); }, {"n.obj:2", "finite"});
-    expect_error([&] { load_scene(d.write("i.obj", "v 0 0 0\nv 1 0 0\nv 0 -inf 0\nf 1 2 3\n")); }, {"i.obj:3", "finite"});
-    Scene s = load_scene(d.write("z.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\n"
-                                          "f 1 2 3\nf 1 2 4\nf 1 1 3\n"));
-    EXPECT_EQ(s.triangle_count(), 1u + 2u);   // the kept triangle, and the default light's quad
+    expect_error([&] { load_scene(d.write("n.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n")); },
+                 {"n.obj:2", "finite"});
+    expect_error([&] { load_scene(d.write("i.obj", "v 0 0 0\nv 1 0 0\nv 0 -inf 0\nf 1 2 3\n")); },
+                 {"i.obj:3", "finite"});
+    Scene s = load_scene(d.write("z.obj",
+                                 "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\n"
+                                 "f 1 2 3\nf 1 2 4\nf 1 1 3\n"));
+    EXPECT_EQ(s.triangle_count(), 1u + 2u);  // the kept triangle, and the default light's quad
     EXPECT_TRUE(contains(s.warnings, "2 of 3 triangles have zero area and were dropped"));
     expect_error([&] { load_scene(d.write("all.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\nf 3 2 1\n")); },
                  {"all.obj", "every face has zero area"});
     // A form feed is not a blank to tinyobjloader: "vn\f0 0 1" is no normal, and an index
     // naming it is out of range (found by fuzz_obj_mtl: a heap overflow before the fix).
-    expect_error([&] { load_scene(d.write("ff.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn\f0 0 1\nf 1//2 2//2 3//2\n")); },
-                 {"ff.obj:6", "normal index 2 is out of range"});
+    expect_error(
+        [&] { load_scene(d.write("ff.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn\f0 0 1\nf 1//2 2//2 3//2\n")); },
+        {"ff.obj:6", "normal index 2 is out of range"});
     Scene nn = load_scene(d.write("vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn nan nan nan\nf 1//1 2//1 3//1\n"));
     for (float c : nn.shading[0].n0) EXPECT_TRUE(std::isfinite(c));
     EXPECT_FLOAT_EQ(nn.shading[0].n0[2], 1.0f);
@@ -201,18 +235,23 @@ std::string box(std::int32_t x0, std::int32_t y0, std::int32_t x1, std::int32_t 
 
 TEST(Limits, CorruptExrHeaderIsRejectedBeforeReading) {
     TempDir d;
-    const std::string attr = d.write("attr.exr", exr_header(std::string("capDate\0string\0", 15) + le32(1751318547) + "xyz"));
+    const std::string attr =
+        d.write("attr.exr", exr_header(std::string("capDate\0string\0", 15) + le32(1751318547) + "xyz"));
     expect_error([&] { read_image(attr); }, {"attr.exr", "attribute 'capDate' claims 1751318547 bytes", "corrupt"});
     const std::string window = d.write("window.exr", exr_header(box(0, 0, 99999, 99999)));
     expect_error([&] { read_image(window); }, {"window.exr", "100000x100000", "2^28"});
-    const std::string lines = d.write("lines.exr", exr_header(box(0, 0, 9, 1999999) + std::string("compression\0compression\0", 24) + le32(1) + std::string(1, '\0')));
+    const std::string lines =
+        d.write("lines.exr", exr_header(box(0, 0, 9, 1999999) + std::string("compression\0compression\0", 24) +
+                                        le32(1) + std::string(1, '\0')));
     expect_error([&] { read_image(lines); }, {"lines.exr", "2000000 scanlines", "offset table"});
     // The stored finding itself, through the environment loader.
     std::vector<std::string> warnings;
-    expect_error([&] {
-        load_environment_map(std::string(FACET_FUZZ_DIR) + "/regressions/env_map/exr_attribute_size_oom.exr", glm::vec3(1.0f),
-                             glm::mat3(1.0f), warnings);
-    }, {"exr_attribute_size_oom.exr", "attribute"});
+    expect_error(
+        [&] {
+            load_environment_map(std::string(FACET_FUZZ_DIR) + "/regressions/env_map/exr_attribute_size_oom.exr",
+                                 glm::vec3(1.0f), glm::mat3(1.0f), warnings);
+        },
+        {"exr_attribute_size_oom.exr", "attribute"});
     // A valid EXR still reads.
     write_exr(d.path("ok.exr"), 4, 2, std::vector<float>(24, 0.5f));
     EXPECT_EQ(read_image(d.path("ok.exr")).width, 4);
@@ -221,10 +260,14 @@ TEST(Limits, CorruptExrHeaderIsRejectedBeforeReading) {
 // Environment scale: negative or non-finite is rejected.
 TEST(Limits, EnvironmentScale) {
     TempDir d;
-    expect_error([&] { load_scene(scene(d, "e.json", R"("environment": {"constant": [1, 1, 1], "scale": -2},)" + kQuad)); },
-                 {"e.json: environment.scale"});
-    expect_error([&] { load_scene(scene(d, "f.json", R"("environment": {"constant": [1, 1, 1], "scale": [1, -1, 1]},)" + kQuad)); },
-                 {"f.json: environment.scale"});
+    expect_error(
+        [&] { load_scene(scene(d, "e.json", R"("environment": {"constant": [1, 1, 1], "scale": -2},)" + kQuad)); },
+        {"e.json: environment.scale"});
+    expect_error(
+        [&] {
+            load_scene(scene(d, "f.json", R"("environment": {"constant": [1, 1, 1], "scale": [1, -1, 1]},)" + kQuad));
+        },
+        {"f.json: environment.scale"});
     expect_error([&] { load_scene(scene(d, "g.json", R"("environment": {"sky": {"width": 100000}},)" + kQuad)); },
                  {"g.json: environment.sky.width"});
 }
@@ -235,16 +278,17 @@ TEST(Limits, OutOfResourcesMessage) {
         expect_error([&] { cl_call("rendering a pass", [&] { throw cl::Error(code, "clEnqueueNDRangeKernel"); }); },
                      {cl_error_name(code), "clEnqueueNDRangeKernel", "rendering a pass", "smaller image or scene"});
     }
-    expect_error([&] { cl_call("uploading the scene", [] { throw cl::Error(CL_INVALID_BUFFER_SIZE, "clCreateBuffer"); }); },
-                 {"CL_INVALID_BUFFER_SIZE", "clCreateBuffer", "uploading the scene"});
+    expect_error(
+        [&] { cl_call("uploading the scene", [] { throw cl::Error(CL_INVALID_BUFFER_SIZE, "clCreateBuffer"); }); },
+        {"CL_INVALID_BUFFER_SIZE", "clCreateBuffer", "uploading the scene"});
 }
 
 // A kernel that does not build: the message says so, with the OpenCL status, the device,
 // the options (no fast-math flags) and the compiler's log naming the error.
 TEST(Limits, KernelBuildFailureIsReportedWithItsLog) {
     expect_error([] { build_program(test::context(), "kernels/integrator/path.cl", {"this is not OpenCL C;"}); },
-                 {"kernel build failed", "CL_BUILD_PROGRAM_FAILURE", "kernels/integrator/path.cl", "device:",
-                  "options: -cl-std=CL1.2", "--- build log ---", "error"});
+                 {"kernel build failed", "CL_BUILD_PROGRAM_FAILURE", "kernels/integrator/path.cl",
+                  "device:", "options: -cl-std=CL1.2", "--- build log ---", "error"});
 }
 
 }  // namespace

@@ -68,8 +68,8 @@ TEST(Material, PresetsFollowTheTable) {
 }
 
 TEST(Material, EnumNameTables) {
-    const MaterialEnum kinds[] = {MaterialEnum::Diffuse, MaterialEnum::Specular, MaterialEnum::Ndf,
-                                  MaterialEnum::Geometry, MaterialEnum::Fresnel, MaterialEnum::Sampling};
+    const MaterialEnum kinds[] = {MaterialEnum::Diffuse,  MaterialEnum::Specular, MaterialEnum::Ndf,
+                                  MaterialEnum::Geometry, MaterialEnum::Fresnel,  MaterialEnum::Sampling};
     const int counts[] = {FC_DIFFUSE_COUNT, FC_SPECULAR_COUNT, FC_NDF_COUNT, FC_G_COUNT, FC_FRESNEL_COUNT, 2};
     for (std::size_t k = 0; k < std::size(kinds); ++k) {
         const auto& names = enum_names(kinds[k]);
@@ -106,7 +106,7 @@ TEST(Material, RoughnessShininessConversions) {
 TEST(Material, F0Presets) {
     struct Row {
         const char* name;
-        float lin[3], srgb[3];   // the two columns of the table
+        float lin[3], srgb[3];  // the two columns of the table
     };
     const Row rows[] = {{"water", {0.02f, 0.02f, 0.02f}, {0.15f, 0.15f, 0.15f}},
                         {"plastic_low", {0.03f, 0.03f, 0.03f}, {0.21f, 0.21f, 0.21f}},

@@ -26,7 +26,7 @@ constexpr float kAlphas[] = {0.002f, 0.01f, 0.05f, 0.1f, 0.3f, 0.5f, 1.0f};
 constexpr float kAniso[][2] = {{0.05f, 0.3f}, {0.3f, 0.05f}};
 
 // Every chi-square test of this file, for the Sidak correction.
-constexpr int kNdfGrid = 2 * (7 + 2) * 6;                  // per NDF: sampling x alphas x angles
+constexpr int kNdfGrid = 2 * (7 + 2) * 6;  // per NDF: sampling x alphas x angles
 constexpr int kChi2Tests = 2 * kNdfGrid + 5 * 6 + 36 + 11 * 4;
 const double kLevel = test::chi2::sidak(0.01, kChi2Tests);
 
@@ -43,8 +43,8 @@ void chi_square_ndf(int ndf) {
                                     1000u + unsigned(run));
                 ++run;
                 failed += r.ok ? 0 : 1;
-                EXPECT_TRUE(r.ok) << "ndf " << ndf << " sampling " << sampling << " alpha (" << ax << ", "
-                                  << ay << ") theta_o " << deg << ": " << r.message;
+                EXPECT_TRUE(r.ok) << "ndf " << ndf << " sampling " << sampling << " alpha (" << ax << ", " << ay
+                                  << ") theta_o " << deg << ": " << r.message;
             }
     std::printf("[ chi2     ] ndf %d: %d configurations, %d failed\n", ndf, run, failed);
 }
@@ -76,14 +76,14 @@ TEST(MicrofacetChi2, ChiSquareNormals) {
                     FcMaterial m = microfacet_material(ndf, sampling, ax, ay);
                     Vec3 wo = direction(deg, 0.7);
                     auto r = chi_square(m, wo, kModeNdf, Vec3{0, 0, 1}, double(std::min(ax, ay)), kLevel, 3000u);
-                    EXPECT_TRUE(r.ok) << "ndf " << ndf << " sampling " << sampling << " alpha (" << ax
-                                      << ", " << ay << ") theta_o " << deg << ": " << r.message;
+                    EXPECT_TRUE(r.ok) << "ndf " << ndf << " sampling " << sampling << " alpha (" << ax << ", " << ay
+                                      << ") theta_o " << deg << ": " << r.message;
                 }
 }
 
 // The other lobes and mixtures, through bsdf_sample / bsdf_pdf.
 TEST(MicrofacetChi2, ChiSquareBsdf) {
-    std::vector<std::pair<FcMaterial, double>> cases;   // material, lobe width
+    std::vector<std::pair<FcMaterial, double>> cases;  // material, lobe width
     auto add = [&](FcMaterial m, double w) { cases.emplace_back(m, w); };
     for (int model : {FC_SPECULAR_BLINN_PHONG, FC_SPECULAR_BLINN_PHONG_NORMALIZED})
         for (float e : {10.0f, 1000.0f}) {
@@ -99,8 +99,8 @@ TEST(MicrofacetChi2, ChiSquareBsdf) {
     }
     add(lobe_material(FC_DIFFUSE_LAMBERT, FC_SPECULAR_NONE), 10.0);
     add(lobe_material(FC_DIFFUSE_OREN_NAYAR, FC_SPECULAR_NONE), 10.0);
-    for (auto [ndf, alpha] : {std::pair{FC_NDF_GGX, 0.1f}, std::pair{FC_NDF_BECKMANN, 0.02f},
-                              std::pair{FC_NDF_GGX, 0.5f}}) {
+    for (auto [ndf, alpha] :
+         {std::pair{FC_NDF_GGX, 0.1f}, std::pair{FC_NDF_BECKMANN, 0.02f}, std::pair{FC_NDF_GGX, 0.5f}}) {
         FcMaterial m = microfacet_material(ndf, FC_SAMPLE_VISIBLE, alpha, alpha);
         m.diffuse_model = FC_DIFFUSE_LAMBERT_1MF0;
         m.fresnel = FC_FRESNEL_SCHLICK;
@@ -110,11 +110,10 @@ TEST(MicrofacetChi2, ChiSquareBsdf) {
     for (std::size_t c = 0; c < cases.size(); ++c)
         for (double deg : {0.0, 30.0, 60.0, 85.0}) {
             Vec3 wo = direction(deg, 0.7);
-            auto r = chi_square(cases[c].first, wo, kModeBsdf, mirror(wo), cases[c].second, kLevel,
-                                4000u + unsigned(c));
-            EXPECT_TRUE(r.ok) << "case " << c << " (diffuse " << cases[c].first.diffuse_model
-                              << ", specular " << cases[c].first.specular_model << ") theta_o " << deg
-                              << ": " << r.message;
+            auto r =
+                chi_square(cases[c].first, wo, kModeBsdf, mirror(wo), cases[c].second, kLevel, 4000u + unsigned(c));
+            EXPECT_TRUE(r.ok) << "case " << c << " (diffuse " << cases[c].first.diffuse_model << ", specular "
+                              << cases[c].first.specular_model << ") theta_o " << deg << ": " << r.message;
         }
 }
 

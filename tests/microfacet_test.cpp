@@ -27,7 +27,7 @@ double ref_lambda(const FcMaterial& m, const double w[3]) {
     double ax = m.alpha_x, ay = m.alpha_y;
     if (m.ndf == FC_NDF_BLINN_PHONG) ax = ay = std::sqrt(2.0 / (double(m.exponent_x) + 2.0));
     double s = std::hypot(ax * w[0], ay * w[1]);
-    if (m.ndf == FC_NDF_GGX) return 0.5 * (std::sqrt(1.0 + s * s / (w[2] * w[2])) - 1.0);   // Heitz 2014, eq. 86
+    if (m.ndf == FC_NDF_GGX) return 0.5 * (std::sqrt(1.0 + s * s / (w[2] * w[2])) - 1.0);  // Heitz 2014, eq. 86
     double a = w[2] / s;                                                                   // eq. 83
     return 0.5 * (std::erf(a) - 1.0) + std::exp(-a * a) / (2.0 * a * std::sqrt(std::numbers::pi));
 }
@@ -41,7 +41,7 @@ void reference_geometry(const FcMaterial& m, const cl_float4& o, const cl_float4
     double lo = ref_lambda(m, wo), li = ref_lambda(m, wi);
     double ax = m.alpha_x, ay = m.alpha_y;
     if (m.ndf == FC_NDF_BLINN_PHONG) ax = ay = std::sqrt(2.0 / (double(m.exponent_x) + 2.0));
-    auto alpha_w = [&](const double* w) {   // projected roughness
+    auto alpha_w = [&](const double* w) {  // projected roughness
         double r2 = w[0] * w[0] + w[1] * w[1];
         return std::sqrt((ax * ax * w[0] * w[0] + ay * ay * w[1] * w[1]) / r2);
     };
@@ -90,7 +90,7 @@ TEST(Microfacet, Chi2Harness) {
         EXPECT_NEAR(test::chi2::gamma_q(1.0, x), std::exp(-x), 1e-12);
         EXPECT_NEAR(test::chi2::gamma_q(0.5, x), std::erfc(std::sqrt(x)), 1e-12);
     }
-    EXPECT_NEAR(test::chi2::gamma_q(2000.0, 2000.0), 0.49702645155579744, 1e-9);   // scipy gammaincc
+    EXPECT_NEAR(test::chi2::gamma_q(2000.0, 2000.0), 0.49702645155579744, 1e-9);  // scipy gammaincc
     EXPECT_NEAR(test::chi2::gamma_q(4000.5, 4100.0), 0.058728421513105054, 1e-9);
     const double level = test::chi2::sidak(0.01, 400);
     FcMaterial sampled = microfacet_material(FC_NDF_GGX, FC_SAMPLE_VISIBLE, 0.1f, 0.1f);
@@ -104,8 +104,8 @@ TEST(Microfacet, Chi2Harness) {
 }
 
 TEST(Microfacet, PdfIntegratesToOne) {
-    const float alphas[][2] = {{0.002f, 0.002f}, {0.01f, 0.01f}, {0.1f, 0.1f}, {0.5f, 0.5f},
-                               {1.0f, 1.0f},     {0.05f, 0.3f}};
+    const float alphas[][2] = {{0.002f, 0.002f}, {0.01f, 0.01f}, {0.1f, 0.1f},
+                               {0.5f, 0.5f},     {1.0f, 1.0f},   {0.05f, 0.3f}};
     for (int ndf : {FC_NDF_GGX, FC_NDF_BECKMANN, FC_NDF_BLINN_PHONG})
         for (int sampling : {FC_SAMPLE_VISIBLE, FC_SAMPLE_ALL})
             for (auto& a : alphas)
@@ -120,8 +120,8 @@ TEST(Microfacet, PdfIntegratesToOne) {
                     // Lobes whose reflected directions stay above the horizon (tails < 1e-4).
                     bool above = deg <= 30.0 && (ndf == FC_NDF_GGX ? w <= 0.01 : w <= 0.1);
                     std::string what = "ndf " + std::to_string(ndf) + " sampling " + std::to_string(sampling) +
-                                       " alpha " + std::to_string(a[0]) + "," + std::to_string(a[1]) +
-                                       " theta_o " + std::to_string(deg);
+                                       " alpha " + std::to_string(a[0]) + "," + std::to_string(a[1]) + " theta_o " +
+                                       std::to_string(deg);
                     EXPECT_NEAR(normals, 1.0, 1e-3) << what;
                     EXPECT_LE(lobe, 1.0 + 1e-3) << what;
                     if (above) {
@@ -129,13 +129,13 @@ TEST(Microfacet, PdfIntegratesToOne) {
                     }
                 }
     // The cosine lobe of the dispatcher.
-    double cosine = pdf_mass(lobe_material(FC_DIFFUSE_LAMBERT, FC_SPECULAR_NONE), direction(40.0, 0.0),
-                             kModeBsdf, Vec3{0, 0, 1}, 10.0);
+    double cosine = pdf_mass(lobe_material(FC_DIFFUSE_LAMBERT, FC_SPECULAR_NONE), direction(40.0, 0.0), kModeBsdf,
+                             Vec3{0, 0, 1}, 10.0);
     EXPECT_NEAR(cosine, 1.0, 1e-4);
 }
 
 TEST(Microfacet, WeakWhiteFurnace) {
-    const float alphas[][2] = {{0.01f, 0.01f}, {0.1f, 0.1f}, {0.3f, 0.3f},   {0.6f, 0.6f},
+    const float alphas[][2] = {{0.01f, 0.01f}, {0.1f, 0.1f},  {0.3f, 0.3f},  {0.6f, 0.6f},
                                {1.0f, 1.0f},   {0.05f, 0.3f}, {0.3f, 0.05f}, {0.002f, 0.2f}};
     for (int ndf : {FC_NDF_GGX, FC_NDF_BECKMANN})
         for (auto& a : alphas)
@@ -210,12 +210,13 @@ TEST(Microfacet, SampleMatchesEvalAndPdf) {
         const FcMaterial& m = mats[std::size_t(i)];
         std::string what = "material " + std::to_string(i) + " diffuse " + std::to_string(m.diffuse_model) +
                            " specular " + std::to_string(m.specular_model) + " ndf " + std::to_string(m.ndf);
-        if (o[0].s[3] >= 0.0f) {   // a non-delta sample of the specular lobe
+        if (o[0].s[3] >= 0.0f) {  // a non-delta sample of the specular lobe
             ++lobes;
-            for (int c = 0; c < 4; ++c) ASSERT_TRUE(rel(o[0].s[c], o[1].s[c])) << what << " component " << c
-                                                                              << ": " << o[0].s[c] << " vs " << o[1].s[c];
+            for (int c = 0; c < 4; ++c)
+                ASSERT_TRUE(rel(o[0].s[c], o[1].s[c]))
+                    << what << " component " << c << ": " << o[0].s[c] << " vs " << o[1].s[c];
         }
-        if (o[2].s[3] > 0.0f && o[3].s[3] == 0.0f) {   // a non-delta sample of the BSDF
+        if (o[2].s[3] > 0.0f && o[3].s[3] == 0.0f) {  // a non-delta sample of the BSDF
             ++samples;
             for (int c = 0; c < 3; ++c) ASSERT_TRUE(rel(o[2].s[c], o[3].s[c])) << what << " weight " << c;
         }

@@ -109,18 +109,18 @@ inline std::vector<float> pdfs(const FcMaterial& m, const Vec3& wo, int mode, co
 }
 
 constexpr unsigned kItems = 4096;
-constexpr unsigned kPerItem = 245;   // 4096 x 245 = 1,003,520 samples
+constexpr unsigned kPerItem = 245;  // 4096 x 245 = 1,003,520 samples
 constexpr unsigned kGroup = 256;    // work-items per local histogram
 
 // The chart histogram of kItems * per_item samples (cells, refused, invalid).
-inline std::vector<std::uint32_t> histogram(const FcMaterial& m, const Vec3& wo, int mode,
-                                            const chi2::Chart& chart, unsigned seed, unsigned per_item = kPerItem) {
+inline std::vector<std::uint32_t> histogram(const FcMaterial& m, const Vec3& wo, int mode, const chi2::Chart& chart,
+                                            unsigned seed, unsigned per_item = kPerItem) {
     std::vector<float> te(chart.theta_edges.begin(), chart.theta_edges.end());
     std::vector<float> pe(chart.phi_edges.begin(), chart.phi_edges.end());
     std::vector<std::uint32_t> zero(std::size_t(chart.cells()) + 2, 0u);
     cl::Buffer mat = material_buffer(m), tb = upload(te), pb = upload(pe);
-    cl::Buffer hist(context().context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR,
-                    zero.size() * sizeof(std::uint32_t), zero.data());
+    cl::Buffer hist(context().context(), CL_MEM_READ_WRITE | CL_MEM_COPY_HOST_PTR, zero.size() * sizeof(std::uint32_t),
+                    zero.data());
     cl::Kernel k(program(), "mf_sample_hist");
     k.setArg(0, mat);
     k.setArg(1, f4(wo));
@@ -145,9 +145,8 @@ inline double lobe_perp(int mode, const Vec3& wo, double width) {
 }
 
 // Samples `sampled` and tests the samples against the pdf of `density` (normally the same).
-inline chi2::Result chi_square_mismatch(const FcMaterial& sampled, const FcMaterial& density, const Vec3& wo,
-                                        int mode, const Vec3& axis, double width, double level,
-                                        unsigned seed) {
+inline chi2::Result chi_square_mismatch(const FcMaterial& sampled, const FcMaterial& density, const Vec3& wo, int mode,
+                                        const Vec3& axis, double width, double level, unsigned seed) {
     const double a[3] = {axis.x, axis.y, axis.z};
     chi2::Chart chart = chi2::make_lobe_chart(a, width, lobe_perp(mode, wo, width));
     chi2::Quadrature q = chi2::make_quadrature(chart);
@@ -214,7 +213,7 @@ inline std::vector<cl_float4> consistency(const std::vector<FcMaterial>& mats, c
 struct SweepResult {
     std::uint64_t checked = 0;
     unsigned failures = 0;
-    std::string report;   // the first failures, one a line
+    std::string report;  // the first failures, one a line
 };
 
 // mf_extreme_sweep over `materials` work-items.
@@ -242,9 +241,9 @@ inline SweepResult extreme_sweep(unsigned materials, unsigned seed) {
         const cl_float4 &o = fd[2 * i], &w = fd[2 * i + 1];
         s << "code " << o.s[3] << " value " << w.s[3] << ": diffuse " << m.diffuse_model << " specular "
           << m.specular_model << " ndf " << m.ndf << " G " << m.geometry << " F " << m.fresnel << " sampling "
-          << m.sampling << " alpha " << m.alpha_x << "," << m.alpha_y << " e " << m.exponent_x << ","
-          << m.exponent_y << " ior " << m.ior << " wo " << o.s[0] << "," << o.s[1] << "," << o.s[2] << " wi "
-          << w.s[0] << "," << w.s[1] << "," << w.s[2] << "\n";
+          << m.sampling << " alpha " << m.alpha_x << "," << m.alpha_y << " e " << m.exponent_x << "," << m.exponent_y
+          << " ior " << m.ior << " wo " << o.s[0] << "," << o.s[1] << "," << o.s[2] << " wi " << w.s[0] << "," << w.s[1]
+          << "," << w.s[2] << "\n";
     }
     r.report = s.str();
     return r;

@@ -89,8 +89,7 @@ double reference_f(const std::string& model, const FcMaterial& m, int c, V3 v, V
     V3 h = norm(add(v, l));
     double nl = l.z, nv = v.z, nh = h.z, vh = dot(v, h), cd = m.diffuse[c], cs = m.specular[c];
     double i_diff = 0.0, i_spe = 0.0;
-    if (model == "lambert" || model == "cook_torrance" || model == "blinn_phong" ||
-        model == "blinn_phong_normalized")
+    if (model == "lambert" || model == "cook_torrance" || model == "blinn_phong" || model == "blinn_phong_normalized")
         i_diff = cd * nl;
     if (model == "oren_nayar") {
         double ti = std::acos(nl), to = std::acos(nv), alpha = std::max(ti, to), beta = std::min(ti, to);
@@ -142,7 +141,7 @@ FcMaterial random_preset(const std::string& model, std::mt19937& rng) {
 
 TEST(Models, PresetsMatchSourceFormulas) {
     std::mt19937 rng(7);
-    const char* models[] = {"lambert", "oren_nayar", "cook_torrance", "blinn_phong", "blinn_phong_normalized",
+    const char* models[] = {"lambert",           "oren_nayar", "cook_torrance", "blinn_phong", "blinn_phong_normalized",
                             "ashikhmin_shirley", "ggx"};
     const int per_model = 400;
     std::vector<FcMaterial> mats;
@@ -154,7 +153,8 @@ TEST(Models, PresetsMatchSourceFormulas) {
             wi.push_back(random_dir(rng, 0.02));
         }
     // a few exact configurations: normal incidence, retro-reflection, mirror geometry
-    std::vector<std::pair<V3, V3>> special = {{{0, 0, 1}, {0, 0, 1}}, {dir_at(60), dir_at(60)}, {dir_at(-40), dir_at(40)}};
+    std::vector<std::pair<V3, V3>> special = {
+        {{0, 0, 1}, {0, 0, 1}}, {dir_at(60), dir_at(60)}, {dir_at(-40), dir_at(40)}};
     for (std::size_t k = 0; k < std::size(models); ++k)
         for (auto [a, b] : special) mats.push_back(random_preset(models[k], rng)), wo.push_back(a), wi.push_back(b);
     std::vector<float> out = eval_on_device(mats, wo, wi);
@@ -163,8 +163,8 @@ TEST(Models, PresetsMatchSourceFormulas) {
         for (int c = 0; c < 3; ++c) {
             double ref = reference_f(models[k], mats[i], c, wo[i], wi[i]);
             EXPECT_NEAR(out[4 * i + c], ref, 1e-4 * std::abs(ref) + 1e-7)
-                << models[k] << " channel " << c << " wo=(" << wo[i].x << "," << wo[i].y << "," << wo[i].z
-                << ") wi=(" << wi[i].x << "," << wi[i].y << "," << wi[i].z << ")";
+                << models[k] << " channel " << c << " wo=(" << wo[i].x << "," << wo[i].y << "," << wo[i].z << ") wi=("
+                << wi[i].x << "," << wi[i].y << "," << wi[i].z << ")";
         }
     }
 }
@@ -178,7 +178,7 @@ std::vector<FcMaterial> reciprocity_materials(std::mt19937& rng) {
             for (int f = 0; f < FC_FRESNEL_COUNT; ++f) {
                 FcMaterial m = random_preset("microfacet", rng);
                 m.ndf = d, m.geometry = g, m.fresnel = f;
-                m.alpha_y = 0.1f + 0.5f * m.alpha_x;   // anisotropic
+                m.alpha_y = 0.1f + 0.5f * m.alpha_x;  // anisotropic
                 set3(m.eta, 0.2f, 0.9f, 1.4f), set3(m.k, 3.0f, 2.5f, 2.0f), m.ior = 1.6f;
                 mats.push_back(m);
             }
@@ -211,8 +211,8 @@ const double kThetas[] = {0, 30, 60, 75, 85, 89};
 const float kAlphas[] = {0.05f, 0.1f, 0.2f, 0.3f, 0.5f, 0.7f, 1.0f};
 
 struct Config {
-    std::string group;     // one row of the summary
-    std::string label;     // the parameter value
+    std::string group;  // one row of the summary
+    std::string label;  // the parameter value
     double theta;
     FcMaterial m;
 };
@@ -286,7 +286,7 @@ TEST(Models, EnergyMicrofacet) {
                 }
     check_energy(configs, 1 << 15, [](const std::string& g) {
         bool smith = g.find("smith_separable") != std::string::npos || g.find("smith_correlated") != std::string::npos;
-        return smith && g.find("D=blinn_phong") == std::string::npos;   // exact Lambda only
+        return smith && g.find("D=blinn_phong") == std::string::npos;  // exact Lambda only
     });
 }
 
@@ -384,7 +384,7 @@ TEST(Models, SampleMatchesEvalAndExtremes) {
     for (const FcMaterial& m : mats)
         for (V3 u : dirs)
             for (V3 v : dirs) pm.push_back(m), a.push_back(u), b.push_back(v);
-    for (const FcMaterial& m : mats)   // opposite grazing directions: h near n, wo.h near 0
+    for (const FcMaterial& m : mats)  // opposite grazing directions: h near n, wo.h near 0
         pm.push_back(m), a.push_back({1.0, 0.0, 1e-6}), b.push_back({-1.0, 0.0, 1e-6});
     std::vector<float> out = eval_on_device(pm, a, b);
     for (std::size_t i = 0; i < out.size(); ++i)

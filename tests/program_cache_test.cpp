@@ -26,7 +26,7 @@ protected:
         unsetenv("FACET_PROGRAM_CACHE");
         unsetenv("FACET_CACHE_DIR");
     }
-    test::TempDir tmp_;   // private to this process: ctest runs these two tests side by side
+    test::TempDir tmp_;  // private to this process: ctest runs these two tests side by side
     fs::path dir_;
 };
 
@@ -42,7 +42,7 @@ TEST_F(ProgramCache, WrittenUsedAndRebuiltWhenRefused) {
     ProgramBuild second = build_program(test::context(), "kernels/test/layout_kernels.cl", prelude);
     EXPECT_TRUE(second.from_cache);
     EXPECT_EQ(second.cache_file, first.cache_file);
-    cl::Kernel k(second.program, "report_layout");   // the cached program works
+    cl::Kernel k(second.program, "report_layout");  // the cached program works
 
     // Other options or sources are other entries.
     ProgramBuild other = build_program(test::context(), "kernels/test/layout_kernels.cl", {"// another"});

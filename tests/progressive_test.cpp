@@ -30,7 +30,7 @@ ScheduleState state(std::uint64_t target, std::uint64_t done, double render_s, s
 TEST(Progressive, FirstPassIsOneSample) {
     EXPECT_EQ(next_pass_samples(state(1000, 0, 0.0, 0)), 1u);
     ScheduleState s = state(1000, 0, 0.0, 0);
-    s.time_limit_s = 0.0;   // even with no time at all, one sample per pixel
+    s.time_limit_s = 0.0;  // even with no time at all, one sample per pixel
     EXPECT_EQ(next_pass_samples(s), 1u);
 }
 
@@ -60,9 +60,9 @@ TEST(Progressive, PassCutToTheTarget) {
 
 TEST(Progressive, PassCutToTheTimeLeft) {
     ScheduleState s = state(1u << 20, 1000, 10.0, 100);
-    s.time_limit_s = 10.5;   // 0.5 s left at 100 spp/s
+    s.time_limit_s = 10.5;  // 0.5 s left at 100 spp/s
     EXPECT_EQ(next_pass_samples(s), 50u);
-    s.time_limit_s = 10.001;   // less than one sample's time left: still one
+    s.time_limit_s = 10.001;  // less than one sample's time left: still one
     EXPECT_EQ(next_pass_samples(s), 1u);
     s.time_limit_s = 10.0;
     EXPECT_TRUE(schedule_done(s));
@@ -82,20 +82,20 @@ TEST(Progressive, RowsPerLaunchFromSpeed) {
     // 1 ms for one sample over a row: 4 samples are 4 ms a row, 62 rows in 0.25 s.
     std::vector<double> cost(1000, 1e-3);
     EXPECT_EQ(rows_per_launch(cost, 0, 1000, 4, 1), 62u);
-    EXPECT_EQ(rows_per_launch(cost, 980, 1000, 4, 1), 20u);   // the rows left
+    EXPECT_EQ(rows_per_launch(cost, 980, 1000, 4, 1), 20u);  // the rows left
     std::vector<double> slow(1000, 1.0);                     // a row is too long: one row
     EXPECT_EQ(rows_per_launch(slow, 0, 1000, 4, 100), 1u);
     ScheduleRules rules;
     rules.max_launch_s = 0.025;
     EXPECT_EQ(rows_per_launch(cost, 0, 1000, 4, 1, rules), 6u);
-    EXPECT_EQ(rows_per_launch(std::vector<double>(50, 1e-3), 0, 1000, 4, 1), 50u);   // the whole image fits
+    EXPECT_EQ(rows_per_launch(std::vector<double>(50, 1e-3), 0, 1000, 4, 1), 50u);  // the whole image fits
 }
 
 TEST(Progressive, RowsPerLaunchFollowTheDearRows) {
     // Cheap rows then dear ones: a launch stops where the measured cost fills it.
     std::vector<double> cost(200, 1e-4);
     for (std::size_t r = 100; r < 200; ++r) cost[r] = 1e-2;
-    EXPECT_EQ(rows_per_launch(cost, 90, 1000, 1, 1), 10u + 24u);   // 10 rows of 0.1 ms, 24 of 10 ms
+    EXPECT_EQ(rows_per_launch(cost, 90, 1000, 1, 1), 10u + 24u);  // 10 rows of 0.1 ms, 24 of 10 ms
 }
 
 TEST(Progressive, FirstLaunchIsAProbeBand) {
@@ -129,7 +129,8 @@ public:
         if (rows_.empty()) rows_.assign(h_, 0);
         for (std::uint32_t r = row_begin; r < row_begin + row_count; ++r) rows_[r] += count;
         ++launches;
-        const std::uint32_t dear = row_begin + row_count - std::max(row_begin, std::min(free_rows_, row_begin + row_count));
+        const std::uint32_t dear =
+            row_begin + row_count - std::max(row_begin, std::min(free_rows_, row_begin + row_count));
         std::this_thread::sleep_for(std::chrono::duration<double, std::micro>(us_ * w_ * dear * count));
     }
     void end_pass(std::uint32_t count, double) override {
@@ -147,7 +148,7 @@ public:
 private:
     std::uint32_t w_, h_;
     double us_;
-    std::uint32_t free_rows_;   // the top rows cost nothing (sky)
+    std::uint32_t free_rows_;  // the top rows cost nothing (sky)
     std::uint64_t spp_ = 0;
     std::vector<std::uint64_t> rows_;
 };
@@ -156,7 +157,7 @@ TEST(Progressive, FixedPassesReachTheTargetExactly) {
     FakeTarget t(32, 16, 0.0);
     ProgressiveResult r = render_fixed(t, 10, 4);
     EXPECT_EQ(r.spp, 10u);
-    EXPECT_EQ(t.passes, 3);   // 4 + 4 + 2
+    EXPECT_EQ(t.passes, 3);  // 4 + 4 + 2
     EXPECT_FALSE(r.stopped);
 }
 
@@ -231,7 +232,7 @@ TEST(Progressive, StopLaterFinishesThePass) {
 }
 
 TEST(Progressive, TimeLimitEndsTheRender) {
-    FakeTarget t(64, 64, 1.0);   // 4 ms a sample per pixel
+    FakeTarget t(64, 64, 1.0);  // 4 ms a sample per pixel
     ProgressiveOptions opt;
     opt.target_spp = 1u << 20;
     opt.time_limit_s = 0.2;
@@ -262,12 +263,12 @@ TEST(Progressive, DriverBandsMatchOneLaunchOnTheDevice) {
     Bvh bvh = build_bvh(scene.vertices);
 
     Renderer one(test::context(), scene, bvh);
-    one.render(6);   // the renderer's own single launch
+    one.render(6);  // the renderer's own single launch
     Renderer banded(test::context(), scene, bvh);
     ProgressiveOptions opt;
     opt.target_spp = 6;
     opt.fixed_pass = 6;
-    opt.rules.max_launch_s = 1e-9;   // one row a launch
+    opt.rules.max_launch_s = 1e-9;  // one row a launch
     opt.rules.probe_pixels = 1;
     int passes = 0;
     opt.on_pass = [&](const PassDone&) { ++passes; };

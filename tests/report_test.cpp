@@ -40,7 +40,7 @@ Scene furnace(int size) {
 
 TEST(Report, MetricsOfKnownImages) {
     std::vector<float> ref(12, 1.0f), img(12, 1.0f);
-    img[0] = 2.0f;   // one channel off by 1
+    img[0] = 2.0f;  // one channel off by 1
     ErrorMetrics m = compare_images(img, ref);
     EXPECT_DOUBLE_EQ(m.mse, 1.0 / 12.0);
     EXPECT_DOUBLE_EQ(m.rmse, std::sqrt(1.0 / 12.0));
@@ -96,7 +96,7 @@ TEST(Report, ConvergenceWarningFlagsBias) {
         p.spp = 8u << i;
         p.render_s = 0.1 * double(1 << i);
         p.estimate = ErrorMetrics{0.0, 0.01 / std::sqrt(double(1 << i)), 0.0};
-        p.reference = ErrorMetrics{0.0, 0.2, 0.0};   // stuck: a biased render
+        p.reference = ErrorMetrics{0.0, 0.2, 0.0};  // stuck: a biased render
         passes.push_back(p);
     }
     ReportSummary s;

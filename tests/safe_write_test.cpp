@@ -94,7 +94,7 @@ TEST(SafeWrite, RenameFailureGivesTheRealReason) {
     const std::string msg = error_of([&] {
         write_file_safely(path, "report", [&](const std::string& tmp) {
             std::ofstream(tmp) << "x";
-            fs::create_directories(fs::path(path) / "sub");   // a folder appears in the way
+            fs::create_directories(fs::path(path) / "sub");  // a folder appears in the way
         });
     });
     EXPECT_NE(msg.find("Is a directory"), std::string::npos) << msg;
@@ -131,9 +131,11 @@ TEST(SafeWrite, CheckOutputPathRefusesWhatCannotBeWritten) {
     test::TempDir dir;
     fs::create_directories(dir.path("folder"));
     EXPECT_NE(error_of([&] { check_output_path(dir.path("folder"), "--out"); }).find("is a folder"), std::string::npos);
-    EXPECT_NE(error_of([&] { check_output_path(dir.path("folder") + "/", "--out"); }).find("folder"), std::string::npos);
+    EXPECT_NE(error_of([&] { check_output_path(dir.path("folder") + "/", "--out"); }).find("folder"),
+              std::string::npos);
     EXPECT_NE(error_of([&] { check_output_path("/dev/full", "--out"); }).find("not a regular file"), std::string::npos);
-    const std::string msg = error_of([&] { check_output_path(dir.path(std::string(NAME_MAX + 1, 'n') + ".exr"), "--out"); });
+    const std::string msg =
+        error_of([&] { check_output_path(dir.path(std::string(NAME_MAX + 1, 'n') + ".exr"), "--out"); });
     EXPECT_NE(msg.find("more than"), std::string::npos) << msg;
     // A missing folder is created; nothing is left in it.
     check_output_path(dir.path("new/sub/a.exr"), "--out");

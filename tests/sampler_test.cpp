@@ -143,7 +143,8 @@ TEST(Sampler, SetsAreDecorrelated) {
     std::vector<float> b = points(FC_SAMPLER_SOBOL, 5, 1, samples, 2);
     for (int c = 0; c < 4; ++c) {
         std::vector<double> x, y;
-        for (std::uint32_t s = 0; s < samples; ++s) x.push_back(double(a[4 * s + c]) - 0.5), y.push_back(double(b[4 * s + c]) - 0.5);
+        for (std::uint32_t s = 0; s < samples; ++s)
+            x.push_back(double(a[4 * s + c]) - 0.5), y.push_back(double(b[4 * s + c]) - 0.5);
         EXPECT_LT(std::fabs(correlation(x, y)), 5.0 / std::sqrt(double(samples))) << "coordinate " << c;
     }
 }
@@ -166,7 +167,7 @@ TEST(Sampler, RenderMatchesIndependentInMean) {
     const std::uint32_t spp = 128;
     Bvh bvh = build_bvh(scene.vertices);
     struct Result {
-        std::vector<float> mean, var;   // per pixel and channel: the estimate, its variance
+        std::vector<float> mean, var;  // per pixel and channel: the estimate, its variance
     };
     auto render = [&](int sampler) {
         scene.settings.sampler = sampler;
@@ -177,7 +178,7 @@ TEST(Sampler, RenderMatchesIndependentInMean) {
         for (std::size_t i = 0; i < h.rgb[0].size(); ++i) {
             const float d = h.rgb[0][i] - h.rgb[1][i];
             out.mean.push_back(0.5f * (h.rgb[0][i] + h.rgb[1][i]));
-            out.var.push_back(0.25f * d * d);   // E[(h0 - h1)^2] / 4 = var of the mean of both
+            out.var.push_back(0.25f * d * d);  // E[(h0 - h1)^2] / 4 = var of the mean of both
         }
         return out;
     };

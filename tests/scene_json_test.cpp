@@ -12,8 +12,7 @@ using test::expect_error;
 using test::TempDir;
 
 const std::string kTri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-const std::string kQuadShape =
-    R"({"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]})";
+const std::string kQuadShape = R"({"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]})";
 
 // A scene file `name` with `body` inside the top-level braces.
 std::string scene(const TempDir& d, const std::string& name, const std::string& body) {
@@ -76,12 +75,8 @@ TEST(SceneJson, JsonUnknownKeys) {
     TempDir d;
     expect_error([&] { load_scene(scene(d, "a.json", R"("materails": {})")); },
                  {"a.json", "unknown key 'materails' at top level", "did you mean 'materials'"});
-    expect_error(
-        [&] {
-            load_scene(
-                scene(d, "b.json", R"("camera": {"fvo": 30}, "shapes": [)" + kQuadShape + "]"));
-        },
-        {"b.json", "'fvo'", "camera", "'fov'"});
+    expect_error([&] { load_scene(scene(d, "b.json", R"("camera": {"fvo": 30}, "shapes": [)" + kQuadShape + "]")); },
+                 {"b.json", "'fvo'", "camera", "'fov'"});
     expect_error(
         [&] {
             load_scene(scene(
@@ -123,22 +118,17 @@ TEST(SceneJson, JsonBadTypesAndValues) {
         expect_error([&] { load_scene(scene(d, name, c.body + shapes)); }, {name + ": " + c.path});
     }
     expect_error(
-        [&] {
-            load_scene(scene(d, "r.json",
-                             R"("shapes": [{"type": "sphere", "center": [0,0,0], "radius": -1}])"));
-        },
+        [&] { load_scene(scene(d, "r.json", R"("shapes": [{"type": "sphere", "center": [0,0,0], "radius": -1}])")); },
         {"r.json: shapes[0].radius"});
     expect_error([&] { load_scene(scene(d, "s.json", R"("shapes": [{"type": "cone"}])")); },
                  {"s.json: shapes[0].type", "cone"});
     expect_error(
         [&] {
-            load_scene(scene(
-                d, "t.json",
-                R"("shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1,0,0], "edge2": [2,0,0]}])"));
+            load_scene(scene(d, "t.json",
+                             R"("shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1,0,0], "edge2": [2,0,0]}])"));
         },
         {"t.json: shapes[0]"});
-    expect_error([&] { load_scene(scene(d, "u.json", R"("render": {"spp": 4})")); },
-                 {"u.json", "no geometry"});
+    expect_error([&] { load_scene(scene(d, "u.json", R"("render": {"spp": 4})")); }, {"u.json", "no geometry"});
 }
 
 TEST(SceneJson, JsonUnknownMaterial) {
@@ -146,25 +136,22 @@ TEST(SceneJson, JsonUnknownMaterial) {
     d.write("tri.obj", kTri);
     expect_error(
         [&] {
-            load_scene(scene(
-                d, "a.json",
-                R"("materials": {"white": {}}, "meshes": [{"file": "tri.obj", "material": "whte"}])"));
+            load_scene(scene(d, "a.json",
+                             R"("materials": {"white": {}}, "meshes": [{"file": "tri.obj", "material": "whte"}])"));
         },
         {"a.json: meshes[0].material", "'whte'", "'white'"});
     expect_error(
         [&] {
-            load_scene(scene(
-                d, "b.json",
-                R"("shapes": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "x"}])"));
+            load_scene(scene(d, "b.json",
+                             R"("shapes": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "x"}])"));
         },
         {"b.json: shapes[0].material", "'x'"});
 }
 
 TEST(SceneJson, JsonMissingMeshFile) {
     TempDir d;
-    expect_error(
-        [&] { load_scene(scene(d, "a.json", R"("meshes": [{"file": "models/gone.obj"}])")); },
-        {"a.json", "meshes[0].file", "models/gone.obj"});
+    expect_error([&] { load_scene(scene(d, "a.json", R"("meshes": [{"file": "models/gone.obj"}])")); },
+                 {"a.json", "meshes[0].file", "models/gone.obj"});
     d.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
     expect_error([&] { load_scene(scene(d, "b.json", R"("meshes": [{"file": "bad.obj"}])")); },
                  {"b.json", "meshes[0]", "bad.obj:4:"});

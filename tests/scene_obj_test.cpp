@@ -35,28 +35,21 @@ TEST(SceneObj, ObjBadNumberNamesLine) {
 TEST(SceneObj, ObjBadIndicesNameLine) {
     TempDir d;
     const std::string verts = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-    expect_error([&] { load(d.write("a.obj", verts + "f 1 2 4\n")); },
-                 {"a.obj:4:", "out of range"});
+    expect_error([&] { load(d.write("a.obj", verts + "f 1 2 4\n")); }, {"a.obj:4:", "out of range"});
     expect_error([&] { load(d.write("b.obj", verts + "f 0 1 2\n")); }, {"b.obj:4:", "index 0"});
     expect_error([&] { load(d.write("c.obj", verts + "f 1 2\n")); }, {"c.obj:4:", "at least 3"});
-    expect_error([&] { load(d.write("d.obj", verts + "f -4 -3 -2\n")); },
-                 {"d.obj:4:", "out of range"});
-    expect_error([&] { load(d.write("e.obj", verts + "f 1//2 2//2 3//2\n")); },
-                 {"e.obj:4:", "normal"});
-    expect_error([&] { load(d.write("f.obj", verts + "f 1/x 2 3\n")); },
-                 {"f.obj:4:", "not an integer"});
+    expect_error([&] { load(d.write("d.obj", verts + "f -4 -3 -2\n")); }, {"d.obj:4:", "out of range"});
+    expect_error([&] { load(d.write("e.obj", verts + "f 1//2 2//2 3//2\n")); }, {"e.obj:4:", "normal"});
+    expect_error([&] { load(d.write("f.obj", verts + "f 1/x 2 3\n")); }, {"f.obj:4:", "not an integer"});
     expect_error([&] { load(d.write("g.obj", verts + "f 1/1/1/1 2 3\n")); }, {"g.obj:4:"});
 }
 
 TEST(SceneObj, ObjEmptyOrNonFiniteIsError) {
     TempDir d;
     expect_error([&] { load(d.write("empty.obj", "")); }, {"empty.obj", "no faces"});
-    expect_error([&] { load(d.write("verts.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n")); },
-                 {"verts.obj", "no faces"});
-    expect_error([&] { load(d.write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n")); },
-                 {"nan.obj:2:"});
-    expect_error([&] { load(d.write("inf.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n")); },
-                 {"inf.obj:3:"});
+    expect_error([&] { load(d.write("verts.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n")); }, {"verts.obj", "no faces"});
+    expect_error([&] { load(d.write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n")); }, {"nan.obj:2:"});
+    expect_error([&] { load(d.write("inf.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n")); }, {"inf.obj:3:"});
     expect_error([&] { load(d.path("does_not_exist.obj")); }, {"does_not_exist.obj"});
 }
 
@@ -71,8 +64,7 @@ TEST(SceneObj, ObjCrlfQuadsNegativeIndices) {
     EXPECT_EQ(s.vertices[6], glm::vec3(5, 0, 0));
     EXPECT_EQ(s.vertices[8], glm::vec3(5, 1, 0));
     // Line numbers count CRLF lines correctly.
-    expect_error([&] { load(d.write("bad.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 9\r\n")); },
-                 {"bad.obj:4:"});
+    expect_error([&] { load(d.write("bad.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 9\r\n")); }, {"bad.obj:4:"});
 }
 
 TEST(SceneObj, ObjSmoothNormalsWhenMissing) {
@@ -94,10 +86,8 @@ TEST(SceneObj, ObjNormalsUsedWhenPresent) {
                            "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1 0 1\nvn 0 0 0\n"
                            "f 1//1 2//1 3//2\n");
     const Scene s = load(p);
-    EXPECT_NEAR(glm::length(vec(s.shading[0].n0) - glm::normalize(glm::vec3(1, 0, 1))), 0.0f,
-                1e-5f);
-    EXPECT_NEAR(glm::length(vec(s.shading[0].n1) - glm::normalize(glm::vec3(1, 0, 1))), 0.0f,
-                1e-5f);
+    EXPECT_NEAR(glm::length(vec(s.shading[0].n0) - glm::normalize(glm::vec3(1, 0, 1))), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(vec(s.shading[0].n1) - glm::normalize(glm::vec3(1, 0, 1))), 0.0f, 1e-5f);
     EXPECT_NEAR(glm::length(vec(s.shading[0].n2) - glm::vec3(0, 0, 1)), 0.0f,
                 1e-5f);  // zero: face normal
 }
@@ -106,9 +96,7 @@ TEST(SceneObj, ObjTransformAndMirror) {
     TempDir d;
     const auto p = d.write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     Scene s;
-    load_obj(p, s,
-             glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)) *
-                 glm::scale(glm::mat4(1.0f), glm::vec3(2.0f)));
+    load_obj(p, s, glm::translate(glm::mat4(1.0f), glm::vec3(1, 2, 3)) * glm::scale(glm::mat4(1.0f), glm::vec3(2.0f)));
     EXPECT_EQ(s.vertices[1], glm::vec3(3, 2, 3));
     Scene m;
     load_obj(p, m, glm::scale(glm::mat4(1.0f), glm::vec3(1, 1, -1)));  // a mirror along z
@@ -163,8 +151,7 @@ TEST(SceneObj, MtlBadNumberNamesLine) {
 
 TEST(SceneObj, MissingMtlIsWarning) {
     TempDir d;
-    const auto p =
-        d.write("lonely.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n");
+    const auto p = d.write("lonely.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n");
     const Scene s = load(p);
     ASSERT_EQ(s.triangle_count(), 1u);
     ASSERT_EQ(s.warnings.size(), 1u);

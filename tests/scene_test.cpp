@@ -49,10 +49,8 @@ TEST(Scene, CornellBoxLoads) {
     const glm::vec3 short_center(185.5f, 82.5f, 169.0f), tall_center(368.5f, 165.0f, 351.25f);
     for (std::size_t t = 0; t < s.triangle_count(); ++t) {
         const glm::vec3 c = centroid(s, t), n = face_normal(s, t);
-        const float dist_short =
-            glm::length(glm::vec2(c.x, c.z) - glm::vec2(short_center.x, short_center.z));
-        const float dist_tall =
-            glm::length(glm::vec2(c.x, c.z) - glm::vec2(tall_center.x, tall_center.z));
+        const float dist_short = glm::length(glm::vec2(c.x, c.z) - glm::vec2(short_center.x, short_center.z));
+        const float dist_tall = glm::length(glm::vec2(c.x, c.z) - glm::vec2(tall_center.x, tall_center.z));
         if (c.y > 1.0f && c.y < 547.0f && (dist_short < 120.0f || dist_tall < 120.0f)) {
             const glm::vec3 block = dist_short < dist_tall ? short_center : tall_center;
             if (std::abs(c.y - 165.0f) < 0.1f || std::abs(c.y - 330.0f) < 0.1f) {
@@ -88,8 +86,7 @@ TEST(Scene, SphereShape) {
     Scene s;
     add_sphere(s, glm::vec3(1, 2, 3), 2.0f, 2, 0, false);
     ASSERT_EQ(s.triangle_count(), 20u * 16u);
-    for (const glm::vec3& v : s.vertices)
-        EXPECT_NEAR(glm::length(v - glm::vec3(1, 2, 3)), 2.0f, 1e-5f);
+    for (const glm::vec3& v : s.vertices) EXPECT_NEAR(glm::length(v - glm::vec3(1, 2, 3)), 2.0f, 1e-5f);
     for (std::size_t t = 0; t < s.triangle_count(); ++t) {
         const glm::vec3 out = centroid(s, t) - glm::vec3(1, 2, 3);
         EXPECT_GT(glm::dot(face_normal(s, t), out), 0.0f);
@@ -99,8 +96,7 @@ TEST(Scene, SphereShape) {
     Scene in;
     add_sphere(in, glm::vec3(0), 1.0f, 0, 0, true);
     ASSERT_EQ(in.triangle_count(), 20u);
-    for (std::size_t t = 0; t < 20; ++t)
-        EXPECT_LT(glm::dot(face_normal(in, t), centroid(in, t)), 0.0f);
+    for (std::size_t t = 0; t < 20; ++t) EXPECT_LT(glm::dot(face_normal(in, t), centroid(in, t)), 0.0f);
 }
 
 TEST(Scene, QuadShape) {
@@ -150,8 +146,7 @@ TEST(Scene, LightPickPdfsFollowPower) {
     EXPECT_NEAR(s.lights[2].area, 1.0f, 1e-6f);
 
     Scene dark;
-    add_quad(dark, glm::vec3(0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0),
-             add_material(dark, default_material(), "d"));
+    add_quad(dark, glm::vec3(0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), add_material(dark, default_material(), "d"));
     build_lights(dark);
     EXPECT_TRUE(dark.lights.empty());
     EXPECT_EQ(dark.light_cdf, std::vector<float>{0.0f});
@@ -163,8 +158,8 @@ TEST(Scene, LightEdgesFaceTheShadingNormal) {
     m.emission[0] = 1.0f;
     const int mat = add_material(s, m, "e");
     // Wound clockwise seen from +z, but shading normals say +z.
-    add_triangle(s, glm::vec3(0), glm::vec3(0, 1, 0), glm::vec3(1, 0, 0), glm::vec3(0, 0, 1),
-                 glm::vec3(0, 0, 1), glm::vec3(0, 0, 1), mat);
+    add_triangle(s, glm::vec3(0), glm::vec3(0, 1, 0), glm::vec3(1, 0, 0), glm::vec3(0, 0, 1), glm::vec3(0, 0, 1),
+                 glm::vec3(0, 0, 1), mat);
     build_lights(s);
     ASSERT_EQ(s.lights.size(), 1u);
     EXPECT_GT(glm::cross(vec(s.lights[0].e1), vec(s.lights[0].e2)).z, 0.0f);

@@ -30,9 +30,7 @@ void expect_error(F f, std::initializer_list<std::string> parts) {
     }
 }
 
-inline glm::vec3 vec(const float v[3]) {
-    return glm::vec3(v[0], v[1], v[2]);
-}
+inline glm::vec3 vec(const float v[3]) { return glm::vec3(v[0], v[1], v[2]); }
 
 inline glm::vec3 face_normal(const Scene& s, std::size_t t) {
     const glm::vec3* v = &s.vertices[3 * t];

@@ -38,7 +38,8 @@ struct ChildRef {
 };
 
 ChildRef child(const bvh_detail::BinaryNode& n, int side) {
-    return side == 0 ? ChildRef{n.a_min, n.a_max, n.a_index, n.a_count} : ChildRef{n.b_min, n.b_max, n.b_index, n.b_count};
+    return side == 0 ? ChildRef{n.a_min, n.a_max, n.a_index, n.a_count}
+                     : ChildRef{n.b_min, n.b_max, n.b_index, n.b_count};
 }
 
 void set_slot(FcBvhNode& node, int k, const float* lo, const float* hi, std::int32_t index, std::int32_t count) {
@@ -102,15 +103,14 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     if (vertices.size() % 3 != 0)
-        throw Error("build_bvh: the vertex count " + std::to_string(vertices.size()) +
-                    " is not a multiple of 3");
+        throw Error("build_bvh: the vertex count " + std::to_string(vertices.size()) + " is not a multiple of 3");
     const std::size_t count = vertices.size() / 3;
     if (count > static_cast<std::size_t>(INT32_MAX))
         throw Error("build_bvh: too many triangles (" + std::to_string(count) + ")");
 
     Bvh bvh;
     BvhStats& st = bvh.stats;
-    {   // the builder's buffers are freed inside the timed span
+    {  // the builder's buffers are freed inside the timed span
         // Per-triangle bounds for the builder.
         std::vector<bvh_detail::PrimRef> refs;
         refs.reserve(count);
@@ -121,7 +121,7 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
             if (!usable(a, b, c)) continue;
             bvh_detail::PrimRef& r = refs.emplace_back();
             for (int k = 0; k < 3; ++k) {
-                r.lo[k] = std::min(a[k], std::min(b[k], c[k]));   // finite: no NaN cases
+                r.lo[k] = std::min(a[k], std::min(b[k], c[k]));  // finite: no NaN cases
                 r.hi[k] = std::max(a[k], std::max(b[k], c[k]));
             }
             r.id = static_cast<std::uint32_t>(i);
@@ -133,7 +133,7 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
 
         const int depth = collapse(built.nodes, bvh.nodes);
         static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "vertices are packed float triples");
-        bvh.triangles.reserve(refs.size());   // filled in order, without zeroing first
+        bvh.triangles.reserve(refs.size());  // filled in order, without zeroing first
         for (std::size_t k = 0; k < refs.size(); ++k) {
             const std::uint32_t i = refs[k].id;
             FcTriangle& t = bvh.triangles.emplace_back();

@@ -12,30 +12,30 @@
 namespace facet {
 
 struct BvhOptions {
-    int bins = 12;            // SAH bins per axis
-    int max_leaf_size = 8;    // a leaf never holds more triangles than this
-    int exact_max = 16;       // ranges up to this size get the exact SAH sweep (0: bin everywhere)
-    float traversal_cost = 1.0f;      // SAH cost of visiting a node, relative to...
-    float intersection_cost = 1.0f;   // ...the cost of one ray/triangle test
+    int bins = 12;                   // SAH bins per axis
+    int max_leaf_size = 8;           // a leaf never holds more triangles than this
+    int exact_max = 16;              // ranges up to this size get the exact SAH sweep (0: bin everywhere)
+    float traversal_cost = 1.0f;     // SAH cost of visiting a node, relative to...
+    float intersection_cost = 1.0f;  // ...the cost of one ray/triangle test
 };
 
 struct BvhStats {
     std::size_t triangles = 0;
-    std::size_t nodes = 0;      // FcBvhNode count (each holds up to four children)
-    std::size_t binary_nodes = 0;   // nodes of the binary SAH tree it was collapsed from
+    std::size_t nodes = 0;         // FcBvhNode count (each holds up to four children)
+    std::size_t binary_nodes = 0;  // nodes of the binary SAH tree it was collapsed from
     std::size_t leaves = 0;
-    int max_depth = 0;          // 4-wide nodes on the longest root-to-leaf path
+    int max_depth = 0;  // 4-wide nodes on the longest root-to-leaf path
     int max_leaf_size = 0;
-    double sah_cost = 0.0;      // of the binary SAH tree, normalised by the root's surface area
-    double build_seconds = 0.0;     // all of build_bvh: filtering and per-triangle bounds, the
-                                    // binary SAH build, the 4-wide collapse, the packed
-                                    // triangles in leaf order, freeing the builder's buffers
-    std::size_t device_bytes = 0;   // nodes + triangles as uploaded
+    double sah_cost = 0.0;         // of the binary SAH tree, normalised by the root's surface area
+    double build_seconds = 0.0;    // all of build_bvh: filtering and per-triangle bounds, the
+                                   // binary SAH build, the 4-wide collapse, the packed
+                                   // triangles in leaf order, freeing the builder's buffers
+    std::size_t device_bytes = 0;  // nodes + triangles as uploaded
 };
 
 struct Bvh {
-    std::vector<FcBvhNode> nodes;      // nodes[0] is the root
-    std::vector<FcTriangle> triangles; // reordered; FcTriangle::prim is the input index
+    std::vector<FcBvhNode> nodes;       // nodes[0] is the root
+    std::vector<FcTriangle> triangles;  // reordered; FcTriangle::prim is the input index
     BvhStats stats;
 };
 
@@ -44,7 +44,6 @@ struct Bvh {
 // triangles are kept out of the tree (they can never be hit) and counted in
 // `skipped` when it is not null. An empty input gives a tree whose root has two
 // empty leaves, which every ray misses.
-Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options = {},
-              std::size_t* skipped = nullptr);
+Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options = {}, std::size_t* skipped = nullptr);
 
 }  // namespace facet

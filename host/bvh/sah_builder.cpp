@@ -38,7 +38,10 @@ inline f4 centroid(const PrimRef& r) { return centroid2(lo_of(r), hi_of(r)); }
 struct Box {
     f4 lo = {kInf, kInf, kInf, 0.0f};
     f4 hi = {-kInf, -kInf, -kInf, 0.0f};
-    void grow(f4 l, f4 h) { lo = vmin(lo, l); hi = vmax(hi, h); }
+    void grow(f4 l, f4 h) {
+        lo = vmin(lo, l);
+        hi = vmax(hi, h);
+    }
     void grow(const Box& b) { grow(b.lo, b.hi); }
     // Half the surface area; 0 for an empty box (its inverted extents clamp to 0),
     // without a branch.
@@ -54,8 +57,8 @@ struct Box {
 inline f4 half_areas(const Box& b0, const Box& b1, const Box& b2) {
     const f4 zero = {0.0f, 0.0f, 0.0f, 0.0f};
     const f4 d0 = vmax(b0.hi - b0.lo, zero), d1 = vmax(b1.hi - b1.lo, zero), d2 = vmax(b2.hi - b2.lo, zero);
-    const f4 t0 = __builtin_shuffle(d0, d1, i4{0, 4, 1, 5});   // x0 x1 y0 y1
-    const f4 t1 = __builtin_shuffle(d0, d1, i4{2, 6, 3, 7});   // z0 z1 . .
+    const f4 t0 = __builtin_shuffle(d0, d1, i4{0, 4, 1, 5});  // x0 x1 y0 y1
+    const f4 t1 = __builtin_shuffle(d0, d1, i4{2, 6, 3, 7});  // z0 z1 . .
     const f4 dx = __builtin_shuffle(t0, d2, i4{0, 1, 4, 4});
     const f4 dy = __builtin_shuffle(t0, d2, i4{2, 3, 5, 5});
     const f4 dz = __builtin_shuffle(t1, d2, i4{0, 1, 6, 6});
@@ -101,17 +104,17 @@ void set_ref(BinaryNode& node, int side, std::uint32_t index, std::uint32_t coun
 // A range of references still to be built, and the child slot that refers to it.
 struct Task {
     std::uint32_t begin, end;
-    int depth;     // nodes above this range
-    int parent;    // node whose child slot `side` refers to this range; -1 for the root
+    int depth;   // nodes above this range
+    int parent;  // node whose child slot `side` refers to this range; -1 for the root
     int side;
-    Box box;       // bounds of the primitives
-    Box cbox;      // bounds of their centroids (twice the centroids, see centroid2)
-    int buf;       // where its references are: 0 the caller's array, 1 the scratch one
+    Box box;   // bounds of the primitives
+    Box cbox;  // bounds of their centroids (twice the centroids, see centroid2)
+    int buf;   // where its references are: 0 the caller's array, 1 the scratch one
 };
 
 struct Split {
     std::uint32_t mid;
-    bool moved;    // the children's references went to the other buffer
+    bool moved;  // the children's references went to the other buffer
     Box lbox, rbox, lcbox, rcbox;
 };
 
@@ -120,9 +123,8 @@ public:
     Builder(std::vector<PrimRef>& refs, const BvhOptions& opt)
         : refs_(refs), opt_(opt), nb_(std::clamp(opt.bins, 2, 256)),
           max_leaf_(static_cast<std::uint32_t>(std::max(opt.max_leaf_size, 1))),
-          exact_max_(static_cast<std::uint32_t>(std::clamp(opt.exact_max, 0, kExactMax))),
-          bins_(6 * nb_), counts_(6 * nb_), right_area_(nb_), right_count_(nb_), scratch_(new PrimRef[refs.size()]) {}
-
+          exact_max_(static_cast<std::uint32_t>(std::clamp(opt.exact_max, 0, kExactMax))), bins_(6 * nb_),
+          counts_(6 * nb_), right_area_(nb_), right_count_(nb_), scratch_(new PrimRef[refs.size()]) {}
 
     BuildOutput run();
 
@@ -138,9 +140,9 @@ private:
     int nb_;
     std::uint32_t max_leaf_;
     std::uint32_t exact_max_;
-    std::vector<Box> bins_;               // [axis * nb_ + bin]
+    std::vector<Box> bins_;  // [axis * nb_ + bin]
     std::vector<std::uint32_t> counts_;
-    std::vector<f4> right_area_;           // per bin boundary, lane a = axis a
+    std::vector<f4> right_area_;  // per bin boundary, lane a = axis a
     std::vector<i4> right_count_;
     std::unique_ptr<PrimRef[]> scratch_;  // the partition's other buffer (not zeroed)
     PrimRef* buf(int b) const { return b ? scratch_.get() : refs_.data(); }
@@ -165,15 +167,14 @@ void Builder::bounds(const PrimRef* p, std::uint32_t begin, std::uint32_t end, B
 bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
     const int nb = nb_;
     const float last = static_cast<float>(nb - 1);
-    const f4 origin = t.cbox.lo;   // cbox holds twice the centroids, as centroid2
+    const f4 origin = t.cbox.lo;  // cbox holds twice the centroids, as centroid2
     f4 scale = {0.0f, 0.0f, 0.0f, 0.0f};
     for (int a = 0; a < 3; ++a) {
         float extent = t.cbox.hi[a] - t.cbox.lo[a];
-        if (extent > 0.0f && std::isfinite(extent))
-            scale[a] = static_cast<float>(nb) * (1.0f - 1e-6f) / extent;
+        if (extent > 0.0f && std::isfinite(extent)) scale[a] = static_cast<float>(nb) * (1.0f - 1e-6f) / extent;
     }
     const f4 zero = {0.0f, 0.0f, 0.0f, 0.0f}, top = {last, last, last, 0.0f};
-    auto bin_of = [&](f4 c) {   // NaN (0 * inf) lands in bin 0
+    auto bin_of = [&](f4 c) {  // NaN (0 * inf) lands in bin 0
         f4 f = vmin(vmax((c - origin) * scale, zero), top);
         return __builtin_convertvector(f, i4);
     };
@@ -188,22 +189,23 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
     std::fill(counts_.begin(), counts_.begin() + (two_sets ? 6 : 3) * nb, 0u);
     const PrimRef* __restrict refs = buf(t.buf);
     std::uint32_t i = t.begin;
-    if (two_sets) for (; i + 1 < t.end; i += 2) {
-        f4 lo0 = lo_of(refs[i]), hi0 = hi_of(refs[i]);
-        f4 lo1 = lo_of(refs[i + 1]), hi1 = hi_of(refs[i + 1]);
-        i4 x0 = bin_of(centroid2(lo0, hi0)) + i4{0, nb, 2 * nb, 0};
-        i4 x1 = bin_of(centroid2(lo1, hi1)) + i4{0, nb, 2 * nb, 0};
-        for (int a = 0; a < 3; ++a) {
-            Box& p = b0[x0[a]];
-            p.lo = vmin(p.lo, lo0);
-            p.hi = vmax(p.hi, hi0);
-            ++n0[x0[a]];
-            Box& q = b1[x1[a]];
-            q.lo = vmin(q.lo, lo1);
-            q.hi = vmax(q.hi, hi1);
-            ++n1[x1[a]];
+    if (two_sets)
+        for (; i + 1 < t.end; i += 2) {
+            f4 lo0 = lo_of(refs[i]), hi0 = hi_of(refs[i]);
+            f4 lo1 = lo_of(refs[i + 1]), hi1 = hi_of(refs[i + 1]);
+            i4 x0 = bin_of(centroid2(lo0, hi0)) + i4{0, nb, 2 * nb, 0};
+            i4 x1 = bin_of(centroid2(lo1, hi1)) + i4{0, nb, 2 * nb, 0};
+            for (int a = 0; a < 3; ++a) {
+                Box& p = b0[x0[a]];
+                p.lo = vmin(p.lo, lo0);
+                p.hi = vmax(p.hi, hi0);
+                ++n0[x0[a]];
+                Box& q = b1[x1[a]];
+                q.lo = vmin(q.lo, lo1);
+                q.hi = vmax(q.hi, hi1);
+                ++n1[x1[a]];
+            }
         }
-    }
     for (; i < t.end; ++i) {
         f4 lo0 = lo_of(refs[i]), hi0 = hi_of(refs[i]);
         i4 x0 = bin_of(centroid2(lo0, hi0)) + i4{0, nb, 2 * nb, 0};
@@ -240,7 +242,7 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
         }
     }
     const f4 zero4 = {0.0f, 0.0f, 0.0f, 0.0f};
-    const i4 axis_ok = (scale != zero4) & i4{-1, -1, -1, 0};   // an axis with extent
+    const i4 axis_ok = (scale != zero4) & i4{-1, -1, -1, 0};  // an axis with extent
     f4 best = {kInf, kInf, kInf, kInf};
     i4 best_at = {0, 0, 0, 0};
     {
@@ -285,7 +287,7 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
     const PrimRef* __restrict src = buf(t.buf) + t.begin;
     PrimRef* __restrict dst = buf(1 - t.buf) + t.begin;
     std::uint32_t nl = 0, nr = nl_bins;
-    auto partition = [&](auto axis) {   // the axis as a constant: a fixed lane
+    auto partition = [&](auto axis) {  // the axis as a constant: a fixed lane
         for (std::uint32_t k = 0; k < n; ++k) {
             const PrimRef& p = src[k];
             f4 c = centroid(p);
@@ -293,7 +295,7 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
             dst[right ? nr : nl] = p;
             nl += right ? 0u : 1u;
             nr += right ? 1u : 0u;
-            const i4 m = right ? i4{-1, -1, -1, -1} : i4{0, 0, 0, 0};   // all ones: right
+            const i4 m = right ? i4{-1, -1, -1, -1} : i4{0, 0, 0, 0};  // all ones: right
             lcbox.grow(m ? inf4 : c, m ? ninf4 : c);
             rcbox.grow(m ? c : inf4, m ? c : ninf4);
         }
@@ -319,7 +321,7 @@ bool Builder::exact_split(const Task& t, Split& s, float& best_cost) {
     const int n = static_cast<int>(t.end - t.begin);
     PrimRef* p = buf(t.buf) + t.begin;
     s.moved = false;
-    if (n == 2) {   // one way to split two
+    if (n == 2) {  // one way to split two
         s.lbox = s.lcbox = s.rbox = s.rcbox = Box{};
         f4 c0 = centroid(p[0]), c1 = centroid(p[1]);
         s.lbox.grow(lo_of(p[0]), hi_of(p[0]));
@@ -370,14 +372,14 @@ bool Builder::exact_split(const Task& t, Split& s, float& best_cost) {
             l2.grow(lo[order[2][i - 1]], hi[order[2][i - 1]]);
             const float fi = static_cast<float>(i), fr = static_cast<float>(n - i);
             const f4 cost = half_areas(l0, l1, l2) * f4{fi, fi, fi, fi} + right_area[i] * f4{fr, fr, fr, fr};
-            const i4 better = cost < best;   // strict: the first best split per axis
+            const i4 better = cost < best;  // strict: the first best split per axis
             best = better ? cost : best;
             best_at = better ? i4{i, i, i, i} : best_at;
         }
     }
     int best_i = 0;
     const int best_axis = std::max(cheapest_axis(best, best_at, best_cost, best_i), 0);
-    if (best_i == 0) return false;   // only NaN costs
+    if (best_i == 0) return false;  // only NaN costs
     PrimRef tmp[kExactMax];
     s.lbox = s.rbox = s.lcbox = s.rcbox = Box{};
     for (int i = 0; i < n; ++i) {
@@ -405,9 +407,7 @@ void Builder::median_split(const Task& t, Split& s) {
     PrimRef* p = buf(t.buf);
     if (ext[axis] > 0.0f)
         std::nth_element(p + t.begin, p + s.mid, p + t.end,
-                         [axis](const PrimRef& x, const PrimRef& y) {
-                             return centroid(x)[axis] < centroid(y)[axis];
-                         });
+                         [axis](const PrimRef& x, const PrimRef& y) { return centroid(x)[axis] < centroid(y)[axis]; });
     bounds(p, t.begin, s.mid, s.lbox, s.lcbox);
     bounds(p, s.mid, t.end, s.rbox, s.rcbox);
 }
@@ -417,7 +417,7 @@ bool Builder::decide(const Task& t, Split& s) {
     const std::uint32_t n = t.end - t.begin;
     if (n <= 1) return true;
     const bool fits = n <= max_leaf_;
-    if (t.depth + ceil_log2(n) >= kMaxLeafDepth) {   // too deep for the SAH: halve
+    if (t.depth + ceil_log2(n) >= kMaxLeafDepth) {  // too deep for the SAH: halve
         if (fits) return true;
         median_split(t, s);
         return false;
@@ -430,7 +430,7 @@ bool Builder::decide(const Task& t, Split& s) {
         float split_cost = opt_.traversal_cost + opt_.intersection_cost * (area > 0.0f ? cost / area : 0.0f);
         return fits && opt_.intersection_cost * static_cast<float>(n) <= split_cost;
     }
-    if (fits) return true;   // all centroids coincide: nothing to gain from splitting
+    if (fits) return true;  // all centroids coincide: nothing to gain from splitting
     median_split(t, s);
     return false;
 }
@@ -447,7 +447,7 @@ BuildOutput Builder::run() {
     }
     Task root{0, n, 0, -1, 0, {}, {}, 0};
     bounds(refs_.data(), 0, n, root.box, root.cbox);
-    double inner_sum = 0.0, leaf_sum = 0.0;   // sums of half areas
+    double inner_sum = 0.0, leaf_sum = 0.0;  // sums of half areas
 
     std::vector<Task> stack;
     stack.reserve(2 * kMaxLeafDepth + 2);
@@ -459,11 +459,11 @@ BuildOutput Builder::run() {
         const double area = static_cast<double>(t.box.half_area());
         if (decide(t, s)) {
             const std::uint32_t count = t.end - t.begin;
-            if (t.buf)   // leaves end in the caller's array
+            if (t.buf)  // leaves end in the caller's array
                 std::memcpy(static_cast<void*>(refs_.data() + t.begin), scratch_.get() + t.begin,
                             count * sizeof(PrimRef));
             int depth = t.depth;
-            if (t.parent < 0) {   // the whole input is one leaf: root = {leaf, empty}
+            if (t.parent < 0) {  // the whole input is one leaf: root = {leaf, empty}
                 set_child(out.nodes[0], 0, t.box);
                 set_ref(out.nodes[0], 0, t.begin, count);
                 set_empty_child(out.nodes[0], 1);
@@ -495,7 +495,8 @@ BuildOutput Builder::run() {
     const double root_area = static_cast<double>(root.box.half_area());
     if (root_area > 0.0)
         out.sah_cost = (static_cast<double>(opt_.traversal_cost) * inner_sum +
-                        static_cast<double>(opt_.intersection_cost) * leaf_sum) / root_area;
+                        static_cast<double>(opt_.intersection_cost) * leaf_sum) /
+                       root_area;
     return out;
 }
 
@@ -511,8 +512,6 @@ void set_empty_child(BinaryNode& node, int side) {
     set_ref(node, side, 0, 0);
 }
 
-BuildOutput build_sah(std::vector<PrimRef>& refs, const BvhOptions& options) {
-    return Builder(refs, options).run();
-}
+BuildOutput build_sah(std::vector<PrimRef>& refs, const BvhOptions& options) { return Builder(refs, options).run(); }
 
 }  // namespace facet::bvh_detail

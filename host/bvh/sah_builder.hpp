@@ -36,9 +36,9 @@ struct BinaryNode {
 
 struct BuildOutput {
     std::vector<BinaryNode> nodes;
-    double sah_cost = 0.0;      // normalised by the root's surface area
+    double sah_cost = 0.0;  // normalised by the root's surface area
     std::size_t leaves = 0;
-    int max_depth = 0;          // binary nodes on the longest root-to-leaf path
+    int max_depth = 0;  // binary nodes on the longest root-to-leaf path
     int max_leaf_size = 0;
 };
 

@@ -83,8 +83,8 @@ void throw_cl_error(const char* what, const cl::Error& e) {
     if (e.err() == CL_OUT_OF_RESOURCES || e.err() == CL_MEM_OBJECT_ALLOCATION_FAILURE ||
         e.err() == CL_OUT_OF_HOST_MEMORY)
         hint = " (the device ran out of memory or resources: try a smaller image or scene)";
-    throw Error(fmt::format("OpenCL error {} ({}) in {} while {}{}", cl_error_name(e.err()), e.err(),
-                            e.what(), what, hint));
+    throw Error(
+        fmt::format("OpenCL error {} ({}) in {} while {}{}", cl_error_name(e.err()), e.err(), e.what(), what, hint));
 }
 
 }  // namespace facet

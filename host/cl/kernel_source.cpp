@@ -77,12 +77,10 @@ bool parse_include(const std::string& line, std::string& target) {
     return true;
 }
 
-void append_file(const SourceTree& tree, const std::string& path, std::set<std::string>& seen,
-                 AssembledSource& out) {
-    if (!seen.insert(path).second) return;   // every file is taken in once (#pragma once)
+void append_file(const SourceTree& tree, const std::string& path, std::set<std::string>& seen, AssembledSource& out) {
+    if (!seen.insert(path).second) return;  // every file is taken in once (#pragma once)
     std::string content;
-    if (!tree.find(path, content))
-        throw Error(fmt::format("kernel source {} not found ({})", path, tree.origin()));
+    if (!tree.find(path, content)) throw Error(fmt::format("kernel source {} not found ({})", path, tree.origin()));
     out.files.push_back(path);
     out.text += fmt::format("#line 1 \"{}\"\n", path);
     std::istringstream in(content);
@@ -101,9 +99,10 @@ void append_file(const SourceTree& tree, const std::string& path, std::set<std::
         std::string resolved = normalise(fs::path(target));
         std::string dummy;
         if (resolved.rfind("kernels/", 0) != 0 || !tree.find(resolved, dummy))
-            throw Error(fmt::format("{}:{}: included file \"{}\" not found ({}); kernel includes name "
-                                    "their file from the repository root, as \"kernels/util/math.cl\"",
-                                    path, number, target, tree.origin()));
+            throw Error(
+                fmt::format("{}:{}: included file \"{}\" not found ({}); kernel includes name "
+                            "their file from the repository root, as \"kernels/util/math.cl\"",
+                            path, number, target, tree.origin()));
         append_file(tree, resolved, seen, out);
         out.text += fmt::format("#line {} \"{}\"\n", number + 1, path);
     }

@@ -12,7 +12,7 @@
 namespace facet {
 
 struct EmbeddedFile {
-    const char* path;     // relative to the repository root, e.g. "kernels/trace/bvh_traverse.cl"
+    const char* path;  // relative to the repository root, e.g. "kernels/trace/bvh_traverse.cl"
     const char* content;
 };
 
@@ -26,15 +26,14 @@ using EmbeddedTable = const std::vector<EmbeddedFile>& (*)();
 bool register_embedded_kernel_files(EmbeddedTable table);
 
 struct AssembledSource {
-    std::string text;                   // the whole program
-    std::vector<std::string> files;     // every file it took in, in order
-    std::string origin;                 // "embedded" or the directory read from
+    std::string text;                // the whole program
+    std::vector<std::string> files;  // every file it took in, in order
+    std::string origin;              // "embedded" or the directory read from
 };
 
 // Assembles the program rooted at `entry` (a path such as "kernels/integrator/path.cl"),
 // after the given preprocessor lines (e.g. "#define FC_FEATURE_X 1"). Throws
 // facet::Error naming the file and line of an include that cannot be found.
-AssembledSource assemble_program(const std::string& entry,
-                                 const std::vector<std::string>& prelude = {});
+AssembledSource assemble_program(const std::string& entry, const std::vector<std::string>& prelude = {});
 
 }  // namespace facet

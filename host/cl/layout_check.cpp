@@ -10,10 +10,9 @@
 
 namespace facet {
 
-#define FC_CHECK_STRUCT(T)                                                            \
-    static_assert(sizeof(T) % 16 == 0, #T " must be a multiple of 16 bytes");        \
-    static_assert(std::is_standard_layout_v<T> && std::is_trivially_copyable_v<T>,  \
-                  #T " must be a plain C struct");                                   \
+#define FC_CHECK_STRUCT(T)                                                                                          \
+    static_assert(sizeof(T) % 16 == 0, #T " must be a multiple of 16 bytes");                                       \
+    static_assert(std::is_standard_layout_v<T> && std::is_trivially_copyable_v<T>, #T " must be a plain C struct"); \
     static_assert(alignof(T) == 4, #T " must contain only 4-byte scalars");
 FC_LAYOUT_STRUCTS(FC_CHECK_STRUCT)
 #undef FC_CHECK_STRUCT

@@ -32,19 +32,19 @@ struct Found {
 
 std::vector<Found> discover() {
     std::vector<cl::Platform> platforms;
-    cl_int status = cl::Platform::get(&platforms);   // returns an error code for "no ICD"
+    cl_int status = cl::Platform::get(&platforms);  // returns an error code for "no ICD"
     if (status != CL_SUCCESS || platforms.empty())
-        throw Error(fmt::format(
-            "No OpenCL platform found ({}): install an OpenCL driver, e.g. `apt-get install "
-            "pocl-opencl-icd` for the CPU",
-            cl_error_name(status)));
+        throw Error(
+            fmt::format("No OpenCL platform found ({}): install an OpenCL driver, e.g. `apt-get install "
+                        "pocl-opencl-icd` for the CPU",
+                        cl_error_name(status)));
     std::vector<Found> found;
     for (const cl::Platform& platform : platforms) {
         std::vector<cl::Device> devices;
         try {
             platform.getDevices(CL_DEVICE_TYPE_ALL, &devices);
         } catch (const cl::Error&) {
-            continue;   // a platform without devices (CL_DEVICE_NOT_FOUND)
+            continue;  // a platform without devices (CL_DEVICE_NOT_FOUND)
         }
         for (const cl::Device& d : devices) {
             Found f;
@@ -86,14 +86,13 @@ const Found& select(const std::vector<Found>& found, const std::string& selector
     if (numeric) {
         std::size_t index = std::stoul(selector.substr(0, 9));
         if (index < found.size()) return found[index];
-        throw Error(fmt::format("--device {}: no device with that index; devices are:{}", selector,
-                                device_list(found)));
+        throw Error(
+            fmt::format("--device {}: no device with that index; devices are:{}", selector, device_list(found)));
     }
     std::string needle = lower(selector);
     for (const Found& f : found)
         if (lower(f.desc.platform + " " + f.desc.name).find(needle) != std::string::npos) return f;
-    throw Error(fmt::format("--device '{}': no device name contains it; devices are:{}", selector,
-                            device_list(found)));
+    throw Error(fmt::format("--device '{}': no device name contains it; devices are:{}", selector, device_list(found)));
 }
 
 // Keeps a failed program's source where the user can read it; returns the path.
@@ -214,8 +213,8 @@ std::string default_build_options() {
     return "-cl-std=CL1.2";
 }
 
-ProgramBuild build_program(const ClContext& ctx, const std::string& entry,
-                           const std::vector<std::string>& prelude, const std::string& extra_options) {
+ProgramBuild build_program(const ClContext& ctx, const std::string& entry, const std::vector<std::string>& prelude,
+                           const std::string& extra_options) {
     ProgramBuild build;
     build.source = assemble_program(entry, prelude);
     build.options = default_build_options();
@@ -256,11 +255,11 @@ ProgramBuild build_program(const ClContext& ctx, const std::string& entry,
             log = "(no build log available)";
         }
         std::string kept = keep_source(build.source.text);
-        throw Error(fmt::format(
-            "kernel build failed ({}) for {}\n  device: {} / {} ({})\n  options: {}\n  source: {} "
-            "(assembled from {}, kept at {})\n--- build log ---\n{}",
-            cl_error_name(status), entry, ctx.desc().platform, ctx.desc().name, ctx.desc().driver,
-            build.options, entry, build.source.origin, kept, trimmed(log)));
+        throw Error(
+            fmt::format("kernel build failed ({}) for {}\n  device: {} / {} ({})\n  options: {}\n  source: {} "
+                        "(assembled from {}, kept at {})\n--- build log ---\n{}",
+                        cl_error_name(status), entry, ctx.desc().platform, ctx.desc().name, ctx.desc().driver,
+                        build.options, entry, build.source.origin, kept, trimmed(log)));
     }
     return build;
 }

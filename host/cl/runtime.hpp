@@ -14,18 +14,18 @@
 namespace facet {
 
 struct DeviceDesc {
-    int index = 0;                 // position in list_devices(), the number --device takes
+    int index = 0;  // position in list_devices(), the number --device takes
     std::string platform;
     std::string name;
     std::string vendor;
-    std::string version;           // CL_DEVICE_VERSION
-    std::string c_version;         // CL_DEVICE_OPENCL_C_VERSION
-    std::string driver;            // CL_DRIVER_VERSION
+    std::string version;    // CL_DEVICE_VERSION
+    std::string c_version;  // CL_DEVICE_OPENCL_C_VERSION
+    std::string driver;     // CL_DRIVER_VERSION
     cl_device_type type = 0;
     std::uint64_t global_mem = 0;
     std::uint64_t max_alloc = 0;
     std::uint32_t compute_units = 0;
-    std::string type_name() const;   // "GPU", "CPU", "accelerator", ...
+    std::string type_name() const;  // "GPU", "CPU", "accelerator", ...
 };
 
 // Every device of every platform, in a stable order. Throws facet::Error when no
@@ -64,9 +64,9 @@ struct ProgramBuild {
     cl::Program program;
     AssembledSource source;
     std::string options;
-    double seconds = 0.0;          // wall time of the build (from source or from the cache)
-    bool from_cache = false;       // loaded from facet's program-binary cache
-    std::string cache_file;        // the cache entry used or written ("" when not caching)
+    double seconds = 0.0;     // wall time of the build (from source or from the cache)
+    bool from_cache = false;  // loaded from facet's program-binary cache
+    std::string cache_file;   // the cache entry used or written ("" when not caching)
 };
 
 // The size of the program's device binary, where the driver reports one. Not part of
@@ -88,8 +88,7 @@ std::string default_build_options();
 // OpenCL version and the driver version, lives in $FACET_CACHE_DIR (default
 // $XDG_CACHE_HOME/facet/kernels, else ~/.cache/facet/kernels), is written atomically,
 // and a binary the driver refuses falls back to a source build that replaces it.
-ProgramBuild build_program(const ClContext& ctx, const std::string& entry,
-                           const std::vector<std::string>& prelude = {},
+ProgramBuild build_program(const ClContext& ctx, const std::string& entry, const std::vector<std::string>& prelude = {},
                            const std::string& extra_options = "");
 
 // ---- implementation of the template above ----

@@ -25,7 +25,7 @@ const CLI::Validator kFinite(
     [](std::string& text) {
         char* end = nullptr;
         const double v = std::strtod(text.c_str(), &end);
-        if (end == text.c_str() || *end != '\0') return std::string();   // left to the conversion's message
+        if (end == text.c_str() || *end != '\0') return std::string();  // left to the conversion's message
         return std::isfinite(v) ? std::string() : "Value " + text + " is not a finite number";
     },
     "FINITE");
@@ -38,7 +38,7 @@ CLI::Validator in_range(SettingRange range) {
             char* end = nullptr;
             errno = 0;
             const long long v = std::strtoll(text.c_str(), &end, 10);
-            if (end == text.c_str() || *end != '\0') return std::string();   // left to the conversion's message
+            if (end == text.c_str() || *end != '\0') return std::string();  // left to the conversion's message
             if (errno == ERANGE || !range.contains(v)) return fmt::format("Value {} is not {}", text, range.words());
             return std::string();
         },
@@ -50,7 +50,7 @@ const CLI::Validator kSeconds(
     [](std::string& text) {
         char* end = nullptr;
         const double v = std::strtod(text.c_str(), &end);
-        if (end == text.c_str() || *end != '\0') return std::string();   // left to the conversion's message
+        if (end == text.c_str() || *end != '\0') return std::string();  // left to the conversion's message
         return v > 0.0 ? std::string() : fmt::format("Value {} is not {}", text, limits::kTimeWords);
     },
     "SECONDS > 0");
@@ -72,44 +72,57 @@ int run_cli(int argc, char** argv) {
     CLI::App* render = app.add_subcommand("render", "Render a scene progressively to EXR + PNG");
     render->add_option("scene", opt.scene, "Scene file (.json) or mesh (.obj)")->required();
     render->add_option("--spp", opt.spp, "Samples per pixel (default: the scene's)")->check(in_range(limits::kSpp));
-    render->add_option("--time", opt.time_limit, "Stop after this many seconds of rendering (whichever of --spp and --time ends first)")
+    render
+        ->add_option("--time", opt.time_limit,
+                     "Stop after this many seconds of rendering (whichever of --spp and --time ends first)")
         ->check(kFinite & kSeconds);
-    render->add_option("--width", opt.width, "Image width in pixels (default: the scene's)")->check(in_range(limits::kWidth));
-    render->add_option("--height", opt.height, "Image height in pixels (default: the scene's)")->check(in_range(limits::kHeight));
+    render->add_option("--width", opt.width, "Image width in pixels (default: the scene's)")
+        ->check(in_range(limits::kWidth));
+    render->add_option("--height", opt.height, "Image height in pixels (default: the scene's)")
+        ->check(in_range(limits::kHeight));
     render->add_option("--max-depth", opt.max_depth, "Maximum number of bounces (1 = direct light only)")
         ->check(in_range(limits::kMaxDepth));
     render->add_option("--seed", opt.seed, "Seed of the random stream (same seed and settings give the same image)")
         ->check(in_range(limits::kSeed));
-    render->add_option("--strategy", opt.strategy,
-                       "Direct light from area lights and the environment: mis (default), light (light sampling only) "
-                       "or bsdf (BSDF sampling only); for measuring the strategies")
-        ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT},
-                                                                        {"bsdf", FC_STRATEGY_BSDF}}));
-    render->add_option("--sampler", opt.sampler,
-                       "Sample generator: sobol (default; Owen-scrambled Sobol', Burley 2020) or independent (PCG32)")
-        ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"sobol", FC_SAMPLER_SOBOL},
-                                                                        {"independent", FC_SAMPLER_INDEPENDENT}}));
-    render->add_option("--device", opt.device, "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU)");
+    render
+        ->add_option("--strategy", opt.strategy,
+                     "Direct light from area lights and the environment: mis (default), light (light sampling only) "
+                     "or bsdf (BSDF sampling only); for measuring the strategies")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, int>{
+            {"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT}, {"bsdf", FC_STRATEGY_BSDF}}));
+    render
+        ->add_option("--sampler", opt.sampler,
+                     "Sample generator: sobol (default; Owen-scrambled Sobol', Burley 2020) or independent (PCG32)")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, int>{{"sobol", FC_SAMPLER_SOBOL}, {"independent", FC_SAMPLER_INDEPENDENT}}));
+    render->add_option("--device", opt.device,
+                       "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU)");
     render->add_option("--out", opt.out,
                        "Output image, linear 32-bit float: .exr (or .hdr, .tif, .pfm); the tone-mapped PNG is written "
                        "beside it with .png (so --out cannot be a .png); default out/<scene>.exr");
     render->add_option("--snapshot", opt.snapshot, "Write the image so far (and the report) every SECONDS")
         ->check(kFinite & kSeconds);
-    render->add_option("--reference", opt.reference, "Reference image (EXR/HDR) to measure the error against, per pass");
-    render->add_option("--report", opt.report, "Error-against-time report (CSV; .json summary and .svg plot beside it); default beside --out");
-    render->add_option("--film", opt.film,
-                       "Also save the film (the accumulated samples, docs/film-format.md) here at the end; without it "
-                       "the film is saved beside --out (.film) only when interrupted or when the image cannot be written");
+    render->add_option("--reference", opt.reference,
+                       "Reference image (EXR/HDR) to measure the error against, per pass");
+    render->add_option("--report", opt.report,
+                       "Error-against-time report (CSV; .json summary and .svg plot beside it); default beside --out");
+    render->add_option(
+        "--film", opt.film,
+        "Also save the film (the accumulated samples, docs/film-format.md) here at the end; without it "
+        "the film is saved beside --out (.film) only when interrupted or when the image cannot be written");
     render->add_option("--resume", opt.resume,
                        "Continue the render saved in this film (same scene and settings; --spp and --time count its "
                        "samples and time too)");
-    render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops")->check(kFinite & CLI::Range(-30.0f, 30.0f));
-    render->add_flag("--generic", opt.generic,
-                     "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
+    render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops")
+        ->check(kFinite & CLI::Range(-30.0f, 30.0f));
+    render->add_flag(
+        "--generic", opt.generic,
+        "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
     render->add_flag("--quiet,-q", opt.quiet, "Print only errors and the final summary");
 
     CompareOptions cmp;
-    CLI::App* compare = app.add_subcommand("compare", "Error metrics (MSE, RMSE, relMSE) of an image against a reference");
+    CLI::App* compare =
+        app.add_subcommand("compare", "Error metrics (MSE, RMSE, relMSE) of an image against a reference");
     compare->add_option("image", cmp.image, "Image (EXR, HDR, ...)")->required();
     compare->add_option("reference", cmp.reference, "Reference image of the same size")->required();
 
@@ -119,12 +132,16 @@ int run_cli(int argc, char** argv) {
     plot_cmd->add_option("--out", plot.out, "Output SVG (default: the report with .svg)");
 
     SkyOptions sky;
-    CLI::App* sky_cmd = app.add_subcommand("sky", "Write the generated sun-and-sky environment map as EXR (docs/environment.md)");
+    CLI::App* sky_cmd =
+        app.add_subcommand("sky", "Write the generated sun-and-sky environment map as EXR (docs/environment.md)");
     sky_cmd->add_option("out", sky.out, "Output EXR")->required();
     sky_cmd->add_option("--width", sky.width, "Width in texels (height is half)")->check(CLI::Range(8, 16384));
-    sky_cmd->add_option("--elevation", sky.elevation, "Sun elevation in degrees")->check(kFinite & CLI::Range(-10.0f, 90.0f));
-    sky_cmd->add_option("--azimuth", sky.azimuth, "Sun azimuth in degrees")->check(kFinite & CLI::Range(-360.0f, 360.0f));
-    sky_cmd->add_option("--turbidity", sky.turbidity, "Atmospheric turbidity (Preetham's model)")->check(kFinite & CLI::Range(1.7f, 10.0f));
+    sky_cmd->add_option("--elevation", sky.elevation, "Sun elevation in degrees")
+        ->check(kFinite & CLI::Range(-10.0f, 90.0f));
+    sky_cmd->add_option("--azimuth", sky.azimuth, "Sun azimuth in degrees")
+        ->check(kFinite & CLI::Range(-360.0f, 360.0f));
+    sky_cmd->add_option("--turbidity", sky.turbidity, "Atmospheric turbidity (Preetham's model)")
+        ->check(kFinite & CLI::Range(1.7f, 10.0f));
 
     try {
         app.parse(argc, argv);

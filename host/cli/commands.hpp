@@ -11,19 +11,19 @@ struct RenderOptions {
     std::string scene;
     std::optional<int> spp, width, height, max_depth;
     std::optional<std::uint32_t> seed;
-    std::optional<int> strategy;   // FC_STRATEGY_*
-    std::optional<int> sampler;    // FC_SAMPLER_*
+    std::optional<int> strategy;  // FC_STRATEGY_*
+    std::optional<int> sampler;   // FC_SAMPLER_*
     std::optional<double> time_limit;
     std::string device;
     std::string out;
-    std::string report;      // CSV; summary .json and plot .svg beside it
-    std::string reference;   // image to measure the error against
-    std::string film;        // --film: the accumulated samples, saved at the end (docs/film-format.md)
-    std::string resume;      // --resume: a film to continue
-    std::optional<double> snapshot;   // seconds between snapshots of the image so far
+    std::string report;              // CSV; summary .json and plot .svg beside it
+    std::string reference;           // image to measure the error against
+    std::string film;                // --film: the accumulated samples, saved at the end (docs/film-format.md)
+    std::string resume;              // --resume: a film to continue
+    std::optional<double> snapshot;  // seconds between snapshots of the image so far
     float exposure = 0.0f;
     bool quiet = false;
-    bool generic = false;   // build every kernel feature, not only the scene's
+    bool generic = false;  // build every kernel feature, not only the scene's
 };
 
 struct CompareOptions {
@@ -47,8 +47,8 @@ struct InfoOptions {
 // Exit statuses of `facet render` (documented in the README).
 constexpr int kExitOk = 0;
 constexpr int kExitError = 1;
-constexpr int kExitUsage = 2;           // bad command line (the message names the option)
-constexpr int kExitInterrupted = 130;   // stopped by SIGINT/SIGTERM; the image so far was written
+constexpr int kExitUsage = 2;          // bad command line (the message names the option)
+constexpr int kExitInterrupted = 130;  // stopped by SIGINT/SIGTERM; the image so far was written
 
 int run_devices();
 int run_info(const InfoOptions& opt);

@@ -15,14 +15,13 @@ int run_compare(const CompareOptions& opt) {
     ImageRGB a = read_image(opt.image);
     ImageRGB b = read_image(opt.reference);
     if (a.width != b.width || a.height != b.height)
-        throw Error(fmt::format("{} is {}x{} but {} is {}x{}", opt.image, a.width, a.height, opt.reference, b.width,
-                                b.height));
+        throw Error(
+            fmt::format("{} is {}x{} but {} is {}x{}", opt.image, a.width, a.height, opt.reference, b.width, b.height));
     for (std::size_t i = 0; i < a.rgb.size(); ++i)
         if (!std::isfinite(a.rgb[i]))
             throw Error(fmt::format("{}: texel {} (pixel {}) is not finite", opt.image, i % 3, i / 3));
     ErrorMetrics m = compare_images(a.rgb, b.rgb, opt.reference);
-    for (const auto& [path, img] : {std::pair{opt.image, &a}, std::pair{opt.reference, &b}})
-    {
+    for (const auto& [path, img] : {std::pair{opt.image, &a}, std::pair{opt.reference, &b}}) {
         double mean[3] = {0, 0, 0};
         for (std::size_t i = 0; i < img->rgb.size(); ++i) mean[i % 3] += double(img->rgb[i]);
         const double n = double(img->rgb.size() / 3);

@@ -16,8 +16,8 @@ int run_devices() {
         }
         fmt::print("  [{}] {} ({})\n", d.index, d.name, d.type_name());
         fmt::print("      {}, {}, driver {}\n", d.version, d.c_version, d.driver);
-        fmt::print("      {} compute units, {:.0f} MiB global memory, {:.0f} MiB max allocation\n",
-                   d.compute_units, double(d.global_mem) / (1 << 20), double(d.max_alloc) / (1 << 20));
+        fmt::print("      {} compute units, {:.0f} MiB global memory, {:.0f} MiB max allocation\n", d.compute_units,
+                   double(d.global_mem) / (1 << 20), double(d.max_alloc) / (1 << 20));
     }
     return kExitOk;
 }

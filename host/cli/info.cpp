@@ -15,8 +15,8 @@ int run_info(const InfoOptions& opt) {
     Bvh bvh = build_bvh(scene.vertices);
     const BvhStats& b = bvh.stats;
     std::size_t shading_bytes = scene.shading.size() * sizeof(FcTriShading) +
-                                scene.materials.size() * sizeof(FcMaterial) +
-                                scene.lights.size() * sizeof(FcLight) + scene.light_cdf.size() * sizeof(float);
+                                scene.materials.size() * sizeof(FcMaterial) + scene.lights.size() * sizeof(FcLight) +
+                                scene.light_cdf.size() * sizeof(float);
     std::size_t film_bytes = std::size_t(scene.settings.width) * scene.settings.height * 16;
     fmt::print("scene       {}\n", scene.source_path);
     fmt::print("triangles   {}\n", scene.triangle_count());
@@ -25,7 +25,9 @@ int run_info(const InfoOptions& opt) {
         const Material& m = scene.materials[i];
         bool emits = m.emission[0] > 0 || m.emission[1] > 0 || m.emission[2] > 0;
         fmt::print("  [{}] {:<20} {}{}\n", i, scene.material_names[i], describe_material(m),
-                   emits ? fmt::format(" emission ({:.3f}, {:.3f}, {:.3f})", m.emission[0], m.emission[1], m.emission[2]) : "");
+                   emits
+                       ? fmt::format(" emission ({:.3f}, {:.3f}, {:.3f})", m.emission[0], m.emission[1], m.emission[2])
+                       : "");
     }
     std::size_t area = 0, punctual = 0;
     for (const FcLight& l : scene.lights) {
@@ -38,8 +40,8 @@ int run_info(const InfoOptions& opt) {
                    ? "constant"
                    : fmt::format("{}x{} map", scene.environment.params.width, scene.environment.params.height));
     fmt::print("features    {}\n", describe_features(scene_features(scene)));
-    fmt::print("bvh         {} nodes, {} leaves, depth {}, max leaf {}, SAH cost {:.2f}, built in {:.3f} s\n",
-               b.nodes, b.leaves, b.max_depth, b.max_leaf_size, b.sah_cost, b.build_seconds);
+    fmt::print("bvh         {} nodes, {} leaves, depth {}, max leaf {}, SAH cost {:.2f}, built in {:.3f} s\n", b.nodes,
+               b.leaves, b.max_depth, b.max_leaf_size, b.sah_cost, b.build_seconds);
     fmt::print("image       {}x{}, {} spp, max depth {}\n", scene.settings.width, scene.settings.height,
                scene.settings.spp, scene.settings.max_depth);
     fmt::print("device mem  {:.2f} MiB (bvh {:.2f}, shading {:.2f}, film {:.2f})\n",

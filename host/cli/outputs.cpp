@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Named {
-    std::string label;   // how the message names it: "--out", "the PNG beside --out"
+    std::string label;  // how the message names it: "--out", "the PNG beside --out"
     std::string path;
 };
 
@@ -34,16 +34,14 @@ fs::path key(const std::string& path) {
 bool same_file(const std::string& a, const std::string& b) {
     if (key(a) == key(b)) return true;
     std::error_code ec;
-    return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec) && !ec;   // hard links
+    return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec) && !ec;  // hard links
 }
 
 }  // namespace
 
 OutputPlan plan_outputs(const RenderOptions& opt) {
     OutputPlan plan;
-    plan.image = opt.out.empty()
-                     ? (fs::path("out") / fs::path(opt.scene).stem()).string() + ".exr"
-                     : opt.out;
+    plan.image = opt.out.empty() ? (fs::path("out") / fs::path(opt.scene).stem()).string() + ".exr" : opt.out;
     plan.png = replace_extension(plan.image, ".png");
     plan.report = opt.report.empty() ? replace_extension(plan.image, ".csv") : opt.report;
     plan.report_json = replace_extension(plan.report, ".json");

@@ -12,13 +12,13 @@
 namespace facet {
 
 struct OutputPlan {
-    std::string image;         // --out: linear floats (.exr; or .hdr, .tif, .pfm)
-    std::string png;           // the tone-mapped sRGB PNG beside it
-    std::string report;        // CSV
-    std::string report_json;   // summary beside the CSV
-    std::string report_svg;    // plot beside the CSV
-    std::string film;          // --film, else beside --out
-    bool film_requested = false;   // --film given: written at every end, not only on interrupt or failure
+    std::string image;            // --out: linear floats (.exr; or .hdr, .tif, .pfm)
+    std::string png;              // the tone-mapped sRGB PNG beside it
+    std::string report;           // CSV
+    std::string report_json;      // summary beside the CSV
+    std::string report_svg;       // plot beside the CSV
+    std::string film;             // --film, else beside --out
+    bool film_requested = false;  // --film given: written at every end, not only on interrupt or failure
 };
 
 // The outputs of a render with these options (defaults: out/<scene>.exr and the rest

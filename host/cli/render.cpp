@@ -100,7 +100,7 @@ bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const Re
         try {
             write_image(rescue, rgb, r, scene, exposure, wall_s, true);
             say(stderr, "facet: the image was saved to {} (and {}) instead\n", rescue,
-                       replace_extension(rescue, ".png"));
+                replace_extension(rescue, ".png"));
         } catch (const Error& e) {
             say(stderr, "facet: error: the image could not be saved to {} either: {}\n", rescue, e.what());
         }
@@ -121,7 +121,7 @@ bool save_film_or_rescue(const OutputPlan& plan, const Renderer& r, const Scene&
     }
     if (!film.empty())
         say(stderr, "facet: the film ({} spp) is saved in {}{}; continue with --resume {}\n",
-                   r.stats().samples_per_pixel, film, ok ? "" : " instead", film);
+            r.stats().samples_per_pixel, film, ok ? "" : " instead", film);
     return ok;
 }
 
@@ -137,7 +137,7 @@ public:
         if (!armed_ || std::uncaught_exceptions() <= exceptions_ || r_.stats().samples_per_pixel == 0) return;
         try {
             save_film_or_rescue(plan_, r_, scene_, hash_);
-        } catch (...) {   // best effort while another error is on its way
+        } catch (...) {  // best effort while another error is on its way
         }
     }
     FilmOnError(const FilmOnError&) = delete;
@@ -156,8 +156,8 @@ private:
 // progress line and (on request) a snapshot, which is best effort: a failed snapshot
 // is a warning and the render goes on.
 std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene, Renderer& renderer,
-                       const std::optional<ImageRGB>& reference, const std::string& out, const std::string& report,
-                       Clock::time_point start, const StopSignals& signals) {
+                                    const std::optional<ImageRGB>& reference, const std::string& out,
+                                    const std::string& report, Clock::time_point start, const StopSignals& signals) {
     std::vector<PassRecord> passes;
     Progress progress(opt.quiet);
     const std::uint64_t target = std::uint64_t(scene.settings.spp);
@@ -205,7 +205,7 @@ std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene
 
 int run_render(const RenderOptions& opt) {
     auto start = Clock::now();
-    const SigpipeIgnored sigpipe_ignored;   // `facet render ... | head -1` renders on
+    const SigpipeIgnored sigpipe_ignored;  // `facet render ... | head -1` renders on
     Scene scene = load_scene(opt.scene);
     apply_overrides(opt, scene);
     for (const std::string& w : scene.warnings) say(stderr, "facet: warning: {}\n", w);
@@ -247,7 +247,8 @@ int run_render(const RenderOptions& opt) {
         return kExitInterrupted;
     }
     if (interrupted)
-        say(stderr, "facet: interrupted; writing the {} spp finished so far (further Ctrl-C is ignored until written)\n",
+        say(stderr,
+            "facet: interrupted; writing the {} spp finished so far (further Ctrl-C is ignored until written)\n",
             st.samples_per_pixel);
 
     double rejected = 0.0;

@@ -19,7 +19,7 @@ void install(int sig, void (*handler)(int), struct sigaction* old) {
     struct sigaction sa {};
     sa.sa_handler = handler;
     sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESTART;   // the OpenCL runtime's waits carry on
+    sa.sa_flags = SA_RESTART;  // the OpenCL runtime's waits carry on
     sigaction(sig, &sa, old);
 }
 

@@ -24,7 +24,8 @@ public:
     int count() const;
 
 private:
-    struct sigaction old_int_{}, old_term_{}, old_hup_{};
+    struct sigaction old_int_ {
+    }, old_term_{}, old_hup_{};
 };
 
 class SigpipeIgnored {
@@ -35,7 +36,7 @@ public:
     SigpipeIgnored& operator=(const SigpipeIgnored&) = delete;
 
 private:
-    struct sigaction old_{};
+    struct sigaction old_ {};
 };
 
 }  // namespace facet

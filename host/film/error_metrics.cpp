@@ -17,8 +17,7 @@ ErrorMetrics compare_images(const std::vector<float>& image, const std::vector<f
     ErrorMetrics m;
     for (std::size_t i = 0; i < image.size(); ++i) {
         double ref = reference[i];
-        if (!std::isfinite(ref))
-            throw Error(fmt::format("{}: texel {} (pixel {}) is not finite", what, i % 3, i / 3));
+        if (!std::isfinite(ref)) throw Error(fmt::format("{}: texel {} (pixel {}) is not finite", what, i % 3, i / 3));
         double d = double(image[i]) - ref;
         m.mse += d * d;
         m.relmse += d * d / ((ref + 0.01) * (ref + 0.01));

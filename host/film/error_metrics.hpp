@@ -9,9 +9,9 @@
 namespace facet {
 
 struct ErrorMetrics {
-    double mse = 0.0;      // mean over pixels and channels of (v - ref)^2
-    double rmse = 0.0;     // sqrt(mse)
-    double relmse = 0.0;   // mean of (v - ref)^2 / (ref + 0.01)^2, pbrt-v4's relative MSE
+    double mse = 0.0;     // mean over pixels and channels of (v - ref)^2
+    double rmse = 0.0;    // sqrt(mse)
+    double relmse = 0.0;  // mean of (v - ref)^2 / (ref + 0.01)^2, pbrt-v4's relative MSE
 };
 
 // Metrics of `image` against `reference` (both 3 floats a pixel, same size). Throws
@@ -30,8 +30,8 @@ ErrorMetrics compare_images(const std::vector<float>& image, const std::vector<f
 // relmse divides by (m + 0.01)^2 with m the combined image itself, which makes it
 // slightly biased (the denominator is noisy); rmse and mse are unbiased for the
 // variance part of the error.
-ErrorMetrics estimate_error(const std::vector<float>& a, const std::vector<float>& b,
-                            std::uint64_t n_a, std::uint64_t n_b);
+ErrorMetrics estimate_error(const std::vector<float>& a, const std::vector<float>& b, std::uint64_t n_a,
+                            std::uint64_t n_b);
 
 // Least-squares slope of log(y) against log(x) over the points with x > 0 and y > 0;
 // NaN when fewer than 3 such points or x spans no range.

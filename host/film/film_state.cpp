@@ -39,7 +39,9 @@ struct Fnv {
         bytes(v.data(), v.size() * sizeof(T));
     }
     template <typename T>
-    void value(const T& v) { bytes(&v, sizeof v); }
+    void value(const T& v) {
+        bytes(&v, sizeof v);
+    }
 };
 
 std::uint64_t payload_hash(const std::vector<float>& sums) {
@@ -173,9 +175,10 @@ FilmState read_film(const std::string& path) {
         throw Error(fmt::format("{}: the film claims {}x{} pixels", path, film.width, film.height));
     const std::uint64_t want = 2 * std::uint64_t(film.width) * std::uint64_t(film.height) * 4;
     if (floats != want || size - sizeof head - header_bytes != want * sizeof(float))
-        throw Error(fmt::format("{}: the film of {}x{} pixels should hold {} bytes of samples, but has {}: "
-                                "truncated or corrupt",
-                                path, film.width, film.height, want * sizeof(float), size - sizeof head - header_bytes));
+        throw Error(
+            fmt::format("{}: the film of {}x{} pixels should hold {} bytes of samples, but has {}: "
+                        "truncated or corrupt",
+                        path, film.width, film.height, want * sizeof(float), size - sizeof head - header_bytes));
     film.sums.resize(want);
     if (!in.read(reinterpret_cast<char*>(film.sums.data()), std::streamsize(want * sizeof(float))))
         throw Error(fmt::format("{}: cannot read the film's samples", path));
@@ -188,9 +191,10 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
                         std::uint64_t scene_hash) {
     const RenderSettings& s = scene.settings;
     auto refuse = [&](const std::string& what, const std::string& film_value, const std::string& now) {
-        throw Error(fmt::format("--resume {}: the film was rendered with {} {}, this render has {}: samples of "
-                                "different renders cannot be combined",
-                                film_path, what, film_value, now));
+        throw Error(
+            fmt::format("--resume {}: the film was rendered with {} {}, this render has {}: samples of "
+                        "different renders cannot be combined",
+                        film_path, what, film_value, now));
     };
     if (film.scene_hash != scene_hash)
         refuse("another scene:", fmt::format("{} (hash {:016x})", film.scene_path, film.scene_hash),
@@ -200,15 +204,19 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
     if (film.seed != s.seed) refuse("--seed", std::to_string(film.seed), std::to_string(s.seed));
     if (film.max_depth != s.max_depth)
         refuse("--max-depth", std::to_string(film.max_depth), std::to_string(s.max_depth));
-    if (film.rr_depth != s.rr_depth) refuse("Russian roulette depth", std::to_string(film.rr_depth), std::to_string(s.rr_depth));
+    if (film.rr_depth != s.rr_depth)
+        refuse("Russian roulette depth", std::to_string(film.rr_depth), std::to_string(s.rr_depth));
     auto strategy = [](int v) {
-        return v == FC_STRATEGY_MIS ? std::string("mis") : v == FC_STRATEGY_LIGHT ? std::string("light")
-             : v == FC_STRATEGY_BSDF ? std::string("bsdf") : std::to_string(v);
+        return v == FC_STRATEGY_MIS     ? std::string("mis")
+               : v == FC_STRATEGY_LIGHT ? std::string("light")
+               : v == FC_STRATEGY_BSDF  ? std::string("bsdf")
+                                        : std::to_string(v);
     };
     if (film.strategy != s.strategy) refuse("--strategy", strategy(film.strategy), strategy(s.strategy));
     auto sampler = [](int v) {
-        return v == FC_SAMPLER_SOBOL ? std::string("sobol") : v == FC_SAMPLER_INDEPENDENT ? std::string("independent")
-                                                                                          : std::to_string(v);
+        return v == FC_SAMPLER_SOBOL         ? std::string("sobol")
+               : v == FC_SAMPLER_INDEPENDENT ? std::string("independent")
+                                             : std::to_string(v);
     };
     if (film.sampler != s.sampler) refuse("--sampler", sampler(film.sampler), sampler(s.sampler));
 }

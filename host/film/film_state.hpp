@@ -14,12 +14,12 @@ namespace facet {
 struct Scene;
 
 struct FilmState {
-    std::string scene_path;          // for messages only
-    std::uint64_t scene_hash = 0;    // film_scene_hash(): geometry, materials, lights, camera, environment
+    std::string scene_path;        // for messages only
+    std::uint64_t scene_hash = 0;  // film_scene_hash(): geometry, materials, lights, camera, environment
     int width = 0, height = 0;
     std::uint32_t seed = 0;
     int max_depth = 0, rr_depth = 0, strategy = 0, sampler = 0;
-    std::uint64_t spp = 0;           // samples in every pixel: indices [0, spp), even ones in the first half
+    std::uint64_t spp = 0;  // samples in every pixel: indices [0, spp), even ones in the first half
     double render_seconds = 0.0;
     // 2 * width * height RGBA float sums: the even-sample half, then the odd-sample half;
     // A counts the samples the kernel rejected (render/renderer.hpp).

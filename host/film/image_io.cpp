@@ -117,12 +117,13 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
     if (std::int64_t(spec.width) * spec.height > kMaxImagePixels)
         throw Error(fmt::format("{}: the image claims {}x{} pixels: at most 2^28 pixels are supported", path,
                                 spec.width, spec.height));
-    const int channels = std::min(spec.nchannels, 3);   // R, G, B (or grey); alpha and the rest unused
+    const int channels = std::min(spec.nchannels, 3);  // R, G, B (or grey); alpha and the rest unused
     const std::uint64_t decoded = std::uint64_t(spec.width) * std::uint64_t(spec.height) * 3u * sizeof(float);
     if (decoded > kSmallImageBytes && decoded / kMaxDecodedPerFileByte > file_size)
-        throw Error(fmt::format("{}: the image claims {}x{} pixels ({} MiB decoded) but the file has only {} bytes: "
-                                "it is truncated or corrupt",
-                                path, spec.width, spec.height, decoded >> 20, file_size));
+        throw Error(
+            fmt::format("{}: the image claims {}x{} pixels ({} MiB decoded) but the file has only {} bytes: "
+                        "it is truncated or corrupt",
+                        path, spec.width, spec.height, decoded >> 20, file_size));
     std::vector<float> all(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
     if (!in->read_image(0, 0, 0, channels, TypeDesc::FLOAT, all.data()))
         throw Error(fmt::format("{}: cannot read pixels: {}", path, in->geterror()));
@@ -181,7 +182,7 @@ void check_image_header(const std::string& path) {
         return std::int32_t(v);
     };
     const std::uint32_t flags = std::uint32_t(int32_at(4));
-    const bool single_part_scanlines = (flags & 0x1a00u) == 0;   // not tiled, deep or multi-part
+    const bool single_part_scanlines = (flags & 0x1a00u) == 0;  // not tiled, deep or multi-part
     std::size_t at = 8;
     bool have_window = false;
     std::int64_t width = 0, height = 0;
@@ -197,10 +198,11 @@ void check_image_header(const std::string& path) {
         const std::size_t value = type_end + 5;
         // OpenEXR allocates an attribute's declared size before reading it.
         if (size < 0 || std::uintmax_t(value) + std::uintmax_t(size) > file_size)
-            throw Error(fmt::format("{}: the EXR header's attribute '{}' claims {} bytes, but the file has {}: it is "
-                                    "truncated or corrupt",
-                                    path, name.substr(0, 64), size, file_size));
-        if (value + std::size_t(size) > head.size()) return;   // a long header: left to OpenEXR
+            throw Error(
+                fmt::format("{}: the EXR header's attribute '{}' claims {} bytes, but the file has {}: it is "
+                            "truncated or corrupt",
+                            path, name.substr(0, 64), size, file_size));
+        if (value + std::size_t(size) > head.size()) return;  // a long header: left to OpenEXR
         if (name == "dataWindow" && type == "box2i" && size == 16) {
             width = std::int64_t(int32_at(value + 8)) - int32_at(value) + 1;
             height = std::int64_t(int32_at(value + 12)) - int32_at(value + 4) + 1;
@@ -215,18 +217,21 @@ void check_image_header(const std::string& path) {
     }
     if (!have_window || width < 1 || height < 1) return;
     if (width * height > kMaxImagePixels)
-        throw Error(fmt::format("{}: the EXR header claims a data window of {}x{} pixels: at most 2^28 pixels are "
-                                "supported",
-                                path, width, height));
+        throw Error(
+            fmt::format("{}: the EXR header claims a data window of {}x{} pixels: at most 2^28 pixels are "
+                        "supported",
+                        path, width, height));
     // A single-part tiled file: the offset table holds at least one entry per tile of
     // the full-resolution level (1x1 tiles over 16000x16000 claim a 2 GB table).
     const bool single_part_tiles = (flags & 0x1a00u) == 0x200u;
     if (single_part_tiles && tile_w > 0 && tile_h > 0) {
-        const std::uint64_t tiles = std::uint64_t((width + tile_w - 1) / tile_w) * std::uint64_t((height + tile_h - 1) / tile_h);
+        const std::uint64_t tiles =
+            std::uint64_t((width + tile_w - 1) / tile_w) * std::uint64_t((height + tile_h - 1) / tile_h);
         if (tiles * 8u > file_size)
-            throw Error(fmt::format("{}: the EXR header claims {} tiles of {}x{} over {}x{} pixels, whose offset table "
-                                    "alone needs {} bytes, but the file has {}: it is truncated or corrupt",
-                                    path, tiles, tile_w, tile_h, width, height, tiles * 8u, file_size));
+            throw Error(
+                fmt::format("{}: the EXR header claims {} tiles of {}x{} over {}x{} pixels, whose offset table "
+                            "alone needs {} bytes, but the file has {}: it is truncated or corrupt",
+                            path, tiles, tile_w, tile_h, width, height, tiles * 8u, file_size));
     }
     if (!single_part_scanlines) return;
     // Scanlines per chunk by compression: none, RLE, ZIPS 1; ZIP, PXR24 16; PIZ, B44(A),
@@ -235,9 +240,10 @@ void check_image_header(const std::string& path) {
     const int lines = compression >= 0 && compression < 10 ? kLines[compression] : 256;
     const std::uint64_t table = std::uint64_t((height + lines - 1) / lines) * 8u;
     if (table > file_size)
-        throw Error(fmt::format("{}: the EXR header claims {} scanlines, whose offset table alone needs {} bytes, "
-                                "but the file has {}: it is truncated or corrupt",
-                                path, height, table, file_size));
+        throw Error(
+            fmt::format("{}: the EXR header claims {} scanlines, whose offset table alone needs {} bytes, "
+                        "but the file has {}: it is truncated or corrupt",
+                        path, height, table, file_size));
 }
 
 bool can_write_float_image(const std::string& path, std::string* why) {
@@ -253,9 +259,10 @@ bool can_write_float_image(const std::string& path, std::string* why) {
         return refuse("the name has no extension, so the image format is unknown: end it with .exr");
     for (const char* e : k8Bit)
         if (ext == e)
-            return refuse(fmt::format("a {} file holds 8-bit tone-mapped values, not the linear image: give the "
-                                      "EXR's name ({}); the tone-mapped PNG is written beside it",
-                                      ext, replace_extension(path, ".exr")));
+            return refuse(
+                fmt::format("a {} file holds 8-bit tone-mapped values, not the linear image: give the "
+                            "EXR's name ({}); the tone-mapped PNG is written beside it",
+                            ext, replace_extension(path, ".exr")));
     if (std::find_if(std::begin(kFloat), std::end(kFloat), [&](const char* e) { return ext == e; }) == std::end(kFloat))
         return refuse(fmt::format("'{}' is not an image format facet writes: use .exr (or .hdr, .tif, .pfm)", ext));
     std::unique_ptr<ImageOutput> out = ImageOutput::create(path);

@@ -10,9 +10,9 @@
 namespace facet {
 
 struct ImageMetadata {
-    std::vector<std::pair<std::string, std::string>> strings;   // e.g. {"facet:device", "..."}
-    std::vector<std::pair<std::string, float>> floats;          // e.g. {"facet:render_seconds", 1.5}
-    std::vector<std::pair<std::string, int>> ints;              // e.g. {"facet:spp", 64}
+    std::vector<std::pair<std::string, std::string>> strings;  // e.g. {"facet:device", "..."}
+    std::vector<std::pair<std::string, float>> floats;         // e.g. {"facet:render_seconds", 1.5}
+    std::vector<std::pair<std::string, int>> ints;             // e.g. {"facet:spp", 64}
 };
 
 // Writes linear RGB floats (3 per pixel, top row first) as a 32-bit float EXR, so that
@@ -23,14 +23,13 @@ void write_exr(const std::string& path, int width, int height, const std::vector
 
 // Writes an 8-bit sRGB PNG: radiance times 2^exposure, clamped to [0, 1], encoded with
 // the sRGB transfer function (IEC 61966-2-1).
-void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb,
-               float exposure = 0.0f);
+void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure = 0.0f);
 
 struct ImageRGB {
     int width = 0;
     int height = 0;
-    std::vector<float> rgb;   // 3 floats a pixel, top row first
-    int spp = -1;             // facet:spp metadata, when the file has it
+    std::vector<float> rgb;  // 3 floats a pixel, top row first
+    int spp = -1;            // facet:spp metadata, when the file has it
 };
 
 // Reads any image OpenImageIO can (EXR, HDR, PNG...) as RGB floats (values as stored:

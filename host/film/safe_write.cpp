@@ -57,9 +57,10 @@ void check_target_kind(const std::string& path, const std::string& prefix) {
     if (!fs::exists(st)) return;
     if (fs::is_directory(st)) throw Error(fmt::format("{}{}: is a folder; give a file name", prefix, path));
     if (!fs::is_regular_file(st))
-        throw Error(fmt::format("{}{}: is not a regular file (a device, pipe or socket); outputs are written "
-                                "to a new file renamed over the old one, so give a file name",
-                                prefix, path));
+        throw Error(
+            fmt::format("{}{}: is not a regular file (a device, pipe or socket); outputs are written "
+                        "to a new file renamed over the old one, so give a file name",
+                        prefix, path));
 }
 
 void replace_all(std::string& s, const std::string& from, const std::string& to) {
@@ -126,8 +127,7 @@ void write_file_safely(const std::string& path, const std::string& what,
     };
     try {
         write(tmp);
-        if (int err = sync_path(tmp, false))
-            fail(fmt::format("{}: cannot write the {}: {}", path, what, reason(err)));
+        if (int err = sync_path(tmp, false)) fail(fmt::format("{}: cannot write the {}: {}", path, what, reason(err)));
         if (verify) verify(tmp);
     } catch (const Error& e) {
         fail(e.what());
@@ -135,7 +135,7 @@ void write_file_safely(const std::string& path, const std::string& what,
         fail(fmt::format("{}: cannot write the {}: {}", path, what, reason(e.code().value())));
     }
     if (::rename(tmp.c_str(), target.c_str()) != 0) {
-        const int err = errno;   // before unlink() can change it
+        const int err = errno;  // before unlink() can change it
         fail(fmt::format("{}: cannot put the new {} in place: {}", path, what, reason(err)));
     }
     // The rename is durable once the folder is synced; the new file is complete either way.

@@ -42,8 +42,7 @@ glm::mat4 JsonLoader::transform(const Json& v, const std::string& path) {
     glm::vec3 scale(1.0f);
     if (v.contains("scale")) {
         const std::string p = JsonReader::key(path, "scale");
-        scale = v["scale"].is_number() ? glm::vec3(static_cast<float>(r.number(v["scale"], p)))
-                                       : r.vec3(v["scale"], p);
+        scale = v["scale"].is_number() ? glm::vec3(static_cast<float>(r.number(v["scale"], p))) : r.vec3(v["scale"], p);
         if (scale.x == 0.0f || scale.y == 0.0f || scale.z == 0.0f) r.fail(p, "must not be zero");
     }
     const glm::mat4 rotate =
@@ -111,7 +110,9 @@ void JsonLoader::shape(const Json& v, const std::string& path) {
     const std::string type = r.string(v["type"], JsonReader::key(path, "type"));
     if (type == "sphere") sphere(*this, v, path);
     else if (type == "quad") quad(*this, v, path);
-    else r.fail(JsonReader::key(path, "type"), fmt::format("unknown shape type '{}' (expected 'sphere' or 'quad')", type));
+    else
+        r.fail(JsonReader::key(path, "type"),
+               fmt::format("unknown shape type '{}' (expected 'sphere' or 'quad')", type));
 }
 
 }  // namespace facet

@@ -20,7 +20,8 @@ namespace {
 void check_radiance(JsonReader& r, const glm::vec3& c, const std::string& key) {
     for (int i = 0; i < 3; ++i)
         if (!(c[i] <= FC_MAX_RADIANCE))
-            r.fail(key, fmt::format("must be at most {:g} (got {:g}): the image would overflow", FC_MAX_RADIANCE, c[i]));
+            r.fail(key,
+                   fmt::format("must be at most {:g} (got {:g}): the image would overflow", FC_MAX_RADIANCE, c[i]));
 }
 
 }  // namespace
@@ -67,8 +68,7 @@ EnvironmentMap sun_sky(const JsonReader& r, const Json& sky, const std::string& 
     if (sky.contains("elevation"))
         params.elevation_degrees = double(r.number_in(sky["elevation"], k("elevation"), -10, 90));
     if (sky.contains("azimuth")) params.azimuth_degrees = double(r.number_in(sky["azimuth"], k("azimuth"), -360, 360));
-    if (sky.contains("turbidity"))
-        params.turbidity = double(r.number_in(sky["turbidity"], k("turbidity"), 1.7, 10));
+    if (sky.contains("turbidity")) params.turbidity = double(r.number_in(sky["turbidity"], k("turbidity"), 1.7, 10));
     int width = 1024;
     if (sky.contains("width")) width = int(r.integer(sky["width"], k("width"), 8, 16384));
     return sun_sky_environment(params, width);

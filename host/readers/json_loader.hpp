@@ -16,7 +16,7 @@ namespace facet {
 
 struct JsonLoader {
     JsonReader r;
-    std::string dir;   // the scene file's directory: file names are relative to it
+    std::string dir;  // the scene file's directory: file names are relative to it
     Scene& scene;
     std::map<std::string, int> materials;  // JSON material name -> scene index
     int default_index = -1;

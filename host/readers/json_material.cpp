@@ -128,10 +128,10 @@ void lobe_choices(const MaterialKeys& k, Material& m) {
 }  // namespace
 
 void JsonLoader::material(const std::string& name, const Json& v, const std::string& path) {
-    r.object(v, path,
-             {"model", "diffuse", "specular", "f0", "emission", "two_sided_emission", "roughness", "roughness_x",
-              "roughness_y", "shininess", "shininess_x", "shininess_y", "sigma", "ior", "eta", "k", "diffuse_model",
-              "specular_model", "ndf", "geometry", "fresnel", "sampling", "conductor", "transmittance"});
+    r.object(v, path, {"model",     "diffuse",     "specular",    "f0",        "emission",      "two_sided_emission",
+                       "roughness", "roughness_x", "roughness_y", "shininess", "shininess_x",   "shininess_y",
+                       "sigma",     "ior",         "eta",         "k",         "diffuse_model", "specular_model",
+                       "ndf",       "geometry",    "fresnel",     "sampling",  "conductor",     "transmittance"});
     const MaterialKeys k{r, v, path};
     Material m = preset(k);
     SpecularColour specular;

@@ -27,10 +27,8 @@ void JsonLoader::camera(const Json& v, const std::string& path) {
     if (v.contains("height")) c.ortho_height = r.number_in(v["height"], k("height"), 0, 1e30, true);
     if (v.contains("projection")) {
         const std::string p = r.string(v["projection"], k("projection"));
-        if (p == "perspective")
-            c.projection = FC_PROJECTION_PERSPECTIVE;
-        else if (p == "orthographic")
-            c.projection = FC_PROJECTION_ORTHOGRAPHIC;
+        if (p == "perspective") c.projection = FC_PROJECTION_PERSPECTIVE;
+        else if (p == "orthographic") c.projection = FC_PROJECTION_ORTHOGRAPHIC;
         else
             r.fail(k("projection"), fmt::format("unknown projection '{}' (expected "
                                                 "'perspective' or 'orthographic')",
@@ -79,7 +77,7 @@ std::string JsonLoader::existing_file(const Json& v, const std::string& path, co
     const std::string file = r.string(v, path);
     const std::string full = text::join_path(dir, file);
     std::error_code ec;
-    if (!std::filesystem::exists(full, ec))   // a non-regular one: the reader says so
+    if (!std::filesystem::exists(full, ec))  // a non-regular one: the reader says so
         r.fail(path, fmt::format("{} '{}' not found (looked for '{}')", what, file, full));
     return full;
 }

@@ -53,7 +53,7 @@ std::string type_name(const Json& v) {
 }  // namespace
 
 std::vector<std::string> duplicate_json_keys(const std::string& file, const std::string& text) {
-    std::vector<std::set<std::string>> open;   // the keys seen in each enclosing object
+    std::vector<std::set<std::string>> open;  // the keys seen in each enclosing object
     std::vector<std::string> out;
     Json::parser_callback_t check = [&](int, Json::parse_event_t event, Json& parsed) {
         if (event == Json::parse_event_t::object_start) {
@@ -63,7 +63,8 @@ std::vector<std::string> duplicate_json_keys(const std::string& file, const std:
         } else if (event == Json::parse_event_t::key && !open.empty() && parsed.is_string()) {
             const std::string key = parsed.get<std::string>();
             if (!open.back().insert(key).second)
-                out.push_back(fmt::format("{}: key '{}' is given twice in one object; the last value is used", file, key));
+                out.push_back(
+                    fmt::format("{}: key '{}' is given twice in one object; the last value is used", file, key));
         }
         return true;
     };
@@ -118,12 +119,9 @@ std::string JsonReader::key(const std::string& path, std::string_view k) {
     return path.empty() ? std::string(k) : fmt::format("{}.{}", path, k);
 }
 
-std::string JsonReader::index(const std::string& path, std::size_t i) {
-    return fmt::format("{}[{}]", path, i);
-}
+std::string JsonReader::index(const std::string& path, std::size_t i) { return fmt::format("{}[{}]", path, i); }
 
-void JsonReader::object(const Json& v, const std::string& path,
-                        std::initializer_list<std::string_view> known) const {
+void JsonReader::object(const Json& v, const std::string& path, std::initializer_list<std::string_view> known) const {
     if (!v.is_object()) fail(path, fmt::format("expected an object, got {}", type_name(v)));
     for (const auto& item : v.items()) {
         const std::string& k = item.key();
@@ -157,20 +155,18 @@ double JsonReader::number(const Json& v, const std::string& path) const {
     return d;
 }
 
-float JsonReader::number_in(const Json& v, const std::string& path, double lo, double hi,
-                            bool open_lo, bool open_hi) const {
+float JsonReader::number_in(const Json& v, const std::string& path, double lo, double hi, bool open_lo,
+                            bool open_hi) const {
     const double d = number(v, path);
     const bool below = open_lo ? d <= lo : d < lo;
     const bool above = open_hi ? d >= hi : d > hi;
     if (below || above) {
-        fail(path, fmt::format("must be in {}{}, {}{}, got {}", open_lo ? '(' : '[', lo, hi,
-                               open_hi ? ')' : ']', d));
+        fail(path, fmt::format("must be in {}{}, {}{}, got {}", open_lo ? '(' : '[', lo, hi, open_hi ? ')' : ']', d));
     }
     return static_cast<float>(d);
 }
 
-std::int64_t JsonReader::integer(const Json& v, const std::string& path, std::int64_t lo,
-                                 std::int64_t hi) const {
+std::int64_t JsonReader::integer(const Json& v, const std::string& path, std::int64_t lo, std::int64_t hi) const {
     if (!v.is_number()) fail(path, fmt::format("expected an integer, got {}", type_name(v)));
     const double d = number(v, path);
     if (d != std::floor(d)) fail(path, fmt::format("expected an integer, got {}", d));
@@ -197,8 +193,7 @@ glm::vec3 JsonReader::vec3(const Json& v, const std::string& path) const {
     }
     glm::vec3 out;
     for (int i = 0; i < 3; ++i) {
-        out[i] = static_cast<float>(
-            number(v[static_cast<std::size_t>(i)], index(path, static_cast<std::size_t>(i))));
+        out[i] = static_cast<float>(number(v[static_cast<std::size_t>(i)], index(path, static_cast<std::size_t>(i))));
     }
     return out;
 }
@@ -206,8 +201,7 @@ glm::vec3 JsonReader::vec3(const Json& v, const std::string& path) const {
 glm::vec3 JsonReader::color(const Json& v, const std::string& path) const {
     const glm::vec3 c = vec3(v, path);
     for (int i = 0; i < 3; ++i) {
-        if (c[i] < 0.0f)
-            fail(path, fmt::format("colour components must not be negative, got {}", c[i]));
+        if (c[i] < 0.0f) fail(path, fmt::format("colour components must not be negative, got {}", c[i]));
     }
     return c;
 }

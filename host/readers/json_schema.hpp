@@ -35,16 +35,14 @@ public:
     static std::string index(const std::string& path, std::size_t i);
 
     // `v` must be an object holding only keys from `known`.
-    void object(const Json& v, const std::string& path,
-                std::initializer_list<std::string_view> known) const;
+    void object(const Json& v, const std::string& path, std::initializer_list<std::string_view> known) const;
     void require(const Json& obj, const std::string& path, std::string_view k) const;
 
     double number(const Json& v, const std::string& path) const;  // finite
     // A number in the range; `open_lo`/`open_hi` exclude the ends.
-    float number_in(const Json& v, const std::string& path, double lo, double hi,
-                    bool open_lo = false, bool open_hi = false) const;
-    std::int64_t integer(const Json& v, const std::string& path, std::int64_t lo,
-                         std::int64_t hi) const;
+    float number_in(const Json& v, const std::string& path, double lo, double hi, bool open_lo = false,
+                    bool open_hi = false) const;
+    std::int64_t integer(const Json& v, const std::string& path, std::int64_t lo, std::int64_t hi) const;
     bool boolean(const Json& v, const std::string& path) const;
     std::string string(const Json& v, const std::string& path) const;
     glm::vec3 vec3(const Json& v, const std::string& path) const;

@@ -57,9 +57,10 @@ void check_geometry(const Scene& scene, const std::string& path) {
         const glm::vec3& v = scene.vertices[i];
         for (int c = 0; c < 3; ++c) {
             if (std::isfinite(v[c]) && std::fabs(v[c]) <= kMaxCoordinate) continue;
-            throw Error(fmt::format("{}: triangle {} has a vertex at ({:g}, {:g}, {:g}): coordinates must be finite and "
-                                    "within +-{:g} (check the transforms and the shapes' sizes)",
-                                    path, i / 3, v.x, v.y, v.z, kMaxCoordinate));
+            throw Error(
+                fmt::format("{}: triangle {} has a vertex at ({:g}, {:g}, {:g}): coordinates must be finite and "
+                            "within +-{:g} (check the transforms and the shapes' sizes)",
+                            path, i / 3, v.x, v.y, v.z, kMaxCoordinate));
         }
     }
 }
@@ -80,13 +81,11 @@ Scene load_scene(const std::string& path) {
         check_geometry(scene, path);
         if (!has_camera) scene.camera = frame_camera(scene);
     } else {
-        throw Error(fmt::format(
-            "{}: unknown scene format '{}' (expected a .json scene or an .obj mesh)", path, ext));
+        throw Error(fmt::format("{}: unknown scene format '{}' (expected a .json scene or an .obj mesh)", path, ext));
     }
     build_lights(scene);
     if (scene.lights.empty()) {
-        scene.warnings.push_back(
-            fmt::format("{}: the scene has no emitters; the image will be black", path));
+        scene.warnings.push_back(fmt::format("{}: the scene has no emitters; the image will be black", path));
     }
     return scene;
 }

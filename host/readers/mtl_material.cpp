@@ -21,9 +21,7 @@ struct MtlLine {
     int line;
     const std::vector<std::string_view>& f;
 
-    [[noreturn]] void fail(const std::string& what) const {
-        throw Error(fmt::format("{}:{}: {}", path, line, what));
-    }
+    [[noreturn]] void fail(const std::string& what) const { throw Error(fmt::format("{}:{}: {}", path, line, what)); }
 
     float number(std::size_t i) const {
         float v = 0.0f;
@@ -38,8 +36,7 @@ struct MtlLine {
     float scalar(float lo, float hi) const {
         if (f.size() != 2) fail(fmt::format("'{}' takes one number, found {}", f[0], f.size() - 1));
         const float v = number(1);
-        if (v < lo || v > hi)
-            fail(fmt::format("'{}' must be in [{}, {}], got {}", f[0], lo, hi, v));
+        if (v < lo || v > hi) fail(fmt::format("'{}' must be in [{}, {}], got {}", f[0], lo, hi, v));
         return v;
     }
 
@@ -59,8 +56,7 @@ struct MtlLine {
 };
 
 bool is_texture_statement(std::string_view kw) {
-    return kw.substr(0, 4) == "map_" || kw == "bump" || kw == "disp" || kw == "decal" ||
-           kw == "refl" || kw == "norm";
+    return kw.substr(0, 4) == "map_" || kw == "bump" || kw == "disp" || kw == "decal" || kw == "refl" || kw == "norm";
 }
 
 struct Pending {
@@ -126,7 +122,7 @@ MtlMaterial finish(Pending& p) {
     } else {
         mat = make_material("lambert");
         mat.diffuse = base.diffuse;
-        mat.ks = base.ks;   // as read; no lobe of Lambert's reads it
+        mat.ks = base.ks;  // as read; no lobe of Lambert's reads it
     }
     for (int c = 0; c < 3; ++c) mat.emission[c] = base.emission[c];
     mat.ior = base.ior;
@@ -140,7 +136,7 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
                                    std::vector<std::string>& warnings) {
     std::vector<MtlMaterial> out;
     std::vector<Pending> list;
-    std::set<std::string> names;   // to warn about a second definition
+    std::set<std::string> names;  // to warn about a second definition
     const std::string dir = text::directory_of(path);
     const auto lines = text::split_lines(content);
     for (std::size_t li = 0; li < lines.size(); ++li) {
@@ -159,34 +155,27 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             list.push_back(p);
             continue;
         }
-        const bool known = kw == "Kd" || kw == "Ks" || kw == "Ke" || kw == "Ns" || kw == "Ni" ||
-                           kw == "d" || kw == "illum" || kw == "Pr" || kw == "Pm" || kw == "Tf";
+        const bool known = kw == "Kd" || kw == "Ks" || kw == "Ke" || kw == "Ns" || kw == "Ni" || kw == "d" ||
+                           kw == "illum" || kw == "Pr" || kw == "Pm" || kw == "Tf";
         if (!known && !is_texture_statement(kw)) continue;  // Ka, Tr, ...: not used
         if (list.empty()) l.fail(fmt::format("'{}' before any 'newmtl'", kw));
         Pending& p = list.back();
         Material& mat = p.m.material;
-        if (kw == "Kd")
-            l.color(mat.diffuse);
+        if (kw == "Kd") l.color(mat.diffuse);
         else if (kw == "Ks") {
             l.color(mat.ks);
             p.has_ks = true;
-        }
-        else if (kw == "Ke")
-            l.color(mat.emission);
-        else if (kw == "Tf")
-            l.color(p.tf);
+        } else if (kw == "Ke") l.color(mat.emission);
+        else if (kw == "Tf") l.color(p.tf);
         else if (kw == "Ns") {
             p.ns = l.scalar(0.0f, 1e9f);
             p.has_ns = true;
-        } else if (kw == "Ni")
-            mat.ior = l.scalar(1e-3f, 100.0f);
-        else if (kw == "d")
-            p.m.dissolve = l.scalar(0.0f, 1.0f);
+        } else if (kw == "Ni") mat.ior = l.scalar(1e-3f, 100.0f);
+        else if (kw == "d") p.m.dissolve = l.scalar(0.0f, 1.0f);
         else if (kw == "Pr") {
             p.pr = l.scalar(0.0f, 1.0f);
             p.has_pr = true;
-        } else if (kw == "Pm")
-            p.m.metallic = l.scalar(0.0f, 1.0f);
+        } else if (kw == "Pm") p.m.metallic = l.scalar(0.0f, 1.0f);
         else if (kw == "illum") {
             const float v = l.scalar(0.0f, 10.0f);
             if (v != std::floor(v)) l.fail(fmt::format("'illum' must be an integer, got {}", v));
@@ -197,10 +186,10 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             const std::string file(f.back());
             std::error_code ec;
             const bool exists = std::filesystem::exists(text::join_path(dir, file), ec);
-            warnings.push_back(fmt::format(
-                "{}:{}: texture '{}' ({}) of material '{}' ignored: textures are not supported "
-                "yet{}",
-                path, l.line, file, kw, p.m.name, exists ? "" : " (and the file is missing)"));
+            warnings.push_back(
+                fmt::format("{}:{}: texture '{}' ({}) of material '{}' ignored: textures are not supported "
+                            "yet{}",
+                            path, l.line, file, kw, p.m.name, exists ? "" : " (and the file is missing)"));
         }
     }
     out.reserve(list.size());

@@ -25,7 +25,6 @@ struct MtlMaterial {
 // Texture statements (map_Kd, bump, ...) add a warning to `warnings`: textures are
 // not supported yet and are ignored (the warning also says when the file is missing).
 // Throws facet::Error "file.mtl:LINE: ..." on malformed numbers or misplaced statements.
-std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view text,
-                                   std::vector<std::string>& warnings);
+std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view text, std::vector<std::string>& warnings);
 
 }  // namespace facet

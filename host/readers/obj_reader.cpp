@@ -33,19 +33,20 @@ std::vector<MtlMaterial> read_mtllibs(const std::string& path, const ObjScan& sc
     for (const ObjNamedRef& lib : scan.mtllibs) {
         const std::string mtl_path = text::join_path(dir, lib.name);
         std::error_code ec;
-        if (!std::filesystem::exists(mtl_path, ec)) {   // a non-regular one: read_file says so
-            scene.warnings.push_back(fmt::format(
-                "{}:{}: material library '{}' not found (looked for '{}'); its materials "
-                "get the default material",
-                path, lib.line, lib.name, mtl_path));
+        if (!std::filesystem::exists(mtl_path, ec)) {  // a non-regular one: read_file says so
+            scene.warnings.push_back(
+                fmt::format("{}:{}: material library '{}' not found (looked for '{}'); its materials "
+                            "get the default material",
+                            path, lib.line, lib.name, mtl_path));
             continue;
         }
         const std::string mtl_text = text::read_file(mtl_path, "MTL file");
         auto parsed = parse_mtl(mtl_path, mtl_text, scene.warnings);
         if (parsed.empty())
-            scene.warnings.push_back(fmt::format("{}:{}: material library '{}' defines no material (empty, or not "
-                                                 "an MTL file)",
-                                                 path, lib.line, mtl_path));
+            scene.warnings.push_back(
+                fmt::format("{}:{}: material library '{}' defines no material (empty, or not "
+                            "an MTL file)",
+                            path, lib.line, mtl_path));
         materials.insert(materials.end(), parsed.begin(), parsed.end());
         all_mtl_text += mtl_text;
         all_mtl_text += "\n";
@@ -57,7 +58,6 @@ bool usable(glm::vec3 n) {
     const double len = wide_length(n);
     return len > 0.0 && std::isfinite(len);
 }
-
 
 // A mesh as tinyobjloader reads it, with the MTL materials facet read beside it.
 struct ParsedObj {
@@ -74,7 +74,8 @@ void parse(const std::string& path, Scene& scene, ParsedObj& obj) {
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
-    if (!obj.reader.ParseFromString(obj_text, mtl_text, config)) throw Error(fmt::format("{}: {}", path, obj.reader.Error()));
+    if (!obj.reader.ParseFromString(obj_text, mtl_text, config))
+        throw Error(fmt::format("{}: {}", path, obj.reader.Error()));
 }
 
 bool defines(const std::vector<MtlMaterial>& mtl, const std::string& name) {
@@ -84,8 +85,7 @@ bool defines(const std::vector<MtlMaterial>& mtl, const std::string& name) {
 }
 
 // Every overridden name must exist; a 'usemtl' of an unknown name is a warning (once).
-void check_material_names(const std::string& path, const ParsedObj& obj, const ObjLoadOptions& options,
-                          Scene& scene) {
+void check_material_names(const std::string& path, const ParsedObj& obj, const ObjLoadOptions& options, Scene& scene) {
     for (const auto& [name, index] : options.material_map) {
         if (!defines(obj.mtl, name))
             throw Error(fmt::format("{}: material override names '{}', which no material library of this OBJ defines",
@@ -93,16 +93,17 @@ void check_material_names(const std::string& path, const ParsedObj& obj, const O
     }
     std::map<std::string, int> warned;
     for (const ObjNamedRef& use : obj.scan.usemtls) {
-        bool libraries_missing = false;   // a library that is missing was warned about already
+        bool libraries_missing = false;  // a library that is missing was warned about already
         for (const ObjNamedRef& lib : obj.scan.mtllibs) {
             std::error_code ec;
-            libraries_missing = libraries_missing ||
-                                !std::filesystem::exists(text::join_path(text::directory_of(path), lib.name), ec);
+            libraries_missing =
+                libraries_missing || !std::filesystem::exists(text::join_path(text::directory_of(path), lib.name), ec);
         }
         if (!libraries_missing && !defines(obj.mtl, use.name) && warned[use.name]++ == 0)
-            scene.warnings.push_back(fmt::format("{}:{}: 'usemtl {}' names no material of the "
-                                                 "material libraries; the default material is used",
-                                                 path, use.line, use.name));
+            scene.warnings.push_back(
+                fmt::format("{}:{}: 'usemtl {}' names no material of the "
+                            "material libraries; the default material is used",
+                            path, use.line, use.name));
     }
 }
 
@@ -129,7 +130,7 @@ private:
     Material converted(const std::string& name) {
         Material m = default_material();
         for (const MtlMaterial& candidate : obj_.mtl)
-            if (candidate.name == name) m = candidate.material;   // the last definition wins
+            if (candidate.name == name) m = candidate.material;  // the last definition wins
         // As for JSON materials: a reflectance (Kd, Ks) above 1 is clamped, with a warning.
         if (std::string warning = clamp_reflectance(m, "(Kd, Ks)"); !warning.empty())
             scene_.warnings.push_back(fmt::format("{}: material '{}': {}", path_, name, warning));
@@ -156,9 +157,10 @@ void check_indices(const std::string& path, const tinyobj::ObjReader& reader) {
             const bool normal_ok = i.normal_index == -1 ||
                                    (i.normal_index >= 0 && std::size_t(i.normal_index) < attrib.normals.size() / 3);
             if (!vertex_ok || !normal_ok)
-                throw Error(fmt::format("{}: a face index is out of range for what tinyobjloader read (it reads some "
-                                        "statements differently from facet's checks); the file is malformed",
-                                        path));
+                throw Error(
+                    fmt::format("{}: a face index is out of range for what tinyobjloader read (it reads some "
+                                "statements differently from facet's checks); the file is malformed",
+                                path));
         }
     }
 }
@@ -170,16 +172,14 @@ void check_indices(const std::string& path, const tinyobj::ObjReader& reader) {
 struct WorldMesh {
     const tinyobj::attrib_t& attrib;
     std::vector<glm::vec3> pos;
-    std::vector<glm::dvec3> smooth;   // area-weighted sums, in double (edges up to 1e18)
+    std::vector<glm::dvec3> smooth;  // area-weighted sums, in double (edges up to 1e18)
     glm::mat3 normal_matrix;
     bool mirrored;
     float side;
 
     WorldMesh(const tinyobj::ObjReader& reader, const glm::mat4& transform)
-        : attrib(reader.GetAttrib()),
-          normal_matrix(glm::transpose(glm::inverse(glm::mat3(transform)))),
-          mirrored(glm::determinant(glm::mat3(transform)) < 0.0f),
-          side(mirrored ? -1.0f : 1.0f) {
+        : attrib(reader.GetAttrib()), normal_matrix(glm::transpose(glm::inverse(glm::mat3(transform)))),
+          mirrored(glm::determinant(glm::mat3(transform)) < 0.0f), side(mirrored ? -1.0f : 1.0f) {
         const std::size_t npos = attrib.vertices.size() / 3;
         pos.resize(npos);
         for (std::size_t i = 0; i < npos; ++i) {
@@ -237,14 +237,13 @@ void add_faces(const std::string& path, const tinyobj::ObjReader& reader, const 
     if (kept == 0)
         throw Error(fmt::format("{}: every face has zero area ({} triangles): nothing to render", path, degenerate));
     if (degenerate > 0)
-        scene.warnings.push_back(fmt::format("{}: {} of {} triangles have zero area and were dropped", path,
-                                             degenerate, degenerate + kept));
+        scene.warnings.push_back(
+            fmt::format("{}: {} of {} triangles have zero area and were dropped", path, degenerate, degenerate + kept));
 }
 
 }  // namespace
 
-void load_obj(const std::string& path, Scene& scene, const glm::mat4& transform,
-              int material_override) {
+void load_obj(const std::string& path, Scene& scene, const glm::mat4& transform, int material_override) {
     ObjLoadOptions options;
     options.transform = transform;
     options.material_override = material_override;

@@ -14,14 +14,12 @@ struct LineCtx {
     const std::string& path;
     int line;
 
-    [[noreturn]] void fail(const std::string& what) const {
-        throw Error(fmt::format("{}:{}: {}", path, line, what));
-    }
+    [[noreturn]] void fail(const std::string& what) const { throw Error(fmt::format("{}:{}: {}", path, line, what)); }
 };
 
 // `v`, `vn`, `vt`: between min and max numeric fields after the keyword.
-void check_numbers(const LineCtx& ctx, const std::vector<std::string_view>& f, std::size_t min,
-                   std::size_t max, bool finite_xyz) {
+void check_numbers(const LineCtx& ctx, const std::vector<std::string_view>& f, std::size_t min, std::size_t max,
+                   bool finite_xyz) {
     const std::string_view kw = f[0];
     const std::size_t n = f.size() - 1;
     if (n < min) {
@@ -34,27 +32,24 @@ void check_numbers(const LineCtx& ctx, const std::vector<std::string_view>& f, s
             ctx.fail(fmt::format("'{}': field {} ('{}') is {}", kw, i, f[i], text::number_problem(f[i])));
         }
         if (finite_xyz && i <= 3 && !std::isfinite(value)) {
-            ctx.fail(
-                fmt::format("'{}': coordinate {} is {} (positions must be finite)", kw, i, f[i]));
+            ctx.fail(fmt::format("'{}': coordinate {} is {} (positions must be finite)", kw, i, f[i]));
         }
     }
 }
 
 // One index of a face corner: 1-based, or negative (relative to the end so far).
-void check_index(const LineCtx& ctx, std::string_view field, std::string_view part,
-                 const char* what, std::size_t count) {
+void check_index(const LineCtx& ctx, std::string_view field, std::string_view part, const char* what,
+                 std::size_t count) {
     long idx = 0;
     if (!text::parse_int(part, idx)) {
-        ctx.fail(
-            fmt::format("face vertex '{}': {} index '{}' is not an integer", field, what, part));
+        ctx.fail(fmt::format("face vertex '{}': {} index '{}' is not an integer", field, what, part));
     }
-    if (idx == 0)
-        ctx.fail(fmt::format("face vertex '{}': {} index 0 (OBJ indices start at 1)", field, what));
+    if (idx == 0) ctx.fail(fmt::format("face vertex '{}': {} index 0 (OBJ indices start at 1)", field, what));
     const long n = static_cast<long>(count);
     const long resolved = idx > 0 ? idx : n + idx + 1;
     if (resolved < 1 || resolved > n) {
-        ctx.fail(fmt::format("face vertex '{}': {} index {} is out of range ({} defined so far)",
-                             field, what, idx, count));
+        ctx.fail(
+            fmt::format("face vertex '{}': {} index {} is out of range ({} defined so far)", field, what, idx, count));
     }
 }
 
@@ -68,17 +63,14 @@ void check_face(const LineCtx& ctx, const std::vector<std::string_view>& f, cons
         std::size_t count = 0, start = 0;
         for (std::size_t j = 0; j <= field.size(); ++j) {
             if (j < field.size() && field[j] != '/') continue;
-            if (count == 3)
-                ctx.fail(fmt::format("face vertex '{}' has more than 3 indices", field));
+            if (count == 3) ctx.fail(fmt::format("face vertex '{}' has more than 3 indices", field));
             parts[count++] = field.substr(start, j - start);
             start = j + 1;
         }
         check_index(ctx, field, parts[0], "position", s.positions);
-        if (count >= 2 && !parts[1].empty())
-            check_index(ctx, field, parts[1], "texcoord", s.texcoords);
+        if (count >= 2 && !parts[1].empty()) check_index(ctx, field, parts[1], "texcoord", s.texcoords);
         if (count == 3) {
-            if (parts[2].empty())
-                ctx.fail(fmt::format("face vertex '{}': empty normal index", field));
+            if (parts[2].empty()) ctx.fail(fmt::format("face vertex '{}': empty normal index", field));
             check_index(ctx, field, parts[2], "normal", s.normals);
         }
     }
@@ -113,15 +105,13 @@ ObjScan validate_obj(const std::string& path, std::string_view content) {
             }
         } else if (kw == "usemtl") {
             if (f.size() >= 2) {
-                scan.usemtls.push_back(
-                    {ctx.line, std::string(text::rest_after_keyword(lines[li]))});
+                scan.usemtls.push_back({ctx.line, std::string(text::rest_after_keyword(lines[li]))});
             }
         }
         // Anything else (o, g, s, l, p, vp, cstype, ...) is left to tinyobjloader or ignored.
     }
     if (scan.faces == 0) {
-        throw Error(
-            fmt::format("{}: no faces (an OBJ scene needs at least one 'f' statement)", path));
+        throw Error(fmt::format("{}: no faces (an OBJ scene needs at least one 'f' statement)", path));
     }
     return scan;
 }

@@ -13,7 +13,7 @@
 namespace facet::text {
 
 std::string read_file(const std::string& path, const char* what) {
-    return read_input_file(path, what);   // regular files only, size-capped, errno named
+    return read_input_file(path, what);  // regular files only, size-capped, errno named
 }
 
 std::vector<std::string_view> split_lines(std::string_view text) {
@@ -33,9 +33,7 @@ std::vector<std::string_view> split_lines(std::string_view text) {
 // "vn\f0 0 1" was a normal to the validator but no statement to tinyobjloader, and face
 // indices checked against the validator's count overran tinyobjloader's arrays (found by
 // fuzz_obj_mtl).
-static bool is_space(char c) {
-    return c == ' ' || c == '\t';
-}
+static bool is_space(char c) { return c == ' ' || c == '\t'; }
 
 std::vector<std::string_view> split_fields(std::string_view line) {
     std::vector<std::string_view> fields;
@@ -90,9 +88,7 @@ bool parse_int(std::string_view field, long& out) {
     return ec == std::errc() && ptr == last;
 }
 
-std::string directory_of(const std::string& path) {
-    return std::filesystem::path(path).parent_path().string();
-}
+std::string directory_of(const std::string& path) { return std::filesystem::path(path).parent_path().string(); }
 
 std::string join_path(const std::string& dir, const std::string& rel) {
     std::filesystem::path p(rel);

@@ -22,13 +22,13 @@ ProgressiveResult render_progressive(PassTarget& target, const ProgressiveOption
     s.target_spp = opt.target_spp > start_spp ? opt.target_spp - start_spp : 0;
     s.time_limit_s = opt.time_limit_s;
     ProgressiveResult result;
-    std::vector<double> row_cost(height, 0.0);   // seconds for one sample over each row, as measured
+    std::vector<double> row_cost(height, 0.0);  // seconds for one sample over each row, as measured
     std::uint32_t last_rows = 0;
     bool first_pass_estimated = false;
     while (!schedule_done(s) && !stop_requested() && width > 0 && height > 0) {
         const std::uint32_t n = opt.fixed_pass
-            ? std::uint32_t(std::min<std::uint64_t>(opt.fixed_pass, s.target_spp - s.done_spp))
-            : next_pass_samples(s, opt.rules);
+                                    ? std::uint32_t(std::min<std::uint64_t>(opt.fixed_pass, s.target_spp - s.done_spp))
+                                    : next_pass_samples(s, opt.rules);
         const auto pass_start = Clock::now();
         for (std::uint32_t row = 0; row < height;) {
             // Nothing finished yet: a stop drops the first pass rather than wait for it.

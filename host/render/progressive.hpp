@@ -16,17 +16,17 @@ namespace facet {
 
 // After each finished pass.
 struct PassDone {
-    int pass = 0;                 // 1, 2, ...
-    std::uint32_t samples = 0;    // samples per pixel this pass added
-    std::uint64_t spp = 0;        // samples per pixel finished
-    double render_s = 0.0;        // seconds in passes so far (this run)
-    double remaining_s = 0.0;     // to the target or the time limit, at the measured rate
-    bool last = false;            // no pass follows (target, time limit or stop request)
+    int pass = 0;               // 1, 2, ...
+    std::uint32_t samples = 0;  // samples per pixel this pass added
+    std::uint64_t spp = 0;      // samples per pixel finished
+    double render_s = 0.0;      // seconds in passes so far (this run)
+    double remaining_s = 0.0;   // to the target or the time limit, at the measured rate
+    bool last = false;          // no pass follows (target, time limit or stop request)
 };
 
 struct ProgressiveOptions {
     std::uint64_t target_spp = 1;
-    std::optional<double> time_limit_s;   // seconds of rendering
+    std::optional<double> time_limit_s;  // seconds of rendering
     // > 0: passes of exactly this many samples (the last one cut to the target), for
     // tests and benchmarks that need fixed pass sizes. 0: the schedule's.
     std::uint32_t fixed_pass = 0;
@@ -41,10 +41,10 @@ struct ProgressiveOptions {
 };
 
 struct ProgressiveResult {
-    std::uint64_t spp = 0;     // samples per pixel finished
+    std::uint64_t spp = 0;  // samples per pixel finished
     int passes = 0;
-    bool stopped = false;      // ended by a stop request
-    double render_s = 0.0;     // seconds in passes, this run
+    bool stopped = false;   // ended by a stop request
+    double render_s = 0.0;  // seconds in passes, this run
     int launches = 0;
     double longest_launch_s = 0.0;
 };

@@ -35,13 +35,14 @@ void check_device_memory(const DeviceDesc& dev, std::initializer_list<std::pair<
     for (const auto& [name, bytes] : buffers) {
         total += bytes;
         if (bytes > dev.max_alloc)
-            throw Error(fmt::format("the scene's {} need {:.1f} MiB in one buffer, but {} allows at most {:.1f} MiB "
-                                    "per allocation",
-                                    name, double(bytes) / mib, dev.name, double(dev.max_alloc) / mib));
+            throw Error(
+                fmt::format("the scene's {} need {:.1f} MiB in one buffer, but {} allows at most {:.1f} MiB "
+                            "per allocation",
+                            name, double(bytes) / mib, dev.name, double(dev.max_alloc) / mib));
     }
     if (total > dev.global_mem)
-        throw Error(fmt::format("out of device memory: the scene needs {:.1f} MiB, {} has {:.1f} MiB", double(total) / mib,
-                                dev.name, double(dev.global_mem) / mib));
+        throw Error(fmt::format("out of device memory: the scene needs {:.1f} MiB, {} has {:.1f} MiB",
+                                double(total) / mib, dev.name, double(dev.global_mem) / mib));
 }
 
 }  // namespace
@@ -112,9 +113,8 @@ void Renderer::reset() {
 
 std::vector<float> Renderer::accumulation() const {
     std::vector<float> sums(2 * pixel_count() * 4);
-    cl_call("reading the image back", [&] {
-        ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data());
-    });
+    cl_call("reading the image back",
+            [&] { ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data()); });
     return sums;
 }
 
@@ -122,9 +122,8 @@ void Renderer::restore(const std::vector<float>& sums, std::uint64_t spp, double
     if (sums.size() != 2 * pixel_count() * 4)
         throw Error(fmt::format("a film of {} values does not fit a {}x{} image", sums.size(), width_, height_));
     if (spp > 0xffffffffull) throw Error(fmt::format("a film of {} samples per pixel is beyond 2^32", spp));
-    cl_call("uploading the film", [&] {
-        ctx_.queue().enqueueWriteBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data());
-    });
+    cl_call("uploading the film",
+            [&] { ctx_.queue().enqueueWriteBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data()); });
     stats_.samples_per_pixel = spp;
     stats_.render_seconds = render_seconds;
 }
@@ -156,8 +155,8 @@ void Renderer::end_pass(std::uint32_t count, double seconds) {
 void Renderer::render(std::uint32_t count, std::uint32_t max_rows_per_launch) {
     if (count == 0) return;
     auto start = Clock::now();
-    std::uint32_t rows = max_rows_per_launch ? std::min<std::uint32_t>(max_rows_per_launch, params_.height)
-                                             : params_.height;
+    std::uint32_t rows =
+        max_rows_per_launch ? std::min<std::uint32_t>(max_rows_per_launch, params_.height) : params_.height;
     for (std::uint32_t row = 0; row < params_.height; row += rows) launch(count, row, rows);
     end_pass(count, seconds_since(start));
 }
@@ -165,9 +164,8 @@ void Renderer::render(std::uint32_t count, std::uint32_t max_rows_per_launch) {
 Renderer::Halves Renderer::halves() const {
     std::size_t n = pixel_count();
     std::vector<cl_float4> sums(2 * n);
-    cl_call("reading the image back", [&] {
-        ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(cl_float4), sums.data());
-    });
+    cl_call("reading the image back",
+            [&] { ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(cl_float4), sums.data()); });
     // Sample i goes to half i % 2: the even half holds ceil(spp / 2) samples.
     std::uint64_t spp = stats_.samples_per_pixel;
     Halves h;

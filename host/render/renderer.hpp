@@ -14,11 +14,11 @@
 namespace facet {
 
 struct RenderStats {
-    std::uint64_t samples_per_pixel = 0;   // samples added to every pixel so far
-    double compile_seconds = 0.0;          // building the render program
-    std::uint32_t features = 0;            // the program's features (FeatureMask)
+    std::uint64_t samples_per_pixel = 0;  // samples added to every pixel so far
+    double compile_seconds = 0.0;         // building the render program
+    std::uint32_t features = 0;           // the program's features (FeatureMask)
     double upload_seconds = 0.0;
-    double render_seconds = 0.0;           // time inside render passes
+    double render_seconds = 0.0;  // time inside render passes
 };
 
 class Renderer : public PassTarget {
@@ -81,7 +81,7 @@ private:
     int width_;
     int height_;
     FcRenderParams params_{};
-    std::size_t local_size_ = 64;   // work-group size of every launch
+    std::size_t local_size_ = 64;  // work-group size of every launch
     ProgramBuild build_;
     cl::Program program_;
     cl::Kernel kernel_;

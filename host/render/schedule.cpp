@@ -15,7 +15,7 @@ std::uint32_t next_pass_samples(const ScheduleState& s, const ScheduleRules& rul
     if (schedule_done(s)) return 0;
     const std::uint64_t left = s.target_spp - s.done_spp;
     if (s.done_spp == 0 || s.render_s <= 0.0) return 1;
-    const double rate = double(s.done_spp) / s.render_s;   // samples per pixel per second
+    const double rate = double(s.done_spp) / s.render_s;  // samples per pixel per second
     // About a tenth of the time so far, at most twice the last pass.
     const double want_s = std::clamp(rules.pass_fraction * s.render_s, rules.min_pass_s, rules.max_pass_s);
     const double growth = rules.max_growth * double(std::max<std::uint32_t>(s.last_pass, 1));
@@ -57,8 +57,8 @@ std::uint32_t rows_per_launch(const std::vector<double>& row_cost, std::uint32_t
 double schedule_remaining_s(const ScheduleState& s) {
     if (s.done_spp >= s.target_spp) return 0.0;
     double remaining = s.done_spp && s.render_s > 0.0
-        ? double(s.target_spp - s.done_spp) / (double(s.done_spp) / s.render_s)
-        : std::numeric_limits<double>::infinity();
+                           ? double(s.target_spp - s.done_spp) / (double(s.done_spp) / s.render_s)
+                           : std::numeric_limits<double>::infinity();
     if (s.time_limit_s) remaining = std::min(remaining, std::max(0.0, *s.time_limit_s - s.render_s));
     return remaining;
 }

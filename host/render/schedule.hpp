@@ -12,22 +12,22 @@
 namespace facet {
 
 struct ScheduleRules {
-    double pass_fraction = 0.1;   // a pass takes about this share of the render time so far
-    double min_pass_s = 0.05;     // ... clamped to these (log-spaced error points, few passes)
+    double pass_fraction = 0.1;  // a pass takes about this share of the render time so far
+    double min_pass_s = 0.05;    // ... clamped to these (log-spaced error points, few passes)
     double max_pass_s = 2.0;
-    double max_growth = 2.0;      // a pass has at most this many times the last pass's samples
-    double max_launch_s = 0.25;   // per kernel launch (GPU display watchdogs kill at ~2 s)
-    double max_launch_growth = 2.0;   // rows of a launch into unmeasured rows, over the last launch's
-    double probe_pixels = 4096;   // the first launch of a render: pixels of one sample each
+    double max_growth = 2.0;         // a pass has at most this many times the last pass's samples
+    double max_launch_s = 0.25;      // per kernel launch (GPU display watchdogs kill at ~2 s)
+    double max_launch_growth = 2.0;  // rows of a launch into unmeasured rows, over the last launch's
+    double probe_pixels = 4096;      // the first launch of a render: pixels of one sample each
 };
 
 // Where a render stands, as the schedule sees it.
 struct ScheduleState {
     std::uint64_t target_spp = 0;
-    std::optional<double> time_limit_s;   // seconds of rendering allowed
-    std::uint64_t done_spp = 0;           // samples per pixel finished
-    double render_s = 0.0;                // seconds spent rendering them
-    std::uint32_t last_pass = 0;          // samples of the last pass (0: none yet)
+    std::optional<double> time_limit_s;  // seconds of rendering allowed
+    std::uint64_t done_spp = 0;          // samples per pixel finished
+    double render_s = 0.0;               // seconds spent rendering them
+    std::uint32_t last_pass = 0;         // samples of the last pass (0: none yet)
 };
 
 // Whether the render is over: the target reached, or the time limit spent.

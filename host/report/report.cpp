@@ -41,7 +41,7 @@ void fit_convergence(const std::vector<PassRecord>& passes, ReportSummary& summa
     summary.slope = loglog_slope(t, e);
     summary.slope_warning.clear();
     summary.slope_judged = std::isfinite(summary.slope) && last_spp >= 10 * first_spp;
-    if (!summary.slope_judged) return;   // too short a run to judge the rate
+    if (!summary.slope_judged) return;  // too short a run to judge the rate
     const double steepest = summary.stratified ? -1.6 : -0.65;
     if (summary.slope > -0.35 || summary.slope < steepest) {
         summary.slope_warning = fmt::format(

@@ -14,11 +14,11 @@ namespace facet {
 struct PassRecord {
     int pass = 0;
     std::uint64_t spp = 0;
-    double wall_s = 0.0;      // since the command started, kernel build included
-    double render_s = 0.0;    // inside render passes only
-    double compile_s = 0.0;   // the kernel build
-    std::optional<ErrorMetrics> reference;   // against --reference
-    ErrorMetrics estimate;                   // from the two half-buffers
+    double wall_s = 0.0;                    // since the command started, kernel build included
+    double render_s = 0.0;                  // inside render passes only
+    double compile_s = 0.0;                 // the kernel build
+    std::optional<ErrorMetrics> reference;  // against --reference
+    ErrorMetrics estimate;                  // from the two half-buffers
 };
 
 struct ReportSummary {
@@ -45,12 +45,10 @@ struct ReportSummary {
 void fit_convergence(const std::vector<PassRecord>& passes, ReportSummary& summary);
 
 void write_report_csv(const std::string& path, const std::vector<PassRecord>& passes);
-void write_report_json(const std::string& path, const ReportSummary& summary,
-                       const std::vector<PassRecord>& passes);
+void write_report_json(const std::string& path, const ReportSummary& summary, const std::vector<PassRecord>& passes);
 
 // Log-log plot of RMSE (reference and estimate) against render time, as SVG.
-void write_error_plot_svg(const std::string& path, const std::vector<PassRecord>& passes,
-                          const std::string& title);
+void write_error_plot_svg(const std::string& path, const std::vector<PassRecord>& passes, const std::string& title);
 
 // Reads a CSV written by write_report_csv (for `facet plot`). Throws facet::Error
 // naming the file and line on malformed input.

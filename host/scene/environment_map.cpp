@@ -22,8 +22,8 @@ double texel_solid_angle(int y, int width, int height) {
 void check_scale(const glm::vec3& s, const std::string& what) {
     for (int c = 0; c < 3; ++c)
         if (!std::isfinite(s[c]) || s[c] < 0.0f)
-            throw Error(fmt::format("{}: the environment's scale ({}, {}, {}) must be finite and >= 0", what, s.x,
-                                    s.y, s.z));
+            throw Error(
+                fmt::format("{}: the environment's scale ({}, {}, {}) must be finite and >= 0", what, s.x, s.y, s.z));
 }
 
 // Sets negative, NaN and infinite channels to 0; warns with the count and the change
@@ -52,9 +52,10 @@ void sanitise(int width, int height, std::vector<float>& rgb, const std::string&
         }
     }
     if (bad == 0) return;
-    std::string msg = fmt::format("{}: {} texels were negative, NaN or infinite and were set to 0 ({:.3g}% of the "
-                                  "map's energy changed",
-                                  name, bad, kept > 0.0 ? 100.0 * removed / kept : 100.0);
+    std::string msg = fmt::format(
+        "{}: {} texels were negative, NaN or infinite and were set to 0 ({:.3g}% of the "
+        "map's energy changed",
+        name, bad, kept > 0.0 ? 100.0 * removed / kept : 100.0);
     if (non_finite > 0) msg += fmt::format("; {} of them NaN or infinite, not counted in the energy", non_finite);
     warnings.push_back(msg + ")");
 }
@@ -63,7 +64,7 @@ void sanitise(int width, int height, std::vector<float>& rgb, const std::string&
 
 void set_environment_rotation(FcEnvironment& params, const glm::mat3& m) {
     for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 3; ++c) params.to_map[r][c] = m[c][r];   // glm is column-major
+        for (int c = 0; c < 3; ++c) params.to_map[r][c] = m[c][r];  // glm is column-major
         params.to_map[r][3] = 0.0f;
     }
 }
@@ -162,8 +163,8 @@ EnvironmentMap environment_from_pixels(int width, int height, std::vector<float>
         for (int c = 0; c < 3; ++c) env.params.scale[c] = scale[c] * rgb[c];
     } else {
         if (width != 2 * height)
-            warnings.push_back(fmt::format("{}: the map is {}x{}, not 2:1: it is stretched onto the sphere", name,
-                                           width, height));
+            warnings.push_back(
+                fmt::format("{}: the map is {}x{}, not 2:1: it is stretched onto the sphere", name, width, height));
         env.params.width = width;
         env.params.height = height;
         env.texels.assign(std::size_t(width) * height * 4, 0.0f);

@@ -30,7 +30,7 @@ namespace facet {
 
 struct EnvironmentMap {
     FcEnvironment params{};
-    std::vector<float> texels = std::vector<float>(4, 0.0f);   // 4 floats a texel
+    std::vector<float> texels = std::vector<float>(4, 0.0f);  // 4 floats a texel
     std::vector<float> distribution = std::vector<float>(1, 0.0f);
     // (1 / 4pi) * integral of the luminance of the radiance (scale included) over the
     // sphere: the mean luminance, for light selection by power.

@@ -49,10 +49,11 @@ FcLight punctual_light(const PunctualLight& p, double* power, double radius) {
     store(l.color, p.color);
     l.cos_inner = std::cos(glm::radians(p.inner_degrees));
     l.cos_outer = std::cos(glm::radians(std::max(p.outer_degrees, p.inner_degrees)));
-    if (l.cos_outer >= l.cos_inner) l.cos_outer = l.cos_inner - 1e-6f;   // a hard edge
+    if (l.cos_outer >= l.cos_inner) l.cos_outer = l.cos_inner - 1e-6f;  // a hard edge
     double intensity = kPi * luminance(p.color);
     if (p.type == FC_LIGHT_DIRECTIONAL) *power = intensity * kPi * radius * radius;
-    else if (p.type == FC_LIGHT_SPOT) *power = 2.0 * kPi * (1.0 - 0.5 * (double(l.cos_inner) + double(l.cos_outer))) * intensity;
+    else if (p.type == FC_LIGHT_SPOT)
+        *power = 2.0 * kPi * (1.0 - 0.5 * (double(l.cos_inner) + double(l.cos_outer))) * intensity;
     else *power = 4.0 * kPi * intensity;
     return l;
 }

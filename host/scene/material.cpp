@@ -60,13 +60,13 @@ struct F0Row {
 // Linear column of the table (Hoffman 2013, from Real-Time Rendering 3rd ed.;
 // the lecture prints it too): its sRGB column decodes to these within 0.015.
 constexpr F0Row kF0[] = {
-    {"water", {0.02f, 0.02f, 0.02f}},        {"plastic_low", {0.03f, 0.03f, 0.03f}},
-    {"plastic", {0.03f, 0.03f, 0.03f}},      {"glass_low", {0.03f, 0.03f, 0.03f}},
-    {"glass", {0.03f, 0.03f, 0.03f}},        {"plastic_high", {0.05f, 0.05f, 0.05f}},
-    {"glass_high", {0.08f, 0.08f, 0.08f}},   {"ruby", {0.08f, 0.08f, 0.08f}},
-    {"diamond", {0.17f, 0.17f, 0.17f}},      {"iron", {0.56f, 0.57f, 0.58f}},
-    {"copper", {0.95f, 0.64f, 0.54f}},       {"gold", {1.00f, 0.71f, 0.29f}},
-    {"aluminium", {0.91f, 0.92f, 0.92f}},    {"aluminum", {0.91f, 0.92f, 0.92f}},
+    {"water", {0.02f, 0.02f, 0.02f}},      {"plastic_low", {0.03f, 0.03f, 0.03f}},
+    {"plastic", {0.03f, 0.03f, 0.03f}},    {"glass_low", {0.03f, 0.03f, 0.03f}},
+    {"glass", {0.03f, 0.03f, 0.03f}},      {"plastic_high", {0.05f, 0.05f, 0.05f}},
+    {"glass_high", {0.08f, 0.08f, 0.08f}}, {"ruby", {0.08f, 0.08f, 0.08f}},
+    {"diamond", {0.17f, 0.17f, 0.17f}},    {"iron", {0.56f, 0.57f, 0.58f}},
+    {"copper", {0.95f, 0.64f, 0.54f}},     {"gold", {1.00f, 0.71f, 0.29f}},
+    {"aluminium", {0.91f, 0.92f, 0.92f}},  {"aluminum", {0.91f, 0.92f, 0.92f}},
     {"silver", {0.95f, 0.93f, 0.88f}},
 };
 
@@ -99,9 +99,12 @@ std::string rgb(const glm::vec3& c) { return fmt::format("({:g}, {:g}, {:g})", c
 glm::vec3& specular_colour(Material& m) {
     switch (m.specular_model) {
         case FC_SPECULAR_BLINN_PHONG:
-        case FC_SPECULAR_BLINN_PHONG_NORMALIZED: return m.ks;
-        case FC_SPECULAR_DIELECTRIC: return m.transmittance;
-        default: return m.f0;
+        case FC_SPECULAR_BLINN_PHONG_NORMALIZED:
+            return m.ks;
+        case FC_SPECULAR_DIELECTRIC:
+            return m.transmittance;
+        default:
+            return m.f0;
     }
 }
 
@@ -126,13 +129,14 @@ std::optional<Material> material_preset(std::string_view model) {
         m.geometry = p.geometry;
         m.fresnel = p.fresnel;
         if (p.specular == FC_SPECULAR_DIELECTRIC) {
-            m.f0 = m.ks = m.transmittance = glm::vec3(1.0f);   // clear: no absorption at the refractions
-            m.alpha_x = m.alpha_y = 0.0f;   // smooth glass
+            m.f0 = m.ks = m.transmittance = glm::vec3(1.0f);  // clear: no absorption at the refractions
+            m.alpha_x = m.alpha_y = 0.0f;                     // smooth glass
         }
         if (p.fresnel == FC_FRESNEL_CONDUCTOR) {
             ConductorIndex c = *conductor_preset("aluminium");
             std::array<float, 3> f0 = *f0_preset("aluminium");
-            for (int i = 0; i < 3; ++i) m.eta[i] = c.eta[i], m.k[i] = c.k[i], m.f0[i] = m.ks[i] = m.transmittance[i] = f0[i];
+            for (int i = 0; i < 3; ++i)
+                m.eta[i] = c.eta[i], m.k[i] = c.k[i], m.f0[i] = m.ks[i] = m.transmittance[i] = f0[i];
             m.diffuse = glm::vec3(0.0f);
         }
         return m;
@@ -157,12 +161,18 @@ std::string material_model_of(const Material& m) {
 
 const std::vector<EnumName>& enum_names(MaterialEnum kind) {
     switch (kind) {
-        case MaterialEnum::Diffuse: return kDiffuse;
-        case MaterialEnum::Specular: return kSpecular;
-        case MaterialEnum::Ndf: return kNdf;
-        case MaterialEnum::Geometry: return kGeometry;
-        case MaterialEnum::Fresnel: return kFresnel;
-        case MaterialEnum::Sampling: return kSampling;
+        case MaterialEnum::Diffuse:
+            return kDiffuse;
+        case MaterialEnum::Specular:
+            return kSpecular;
+        case MaterialEnum::Ndf:
+            return kNdf;
+        case MaterialEnum::Geometry:
+            return kGeometry;
+        case MaterialEnum::Fresnel:
+            return kFresnel;
+        case MaterialEnum::Sampling:
+            return kSampling;
     }
     return kSampling;
 }
@@ -182,12 +192,18 @@ std::string enum_to_name(MaterialEnum kind, int value) {
 
 std::string_view enum_kind_name(MaterialEnum kind) {
     switch (kind) {
-        case MaterialEnum::Diffuse: return "diffuse model";
-        case MaterialEnum::Specular: return "specular model";
-        case MaterialEnum::Ndf: return "ndf";
-        case MaterialEnum::Geometry: return "geometry";
-        case MaterialEnum::Fresnel: return "fresnel";
-        case MaterialEnum::Sampling: return "sampling";
+        case MaterialEnum::Diffuse:
+            return "diffuse model";
+        case MaterialEnum::Specular:
+            return "specular model";
+        case MaterialEnum::Ndf:
+            return "ndf";
+        case MaterialEnum::Geometry:
+            return "geometry";
+        case MaterialEnum::Fresnel:
+            return "fresnel";
+        case MaterialEnum::Sampling:
+            return "sampling";
     }
     return "?";
 }
@@ -238,16 +254,20 @@ std::vector<std::string_view> f0_preset_names() {
     return v;
 }
 
-float srgb_to_linear(float c) {
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
 std::string validate_material(const Material& m) {
     auto bad = [](float v, bool ok) { return !std::isfinite(v) || !ok; };
-    const struct { const char* name; const glm::vec3& v; float hi; } colours[] = {
-        {"diffuse", m.diffuse, 1.0f}, {"specular f0", m.f0, 1.0f}, {"specular ks", m.ks, 1.0f}, {"specular transmittance", m.transmittance, 1.0f},
-        {"emission", m.emission, FC_MAX_RADIANCE},
-        {"k", m.k, INFINITY}};
+    const struct {
+        const char* name;
+        const glm::vec3& v;
+        float hi;
+    } colours[] = {{"diffuse", m.diffuse, 1.0f},
+                   {"specular f0", m.f0, 1.0f},
+                   {"specular ks", m.ks, 1.0f},
+                   {"specular transmittance", m.transmittance, 1.0f},
+                   {"emission", m.emission, FC_MAX_RADIANCE},
+                   {"k", m.k, INFINITY}};
     for (const auto& c : colours)
         for (int i = 0; i < 3; ++i)
             if (bad(c.v[i], c.v[i] >= 0.0f && c.v[i] <= c.hi))
@@ -255,14 +275,26 @@ std::string validate_material(const Material& m) {
                                    std::isinf(c.hi) ? "" : fmt::format(" and <= {:g}", c.hi), rgb(c.v));
     for (int i = 0; i < 3; ++i)
         if (bad(m.eta[i], m.eta[i] > 0.0f)) return fmt::format("eta must be finite numbers > 0 (got {})", rgb(m.eta));
-    const struct { const char* name; float v; } scalars[] = {{"alpha_x", m.alpha_x}, {"alpha_y", m.alpha_y},
-        {"exponent_x", m.exponent_x}, {"exponent_y", m.exponent_y}, {"sigma", m.sigma}};
+    const struct {
+        const char* name;
+        float v;
+    } scalars[] = {{"alpha_x", m.alpha_x},
+                   {"alpha_y", m.alpha_y},
+                   {"exponent_x", m.exponent_x},
+                   {"exponent_y", m.exponent_y},
+                   {"sigma", m.sigma}};
     for (const auto& s : scalars)
         if (bad(s.v, s.v >= 0.0f)) return fmt::format("{} must be a finite number >= 0 (got {:g})", s.name, s.v);
     if (bad(m.ior, m.ior > 0.0f)) return fmt::format("ior must be a finite number > 0 (got {:g})", m.ior);
-    const struct { MaterialEnum kind; int v; } enums[] = {{MaterialEnum::Diffuse, m.diffuse_model},
-        {MaterialEnum::Specular, m.specular_model}, {MaterialEnum::Ndf, m.ndf}, {MaterialEnum::Geometry, m.geometry},
-        {MaterialEnum::Fresnel, m.fresnel}, {MaterialEnum::Sampling, m.sampling}};
+    const struct {
+        MaterialEnum kind;
+        int v;
+    } enums[] = {{MaterialEnum::Diffuse, m.diffuse_model},
+                 {MaterialEnum::Specular, m.specular_model},
+                 {MaterialEnum::Ndf, m.ndf},
+                 {MaterialEnum::Geometry, m.geometry},
+                 {MaterialEnum::Fresnel, m.fresnel},
+                 {MaterialEnum::Sampling, m.sampling}};
     for (const auto& e : enums)
         if (e.v < 0 || e.v >= int(enum_names(e.kind).size()))
             return fmt::format("{} {} is out of range (expected {})", enum_kind_name(e.kind), e.v,
@@ -278,8 +310,9 @@ std::string clamp_reflectance(Material& m, std::string_view names) {
             (*colour)[c] = std::min((*colour)[c], 1.0f);
         }
     }
-    return clamped ? fmt::format("a reflectance{}{} above 1 creates energy; clamped to 1", names.empty() ? "" : " ", names)
-                   : "";
+    return clamped
+               ? fmt::format("a reflectance{}{} above 1 creates energy; clamped to 1", names.empty() ? "" : " ", names)
+               : "";
 }
 
 void clamp_material(Material& m) {
@@ -326,8 +359,8 @@ std::string describe_material(const Material& m) {
                              rgb(m.ks), m.exponent_x);
             break;
         case FC_SPECULAR_ASHIKHMIN_SHIRLEY:
-            s += fmt::format(" specular ashikhmin_shirley F0={} nu={:g} nv={:g}", rgb(m.f0), m.exponent_x,
-                             m.exponent_y);
+            s +=
+                fmt::format(" specular ashikhmin_shirley F0={} nu={:g} nv={:g}", rgb(m.f0), m.exponent_x, m.exponent_y);
             break;
         case FC_SPECULAR_DIELECTRIC:
             s += fmt::format(" specular dielectric ior={:g} D={} transmittance={}", m.ior,

@@ -33,19 +33,19 @@ struct Material {
     // The specular lobe's colour, one field per meaning; the lobe reads one of them
     // (specular_colour below). A preset sets all three to its one colour, so that a
     // material switched to another lobe keeps it.
-    glm::vec3 f0{0.04f};              // Schlick Fresnel at normal incidence (microfacet,
-                                      // Ashikhmin-Shirley; also the (1 - F0) diffuse lobes)
-    glm::vec3 ks{0.04f};              // Blinn-Phong's specular colour Ks
-    glm::vec3 transmittance{0.04f};   // dielectric: the tint at each refraction
+    glm::vec3 f0{0.04f};             // Schlick Fresnel at normal incidence (microfacet,
+                                     // Ashikhmin-Shirley; also the (1 - F0) diffuse lobes)
+    glm::vec3 ks{0.04f};             // Blinn-Phong's specular colour Ks
+    glm::vec3 transmittance{0.04f};  // dielectric: the tint at each refraction
     glm::vec3 emission{0.0f};
-    glm::vec3 eta{1.5f};             // conductor: the complex index eta + i k
+    glm::vec3 eta{1.5f};  // conductor: the complex index eta + i k
     glm::vec3 k{0.0f};
-    float alpha_x = 0.3f;            // microfacet roughness along the tangent and bitangent
+    float alpha_x = 0.3f;  // microfacet roughness along the tangent and bitangent
     float alpha_y = 0.3f;
-    float exponent_x = 2.0f / (0.3f * 0.3f) - 2.0f;   // Phong-style exponents (alpha 0.3)
+    float exponent_x = 2.0f / (0.3f * 0.3f) - 2.0f;  // Phong-style exponents (alpha 0.3)
     float exponent_y = 2.0f / (0.3f * 0.3f) - 2.0f;
-    float ior = 1.5f;                // relative index (Schlick from ior, dielectric)
-    float sigma = 0.3f;              // Oren-Nayar's sigma, radians
+    float ior = 1.5f;    // relative index (Schlick from ior, dielectric)
+    float sigma = 0.3f;  // Oren-Nayar's sigma, radians
     bool two_sided_emission = false;
 };
 

@@ -22,45 +22,45 @@ struct CameraDesc {
     glm::vec3 target{0.0f, 0.0f, 0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     int projection = FC_PROJECTION_PERSPECTIVE;
-    float fov_y_degrees = 40.0f;     // perspective: vertical field of view
-    float ortho_height = 2.0f;       // orthographic: world-space height of the image
+    float fov_y_degrees = 40.0f;  // perspective: vertical field of view
+    float ortho_height = 2.0f;    // orthographic: world-space height of the image
 };
 
 struct RenderSettings {
     int width = 512;
     int height = 512;
     int spp = 64;
-    int max_depth = 16;        // path vertices after the camera; 1 = direct light only
-    int rr_depth = 3;          // Russian roulette starts after this many bounces
+    int max_depth = 16;  // path vertices after the camera; 1 = direct light only
+    int rr_depth = 3;    // Russian roulette starts after this many bounces
     std::uint32_t seed = 0;
-    int strategy = FC_STRATEGY_MIS;   // FC_STRATEGY_*: MIS, light sampling or BSDF sampling only
-    int sampler = FC_SAMPLER_SOBOL;   // FC_SAMPLER_*: scrambled Sobol' or independent numbers
+    int strategy = FC_STRATEGY_MIS;  // FC_STRATEGY_*: MIS, light sampling or BSDF sampling only
+    int sampler = FC_SAMPLER_SOBOL;  // FC_SAMPLER_*: scrambled Sobol' or independent numbers
 };
 
 // A point, spot or directional light as the scene file gives it (docs/lights.md).
 struct PunctualLight {
-    int type = FC_LIGHT_POINT;              // FC_LIGHT_POINT, FC_LIGHT_SPOT or FC_LIGHT_DIRECTIONAL
+    int type = FC_LIGHT_POINT;  // FC_LIGHT_POINT, FC_LIGHT_SPOT or FC_LIGHT_DIRECTIONAL
     glm::vec3 position{0.0f};
-    glm::vec3 direction{0.0f, -1.0f, 0.0f}; // spot axis, or the direction light travels
-    glm::vec3 color{1.0f};                  // Hoffman's c_light (at distance 1)
-    float inner_degrees = 30.0f;            // spot: full intensity inside this half-angle
-    float outer_degrees = 45.0f;            // spot: no light outside this half-angle
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // spot axis, or the direction light travels
+    glm::vec3 color{1.0f};                   // Hoffman's c_light (at distance 1)
+    float inner_degrees = 30.0f;             // spot: full intensity inside this half-angle
+    float outer_degrees = 45.0f;             // spot: no light outside this half-angle
 };
 
 struct Scene {
-    std::vector<glm::vec3> vertices;         // 3 per triangle
-    std::vector<FcTriShading> shading;       // 1 per triangle
+    std::vector<glm::vec3> vertices;    // 3 per triangle
+    std::vector<FcTriShading> shading;  // 1 per triangle
     std::vector<Material> materials;
-    std::vector<std::string> material_names; // parallel to materials
+    std::vector<std::string> material_names;  // parallel to materials
     std::vector<PunctualLight> punctual_lights;
     EnvironmentMap environment = no_environment();
-    std::vector<FcLight> lights;             // built by build_lights()
-    std::vector<float> light_cdf;            // light_count + 1 entries, cdf[0] = 0, cdf[n] = 1
-    int environment_light = -1;              // index of the environment in `lights`, or -1
+    std::vector<FcLight> lights;   // built by build_lights()
+    std::vector<float> light_cdf;  // light_count + 1 entries, cdf[0] = 0, cdf[n] = 1
+    int environment_light = -1;    // index of the environment in `lights`, or -1
     CameraDesc camera;
     RenderSettings settings;
-    std::string source_path;                 // the file it was loaded from
-    std::vector<std::string> warnings;       // non-fatal problems met while loading
+    std::string source_path;            // the file it was loaded from
+    std::vector<std::string> warnings;  // non-fatal problems met while loading
 
     std::size_t triangle_count() const { return shading.size(); }
 };
@@ -81,22 +81,21 @@ void build_lights(Scene& scene);
 // An icosphere: the icosahedron split `subdivisions` times (20 * 4^subdivisions
 // triangles), vertices on the sphere. Faces point outward, or inward (winding and
 // normals flipped) when `inward` is set, e.g. for an emitting furnace enclosure.
-void add_sphere(Scene& scene, glm::vec3 center, float radius, int subdivisions, int material,
-                bool inward);
+void add_sphere(Scene& scene, glm::vec3 center, float radius, int subdivisions, int material, bool inward);
 // A parallelogram corner, corner + e1, corner + e1 + e2, corner + e2 as two
 // triangles facing normalize(cross(e1, e2)).
 void add_quad(Scene& scene, glm::vec3 corner, glm::vec3 e1, glm::vec3 e2, int material);
 
 // Appends one triangle with per-vertex normals (normalised here) and a material.
-void add_triangle(Scene& scene, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 n0,
-                  glm::vec3 n1, glm::vec3 n2, int material);
+void add_triangle(Scene& scene, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 n0, glm::vec3 n1, glm::vec3 n2,
+                  int material);
 
 // The axis-aligned box around every vertex (lo > hi when there are none).
 struct Bounds {
     glm::vec3 lo, hi;
     bool empty() const { return !(lo.x <= hi.x); }
     glm::vec3 center() const { return 0.5f * (lo + hi); }
-    float radius() const;   // of the bounding sphere about center(): half the diagonal
+    float radius() const;  // of the bounding sphere about center(): half the diagonal
 };
 Bounds scene_bounds(const Scene& scene);
 

@@ -10,7 +10,7 @@
 namespace facet {
 
 struct SettingRange {
-    std::int64_t lo, hi;   // inclusive
+    std::int64_t lo, hi;  // inclusive
     bool contains(std::int64_t v) const { return v >= lo && v <= hi; }
     // "an integer in [1, 16384]", for messages.
     std::string words() const { return fmt::format("an integer in [{}, {}]", lo, hi); }

@@ -37,8 +37,7 @@ void subdivide(std::vector<glm::vec3>& verts, std::vector<Tri>& faces) {
         const auto key = std::minmax(a, b);
         auto it = midpoints.find(key);
         if (it != midpoints.end()) return it->second;
-        verts.push_back(glm::normalize(verts[static_cast<std::size_t>(a)] +
-                                       verts[static_cast<std::size_t>(b)]));
+        verts.push_back(glm::normalize(verts[static_cast<std::size_t>(a)] + verts[static_cast<std::size_t>(b)]));
         const int index = static_cast<int>(verts.size() - 1);
         midpoints.emplace(key, index);
         return index;
@@ -57,8 +56,8 @@ void subdivide(std::vector<glm::vec3>& verts, std::vector<Tri>& faces) {
 
 }  // namespace
 
-void add_triangle(Scene& scene, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 n0,
-                  glm::vec3 n1, glm::vec3 n2, int material) {
+void add_triangle(Scene& scene, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 n0, glm::vec3 n1, glm::vec3 n2,
+                  int material) {
     scene.vertices.push_back(p0);
     scene.vertices.push_back(p1);
     scene.vertices.push_back(p2);
@@ -77,8 +76,7 @@ void add_quad(Scene& scene, glm::vec3 corner, glm::vec3 e1, glm::vec3 e2, int ma
     add_triangle(scene, corner, corner + e1 + e2, corner + e2, n, n, n, material);
 }
 
-void add_sphere(Scene& scene, glm::vec3 center, float radius, int subdivisions, int material,
-                bool inward) {
+void add_sphere(Scene& scene, glm::vec3 center, float radius, int subdivisions, int material, bool inward) {
     std::vector<glm::vec3> verts;
     std::vector<Tri> faces;
     icosahedron(verts, faces);

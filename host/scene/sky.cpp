@@ -38,8 +38,7 @@ struct Perez {
 
 // Preetham 1999, appendix A.2: the distribution coefficients for Y, x and y.
 Perez perez_Y(double t) {
-    return {0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771,
-            -0.0670 * t + 0.3703};
+    return {0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771, -0.0670 * t + 0.3703};
 }
 Perez perez_x(double t) {
     return {-0.0193 * t - 0.2592, -0.0665 * t + 0.0008, -0.0004 * t + 0.2125, -0.0641 * t - 0.8989,
@@ -58,12 +57,10 @@ double zenith_chroma(const double m[3][4], double t, double ts) {
         for (int j = 0; j < 4; ++j) r += tv[i] * m[i][j] * sv[j];
     return r;
 }
-constexpr double kZenithX[3][4] = {{0.00166, -0.00375, 0.00209, 0.0},
-                                   {-0.02903, 0.06377, -0.03202, 0.00394},
-                                   {0.11693, -0.21196, 0.06052, 0.25886}};
-constexpr double kZenithY[3][4] = {{0.00275, -0.00610, 0.00317, 0.0},
-                                   {-0.04214, 0.08970, -0.04153, 0.00516},
-                                   {0.15346, -0.26756, 0.06670, 0.26688}};
+constexpr double kZenithX[3][4] = {
+    {0.00166, -0.00375, 0.00209, 0.0}, {-0.02903, 0.06377, -0.03202, 0.00394}, {0.11693, -0.21196, 0.06052, 0.25886}};
+constexpr double kZenithY[3][4] = {
+    {0.00275, -0.00610, 0.00317, 0.0}, {-0.04214, 0.08970, -0.04153, 0.00516}, {0.15346, -0.26756, 0.06670, 0.26688}};
 
 // CIE xyY to linear Rec. 709 RGB (IEC 61966-2-1 matrix), negatives clipped.
 void xyY_to_rgb(double x, double y, double Y, float out[3]) {
@@ -83,12 +80,13 @@ double texel_solid_angle(int y, int w, int h) {
 SunSkyImage render_sun_sky(const SunSkyParams& p, int width) {
     if (width < 8 || width % 2 != 0 || width > 65536)
         throw Error(fmt::format("sun and sky: the width must be even, in [8, 65536] (got {})", width));
-    if (!(p.elevation_degrees >= -10.0 && p.elevation_degrees <= 90.0) || !(p.turbidity >= 1.7 && p.turbidity <= 10.0) ||
-        !(p.ground_albedo >= 0.0 && p.ground_albedo <= 1.0) || !(p.sun_radius_degrees > 0.0 && p.sun_radius_degrees < 5.0) ||
-        !std::isfinite(p.azimuth_degrees))
-        throw Error(fmt::format("sun and sky: parameters out of range (elevation {} in [-10, 90], turbidity {} in "
-                                "[1.7, 10], ground albedo {} in [0, 1], sun radius {} in (0, 5) degrees)",
-                                p.elevation_degrees, p.turbidity, p.ground_albedo, p.sun_radius_degrees));
+    if (!(p.elevation_degrees >= -10.0 && p.elevation_degrees <= 90.0) ||
+        !(p.turbidity >= 1.7 && p.turbidity <= 10.0) || !(p.ground_albedo >= 0.0 && p.ground_albedo <= 1.0) ||
+        !(p.sun_radius_degrees > 0.0 && p.sun_radius_degrees < 5.0) || !std::isfinite(p.azimuth_degrees))
+        throw Error(
+            fmt::format("sun and sky: parameters out of range (elevation {} in [-10, 90], turbidity {} in "
+                        "[1.7, 10], ground albedo {} in [0, 1], sun radius {} in (0, 5) degrees)",
+                        p.elevation_degrees, p.turbidity, p.ground_albedo, p.sun_radius_degrees));
     const int w = width, h = width / 2;
     SunSkyImage img;
     img.width = w;
@@ -108,7 +106,7 @@ SunSkyImage render_sun_sky(const SunSkyParams& p, int width) {
     const double xz = zenith_chroma(kZenithX, t, theta_s), yz = zenith_chroma(kZenithY, t, theta_s);
     const Perez fY = perez_Y(t), fx = perez_x(t), fy = perez_y(t);
     const double nY = fY(1.0, theta_s), nx = fx(1.0, theta_s), ny = fy(1.0, theta_s);
-    const int sky_rows = h / 2;   // rows whose centre is above the horizon
+    const int sky_rows = h / 2;  // rows whose centre is above the horizon
     for (int y = 0; y < sky_rows; ++y)
         for (int x = 0; x < w; ++x) {
             const Vec d = direction(kPi * (y + 0.5) / h, 2.0 * kPi * (x + 0.5) / w);
@@ -120,10 +118,10 @@ SunSkyImage render_sun_sky(const SunSkyParams& p, int width) {
     // sun: luminous solar constant over the disk, attenuated along the air mass
     const double r = p.sun_radius_degrees * kDeg, cos_r = std::cos(r);
     const double disk_omega = 2.0 * kPi * (1.0 - cos_r);
-    const Vec disk = direction(kPi / 2.0 - p.elevation_degrees * kDeg, phi_s);   // the true sun
+    const Vec disk = direction(kPi / 2.0 - p.elevation_degrees * kDeg, phi_s);  // the true sun
     const double zen_deg = 90.0 - std::max(p.elevation_degrees, 0.0);
     const double air_mass = 1.0 / (std::cos(zen_deg * kDeg) + 0.50572 * std::pow(96.07995 - zen_deg, -1.6364));
-    const double beta = 0.04608 * t - 0.04586, lambda[3] = {0.612, 0.549, 0.465};   // um
+    const double beta = 0.04608 * t - 0.04586, lambda[3] = {0.612, 0.549, 0.465};  // um
     double sun_rgb[3];
     for (int c = 0; c < 3; ++c)
         sun_rgb[c] = 128.0 / disk_omega *
@@ -181,7 +179,8 @@ SunSkyImage render_sun_sky(const SunSkyParams& p, int width) {
 
     double total = 0.0;
     for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) total += luminance(&img.rgb[3 * (std::size_t(y) * w + x)]) * texel_solid_angle(y, w, h);
+        for (int x = 0; x < w; ++x)
+            total += luminance(&img.rgb[3 * (std::size_t(y) * w + x)]) * texel_solid_angle(y, w, h);
     img.sun_power_fraction = total > 0.0 ? sun_lum_omega / total : 0.0;
     return img;
 }

@@ -28,11 +28,11 @@
 namespace facet {
 
 struct SunSkyParams {
-    double elevation_degrees = 25.0;   // sun above the horizon, [-10, 90]
+    double elevation_degrees = 25.0;  // sun above the horizon, [-10, 90]
     // sun direction around the vertical: degrees to the right of the map's centre (+z) as
     // seen from inside, i.e. the sun's column is u = 0.5 + azimuth / 360
     double azimuth_degrees = 40.0;
-    double turbidity = 3.0;            // [1.7, 10]: 2 very clear, 3 clear, 6 hazy
+    double turbidity = 3.0;  // [1.7, 10]: 2 very clear, 3 clear, 6 hazy
     double ground_albedo = 0.1;
     double sun_radius_degrees = 0.2666;
 };
@@ -40,9 +40,9 @@ struct SunSkyParams {
 struct SunSkyImage {
     int width = 0;
     int height = 0;
-    std::vector<float> rgb;              // 3 floats a texel, top row first
-    double sun_power_fraction = 0.0;     // share of the sun in the map's luminance x solid angle
-    double sun_direction[3] = {0.0, 1.0, 0.0};   // map frame
+    std::vector<float> rgb;                     // 3 floats a texel, top row first
+    double sun_power_fraction = 0.0;            // share of the sun in the map's luminance x solid angle
+    double sun_direction[3] = {0.0, 1.0, 0.0};  // map frame
 };
 
 // Renders the map, width x width / 2 texels (width even, >= 8). Throws facet::Error on

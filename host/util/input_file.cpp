@@ -41,8 +41,7 @@ std::uint64_t open_checked(const std::string& path, const char* what, std::uint6
     if (!S_ISREG(st.st_mode))
         fail(what, path, "is not a regular file (a device, pipe or socket): facet reads only regular files");
     const std::uint64_t size = std::uint64_t(st.st_size);
-    if (size > max_bytes)
-        fail(what, path, fmt::format("is {} bytes, more than the {} facet reads", size, max_bytes));
+    if (size > max_bytes) fail(what, path, fmt::format("is {} bytes, more than the {} facet reads", size, max_bytes));
     return size;
 }
 
@@ -68,7 +67,7 @@ std::string read_input_file(const std::string& path, const char* what, std::uint
         const ssize_t n = ::read(f.fd, text.data() + done, text.size() - done);
         if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
         if (n < 0) fail(what, path, fmt::format("read error: {}", std::strerror(errno)));
-        if (n == 0) break;   // shrank while being read
+        if (n == 0) break;  // shrank while being read
         done += std::size_t(n);
     }
     text.resize(done);

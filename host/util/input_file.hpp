@@ -14,8 +14,7 @@ constexpr std::uint64_t kMaxInputFileBytes = std::uint64_t(4) << 30;
 
 // Checks that `path` is a readable regular file of at most `max_bytes` and returns its
 // size; throws facet::Error "<what> '<path>': <reason>" otherwise.
-std::uint64_t check_input_file(const std::string& path, const char* what,
-                               std::uint64_t max_bytes = kMaxInputFileBytes);
+std::uint64_t check_input_file(const std::string& path, const char* what, std::uint64_t max_bytes = kMaxInputFileBytes);
 
 // The whole file, with the checks of check_input_file.
 std::string read_input_file(const std::string& path, const char* what, std::uint64_t max_bytes = kMaxInputFileBytes);

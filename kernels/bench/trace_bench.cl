@@ -5,11 +5,11 @@
 
 #include "kernels/trace/bvh_traverse.cl"
 
-/* n rays (the global size may be padded past n); origins[i].xyz, dirs[i].xyz (unit), dirs[i].w = tmax. Writes t (or -1 on a miss)
- * and the hit triangle's scene index. */
+/* n rays (the global size may be padded past n); origins[i].xyz, dirs[i].xyz (unit), dirs[i].w = tmax. Writes t (or -1
+ * on a miss) and the hit triangle's scene index. */
 __kernel void trace_closest_batch(__global const FcBvhNode* nodes, __global const FcTriangle* tris,
-                                  __global const float4* origins, __global const float4* dirs,
-                                  __global float* t_out, __global int* prim_out, int n) {
+                                  __global const float4* origins, __global const float4* dirs, __global float* t_out,
+                                  __global int* prim_out, int n) {
     int i = (int)get_global_id(0);
     if (i >= n) return;
     float4 o = origins[i];
@@ -21,8 +21,8 @@ __kernel void trace_closest_batch(__global const FcBvhNode* nodes, __global cons
 }
 
 __kernel void trace_any_batch(__global const FcBvhNode* nodes, __global const FcTriangle* tris,
-                              __global const float4* origins, __global const float4* dirs,
-                              __global int* hit_out, int n) {
+                              __global const float4* origins, __global const float4* dirs, __global int* hit_out,
+                              int n) {
     int i = (int)get_global_id(0);
     if (i >= n) return;
     float4 o = origins[i];

@@ -21,9 +21,7 @@
 #include "kernels/bsdf/bsdf_sample.cl"
 #include "kernels/bsdf/fresnel.cl"
 
-inline float3 as_f0(const FcMaterial* m) {
-    return clamp(load3p(m->specular), 0.0f, 1.0f);
-}
+inline float3 as_f0(const FcMaterial* m) { return clamp(load3p(m->specular), 0.0f, 1.0f); }
 
 /* The exponent nu cos^2(phi_h) + nv sin^2(phi_h) of a half vector (any value at h = n,
  * where (n.h)^exponent = 1). */
@@ -46,8 +44,8 @@ inline float3 ashikhmin_shirley_eval(const FcMaterial* m, float3 wo, float3 wi) 
     float3 h = normalize(wo + wi);
     float wo_h = dot(wo, h);
     if (!(wo_h > 0.0f)) return (float3)(0.0f);
-    float d = as_half_vector_pdf(nu, nv, h);           /* = sqrt(..)/(2 pi) (n.h)^.. */
-    float v = 0.25f / (wo_h * fmax(wo.z, wi.z));       /* 1/8 = (1/2)(1/4) */
+    float d = as_half_vector_pdf(nu, nv, h);     /* = sqrt(..)/(2 pi) (n.h)^.. */
+    float v = 0.25f / (wo_h * fmax(wo.z, wi.z)); /* 1/8 = (1/2)(1/4) */
     float3 f = fresnel_schlick(as_f0(m), wo_h) * (d * v);
     return all_finite(f) ? f : (float3)(0.0f);
 }

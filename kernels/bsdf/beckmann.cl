@@ -109,9 +109,7 @@ inline float3 beckmann_sample_all(float ax, float ay, float2 u) {
     return normalize(m);
 }
 
-inline float beckmann_pdf_all(float ax, float ay, float3 m) {
-    return beckmann_D(ax, ay, m) * fmax(m.z, 0.0f);
-}
+inline float beckmann_pdf_all(float ax, float ay, float3 m) { return beckmann_D(ax, ay, m) * fmax(m.z, 0.0f); }
 
 /* The x slope of a visible normal, for unit roughness and a view direction in the xz
  * plane at angle theta (tan_t = tan theta, cot_t = 1/tan theta, either may be 0 or inf).
@@ -140,7 +138,7 @@ inline float beckmann_visible_slope_x(float tan_t, float cot_t, float theta, flo
         if (fabs(g) <= 1e-6f * total) break;
         if (g > 0.0f) hi = x;
         else lo = x;
-        float dg = 2.0f * FC_INV_SQRT_PI * e * (1.0f - x * tan_t);   /* >= 0 below cot_t */
+        float dg = 2.0f * FC_INV_SQRT_PI * e * (1.0f - x * tan_t); /* >= 0 below cot_t */
         float next = x - g / dg;
         x = (next > lo && next < hi) ? next : 0.5f * (lo + hi);
         if (hi - lo <= 1e-7f * (1.0f + fabs(x))) break;
@@ -161,8 +159,8 @@ inline float3 beckmann_sample_visible(float ax, float ay, float3 wo, float2 u) {
     float cos_phi = (s > 0.0f) ? sx / s : 1.0f;
     float sin_phi = (s > 0.0f) ? sy / s : 0.0f;
     /* 2. slopes of the unit-roughness configuration */
-    float tan_t = s / z;    /* z = 0 (grazing): tan_t = inf, handled by the loop's bisection */
-    float cot_t = z / s;    /* s = 0 (normal incidence): cot_t = inf, a plain Gaussian */
+    float tan_t = s / z; /* z = 0 (grazing): tan_t = inf, handled by the loop's bisection */
+    float cot_t = z / s; /* s = 0 (normal incidence): cot_t = inf, a plain Gaussian */
     if (!(z > 0.0f)) {
         tan_t = 1e30f;
         cot_t = 0.0f;

@@ -21,7 +21,6 @@
 #include "kernels/util/math.cl"
 #include "kernels/bsdf/bsdf_sample.cl"
 
-
 /* A Phong-style exponent clamped to [0, FC_PHONG_EXPONENT_MAX]; NaN gives 0. */
 inline float fc_phong_exponent(float e) { return (e > 0.0f) ? fmin(e, FC_PHONG_EXPONENT_MAX) : 0.0f; }
 
@@ -34,8 +33,8 @@ inline float3 blinn_phong_eval(const FcMaterial* m, float3 wo, float3 wi) {
     float3 ks = fmax(load3p(m->specular), (float3)(0.0f));
     /* wo + wi is never zero with both above the surface */
     float3 h = normalize(wo + wi);
-    float scale = (m->specular_model == FC_SPECULAR_BLINN_PHONG_NORMALIZED) ? (e + 8.0f) * (0.125f * FC_INV_PI)
-                                                                             : FC_INV_PI;
+    float scale =
+        (m->specular_model == FC_SPECULAR_BLINN_PHONG_NORMALIZED) ? (e + 8.0f) * (0.125f * FC_INV_PI) : FC_INV_PI;
     return ks * (scale * fc_pow_cos(h.z, e));
 }
 

@@ -75,7 +75,7 @@ inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s)
     if (u.z < p) {
         if (!specular_sample(m, wo, u.xy, s)) return false;
         if (s->delta) {
-            s->weight /= p;   /* the mirror was chosen with probability p */
+            s->weight /= p; /* the mirror was chosen with probability p */
             return all_finite(s->weight);
         }
     } else {

@@ -21,9 +21,9 @@
  *       reflection  F pdf_h / (4 |wo.h|)                               (eq. 14)
  *       refraction  (1 - F) pdf_h n_i^2 |wi.h| / (n_i wi.h + n_o wo.h)^2 (eq. 17).
  * - Smooth (alpha below FC_ALPHA_MIRROR, or an index-matched ior within FC_IOR_MATCHED
- *   of 1): a delta BSDF. Sampling reflects with probability F(cos_o) (exact Fresnel, fresnel_dielectric: 1 under total internal
- *   reflection) and refracts otherwise (refraction.cl); the weight is 1 for the
- *   reflection and specular / etap^2 for the refraction; eval and pdf give 0.
+ *   of 1): a delta BSDF. Sampling reflects with probability F(cos_o) (exact Fresnel, fresnel_dielectric: 1 under total
+ * internal reflection) and refracts otherwise (refraction.cl); the weight is 1 for the reflection and specular / etap^2
+ * for the refraction; eval and pdf give 0.
  *
  * Radiance scaling (docs/brdf.md, "Dielectrics"): eq. 21's n_o^2 / (...)^2 makes f_t the
  * BTDF that transports radiance, which is multiplied by (n_o / n_i)^2 = 1 / etap^2
@@ -118,8 +118,7 @@ inline float3 dielectric_eval(const FcMaterial* m, float3 wo, float3 wi) {
         /* Eq. 21 as the BTDF of importance (no scaling, pbrt-v4's Importance mode),
          * (1 - F) D G |wi.h| |wo.h| etap^2 / (|cos_i| |cos_o| |wo + etap wi|^2), times the
          * radiance scaling 1 / etap^2 (|wo + etap wi| = |n_i wi.h + n_o wo.h| / n_o). */
-        float importance = fl * d * g * fabs(ih * oh) / (fabs(wi.z) * fabs(wo.z)) * (p.etap * p.etap) /
-                           (p.len * p.len);
+        float importance = fl * d * g * fabs(ih * oh) / (fabs(wi.z) * fabs(wo.z)) * (p.etap * p.etap) / (p.len * p.len);
         f = dielectric_tint(m) * (importance / (p.etap * p.etap));
     }
     return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
@@ -131,8 +130,8 @@ inline float dielectric_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     float oh = dot(wo, p.h), ih = dot(wi, p.h);
     float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
     float pdf_h = dielectric_pdf_h(m, wo, p.h);
-    float pdf = p.reflect ? fl * pdf_h / (4.0f * fabs(oh))
-                          : fl * pdf_h * (p.etap * p.etap) * fabs(ih) / (p.len * p.len);
+    float pdf =
+        p.reflect ? fl * pdf_h / (4.0f * fabs(oh)) : fl * pdf_h * (p.etap * p.etap) * fabs(ih) / (p.len * p.len);
     return isfinite(pdf) ? fmax(pdf, 0.0f) : 0.0f;
 }
 
@@ -163,10 +162,10 @@ inline bool dielectric_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSamp
     float3 h = ndf_sample(m, wv, u.xy);
     float oh = dot(wo, h);
     if (u.z < fresnel_dielectric(oh, m->ior)) {
-        s->wi = 2.0f * oh * h - wo;   /* Walter 2007, eq. 39 */
+        s->wi = 2.0f * oh * h - wo; /* Walter 2007, eq. 39 */
         if (!(s->wi.z * wo.z > 0.0f)) return false;
     } else {
-        if (!refract_about(wo, h, m->ior, &s->wi)) return false;   /* eq. 40 */
+        if (!refract_about(wo, h, m->ior, &s->wi)) return false; /* eq. 40 */
         if (!(s->wi.z * wo.z < 0.0f)) return false;
     }
     return finish_sample(s, dielectric_eval(m, wo, s->wi), dielectric_pdf(m, wo, s->wi));

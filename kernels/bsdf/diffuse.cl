@@ -11,9 +11,7 @@
 #include "kernels/bsdf/oren_nayar.cl"
 #include "kernels/util/math.cl"
 
-inline float3 material_diffuse(const FcMaterial* m) {
-    return load3p(m->diffuse);
-}
+inline float3 material_diffuse(const FcMaterial* m) { return load3p(m->diffuse); }
 
 inline float3 diffuse_eval(const FcMaterial* m, float3 wo, float3 wi) {
     switch (m->diffuse_model) {

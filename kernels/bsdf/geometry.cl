@@ -41,7 +41,7 @@ inline float schlick_G1(const FcMaterial* m, float3 w, float3 h) {
     float r2 = w.x * w.x + w.y * w.y;
     float2 a = ndf_alpha(m);
     float alpha = (r2 > 0.0f) ? sqrt((sqr(a.x * w.x) + sqr(a.y * w.y)) / r2) : a.x;
-    float k = alpha * 0.79788456080286535588f;   /* sqrt(2/pi) */
+    float k = alpha * 0.79788456080286535588f; /* sqrt(2/pi) */
     /* w.z (1 - k) + k >= min(1, k) > 0 for w.z in (0, 1]. */
     return w.z / (w.z * (1.0f - k) + k);
 }
@@ -49,7 +49,7 @@ inline float schlick_G1(const FcMaterial* m, float3 w, float3 h) {
 inline float walter_G1(const FcMaterial* m, float3 w, float3 h) {
     if (!(w.z > 0.0f) || !(dot(w, h) > 0.0f)) return 0.0f;
     float s = projected_alpha_tan_numerator(m, w);
-    if (!(s * 1.6f > w.z)) return 1.0f;   /* a = w.z / s >= 1.6 (also s = 0) */
+    if (!(s * 1.6f > w.z)) return 1.0f; /* a = w.z / s >= 1.6 (also s = 0) */
     float a = w.z / s;
     return (3.535f * a + 2.181f * a * a) / (1.0f + 2.276f * a + 2.577f * a * a);
 }

@@ -38,7 +38,7 @@
 
 inline bool microfacet_is_mirror(const FcMaterial* m) {
     float2 a = ndf_alpha(m);
-    return !(fmax(a.x, a.y) >= FC_ALPHA_MIRROR);   /* NaN roughness: a mirror too */
+    return !(fmax(a.x, a.y) >= FC_ALPHA_MIRROR); /* NaN roughness: a mirror too */
 }
 
 /* The half vector of wo and wi (both above the surface) and |wo + wi| / 2 = wo.h;
@@ -60,9 +60,7 @@ inline float3 microfacet_eval(const FcMaterial* m, float3 wo, float3 wi) {
     float d = ndf_D(m, h);
     if (!(d > 0.0f)) return (float3)(0.0f);
     /* G / (4 cos_o cos_i); the implicit G cancels the denominator exactly. */
-    float g_over = (m->geometry == FC_G_IMPLICIT)
-                       ? 0.25f
-                       : geometry_G(m, wo, wi, h) / (4.0f * wo.z * wi.z);
+    float g_over = (m->geometry == FC_G_IMPLICIT) ? 0.25f : geometry_G(m, wo, wi, h) / (4.0f * wo.z * wi.z);
     float3 f = fresnel_eval(m, dot(wo, h)) * (d * g_over);
     return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
 }
@@ -74,8 +72,8 @@ inline float microfacet_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     /* ndf_pdf(h) / (4 wo.h); for visible normals the factor wo.h cancels analytically,
      * D(h) / (4 wo.z (1 + Lambda(wo))), which keeps f cos / pdf = G F / G1(wo) <= 1 in
      * float even where wo.h suffers cancellation (wi ~ -wo at grazing angles). */
-    float pdf = ndf_samples_visible(m) ? ndf_D(m, h) / (4.0f * ndf_projected_area(m, wo))
-                                       : ndf_pdf(m, wo, h) / (4.0f * wo_h);
+    float pdf =
+        ndf_samples_visible(m) ? ndf_D(m, h) / (4.0f * ndf_projected_area(m, wo)) : ndf_pdf(m, wo, h) / (4.0f * wo_h);
     return isfinite(pdf) ? fmax(pdf, 0.0f) : 0.0f;
 }
 

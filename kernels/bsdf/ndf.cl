@@ -69,7 +69,7 @@ inline float3 ndf_sample(const FcMaterial* m, float3 wo, float2 u) {
             return visible ? beckmann_sample_visible(m->alpha_x, m->alpha_y, wo, u)
                            : beckmann_sample_all(m->alpha_x, m->alpha_y, u);
 #else
-            return (float3)(0.0f, 0.0f, 1.0f);   /* no Beckmann material in this program */
+            return (float3)(0.0f, 0.0f, 1.0f); /* no Beckmann material in this program */
 #endif
     }
 }
@@ -79,8 +79,7 @@ inline float ndf_pdf(const FcMaterial* m, float3 wo, float3 h) {
     bool visible = ndf_samples_visible(m);
     switch (m->ndf) {
         case FC_NDF_GGX:
-            return visible ? ggx_pdf_visible(m->alpha_x, m->alpha_y, wo, h)
-                           : ggx_pdf_all(m->alpha_x, m->alpha_y, h);
+            return visible ? ggx_pdf_visible(m->alpha_x, m->alpha_y, wo, h) : ggx_pdf_all(m->alpha_x, m->alpha_y, h);
         case FC_NDF_BLINN_PHONG:
             return bp_ndf_pdf(m->exponent_x, h);
         default:

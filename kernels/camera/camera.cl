@@ -8,8 +8,8 @@
 #include "kernels/util/math.cl"
 
 /* The ray through image position (x, y) in pixels, (0, 0) the top-left corner. */
-inline void camera_ray(__constant const FcCamera* cam, float x, float y, uint width, uint height,
-                       float3* origin, float3* dir) {
+inline void camera_ray(__constant const FcCamera* cam, float x, float y, uint width, uint height, float3* origin,
+                       float3* dir) {
     float sx = 2.0f * x / (float)width - 1.0f;
     float sy = 1.0f - 2.0f * y / (float)height;
     float3 eye = load3c(cam->eye);

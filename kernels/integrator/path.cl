@@ -24,12 +24,11 @@
 #include "kernels/bsdf/bsdf.cl"
 #include "kernels/util/sampler.cl"
 
-
 /* Next-event estimation at surface `s` seen from direction wo: one light sample,
  * weighted against the BSDF's density by the power heuristic (delta lights: weight 1).
  * Returns its contribution before throughput. */
-inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* frame,
-                            const FcMaterial* m, float3 wo_local, float3 u_light) {
+inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* frame, const FcMaterial* m,
+                            float3 wo_local, float3 u_light) {
     float u_pick = u_light.x;
     float2 u = u_light.yz;
     LightSample ls;
@@ -56,7 +55,7 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
         if (!(tmax > 0.0f)) return (float3)(0.0f);
         dir = seg / tmax;
     } else if (isfinite(ls.dist)) {
-        tmax = ls.dist * (1.0f - 1e-5f);   /* stop short of a point light */
+        tmax = ls.dist * (1.0f - 1e-5f); /* stop short of a point light */
     }
     if (trace_any(sc->nodes, sc->tris, o, dir, tmax)) return (float3)(0.0f);
 
@@ -79,8 +78,8 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
     __constant const FcRenderParams* P = sc->params;
     float3 radiance = (float3)(0.0f);
     float3 throughput = (float3)(1.0f);
-    float prev_bsdf_pdf = INFINITY;   /* density of the sampled direction; camera rays: a delta */
-    float3 prev_p = o;                /* the vertex the ray left (light sampling's point) */
+    float prev_bsdf_pdf = INFINITY; /* density of the sampled direction; camera rays: a delta */
+    float3 prev_p = o;              /* the vertex the ray left (light sampling's point) */
     for (uint depth = 0;; ++depth) {
         Hit hit;
         if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) {
@@ -88,7 +87,8 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
             /* The ray escapes: the environment, MIS-weighted against light sampling. */
             float3 le = env_radiance(&P->environment, sc->env_texels, d);
             if (!is_black(le)) {
-                float w = depth > 0u ? bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, environment_light_pdf(sc, d)) : 1.0f;
+                float w =
+                    depth > 0u ? bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, environment_light_pdf(sc, d)) : 1.0f;
                 radiance += throughput * le * w;
             }
 #endif
@@ -179,10 +179,10 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
         Sampler sampler = sampler_init(params->sampler, params->seed, pixel, index);
         float2 jitter = sampler_get4(&sampler, FC_SET_CAMERA).xy;
         float3 o, d;
-        camera_ray(&params->camera, (float)x + jitter.x, (float)y + jitter.y, params->width,
-                   params->height, &o, &d);
+        camera_ray(&params->camera, (float)x + jitter.x, (float)y + jitter.y, params->width, params->height, &o, &d);
         float3 l = path_radiance(&sc, o, d, &sampler);
-        if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) sum[index & 1u].xyz += fmin(l, (float3)(FC_MAX_RADIANCE));
+        if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f)
+            sum[index & 1u].xyz += fmin(l, (float3)(FC_MAX_RADIANCE));
         else sum[index & 1u].w += 1.0f;
     }
     accum[pixel] += sum[0];

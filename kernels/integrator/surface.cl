@@ -8,16 +8,15 @@
 #include "kernels/util/frame.cl"
 
 typedef struct {
-    float3 p;        /* hit point */
-    float3 ng;       /* geometric normal, on the side the shading normals face */
-    float3 ns;       /* interpolated shading normal */
-    int prim;        /* scene triangle index */
+    float3 p;  /* hit point */
+    float3 ng; /* geometric normal, on the side the shading normals face */
+    float3 ns; /* interpolated shading normal */
+    int prim;  /* scene triangle index */
     int material;
-    int light;       /* light index, or -1 */
+    int light; /* light index, or -1 */
 } Surface;
 
-inline Surface surface_at(__global const FcTriangle* tris, __global const FcTriShading* shading,
-                          const Hit* hit) {
+inline Surface surface_at(__global const FcTriangle* tris, __global const FcTriShading* shading, const Hit* hit) {
     __global const FcTriangle* tri = &tris[hit->tri];
     float3 v0 = load3(tri->v0);
     float3 e1 = load3(tri->v1) - v0;

@@ -1,8 +1,7 @@
 /* Area lights: emitting triangles, picked in proportion to power and sampled by the
  * solid angle they subtend (spherical_triangle.cl), or uniformly by area where that
- * angle is too small or too large for the spherical construction. Radiance L_e comes from the triangle's material; a light
- * emits on the side cross(e1, e2) points to, or on both sides when its material
- * has FC_MAT_TWO_SIDED_EMISSION. */
+ * angle is too small or too large for the spherical construction. Radiance L_e comes from the triangle's material; a
+ * light emits on the side cross(e1, e2) points to, or on both sides when its material has FC_MAT_TWO_SIDED_EMISSION. */
 #ifndef FACET_LIGHTS_AREA_CL
 #define FACET_LIGHTS_AREA_CL
 

@@ -31,8 +31,7 @@
 
 /* World direction to the map's frame (rows of to_map). */
 inline float3 env_dir_to_map(__constant const FcEnvironment* env, float3 d) {
-    return (float3)(dot(load3c(env->to_map[0]), d), dot(load3c(env->to_map[1]), d),
-                    dot(load3c(env->to_map[2]), d));
+    return (float3)(dot(load3c(env->to_map[0]), d), dot(load3c(env->to_map[1]), d), dot(load3c(env->to_map[2]), d));
 }
 
 /* The map's frame back to world (the transpose: to_map is a rotation). */
@@ -80,8 +79,7 @@ inline float3 env_radiance(__constant const FcEnvironment* env, __global const f
 }
 
 /* The solid-angle pdf of texel t at sin(theta) `sin_theta` (0 at the poles). */
-inline float env_texel_pdf(__constant const FcEnvironment* env, __global const float* dist, int2 t,
-                           float sin_theta) {
+inline float env_texel_pdf(__constant const FcEnvironment* env, __global const float* dist, int2 t, float sin_theta) {
     if (!(env->total > 0.0f) || !(sin_theta > 0.0f)) return 0.0f;
     __global const float* cond = dist + (env->height + 1) + t.y * (env->width + 1);
     float p_row = dist[t.y + 1] - dist[t.y];
@@ -122,8 +120,8 @@ inline float env_remap(__global const float* cdf, int i, float u) {
 /* Samples a direction toward the environment: returns the radiance along it, `dir`
  * (world, unit) and its solid-angle pdf, which is 0 when nothing can be sampled (no
  * environment, a black map, or a direction that landed exactly on a pole). */
-inline float3 env_sample(__constant const FcEnvironment* env, __global const float4* texels,
-                         __global const float* dist, float2 u, float3* dir, float* pdf) {
+inline float3 env_sample(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
+                         float2 u, float3* dir, float* pdf) {
     u = clamp(u, 0.0f, FC_ONE_MINUS_EPSILON);
     *dir = (float3)(0.0f, 1.0f, 0.0f);
     *pdf = 0.0f;

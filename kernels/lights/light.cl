@@ -11,19 +11,19 @@
 #include "kernels/lights/punctual.cl"
 
 typedef struct {
-    float3 wi;      /* unit direction from the shading point to the light */
-    float dist;     /* distance to the light; INFINITY for directional and environment */
-    float3 li;      /* radiance arriving along wi; for delta lights the irradiance at normal incidence */
-    float pdf;      /* solid-angle density, pick included; delta lights: the pick probability */
-    int delta;      /* a punctual light: no MIS, no BSDF strategy can reach it */
-    float3 point;   /* area lights: the sampled point, and the light's normal (for the shadow ray) */
+    float3 wi;    /* unit direction from the shading point to the light */
+    float dist;   /* distance to the light; INFINITY for directional and environment */
+    float3 li;    /* radiance arriving along wi; for delta lights the irradiance at normal incidence */
+    float pdf;    /* solid-angle density, pick included; delta lights: the pick probability */
+    int delta;    /* a punctual light: no MIS, no BSDF strategy can reach it */
+    float3 point; /* area lights: the sampled point, and the light's normal (for the shadow ray) */
     float3 normal;
 } LightSample;
 
 /* Picks a light with probability pick_pdf by binary search of the cdf
  * (light_count + 1 entries, cdf[0] = 0, cdf[light_count] = 1). */
 inline int pick_light(__global const float* cdf, uint light_count, float u) {
-    uint lo = 0, hi = light_count;   /* invariant: cdf[lo] <= u < cdf[hi] */
+    uint lo = 0, hi = light_count; /* invariant: cdf[lo] <= u < cdf[hi] */
     while (hi - lo > 1u) {
         uint mid = (lo + hi) / 2u;
         if (cdf[mid] <= u) lo = mid;
@@ -38,7 +38,7 @@ inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, 
     if (count == 0u) return false;
     __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, count, u_pick)];
     ls->delta = 0;
-    if (false) {   /* each light type below is compiled only when the scene has it */
+    if (false) { /* each light type below is compiled only when the scene has it */
 #if FC_HAS_AREA_LIGHTS
     } else if (l->type == FC_LIGHT_AREA_TRIANGLE) {
         ls->normal = area_light_normal(l);

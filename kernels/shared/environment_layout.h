@@ -19,13 +19,13 @@
 #include "kernels/shared/types.h"
 
 typedef struct FcEnvironment {
-    fc_int width;        /* 0: no map (constant radiance, or no environment at all) */
+    fc_int width; /* 0: no map (constant radiance, or no environment at all) */
     fc_int height;
-    fc_int enabled;      /* 0: no environment (escaped rays see black) */
+    fc_int enabled; /* 0: no environment (escaped rays see black) */
     fc_int pad0;
-    float scale[3];      /* radiance multiplier (the constant radiance when width == 0) */
-    float total;         /* integral of luminance x sin(theta) over the map's (u, v) square */
-    float to_map[3][4];  /* world-to-map rotation, row-major, 4th column unused */
+    float scale[3];     /* radiance multiplier (the constant radiance when width == 0) */
+    float total;        /* integral of luminance x sin(theta) over the map's (u, v) square */
+    float to_map[3][4]; /* world-to-map rotation, row-major, 4th column unused */
 } FcEnvironment;
 
 FC_STATIC_ASSERT(sizeof(FcEnvironment) == 80, "FcEnvironment is 80 bytes");

@@ -8,15 +8,15 @@
 #define FACET_SHARED_FEATURE_FLAGS_H
 
 /* X(name, bit) for every feature. */
-#define FC_FEATURE_LIST(X)        \
-    X(AREA_LIGHTS, 0)             \
-    X(PUNCTUAL_LIGHTS, 1)         \
-    X(ENVIRONMENT, 2)             \
-    X(OREN_NAYAR, 3)              \
-    X(ASHIKHMIN_SHIRLEY, 4)       \
-    X(BLINN_PHONG, 5)             \
-    X(MICROFACET, 6)              \
-    X(BECKMANN, 7)                \
+#define FC_FEATURE_LIST(X)  \
+    X(AREA_LIGHTS, 0)       \
+    X(PUNCTUAL_LIGHTS, 1)   \
+    X(ENVIRONMENT, 2)       \
+    X(OREN_NAYAR, 3)        \
+    X(ASHIKHMIN_SHIRLEY, 4) \
+    X(BLINN_PHONG, 5)       \
+    X(MICROFACET, 6)        \
+    X(BECKMANN, 7)          \
     X(DIELECTRIC, 8)
 
 #ifndef FC_HAS_AREA_LIGHTS

@@ -14,28 +14,29 @@
     S(FcRenderParams)        \
     S(FcEnvironment)
 
-#define FC_LAYOUT_FIELDS(F)                                                                       \
-    F(FcBvhNode, lo_x) F(FcBvhNode, lo_y) F(FcBvhNode, lo_z) F(FcBvhNode, hi_x)                   \
-    F(FcBvhNode, hi_y) F(FcBvhNode, hi_z) F(FcBvhNode, index) F(FcBvhNode, count)                 \
-    F(FcTriangle, v0) F(FcTriangle, prim) F(FcTriangle, v1) F(FcTriangle, v2)                     \
-    F(FcTriShading, n0) F(FcTriShading, material) F(FcTriShading, n1) F(FcTriShading, light)      \
-    F(FcTriShading, n2)                                                                           \
-    F(FcMaterial, diffuse) F(FcMaterial, diffuse_model) F(FcMaterial, specular)                \
-    F(FcMaterial, specular_model) F(FcMaterial, emission) F(FcMaterial, ndf) F(FcMaterial, eta)   \
-    F(FcMaterial, geometry) F(FcMaterial, k) F(FcMaterial, fresnel) F(FcMaterial, alpha_x)       \
-    F(FcMaterial, alpha_y) F(FcMaterial, exponent_x) F(FcMaterial, exponent_y) F(FcMaterial, ior) \
-    F(FcMaterial, sigma) F(FcMaterial, flags) F(FcMaterial, sampling)                         \
-    F(FcLight, p0) F(FcLight, type) F(FcLight, e1) F(FcLight, prim) F(FcLight, e2)                \
-    F(FcLight, area) F(FcLight, color) F(FcLight, pick_pdf) F(FcLight, cos_inner)                 \
-    F(FcLight, cos_outer)                                                                         \
-    F(FcCamera, eye) F(FcCamera, projection) F(FcCamera, forward) F(FcCamera, right)              \
-    F(FcCamera, up)                                                                               \
-    F(FcRenderParams, camera) F(FcRenderParams, width) F(FcRenderParams, height)                  \
-    F(FcRenderParams, sample_begin) F(FcRenderParams, sample_count) F(FcRenderParams, seed)       \
-    F(FcRenderParams, max_depth) F(FcRenderParams, rr_depth) F(FcRenderParams, light_count)       \
-    F(FcRenderParams, row_begin) F(FcRenderParams, row_count) F(FcRenderParams, environment)      \
-    F(FcRenderParams, environment_light) F(FcRenderParams, strategy) F(FcRenderParams, sampler)                              \
-    F(FcEnvironment, width) F(FcEnvironment, height) F(FcEnvironment, enabled)                    \
-    F(FcEnvironment, scale) F(FcEnvironment, total) F(FcEnvironment, to_map)
+// clang-format off
+#define FC_LAYOUT_FIELDS(F)                                                                                                 \
+    F(FcBvhNode, lo_x) F(FcBvhNode, lo_y) F(FcBvhNode, lo_z) F(FcBvhNode, hi_x)                                             \
+    F(FcBvhNode, hi_y) F(FcBvhNode, hi_z) F(FcBvhNode, index) F(FcBvhNode, count)                                           \
+    F(FcTriangle, v0) F(FcTriangle, prim) F(FcTriangle, v1) F(FcTriangle, v2)                                               \
+    F(FcTriShading, n0) F(FcTriShading, material) F(FcTriShading, n1) F(FcTriShading, light)                                \
+    F(FcTriShading, n2)                                                                                                     \
+    F(FcMaterial, diffuse) F(FcMaterial, diffuse_model) F(FcMaterial, specular) F(FcMaterial, specular_model)               \
+    F(FcMaterial, emission) F(FcMaterial, ndf) F(FcMaterial, eta) F(FcMaterial, geometry)                                   \
+    F(FcMaterial, k) F(FcMaterial, fresnel) F(FcMaterial, alpha_x) F(FcMaterial, alpha_y)                                   \
+    F(FcMaterial, exponent_x) F(FcMaterial, exponent_y) F(FcMaterial, ior) F(FcMaterial, sigma)                             \
+    F(FcMaterial, flags) F(FcMaterial, sampling)                                                                            \
+    F(FcLight, p0) F(FcLight, type) F(FcLight, e1) F(FcLight, prim)                                                         \
+    F(FcLight, e2) F(FcLight, area) F(FcLight, color) F(FcLight, pick_pdf)                                                  \
+    F(FcLight, cos_inner) F(FcLight, cos_outer)                                                                             \
+    F(FcCamera, eye) F(FcCamera, projection) F(FcCamera, forward) F(FcCamera, right)                                        \
+    F(FcCamera, up)                                                                                                         \
+    F(FcRenderParams, camera) F(FcRenderParams, width) F(FcRenderParams, height) F(FcRenderParams, sample_begin)            \
+    F(FcRenderParams, sample_count) F(FcRenderParams, seed) F(FcRenderParams, max_depth) F(FcRenderParams, rr_depth)        \
+    F(FcRenderParams, light_count) F(FcRenderParams, row_begin) F(FcRenderParams, row_count) F(FcRenderParams, environment) \
+    F(FcRenderParams, environment_light) F(FcRenderParams, strategy) F(FcRenderParams, sampler)                             \
+    F(FcEnvironment, width) F(FcEnvironment, height) F(FcEnvironment, enabled) F(FcEnvironment, scale)                      \
+    F(FcEnvironment, total) F(FcEnvironment, to_map)
+// clang-format on
 
 #endif

@@ -16,49 +16,49 @@
  * format and `facet info` use, from the same lists. */
 
 /* Diffuse lobes (FcMaterial.diffuse_model). */
-#define FC_DIFFUSE_LIST(X)                                                                       \
-    X(FC_DIFFUSE_NONE, "none")                                                                   \
-    X(FC_DIFFUSE_LAMBERT, "lambert")                                                             \
-    X(FC_DIFFUSE_LAMBERT_1MF0, "lambert_1mf0")           /* Lambert x (1 - F0), tri-Ace (Gotanda 2010) */ \
+#define FC_DIFFUSE_LIST(X)                                                                                             \
+    X(FC_DIFFUSE_NONE, "none")                                                                                         \
+    X(FC_DIFFUSE_LAMBERT, "lambert")                                                                                   \
+    X(FC_DIFFUSE_LAMBERT_1MF0, "lambert_1mf0")           /* Lambert x (1 - F0), tri-Ace (Gotanda 2010) */              \
     X(FC_DIFFUSE_OREN_NAYAR, "oren_nayar")               /* the A, B, sin(alpha) tan(beta) form (Oren & Nayar 1994) */ \
     X(FC_DIFFUSE_ASHIKHMIN_SHIRLEY, "ashikhmin_shirley") /* 28/23 energy-conserving term (Ashikhmin & Shirley 2000) */
 
 /* Specular lobes (FcMaterial.specular_model). */
-#define FC_SPECULAR_LIST(X)                                                                      \
-    X(FC_SPECULAR_NONE, "none")                                                                  \
-    X(FC_SPECULAR_MICROFACET, "microfacet")                          /* D G F / (4 cos_o cos_i) */ \
-    X(FC_SPECULAR_BLINN_PHONG, "blinn_phong")                        /* Ks (n.h)^e / pi, the original (Blinn 1977) */ \
-    X(FC_SPECULAR_BLINN_PHONG_NORMALIZED, "blinn_phong_normalized")  /* Ks (e + 8) / (8 pi) (n.h)^e */ \
-    X(FC_SPECULAR_ASHIKHMIN_SHIRLEY, "ashikhmin_shirley")            /* anisotropic Phong (Ashikhmin & Shirley 2000) */ \
-    X(FC_SPECULAR_DIELECTRIC, "dielectric")                          /* reflection + refraction, smooth or rough (Walter 2007) */
+#define FC_SPECULAR_LIST(X)                                                                                            \
+    X(FC_SPECULAR_NONE, "none")                                                                                        \
+    X(FC_SPECULAR_MICROFACET, "microfacet")                         /* D G F / (4 cos_o cos_i) */                      \
+    X(FC_SPECULAR_BLINN_PHONG, "blinn_phong")                       /* Ks (n.h)^e / pi, the original (Blinn 1977) */   \
+    X(FC_SPECULAR_BLINN_PHONG_NORMALIZED, "blinn_phong_normalized") /* Ks (e + 8) / (8 pi) (n.h)^e */                  \
+    X(FC_SPECULAR_ASHIKHMIN_SHIRLEY, "ashikhmin_shirley")           /* anisotropic Phong (Ashikhmin & Shirley 2000) */ \
+    X(FC_SPECULAR_DIELECTRIC, "dielectric") /* reflection + refraction, smooth or rough (Walter 2007) */
 
 /* Normal distributions (FcMaterial.ndf). */
-#define FC_NDF_LIST(X)                                                                           \
-    X(FC_NDF_BECKMANN, "beckmann")                                                               \
-    X(FC_NDF_GGX, "ggx")                                                                         \
-    X(FC_NDF_BLINN_PHONG, "blinn_phong")   /* (e + 2) / (2 pi) cos^e, e = exponent_x */
+#define FC_NDF_LIST(X)             \
+    X(FC_NDF_BECKMANN, "beckmann") \
+    X(FC_NDF_GGX, "ggx")           \
+    X(FC_NDF_BLINN_PHONG, "blinn_phong") /* (e + 2) / (2 pi) cos^e, e = exponent_x */
 
 /* Geometry (shadowing-masking) terms (FcMaterial.geometry). */
-#define FC_G_LIST(X)                                                                             \
-    X(FC_G_IMPLICIT, "implicit")                  /* (n.l)(n.v) */                               \
-    X(FC_G_COOK_TORRANCE, "cook_torrance")        /* min(1, 2(n.h)(n.v)/(v.h), 2(n.h)(n.l)/(v.h)) */ \
-    X(FC_G_SMITH_SEPARABLE, "smith_separable")    /* G1(v) G1(l), exact Lambda of the NDF */     \
-    X(FC_G_SMITH_CORRELATED, "smith_correlated")  /* 1 / (1 + Lambda(v) + Lambda(l)) (Heitz 2014) */ \
-    X(FC_G_SMITH_SCHLICK, "smith_schlick")        /* Schlick's approximation of Smith, k = alpha sqrt(2/pi) */ \
-    X(FC_G_SMITH_WALTER, "smith_walter")          /* Walter et al. 2007's rational approximation (Beckmann) */
+#define FC_G_LIST(X)                                                                                          \
+    X(FC_G_IMPLICIT, "implicit")                 /* (n.l)(n.v) */                                             \
+    X(FC_G_COOK_TORRANCE, "cook_torrance")       /* min(1, 2(n.h)(n.v)/(v.h), 2(n.h)(n.l)/(v.h)) */           \
+    X(FC_G_SMITH_SEPARABLE, "smith_separable")   /* G1(v) G1(l), exact Lambda of the NDF */                   \
+    X(FC_G_SMITH_CORRELATED, "smith_correlated") /* 1 / (1 + Lambda(v) + Lambda(l)) (Heitz 2014) */           \
+    X(FC_G_SMITH_SCHLICK, "smith_schlick")       /* Schlick's approximation of Smith, k = alpha sqrt(2/pi) */ \
+    X(FC_G_SMITH_WALTER, "smith_walter")         /* Walter et al. 2007's rational approximation (Beckmann) */
 
 /* Fresnel terms (FcMaterial.fresnel). */
-#define FC_FRESNEL_LIST(X)                                                                       \
-    X(FC_FRESNEL_ONE, "one")                 /* F = 1, for tests */                              \
-    X(FC_FRESNEL_SCHLICK, "schlick")         /* Schlick from the RGB F0 in `specular` */         \
+#define FC_FRESNEL_LIST(X)                                                                        \
+    X(FC_FRESNEL_ONE, "one")                 /* F = 1, for tests */                               \
+    X(FC_FRESNEL_SCHLICK, "schlick")         /* Schlick from the RGB F0 in `specular` */          \
     X(FC_FRESNEL_SCHLICK_IOR, "schlick_ior") /* Schlick with F0 = ((n - 1)/(n + 1))^2, n = ior */ \
-    X(FC_FRESNEL_DIELECTRIC, "dielectric")   /* exact, unpolarised, relative index ior */        \
+    X(FC_FRESNEL_DIELECTRIC, "dielectric")   /* exact, unpolarised, relative index ior */         \
     X(FC_FRESNEL_CONDUCTOR, "conductor")     /* exact, complex index eta + i k per channel */
 
 /* Microfacet sampling (FcMaterial.sampling). */
-#define FC_SAMPLE_LIST(X)                                                                        \
-    X(FC_SAMPLE_VISIBLE, "visible")   /* distribution of visible normals */                      \
-    X(FC_SAMPLE_ALL, "all")           /* D(m) cos(theta_m) */
+#define FC_SAMPLE_LIST(X)                                                 \
+    X(FC_SAMPLE_VISIBLE, "visible") /* distribution of visible normals */ \
+    X(FC_SAMPLE_ALL, "all")         /* D(m) cos(theta_m) */
 
 /* The constants: 0, 1, ... in list order, and FC_*_COUNT after each list. */
 #define FC_MATERIAL_ENUM_VALUE(value, name) value,

@@ -12,13 +12,13 @@
 /* How light from area lights and the environment is estimated (punctual lights are
  * always sampled: nothing else can reach them). MIS is the default; the single
  * strategies exist to measure and test them. */
-#define FC_STRATEGY_MIS 0     /* light sampling + BSDF sampling, power heuristic */
-#define FC_STRATEGY_LIGHT 1   /* light sampling only */
-#define FC_STRATEGY_BSDF 2    /* BSDF sampling only */
+#define FC_STRATEGY_MIS 0   /* light sampling + BSDF sampling, power heuristic */
+#define FC_STRATEGY_LIGHT 1 /* light sampling only */
+#define FC_STRATEGY_BSDF 2  /* BSDF sampling only */
 
 /* Sample generators (kernels/util/sampler.cl). */
-#define FC_SAMPLER_INDEPENDENT 0   /* independent uniform numbers (PCG32) */
-#define FC_SAMPLER_SOBOL 1         /* Owen-scrambled Sobol', shuffled per dimension set (Burley 2020) */
+#define FC_SAMPLER_INDEPENDENT 0 /* independent uniform numbers (PCG32) */
+#define FC_SAMPLER_SOBOL 1       /* Owen-scrambled Sobol', shuffled per dimension set (Burley 2020) */
 
 /* The largest radiance one sample adds to a pixel, per channel (larger ones are
  * clamped to it), and the largest emission, light colour and environment radiance a
@@ -57,9 +57,9 @@ typedef struct FcRenderParams {
     fc_uint light_count;
     fc_uint row_begin;
     fc_uint row_count;
-    fc_int environment_light;   /* index of the FC_LIGHT_ENVIRONMENT light, or -1 */
-    fc_uint strategy;           /* FC_STRATEGY_*: how direct light is estimated */
-    fc_uint sampler;            /* FC_SAMPLER_*: where the sample values come from */
+    fc_int environment_light; /* index of the FC_LIGHT_ENVIRONMENT light, or -1 */
+    fc_uint strategy;         /* FC_STRATEGY_*: how direct light is estimated */
+    fc_uint sampler;          /* FC_SAMPLER_*: where the sample values come from */
     fc_uint pad_sampler[3];
     FcEnvironment environment;
 } FcRenderParams;
@@ -67,6 +67,7 @@ typedef struct FcRenderParams {
 FC_STATIC_ASSERT(sizeof(FcCamera) == 64, "FcCamera is 64 bytes");
 FC_STATIC_ASSERT(offsetof(FcCamera, up) == 48, "FcCamera offsets");
 FC_STATIC_ASSERT(sizeof(FcRenderParams) == 208, "FcRenderParams is 208 bytes");
-FC_STATIC_ASSERT(offsetof(FcRenderParams, width) == 64 && offsetof(FcRenderParams, row_count) == 100, "FcRenderParams offsets");
+FC_STATIC_ASSERT(offsetof(FcRenderParams, width) == 64 && offsetof(FcRenderParams, row_count) == 100,
+                 "FcRenderParams offsets");
 
 #endif

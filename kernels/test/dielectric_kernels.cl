@@ -20,8 +20,7 @@ __kernel void dl_eval(__global const FcMaterial* mats, __global const float4* wo
  * with a non-finite or negative value, or whose f / pdf differ from bsdf_eval /
  * bsdf_pdf by more than 1e-5 relative, out[8i+5] = the largest energy weight,
  * out[8i+6] = the fraction of samples reflected, out[8i+7] = the fraction refused. */
-__kernel void dl_albedo(__global const FcMaterial* mats, __global const float4* wos, __global float* out,
-                        int samples) {
+__kernel void dl_albedo(__global const FcMaterial* mats, __global const float4* wos, __global float* out, int samples) {
     int i = (int)get_global_id(0);
     FcMaterial m = mats[i];
     float3 wo = wos[i].xyz;

@@ -5,8 +5,8 @@
 #include "kernels/lights/spherical_triangle.cl"
 #include "kernels/util/rng.cl"
 
-__kernel void spherical_triangle_samples(float4 p, float4 v0, float4 v1, float4 v2, uint seed,
-                                         __global float4* out, __global float* omega) {
+__kernel void spherical_triangle_samples(float4 p, float4 v0, float4 v1, float4 v2, uint seed, __global float4* out,
+                                         __global float* omega) {
     uint i = get_global_id(0);
     Rng rng = rng_init(seed, i, 0x5717u);
     float3 a = normalize(v0.xyz - p.xyz), b = normalize(v1.xyz - p.xyz), c = normalize(v2.xyz - p.xyz);

@@ -68,10 +68,9 @@ inline int mf_find_cell(__global const float* e, int n, float v) {
  * hist[nt * np] counts refused samples, hist[nt * np + 1] invalid ones (non-finite or
  * outside the chart, which covers the sphere). Each work-group bins into `local_hist`
  * (nt * np + 2 counters) and adds it to `hist` at the end. */
-__kernel void mf_sample_hist(__global const FcMaterial* mat, float4 wo4, int mode, uint seed,
-                             uint per_item, int nt, int np, __global const float* theta_edges,
-                             __global const float* phi_edges, float phi0, __global uint* hist,
-                             __local uint* local_hist) {
+__kernel void mf_sample_hist(__global const FcMaterial* mat, float4 wo4, int mode, uint seed, uint per_item, int nt,
+                             int np, __global const float* theta_edges, __global const float* phi_edges, float phi0,
+                             __global uint* hist, __local uint* local_hist) {
     int cells = nt * np + 2;
     for (int c = (int)get_local_id(0); c < cells; c += (int)get_local_size(0)) local_hist[c] = 0u;
     barrier(CLK_LOCAL_MEM_FENCE);
@@ -102,8 +101,8 @@ __kernel void mf_sample_hist(__global const FcMaterial* mat, float4 wo4, int mod
 }
 
 /* out[i] = the density of dirs[i] (mode as above). */
-__kernel void mf_pdf_batch(__global const FcMaterial* mat, float4 wo4, int mode,
-                           __global const float4* dirs, __global float* out) {
+__kernel void mf_pdf_batch(__global const FcMaterial* mat, float4 wo4, int mode, __global const float4* dirs,
+                           __global float* out) {
     size_t i = get_global_id(0);
     FcMaterial m = *mat;
     out[i] = mf_density(&m, wo4.xyz, mode, dirs[i].xyz);
@@ -115,13 +114,12 @@ __kernel void mf_ndf_terms(__global const FcMaterial* mat, float4 wo4, __global 
     size_t i = get_global_id(0);
     FcMaterial m = *mat;
     float3 d = dirs[i].xyz;
-    out[i] = (float4)(ndf_D(&m, d), ndf_lambda(&m, d), ndf_pdf(&m, wo4.xyz, d),
-                      smith_G1(&m, wo4.xyz, d));
+    out[i] = (float4)(ndf_D(&m, d), ndf_lambda(&m, d), ndf_pdf(&m, wo4.xyz, d), smith_G1(&m, wo4.xyz, d));
 }
 
 /* out[i * FC_G_COUNT + g] = G of kind g for (wo[i], wi[i]) and their half vector. */
-__kernel void mf_geometry(__global const FcMaterial* mat, __global const float4* wo,
-                          __global const float4* wi, __global float* out) {
+__kernel void mf_geometry(__global const FcMaterial* mat, __global const float4* wo, __global const float4* wi,
+                          __global float* out) {
     size_t i = get_global_id(0);
     FcMaterial m = *mat;
     float3 h = normalize(wo[i].xyz + wi[i].xyz);
@@ -134,8 +132,8 @@ __kernel void mf_geometry(__global const FcMaterial* mat, __global const float4*
 /* For material i, wo[i], u[i]: out[4i] = the specular lobe's sample (f, pdf), out[4i+1]
  * its eval/pdf at the sampled wi, out[4i+2] = bsdf_sample's (weight, ok),
  * out[4i+3] = (bsdf_eval cos / bsdf_pdf at its wi, delta). ok = 0/1 in .w. */
-__kernel void mf_consistency(__global const FcMaterial* mats, __global const float4* wo,
-                             __global const float4* u, __global float4* out) {
+__kernel void mf_consistency(__global const FcMaterial* mats, __global const float4* wo, __global const float4* u,
+                             __global float4* out) {
     size_t i = get_global_id(0);
     FcMaterial m = mats[i];
     float3 o = wo[i].xyz;
@@ -143,8 +141,8 @@ __kernel void mf_consistency(__global const FcMaterial* mats, __global const flo
     bool ok = specular_sample(&m, o, u[i].xy, &s);
     bool live = ok && !s.delta;
     out[4 * i] = (float4)(s.f, live ? s.pdf : -1.0f);
-    out[4 * i + 1] = live ? (float4)(specular_eval(&m, o, s.wi), specular_pdf(&m, o, s.wi))
-                          : (float4)(0.0f, 0.0f, 0.0f, -1.0f);
+    out[4 * i + 1] =
+        live ? (float4)(specular_eval(&m, o, s.wi), specular_pdf(&m, o, s.wi)) : (float4)(0.0f, 0.0f, 0.0f, -1.0f);
     ok = bsdf_sample(&m, o, u[i].xyz, &s);
     out[4 * i + 2] = (float4)(s.weight, ok ? 1.0f : 0.0f);
     float3 expect = (float3)(0.0f);
@@ -177,7 +175,7 @@ inline FcMaterial sweep_material(Rng* r) {
     m.alpha_x = sweep_log_uniform(r, -7.0f, 0.0f);
     float ratio = (rng_float(r) < 0.25f) ? 1.0f : sweep_log_uniform(r, -4.0f, 4.0f);
     m.alpha_y = clamp(m.alpha_x * ratio, 1e-7f, 1.0f);
-    m.exponent_x = 2.0f / (m.alpha_x * m.alpha_x) - 2.0f;   /* 0 to 2e14 */
+    m.exponent_x = 2.0f / (m.alpha_x * m.alpha_x) - 2.0f; /* 0 to 2e14 */
     m.exponent_y = 2.0f / (m.alpha_y * m.alpha_y) - 2.0f;
     m.ior = 1.0f + 19.0f * rng_float(r);
     m.sigma = 0.5f * FC_PI * rng_float(r);
@@ -261,8 +259,8 @@ __kernel void mf_extreme_sweep(uint seed, __global uint* counters, __global FcMa
         if (!ok) sweep_fail(counters, fail_mats, fail_dirs, &m, wo, s.wi, 4, s.pdf);
         /* weight = G F / G1(wo) <= 1 for F = 1, exact Smith G and visible normals. */
         bool bounded = m.fresnel == FC_FRESNEL_ONE &&
-                       (s.delta || (ndf_samples_visible(&m) && (m.geometry == FC_G_SMITH_SEPARABLE ||
-                                                                m.geometry == FC_G_SMITH_CORRELATED)));
+                       (s.delta || (ndf_samples_visible(&m) &&
+                                    (m.geometry == FC_G_SMITH_SEPARABLE || m.geometry == FC_G_SMITH_CORRELATED)));
         if (ok && bounded && !(max3(s.weight) <= 1.001f))
             sweep_fail(counters, fail_mats, fail_dirs, &m, wo, s.wi, 5, max3(s.weight));
     }

@@ -9,8 +9,7 @@
 
 /* out[4i..4i+2] = bsdf_eval(mats[i], wo_i, wi_i), out[4i+3] = bsdf_pdf;
  * dirs holds wo_i, wi_i as 6 floats per item. */
-__kernel void models_eval(__global const FcMaterial* mats, __global const float* dirs, __global float* out,
-                          int n) {
+__kernel void models_eval(__global const FcMaterial* mats, __global const float* dirs, __global float* out, int n) {
     int i = (int)get_global_id(0);
     if (i >= n) return;
     FcMaterial m = mats[i];
@@ -27,8 +26,8 @@ __kernel void models_eval(__global const FcMaterial* mats, __global const float*
  * bsdf_sample draws: out[4i] = mean weight, out[4i+1] = standard error of the mean,
  * out[4i+2] = number of samples with a NaN, infinite or negative weight, f or pdf,
  * out[4i+3] = largest weight. */
-__kernel void models_albedo(__global const FcMaterial* mats, __global const float* wos, __global float* out,
-                            int n, int samples) {
+__kernel void models_albedo(__global const FcMaterial* mats, __global const float* wos, __global float* out, int n,
+                            int samples) {
     int i = (int)get_global_id(0);
     if (i >= n) return;
     FcMaterial m = mats[i];
@@ -43,8 +42,8 @@ __kernel void models_albedo(__global const FcMaterial* mats, __global const floa
         float w = 0.0f;
         if (bsdf_sample(&m, wo, u, &s)) {
             w = s.weight.x;
-            bool ok = isfinite(w) && w >= 0.0f && all_finite(s.f) && s.f.x >= 0.0f && s.f.y >= 0.0f &&
-                      s.f.z >= 0.0f && (s.delta || (isfinite(s.pdf) && s.pdf > 0.0f));
+            bool ok = isfinite(w) && w >= 0.0f && all_finite(s.f) && s.f.x >= 0.0f && s.f.y >= 0.0f && s.f.z >= 0.0f &&
+                      (s.delta || (isfinite(s.pdf) && s.pdf > 0.0f));
             if (!ok) {
                 ++bad;
                 w = 0.0f;
@@ -64,8 +63,8 @@ __kernel void models_albedo(__global const FcMaterial* mats, __global const floa
 /* specular_sample of mats[i] from wos[i] with `samples` random u: counts samples whose
  * f and pdf differ from specular_eval/specular_pdf (out[2i]) and samples with a NaN,
  * infinite or negative value anywhere (out[2i+1]). */
-__kernel void models_sample_consistency(__global const FcMaterial* mats, __global const float* wos,
-                                        __global int* out, int n, int samples) {
+__kernel void models_sample_consistency(__global const FcMaterial* mats, __global const float* wos, __global int* out,
+                                        int n, int samples) {
     int i = (int)get_global_id(0);
     if (i >= n) return;
     FcMaterial m = mats[i];

@@ -14,10 +14,10 @@
 
 typedef struct {
     float t;
-    float u;     /* barycentric weight of v1 */
-    float v;     /* barycentric weight of v2 */
-    int prim;    /* FcTriangle.prim of the hit triangle (its scene index); -1 on a miss */
-    int tri;     /* index of the hit triangle in BVH order (the FcTriangle array) */
+    float u;  /* barycentric weight of v1 */
+    float v;  /* barycentric weight of v2 */
+    int prim; /* FcTriangle.prim of the hit triangle (its scene index); -1 on a miss */
+    int tri;  /* index of the hit triangle in BVH order (the FcTriangle array) */
 } Hit;
 
 /* 1 + 2 * gamma(3), gamma(n) = n*eps / (1 - n*eps), eps = 2^-24: scaling the exit
@@ -29,7 +29,7 @@ typedef struct {
 typedef struct {
     float3 o;
     float3 inv_d;
-    int3 neg;    /* 1 where the direction is negative (the near plane is max) */
+    int3 neg; /* 1 where the direction is negative (the near plane is max) */
 } BoxRay;
 
 inline BoxRay box_ray_setup(float3 o, float3 d) {
@@ -43,20 +43,19 @@ inline BoxRay box_ray_setup(float3 o, float3 d) {
 /* Entry and exit along one axis; 0 * inf (origin on a slab plane of a parallel ray)
  * gives NaN, which the comparisons in box_hit() ignore, so such a plane counts as
  * inside. */
-#define FC_SLAB(lo, hi, o, inv, neg, tn, tf)                       \
-    do {                                                           \
-        float t0_ = ((neg) ? (hi) : (lo)) - (o);                   \
-        float t1_ = ((neg) ? (lo) : (hi)) - (o);                   \
-        t0_ *= (inv);                                              \
-        t1_ *= (inv);                                              \
-        t1_ *= FC_SLAB_SCALE;                                      \
-        tn = t0_ > tn ? t0_ : tn;                                  \
-        tf = t1_ < tf ? t1_ : tf;                                  \
+#define FC_SLAB(lo, hi, o, inv, neg, tn, tf)     \
+    do {                                         \
+        float t0_ = ((neg) ? (hi) : (lo)) - (o); \
+        float t1_ = ((neg) ? (lo) : (hi)) - (o); \
+        t0_ *= (inv);                            \
+        t1_ *= (inv);                            \
+        t1_ *= FC_SLAB_SCALE;                    \
+        tn = t0_ > tn ? t0_ : tn;                \
+        tf = t1_ < tf ? t1_ : tf;                \
     } while (0)
 
 /* Whether the ray meets box [lo, hi] within [0, tmax]; the entry distance in *tnear. */
-inline bool box_hit(const BoxRay* r, __global const float* lo, __global const float* hi,
-                    float tmax, float* tnear) {
+inline bool box_hit(const BoxRay* r, __global const float* lo, __global const float* hi, float tmax, float* tnear) {
     float tn = 0.0f, tf = tmax;
     FC_SLAB(lo[0], hi[0], r->o.x, r->inv_d.x, r->neg.x, tn, tf);
     FC_SLAB(lo[1], hi[1], r->o.y, r->inv_d.y, r->neg.y, tn, tf);
@@ -66,8 +65,8 @@ inline bool box_hit(const BoxRay* r, __global const float* lo, __global const fl
 }
 
 /* Intersects leaf [first, first + count); with `any`, stops at the first hit. */
-inline bool leaf_hit(__global const FcTriangle* tris, int first, int count, const TriRay* tr,
-                     float3 o, Hit* hit, bool any) {
+inline bool leaf_hit(__global const FcTriangle* tris, int first, int count, const TriRay* tr, float3 o, Hit* hit,
+                     bool any) {
     bool found = false;
     for (int i = first; i < first + count; ++i) {
         float t, u, v;
@@ -93,8 +92,8 @@ inline bool leaf_hit(__global const FcTriangle* tris, int first, int count, cons
  * exits ignored by the comparisons (select keeps the running value where the
  * comparison is false). Returns a mask (-1 where hit) and the entry distances in
  * *tnear. */
-inline int4 children_hit(__global const FcBvhNode* n, float3 o, float3 inv_d, int3 near, int3 far,
-                         float tmax, float4* tnear) {
+inline int4 children_hit(__global const FcBvhNode* n, float3 o, float3 inv_d, int3 near, int3 far, float tmax,
+                         float4* tnear) {
     __global const float4* v = (__global const float4*)n;
     float4 t0x = (v[near.x] - o.x) * inv_d.x;
     float4 t1x = (v[far.x] - o.x) * inv_d.x;
@@ -117,14 +116,10 @@ inline int4 children_hit(__global const FcBvhNode* n, float3 o, float3 inv_d, in
 }
 
 /* A 4-bit mask from an int4 of 0 / -1 lanes: bit c set where lane c is. */
-inline uint lane_bits(int4 m) {
-    return (uint)((m.x & 1) | (m.y & 2) | (m.z & 4) | (m.w & 8));
-}
+inline uint lane_bits(int4 m) { return (uint)((m.x & 1) | (m.y & 2) | (m.z & 4) | (m.w & 8)); }
 
 /* Index of the lowest set bit of a non-zero mask (OpenCL C 1.2 has clz, not ctz). */
-inline uint lowest_bit(uint bits) {
-    return 31u - clz(bits & (0u - bits));
-}
+inline uint lowest_bit(uint bits) { return 31u - clz(bits & (0u - bits)); }
 
 /* The traversal shared by trace_closest and trace_any. Per node: the four boxes in one
  * go, then the hit leaves (their hits shorten the ray before any inner child is
@@ -132,8 +127,8 @@ inline uint lowest_bit(uint bits) {
  * sort, with two one comparison, with three or four an insertion sort. The others go on
  * the stack with their entry distance, and an entry farther than the nearest hit found
  * since is dropped when popped, without fetching its node. */
-inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o,
-                      float3 d, Hit* hit, bool any) {
+inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d, Hit* hit,
+                      bool any) {
     const BoxRay br = box_ray_setup(o, d);
     const TriRay tr = tri_ray_setup(d);
     /* Rows of FcBvhNode: lo_x lo_y lo_z hi_x hi_y hi_z. */
@@ -151,7 +146,7 @@ inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle
         const int4 count = vload4(0, n->count);
         const int4 index = vload4(0, n->index);
         uint leaves = lane_bits(mask & (count > 0));
-        uint inner = lane_bits(mask & (count <= 0));   /* empty slots are never hit */
+        uint inner = lane_bits(mask & (count <= 0)); /* empty slots are never hit */
         if (leaves) {
             const int idx[4] = {index.x, index.y, index.z, index.w};
             const int cnt[4] = {count.x, count.y, count.z, count.w};
@@ -187,7 +182,7 @@ inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle
         if (!inner) {
             const bool swap = tn[c1] < tn[c0];
             const uint nearer = swap ? c1 : c0, farther = swap ? c0 : c1;
-            if (sp < FC_BVH_STACK_SIZE) {   /* always, by the builder */
+            if (sp < FC_BVH_STACK_SIZE) { /* always, by the builder */
                 stack_node[sp] = idx[farther];
                 stack_t[sp] = tn[farther];
                 ++sp;
@@ -214,7 +209,7 @@ inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle
             order[j] = (int)c;
         } while (inner);
         for (int j = 0; j + 1 < k; ++j)
-            if (sp < FC_BVH_STACK_SIZE) {   /* always, by the builder */
+            if (sp < FC_BVH_STACK_SIZE) { /* always, by the builder */
                 stack_node[sp] = idx[order[j]];
                 stack_t[sp] = dist[j];
                 ++sp;
@@ -224,8 +219,8 @@ inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle
 }
 
 /* Nearest hit with 0 < t < tmax. */
-inline bool trace_closest(__global const FcBvhNode* nodes, __global const FcTriangle* tris,
-                          float3 o, float3 d, float tmax, Hit* hit) {
+inline bool trace_closest(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,
+                          float tmax, Hit* hit) {
     hit->t = tmax;
     hit->u = 0.0f;
     hit->v = 0.0f;
@@ -235,8 +230,8 @@ inline bool trace_closest(__global const FcBvhNode* nodes, __global const FcTria
 }
 
 /* Whether anything is hit with 0 < t < tmax (shadow rays). */
-inline bool trace_any(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o,
-                      float3 d, float tmax) {
+inline bool trace_any(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,
+                      float tmax) {
     Hit hit;
     hit.t = tmax;
     hit.prim = -1;

@@ -11,8 +11,8 @@
 
 /* Per-ray part of the test (section 3 of the paper). */
 typedef struct {
-    int kx, ky, kz;      /* kz: dominant axis of d; (kx, ky) keep the winding */
-    float sx, sy, sz;    /* shear constants */
+    int kx, ky, kz;   /* kz: dominant axis of d; (kx, ky) keep the winding */
+    float sx, sy, sz; /* shear constants */
 } TriRay;
 
 inline float axis_of(float3 v, int k) { return k == 0 ? v.x : (k == 1 ? v.y : v.z); }
@@ -46,8 +46,8 @@ inline float diff_of_products(float a, float b, float c, float d) {
 
 /* Intersects the ray with triangle (p0, p1, p2). On a hit with 0 < t < tmax returns
  * true with t and the barycentric weights u (of p1) and v (of p2). */
-inline bool intersect_triangle(const TriRay* r, float3 o, float3 p0, float3 p1, float3 p2,
-                               float tmax, float* t_out, float* u_out, float* v_out) {
+inline bool intersect_triangle(const TriRay* r, float3 o, float3 p0, float3 p1, float3 p2, float tmax, float* t_out,
+                               float* u_out, float* v_out) {
     /* No fma contraction: the edge functions of a shared edge must be exact negatives
      * of each other in the two triangles (OpenCL C contracts by default). */
 #pragma OPENCL FP_CONTRACT OFF
@@ -62,7 +62,7 @@ inline bool intersect_triangle(const TriRay* r, float3 o, float3 p0, float3 p1, 
     float u = cx * by - cy * bx;
     float v = ax * cy - ay * cx;
     float w = bx * ay - by * ax;
-    if (u == 0.0f || v == 0.0f || w == 0.0f) {   /* on an edge: recompute exactly-signed */
+    if (u == 0.0f || v == 0.0f || w == 0.0f) { /* on an edge: recompute exactly-signed */
         u = diff_of_products(cx, by, cy, bx);
         v = diff_of_products(ax, cy, ay, cx);
         w = diff_of_products(bx, ay, by, ax);
@@ -88,8 +88,8 @@ inline bool intersect_triangle(const TriRay* r, float3 o, float3 p0, float3 p1, 
     return true;
 }
 
-inline bool intersect_fc_triangle(const TriRay* r, float3 o, __global const FcTriangle* tri,
-                                  float tmax, float* t, float* u, float* v) {
+inline bool intersect_fc_triangle(const TriRay* r, float3 o, __global const FcTriangle* tri, float tmax, float* t,
+                                  float* u, float* v) {
     float3 p0 = load3(tri->v0);
     float3 p1 = load3(tri->v1);
     float3 p2 = load3(tri->v2);

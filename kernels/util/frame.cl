@@ -25,9 +25,7 @@ inline Frame frame_from_normal(float3 n) {
     return f;
 }
 
-inline float3 frame_to_local(const Frame* f, float3 v) {
-    return (float3)(dot(v, f->s), dot(v, f->t), dot(v, f->n));
-}
+inline float3 frame_to_local(const Frame* f, float3 v) { return (float3)(dot(v, f->s), dot(v, f->t), dot(v, f->n)); }
 
 inline float3 frame_to_world(const Frame* f, float3 v) { return v.x * f->s + v.y * f->t + v.z * f->n; }
 

@@ -28,16 +28,16 @@
 #include "kernels/util/sobol_table.cl"
 
 typedef struct {
-    Rng rng;      /* FC_SAMPLER_INDEPENDENT's stream */
-    uint index;   /* the sample's index within its half */
-    uint seed;    /* the scramble seed of this pixel's half */
-    uint kind;    /* FC_SAMPLER_* */
+    Rng rng;    /* FC_SAMPLER_INDEPENDENT's stream */
+    uint index; /* the sample's index within its half */
+    uint seed;  /* the scramble seed of this pixel's half */
+    uint kind;  /* FC_SAMPLER_* */
 } Sampler;
 
 /* The dimension sets. The camera's; then two per bounce (depth 0 = the first hit). */
 #define FC_SET_CAMERA 0u
-inline uint sampler_set_light(uint depth) { return 1u + 2u * depth; }   /* pick, u, v, - */
-inline uint sampler_set_bsdf(uint depth) { return 2u + 2u * depth; }    /* u, v, lobe, roulette */
+inline uint sampler_set_light(uint depth) { return 1u + 2u * depth; } /* pick, u, v, - */
+inline uint sampler_set_bsdf(uint depth) { return 2u + 2u * depth; }  /* u, v, lobe, roulette */
 
 inline uint reverse_bits32(uint x) {
     x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);

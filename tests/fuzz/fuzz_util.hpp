@@ -86,8 +86,7 @@ inline void check_scene(const Scene& s) {
     if (r.width < 1 || r.width > 16384 || r.height < 1 || r.height > 16384) broken("image size in [1, 16384]");
     if (r.spp < 1 || r.max_depth < 1 || r.rr_depth < 0) broken("spp, max_depth >= 1, rr_depth >= 0");
     const FcCamera cam = make_camera(s.camera, float(r.width) / float(r.height));
-    if (!finite3(cam.eye) || !finite3(cam.forward) || !finite3(cam.right) || !finite3(cam.up))
-        broken("finite camera");
+    if (!finite3(cam.eye) || !finite3(cam.forward) || !finite3(cam.right) || !finite3(cam.up)) broken("finite camera");
     if (s.light_cdf.size() != s.lights.size() + 1) broken("a cdf entry per light, plus one");
     for (std::size_t i = 0; i < s.lights.size(); ++i) {
         if (!(s.light_cdf[i + 1] >= s.light_cdf[i])) broken("non-decreasing light cdf");
@@ -106,8 +105,7 @@ inline void check_scene(const Scene& s) {
     for (float d : e.distribution)
         if (!std::isfinite(d)) broken("finite environment distribution");
     if (!finite3(e.params.scale) || !std::isfinite(e.params.total)) broken("finite environment scale and total");
-    if (e.params.width > 0 &&
-        e.texels.size() != 4 * std::size_t(e.params.width) * std::size_t(e.params.height))
+    if (e.params.width > 0 && e.texels.size() != 4 * std::size_t(e.params.width) * std::size_t(e.params.height))
         broken("4 floats an environment texel");
 }
 

@@ -91,14 +91,14 @@ inline void env_map(std::string_view input) {
     const bool hdr = input.substr(0, 2) == "#?";
     const std::string path = write_file(hdr ? "in.hdr" : "in.exr", input);
     try {
-        check_image_header(path);   // before OpenImageIO allocates from the header
+        check_image_header(path);  // before OpenImageIO allocates from the header
     } catch (const Error&) {
         return;
     }
     {
         std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
         if (!in) {
-            (void)OIIO::geterror();   // clears the thread's error message
+            (void)OIIO::geterror();  // clears the thread's error message
         } else if (std::int64_t(in->spec().width) * in->spec().height > (std::int64_t(1) << 22)) {
             return;
         }

@@ -49,7 +49,12 @@ int main(int argc, char** argv) {
             ++failures;
         }
     };
-    struct Exr { const char* name; int w, h, channels; OIIO::TypeDesc type; const char* compression; };
+    struct Exr {
+        const char* name;
+        int w, h, channels;
+        OIIO::TypeDesc type;
+        const char* compression;
+    };
     const Exr exrs[] = {
         {"gen_8x4_rgb_half_zip.exr", 8, 4, 3, OIIO::TypeDesc::HALF, "zip"},
         {"gen_8x4_rgba_float_none.exr", 8, 4, 4, OIIO::TypeDesc::FLOAT, "none"},
