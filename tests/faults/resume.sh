@@ -71,8 +71,11 @@ if [ -n "$spp" ]; then
 fi
 
 # An error during the render (the report's folder turns into a file): exit 1, the film
-# of the samples so far is saved beside --out.
-mkdir -p "$tmp/err/rep"
+# of the samples so far is saved beside --out. The folder is a link, swapped atomically
+# for a link to a file (facet may recreate a folder that is merely moved away).
+mkdir -p "$tmp/err/repdir"
+ln -s repdir "$tmp/err/rep"
+printf x >"$tmp/err/notdir"
 "$FACET" render "$scene" "${opts[@]}" --spp 1000000 --time 20 --out "$tmp/err/e.exr" --report "$tmp/err/rep/r.csv" \
     >"$tmp/err.log" 2>&1 &
 pid=$!
@@ -80,7 +83,7 @@ for _ in $(seq 1 600); do
     [ -s "$tmp/err/rep/r.csv" ] && break
     sleep 0.1
 done
-mv "$tmp/err/rep" "$tmp/err/rep.gone" && printf x >"$tmp/err/rep"   # mv: atomic, unlike rm -r
+ln -s notdir "$tmp/err/rep.new" && mv -T "$tmp/err/rep.new" "$tmp/err/rep"   # rename: atomic
 status=0
 wait "$pid" || status=$?
 cp "$tmp/err.log" "$tmp/log"
