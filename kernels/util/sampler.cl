@@ -40,11 +40,8 @@ inline uint sampler_set_light(uint depth) { return 1u + 2u * depth; } /* pick, u
 inline uint sampler_set_bsdf(uint depth) { return 2u + 2u * depth; }  /* u, v, lobe, roulette */
 
 inline uint reverse_bits32(uint x) {
-    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-    return (x >> 16) | (x << 16);
+    return ((uint)fc_reverse_byte[x & 0xffu] << 24) | ((uint)fc_reverse_byte[(x >> 8) & 0xffu] << 16) |
+           ((uint)fc_reverse_byte[(x >> 16) & 0xffu] << 8) | (uint)fc_reverse_byte[x >> 24];
 }
 
 /* An Owen scramble of x's bits from the most significant down (Burley 2020, listing 3:

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Writes kernels/util/sobol_table.cl: Sobol' dimensions 1-3 as 4-bit chunk tables.
+"""Writes kernels/util/sobol_table.cl: Sobol' dimensions 1-3 as 4-bit chunk tables,
+and a byte bit-reversal table.
 
 Direction numbers from Joe & Kuo 2008 (new-joe-kuo-6.21201), first three rows:
 s = 1, a = 0, m = 1;  s = 2, a = 1, m = 1, 3;  s = 3, a = 1, m = 1, 3, 1.
-Usage: python3 tests/tools/sobol_table.py > kernels/util/sobol_table.cl (from the root).
+Usage (from the root): python3 tests/tools/sobol_table.py > kernels/util/sobol_table.cl && make format
 """
 import sys
 
@@ -38,8 +39,11 @@ def main():
                 ent.append('0x%08xu' % x)
             rows.append('    ' + ', '.join(ent[:8]) + ',\n    ' + ', '.join(ent[8:]) + ',')
         blocks.append('    /* dimension %d */\n' % d + '\n'.join(rows))
+    rev = ['0x%02xu' % int('{:08b}'.format(b)[::-1], 2) for b in range(256)]
+    rev_rows = ['    ' + ', '.join(rev[i:i + 16]) + ',' for i in range(0, 256, 16)]
     sys.stdout.write(HEADER + '__constant uint fc_sobol_chunks[3 * 8 * 16] = {\n' + '\n'.join(blocks)
-                     + '\n};\n\n#endif\n')
+                     + '\n};\n\n' + REVERSE + '__constant uchar fc_reverse_byte[256] = {\n'
+                     + '\n'.join(rev_rows) + '\n};\n\n#endif\n')
 
 
 HEADER = '''/* Sobol' generator matrices of dimensions 1 to 3 as 4-bit chunk tables: entry
@@ -52,6 +56,11 @@ HEADER = '''/* Sobol' generator matrices of dimensions 1 to 3 as 4-bit chunk tab
 #ifndef FACET_UTIL_SOBOL_TABLE_CL
 #define FACET_UTIL_SOBOL_TABLE_CL
 
+'''
+
+REVERSE = '''/* Each byte with its bits in reverse order. A table rather than the five shift-and-mask
+ * steps, which compilers turn into llvm.bitreverse, an intrinsic that some OpenCL
+ * implementations (Oclgrind 21.10) cannot run. */
 '''
 
 if __name__ == '__main__':
