@@ -14,6 +14,7 @@
 #include "host/scene/scene.hpp"
 #include "tests/cl_test_env.hpp"
 #include "tests/temp_dir.hpp"
+#include "tests/test_helpers.hpp"
 
 namespace facet {
 namespace {
@@ -42,14 +43,7 @@ Scene lit_scene(int size) {
     return scene;
 }
 
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
+using test::error_of;
 
 FilmState some_film(int w, int h) {
     Scene scene = lit_scene(w);

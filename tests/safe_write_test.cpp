@@ -13,6 +13,7 @@
 #include "host/film/image_io.hpp"
 #include "host/film/safe_write.hpp"
 #include "tests/temp_dir.hpp"
+#include "tests/test_helpers.hpp"
 
 namespace facet {
 namespace {
@@ -37,14 +38,7 @@ int stray_files(const fs::path& dir, std::initializer_list<std::string> expected
     return n;
 }
 
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
+using test::error_of;
 
 TEST(SafeWrite, ReplacesTheFileWhole) {
     test::TempDir dir;

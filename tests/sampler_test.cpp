@@ -16,6 +16,7 @@
 #include "host/readers/load_scene.hpp"
 #include "kernels/shared/render_layout.h"
 #include "tests/cl_test_env.hpp"
+#include "tests/test_helpers.hpp"
 
 namespace facet {
 namespace {
@@ -166,23 +167,13 @@ TEST(Sampler, RenderMatchesIndependentInMean) {
     scene.settings.width = scene.settings.height = 32;
     const std::uint32_t spp = 128;
     Bvh bvh = build_bvh(scene.vertices);
-    struct Result {
-        std::vector<float> mean, var;  // per pixel and channel: the estimate, its variance
-    };
     auto render = [&](int sampler) {
         scene.settings.sampler = sampler;
         Renderer r(test::context(), scene, bvh);
         r.render(spp);
-        Renderer::Halves h = r.halves();
-        Result out;
-        for (std::size_t i = 0; i < h.rgb[0].size(); ++i) {
-            const float d = h.rgb[0][i] - h.rgb[1][i];
-            out.mean.push_back(0.5f * (h.rgb[0][i] + h.rgb[1][i]));
-            out.var.push_back(0.25f * d * d);  // E[(h0 - h1)^2] / 4 = var of the mean of both
-        }
-        return out;
+        return test::pixel_estimates(r.halves());
     };
-    const Result a = render(FC_SAMPLER_SOBOL), b = render(FC_SAMPLER_INDEPENDENT);
+    const test::PixelEstimates a = render(FC_SAMPLER_SOBOL), b = render(FC_SAMPLER_INDEPENDENT);
     const int w = scene.settings.width, blocks = w / 8;
     double total_d = 0.0, total_v = 0.0, worst = 0.0;
     for (int by = 0; by < blocks; ++by) {
@@ -192,8 +183,8 @@ TEST(Sampler, RenderMatchesIndependentInMean) {
                 for (int x = 8 * bx; x < 8 * bx + 8; ++x)
                     for (int c = 0; c < 3; ++c) {
                         const std::size_t i = 3 * (std::size_t(y) * w + x) + c;
-                        d += double(a.mean[i]) - double(b.mean[i]);
-                        v += double(a.var[i]) + double(b.var[i]);
+                        d += a.mean[i] - b.mean[i];
+                        v += a.var[i] + b.var[i];
                     }
             total_d += d, total_v += v;
             if (v > 0.0) worst = std::max(worst, std::fabs(d) / std::sqrt(v));
