@@ -79,7 +79,6 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
     float3 radiance = (float3)(0.0f);
     float3 throughput = (float3)(1.0f);
     float prev_bsdf_pdf = INFINITY; /* density of the sampled direction; camera rays: a delta */
-    float3 prev_p = o;              /* the vertex the ray left (light sampling's point) */
     for (uint depth = 0;; ++depth) {
         Hit hit;
         if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) {
@@ -105,7 +104,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         if (!is_black(le) && s.light >= 0) {
             float w = 1.0f;
             if (depth > 0u) {
-                float light_pdf = area_light_pdf(&sc->lights[s.light], prev_p, hit.t, dot(s.ng, wo));
+                float light_pdf = area_light_pdf_solid_angle(&sc->lights[s.light], hit.t, dot(s.ng, wo));
                 w = bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, light_pdf);
             }
             radiance += throughput * le * w;
@@ -151,7 +150,6 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
             if (ub.w >= survive) break;
             throughput /= survive;
         }
-        prev_p = s.p;
         o = offset_ray_origin(s.p, side > 0.0f ? s.ng : -s.ng);
         d = wi;
     }

@@ -1,12 +1,12 @@
-/* Area lights: emitting triangles, picked in proportion to power and sampled by the
- * solid angle they subtend (spherical_triangle.cl), or uniformly by area where that
- * angle is too small or too large for the spherical construction. Radiance L_e comes from the triangle's material; a
- * light emits on the side cross(e1, e2) points to, or on both sides when its material has FC_MAT_TWO_SIDED_EMISSION. */
+/* Area lights: emitting triangles, picked in proportion to power and sampled
+ * uniformly by area. Radiance L_e comes from the triangle's material; a light
+ * emits on the side cross(e1, e2) points to, or on both sides when its material
+ * has FC_MAT_TWO_SIDED_EMISSION. (Sampling by solid angle, Arvo 1995, was tried and
+ * dropped: docs/lights.md.) */
 #ifndef FACET_LIGHTS_AREA_CL
 #define FACET_LIGHTS_AREA_CL
 
 #include "kernels/shared/scene_layout.h"
-#include "kernels/lights/spherical_triangle.cl"
 #include "kernels/util/math.cl"
 
 /* Uniform point on a triangle (the square-root parameterisation, Turk 1990):
@@ -38,23 +38,6 @@ inline float3 area_light_radiance(float3 emission, uint material_flags, float3 n
 inline float area_light_pdf_solid_angle(__global const FcLight* l, float dist, float cos_light) {
     float c = fabs(cos_light);
     return (c > 0.0f) ? l->pick_pdf / l->area * dist * dist / c : 0.0f;
-}
-
-/* The solid angle the light subtends at p when light sampling from p samples it by
- * solid angle, else 0 (then it samples by area). Both light sampling and the MIS weight
- * of a BSDF-sampled hit decide through this one function. */
-inline float area_light_spherical_omega(__global const FcLight* l, float3 p) {
-    float3 v0 = load3(l->p0);
-    float omega = triangle_solid_angle(p, v0, v0 + load3(l->e1), v0 + load3(l->e2));
-    return (omega >= FC_SPHERICAL_SAMPLE_MIN && omega <= FC_SPHERICAL_SAMPLE_MAX) ? omega : 0.0f;
-}
-
-/* Solid-angle density (pick included) with which light sampling from p reaches the
- * light's point at distance `dist`, where the light's cosine is `cos_light`. */
-inline float area_light_pdf(__global const FcLight* l, float3 p, float dist, float cos_light) {
-    float omega = area_light_spherical_omega(l, p);
-    if (omega > 0.0f) return l->pick_pdf / omega;
-    return area_light_pdf_solid_angle(l, dist, cos_light);
 }
 
 #endif

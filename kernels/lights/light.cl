@@ -42,26 +42,13 @@ inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, 
 #if FC_HAS_AREA_LIGHTS
     } else if (l->type == FC_LIGHT_AREA_TRIANGLE) {
         ls->normal = area_light_normal(l);
-        float omega = area_light_spherical_omega(l, p);
-        if (omega > 0.0f) {
-            /* By solid angle: a direction, then the point where it meets the light's plane. */
-            float3 v0 = load3(l->p0), v1 = v0 + load3(l->e1), v2 = v0 + load3(l->e2);
-            float3 a = normalize(v0 - p), b = normalize(v1 - p), c = normalize(v2 - p);
-            if (!sample_spherical_triangle(a, b, c, u, &ls->wi)) return false;
-            float t = dot(v0 - p, ls->normal) / dot(ls->wi, ls->normal);
-            if (!(t > 0.0f) || !isfinite(t)) return false;
-            ls->dist = t;
-            ls->point = p + t * ls->wi;
-            ls->pdf = l->pick_pdf / omega;
-        } else {
-            ls->point = area_light_point(l, u);
-            float3 to = ls->point - p;
-            float d2 = dot(to, to);
-            if (!(d2 > 0.0f)) return false;
-            ls->dist = sqrt(d2);
-            ls->wi = to / ls->dist;
-            ls->pdf = area_light_pdf_solid_angle(l, ls->dist, dot(ls->normal, ls->wi));
-        }
+        ls->point = area_light_point(l, u);
+        float3 to = ls->point - p;
+        float d2 = dot(to, to);
+        if (!(d2 > 0.0f)) return false;
+        ls->dist = sqrt(d2);
+        ls->wi = to / ls->dist;
+        ls->pdf = area_light_pdf_solid_angle(l, ls->dist, dot(ls->normal, ls->wi));
         __global const FcMaterial* m = &sc->materials[sc->shading[l->prim].material];
         ls->li = area_light_radiance(load3(m->emission), m->flags, ls->normal, -ls->wi);
 #endif
