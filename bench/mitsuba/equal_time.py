@@ -1,0 +1,432 @@
+#!/usr/bin/env python3
+"""Equal-time error of facet against Mitsuba 3 on facet's demo scenes (bench/README.md,
+"Mitsuba 3 baseline").
+
+For each scene (bench/mitsuba/<scene>.xml for Mitsuba; the facet scene both draw is
+bench/mitsuba/<scene>.json where materials had to be replaced, else scenes/<scene>.json):
+
+  1. a long reference with each renderer, as two halves of independent seeds (so that
+     the reference's own noise is known and taken out of every RMSE below); cached
+     under out/bench/mitsuba/refs/ and reused while the scene files and settings match;
+  2. for each time budget, `--repeats` rounds, each running every program once in turn
+     (facet, facet --sampler independent, Mitsuba's independent sampler, Mitsuba's best
+     sampler, then again): the image reached in the budget, its samples per second and
+     its RMSE against (a) the same renderer's reference and (b) the other renderer's;
+     (a) is noise, (b) - (a) shows bias between the two;
+  3. medians over the repeats, into out/bench/mitsuba_equal_time.{md,json}.
+
+Time counted: facet's `render_s` (kernel time of its progressive passes, without program
+build, scene load or file output); Mitsuba's time inside mi.render() + dr.eval() of its
+passes, after one untimed warm-up pass that JIT-compiles the kernels (the scene load and
+that compile are not counted). Both stop at the first pass ending at or after the budget,
+each pass sized to the time left (so both overrun by at most one sample per pixel).
+
+Mitsuba: variant llvm_ad_rgb on 2 threads, which needs a system libLLVM (Debian's
+libllvm19: DRJIT_LIBLLVM_PATH is set to it when found). Without Mitsuba the script says
+how to install it and exits 0.
+
+Other modes: --check (agreement in mean: long renders of both at a quarter size, region
+by region with a z-test), --equal-spp N (RMSE at N samples per pixel: error per sample,
+insensitive to machine load).
+"""
+import argparse
+import glob
+import hashlib
+import json
+import math
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+import translate  # noqa: E402
+
+INSTALL_HINT = ("Mitsuba 3 not installed: pip install mitsuba==3.9.1, and libllvm19 from Debian "
+                "(apt-get install libllvm19; DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM-19.so)")
+MAX_LANES = 1 << 22   # Mitsuba pass size cap: width * height * spp (memory of a wavefront)
+
+mi = dr = None
+
+
+# --------------------------------------------------------------------------------------
+# Set-up
+
+def find_libllvm():
+    if os.environ.get("DRJIT_LIBLLVM_PATH"):
+        return os.environ["DRJIT_LIBLLVM_PATH"]
+    for pattern in ("/usr/lib/*-linux-gnu/libLLVM-2[0-9].so", "/usr/lib/*-linux-gnu/libLLVM-19.so",
+                    "/usr/lib/*-linux-gnu/libLLVM.so.19*", "/usr/lib/llvm-19/lib/libLLVM*.so*"):
+        found = sorted(glob.glob(pattern))
+        if found:
+            return found[-1]
+    return None
+
+
+def import_mitsuba(threads):
+    """Imports Mitsuba on `threads` threads, or returns a reason it cannot run."""
+    global mi, dr
+    llvm = find_libllvm()
+    if llvm:
+        os.environ["DRJIT_LIBLLVM_PATH"] = llvm
+    try:
+        import drjit
+        import mitsuba
+    except ImportError:
+        return INSTALL_HINT
+    try:
+        mitsuba.set_variant("llvm_ad_rgb")
+    except Exception as e:  # the LLVM backend could not start
+        return f"{INSTALL_HINT}\n  (Mitsuba is installed but its LLVM backend failed: {e})"
+    drjit.set_thread_count(threads)
+    mitsuba.set_log_level(mitsuba.LogLevel.Warn)
+    mi, dr = mitsuba, drjit
+    return None
+
+
+def run(cmd):
+    r = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if r.returncode != 0:
+        raise SystemExit(f"equal_time.py: {' '.join(cmd)} failed ({r.returncode}):\n{r.stdout}{r.stderr}")
+    return r.stdout
+
+
+def read_exr(path):
+    b = mi.Bitmap(path).convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32, False)
+    return np.array(b, dtype=np.float64)
+
+
+class Scene:
+    def __init__(self, name, scale):
+        self.name = name
+        self.facet_json = translate.facet_scene_path(name)
+        self.xml = os.path.join("bench", "mitsuba", f"{name}.xml")
+        with open(os.path.join(ROOT, self.facet_json)) as f:
+            desc = json.load(f)
+        self.desc = desc
+        r = desc["render"]
+        self.width = max(8, int(round(r["width"] * scale)))
+        self.height = max(8, int(round(r["height"] * scale)))
+        self.pixels = self.width * self.height
+        h = hashlib.sha256()
+        for p in (self.facet_json, self.xml):
+            with open(os.path.join(ROOT, p), "rb") as f:
+                h.update(f.read())
+        self.key = f"{name}_{self.width}x{self.height}_{h.hexdigest()[:10]}"
+
+
+# --------------------------------------------------------------------------------------
+# Renderers: each returns (image, spp, counted seconds)
+
+class Facet:
+    renderer = "facet"
+
+    def __init__(self, exe, sampler, work):
+        self.exe, self.sampler, self.work = exe, sampler, work
+        self.label = "facet" if sampler is None else f"facet --sampler {sampler}"
+
+    def render(self, scene, seed, seconds=None, spp=None):
+        out = os.path.join(self.work, f"facet_{scene.name}.exr")
+        cmd = [self.exe, "render", scene.facet_json, "--out", out, "--seed", str(seed), "--quiet",
+               "--width", str(scene.width), "--height", str(scene.height)]
+        cmd += ["--time", f"{seconds:g}", "--spp", str(1 << 24)] if seconds else ["--spp", str(spp)]
+        if self.sampler:
+            cmd += ["--sampler", self.sampler]
+        run(cmd)
+        with open(out[:-4] + ".json") as f:
+            rep = json.load(f)
+        return read_exr(out), int(rep["spp"]), float(rep["render_s"])
+
+
+class Mitsuba:
+    renderer = "mitsuba"
+
+    def __init__(self, sampler, assets):
+        self.sampler, self.assets = sampler, assets
+        self.label = f"Mitsuba {sampler}"
+        self.loaded = {}
+
+    def scene(self, scene):
+        if scene.name not in self.loaded:
+            s = mi.load_file(os.path.join(ROOT, scene.xml), assets=self.assets, sampler=self.sampler,
+                             width=str(scene.width), height=str(scene.height))
+            self.loaded[scene.name] = [s, None]   # [scene, seconds per spp]
+        return self.loaded[scene.name]
+
+    def _pass(self, s, spp, seed):
+        t = time.perf_counter()
+        img = mi.render(s, spp=spp, seed=seed)
+        dr.eval(img)
+        dr.sync_thread()
+        return img, time.perf_counter() - t
+
+    def warm_up(self, scene):
+        entry = self.scene(scene)
+        if entry[1] is None:
+            self._pass(entry[0], 1, 999983)                 # JIT compile, not counted
+            _, t = self._pass(entry[0], 2, 999979)
+            entry[1] = t / 2
+        return entry
+
+    def render(self, scene, seed, seconds=None, spp=None):
+        s, per_spp = self.warm_up(scene)
+        lanes_cap = max(1, MAX_LANES // scene.pixels)
+        acc, done, elapsed, npass = None, 0, 0.0, 0
+        while True:
+            if seconds is not None:
+                if elapsed >= seconds:
+                    break
+                want = min(max(0.1 * elapsed, 0.05), 2.0, seconds - elapsed)
+                n = max(1, int(want / per_spp))
+            else:
+                if done >= spp:
+                    break
+                n = spp - done
+            n = min(n, lanes_cap)
+            if self.sampler != "independent":      # ldsampler & co. want powers of two
+                n = 1 << (n.bit_length() - 1)
+            img, t = self._pass(s, n, seed * 1000003 + npass)
+            img = np.array(img, dtype=np.float64)
+            acc = img * n if acc is None else acc + img * n
+            done += n
+            elapsed += t
+            npass += 1
+            per_spp = elapsed / done
+        return acc / done, done, elapsed
+
+
+# --------------------------------------------------------------------------------------
+# References and errors
+
+def reference(prog, scene, seconds, refs_dir):
+    """(mean image, MSE of its own noise): two halves of independent seeds."""
+    path = os.path.join(refs_dir, f"{scene.key}_{prog.renderer}_{seconds:g}s.npz")
+    if os.path.exists(path):
+        z = np.load(path)
+        return z["a"], z["b"], float(z["spp"])
+    print(f"  reference {prog.label} {scene.name} {scene.width}x{scene.height}: 2 x {seconds / 2:g} s", flush=True)
+    a, spp_a, _ = prog.render(scene, 7001, seconds=seconds / 2)
+    b, spp_b, _ = prog.render(scene, 7002, seconds=seconds / 2)
+    np.savez_compressed(path, a=a.astype(np.float32), b=b.astype(np.float32), spp=spp_a + spp_b)
+    return a, b, float(spp_a + spp_b)
+
+
+class Ref:
+    def __init__(self, a, b, spp):
+        self.image = 0.5 * (a + b)
+        # E[((a - b) / 2)^2] is the variance of (a + b) / 2: the reference's own noise.
+        self.noise_mse = float(np.mean((0.5 * (a - b)) ** 2))
+        self.spp = spp
+
+
+def rmse(img, ref):
+    """RMSE against a reference, its noise taken out (clamped at 0)."""
+    mse = float(np.mean((img - ref.image) ** 2)) - ref.noise_mse
+    return math.sqrt(max(mse, 0.0))
+
+
+# --------------------------------------------------------------------------------------
+# Agreement in mean (--check)
+
+def camera_project(desc, width, height):
+    cam = desc["camera"]
+    eye, target = np.array(cam["eye"], float), np.array(cam["target"], float)
+    up = np.array(cam.get("up", [0, 1, 0]), float)
+    fwd = (target - eye) / np.linalg.norm(target - eye)
+    right = np.cross(fwd, up)
+    right /= np.linalg.norm(right)
+    upu = np.cross(right, fwd)
+    th = math.tan(math.radians(cam.get("fov", 40)) / 2)
+    aspect = width / height
+
+    def project(p, r):
+        d = np.asarray(p, float) - eye
+        z = d @ fwd
+        sx, sy = (d @ right) / (z * th * aspect), (d @ upu) / (z * th)
+        x, y = (sx + 1) / 2 * width, (1 - sy) / 2 * height
+        return x, y, r / (z * th) * height / 2
+    return project
+
+
+def regions(scene):
+    """Named pixel boxes: each sphere's inner part (by material), then a 4 x 4 grid."""
+    out = []
+    W, H = scene.width, scene.height
+    project = camera_project(scene.desc, W, H)
+    for s in scene.desc.get("shapes", []):
+        if s["type"] != "sphere" or s.get("inward"):
+            continue
+        x, y, r = project(s["center"], s["radius"])
+        h = max(1, int(0.6 * r))
+        box = (int(x) - h, int(y) - h, int(x) + h + 1, int(y) + h + 1)
+        if box[0] >= 0 and box[1] >= 0 and box[2] <= W and box[3] <= H:
+            out.append((s["material"], box))
+    for j in range(4):
+        for i in range(4):
+            out.append((f"block {i},{j}", (i * W // 4, j * H // 4, (i + 1) * W // 4, (j + 1) * H // 4)))
+    return out
+
+
+def check(scenes, progs, seconds, refs_dir, out_dir):
+    """Long renders of both renderers, compared region by region."""
+    lines = [f"# facet vs Mitsuba 3: agreement in mean ({seconds:g} s each, as two halves)", ""]
+    results = {}
+    for sc in scenes:
+        f_a, f_b, f_spp = reference(progs["facet"], sc, seconds, refs_dir)
+        m_a, m_b, m_spp = reference(progs["mitsuba"], sc, seconds, refs_dir)
+        lines += [f"## {sc.name} ({sc.width}x{sc.height}; facet {f_spp / sc.pixels:.0f} spp, "
+                  f"Mitsuba {m_spp / sc.pixels:.0f} spp)", "",
+                  "| region | facet (R, G, B) | Mitsuba (R, G, B) | Mitsuba / facet - 1 | max abs z |",
+                  "|---|---|---|---|---|"]
+        rows = []
+        for name, (x0, y0, x1, y1) in regions(sc):
+            def stats(a, b):
+                A, B = a[y0:y1, x0:x1].reshape(-1, 3), b[y0:y1, x0:x1].reshape(-1, 3)
+                n = len(A)
+                return 0.5 * (A + B).mean(0), np.sqrt(np.sum((0.5 * (A - B)) ** 2, 0)) / n
+            fm, fs = stats(f_a, f_b)
+            mm, ms = stats(m_a, m_b)
+            z = (mm - fm) / np.maximum(np.sqrt(fs ** 2 + ms ** 2), 1e-12)
+            rel = mm / np.maximum(fm, 1e-12) - 1
+            zmax = float(np.max(np.abs(z)))
+            rows.append({"region": name, "facet": fm.tolist(), "mitsuba": mm.tolist(),
+                         "rel": rel.tolist(), "z": z.tolist()})
+            flag = " **" if zmax > 4 else ""
+            lines.append(f"| {name} | {fmt_rgb(fm)} | {fmt_rgb(mm)} | {fmt_rgb(rel, '+.3f')} | {zmax:.1f}{flag} |")
+        lines.append("")
+        results[sc.name] = rows
+    write_outputs(out_dir, "mitsuba_check", lines, results)
+
+
+def fmt_rgb(v, f=".4g"):
+    return ", ".join(format(x, f) for x in v)
+
+
+# --------------------------------------------------------------------------------------
+# Equal time / equal spp
+
+def measure(scenes, progs, budgets, repeats, spp, ref_seconds, refs_dir, out_dir, info):
+    rows = []
+    for sc in scenes:
+        refs = {}
+        for r in ("facet", "mitsuba"):
+            refs[r] = Ref(*reference(progs[r], sc, ref_seconds, refs_dir))
+        for p in progs.values():
+            if isinstance(p, Mitsuba):
+                p.warm_up(sc)
+        points = [("spp", spp)] if spp else [("s", b) for b in budgets]
+        for kind, amount in points:
+            runs = {k: [] for k in progs}
+            for rep in range(repeats):
+                for key, p in progs.items():   # alternate: every program once per round
+                    seed = 100 + rep
+                    if kind == "s":
+                        img, n, t = p.render(sc, seed, seconds=amount)
+                    else:
+                        img, n, t = p.render(sc, seed, spp=amount)
+                    own, other = refs[p.renderer], refs["mitsuba" if p.renderer == "facet" else "facet"]
+                    runs[key].append({"spp": n / sc.pixels, "seconds": t, "msamples_s": n / t * 1e-6,
+                                      "rmse_own": rmse(img, own), "rmse_other": rmse(img, other)})
+                    print(f"  {sc.name} {amount:g} {kind} #{rep + 1} {p.label:28s} {n / sc.pixels:8.1f} spp "
+                          f"{t:7.2f} s {n / t * 1e-6:6.2f} Msamples/s  rmse own {runs[key][-1]['rmse_own']:.4g} "
+                          f"other {runs[key][-1]['rmse_other']:.4g}", flush=True)
+            for key, rs in runs.items():
+                med = {k: statistics.median(r[k] for r in rs) for k in rs[0]}
+                rows.append({"scene": sc.name, "size": f"{sc.width}x{sc.height}", kind: amount,
+                             "program": progs[key].label, "renderer": progs[key].renderer,
+                             "runs": rs, "median": med,
+                             "ref_spp": {r: refs[r].spp / sc.pixels for r in refs},
+                             "ref_noise_rmse": {r: math.sqrt(refs[r].noise_mse) for r in refs}})
+    info["load_after"] = " ".join(f"{x:.1f}" for x in os.getloadavg())
+    title = f"equal spp ({spp} samples per pixel)" if spp else "equal time"
+    lines = [f"# facet vs Mitsuba 3, {title}", "",
+             f"Medians of {repeats} runs, programs alternated; load average {info['load_before']} before, "
+             f"{info['load_after']} after. RMSE against each renderer's reference with the reference's own "
+             "noise taken out; 'own': the program's renderer, 'other': the other renderer's.", ""]
+    col = "spp" if spp else "budget (s)"
+    lines += [f"| scene | {col} | program | spp | Msamples/s | RMSE own | RMSE other | RMSE / facet's (own) |",
+              "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        amount = r.get("spp", r.get("s"))
+        base = next(x for x in rows if x["scene"] == r["scene"] and x.get("spp", x.get("s")) == amount
+                    and x["program"] == "facet")
+        m = r["median"]
+        ratio = m["rmse_own"] / base["median"]["rmse_own"] if base["median"]["rmse_own"] > 0 else float("nan")
+        lines.append(f"| {r['scene']} | {amount:g} | {r['program']} | {m['spp']:.1f} | {m['msamples_s']:.2f} | "
+                     f"{m['rmse_own']:.4g} | {m['rmse_other']:.4g} | {ratio:.2f} |")
+    refs_line = sorted({(r["scene"], r["size"], round(r["ref_spp"]["facet"]), round(r["ref_spp"]["mitsuba"]))
+                        for r in rows})
+    lines += ["", "References (spp): " + "; ".join(f"{s} {sz}: facet {a}, Mitsuba {b}" for s, sz, a, b in refs_line)]
+    info["rows"] = rows
+    write_outputs(out_dir, "mitsuba_equal_spp" if spp else "mitsuba_equal_time", lines, info)
+
+
+def write_outputs(out_dir, stem, lines, data):
+    text = "\n".join(lines) + "\n"
+    print(text)
+    with open(os.path.join(out_dir, stem + ".md"), "w") as f:
+        f.write(text)
+    with open(os.path.join(out_dir, stem + ".json"), "w") as f:
+        json.dump(data, f, indent=1)
+    print(f"wrote {os.path.join(out_dir, stem)}.md and .json")
+
+
+# --------------------------------------------------------------------------------------
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--budgets", default="10,60", help="time budgets in seconds (default 10,60)")
+    ap.add_argument("--repeats", type=int, default=3, help="runs of each program per budget (default 3)")
+    ap.add_argument("--quick", action="store_true", help="budgets 2,5, 1 repeat, 30 s references, quarter size")
+    ap.add_argument("--scenes", default=",".join(translate.SCENES), help="comma-separated scene names")
+    ap.add_argument("--scale", type=float, default=1.0, help="image size relative to the scene's (default 1)")
+    ap.add_argument("--reference-seconds", type=float, default=600,
+                    help="time of each renderer's reference (two halves; default 600)")
+    ap.add_argument("--mitsuba-best", default="ldsampler",
+                    help="Mitsuba's best sampler, run beside its default 'independent' (default ldsampler)")
+    ap.add_argument("--equal-spp", type=int, default=0, help="instead of time budgets: N samples per pixel")
+    ap.add_argument("--check", action="store_true", help="agreement in mean (long renders, region table)")
+    ap.add_argument("--check-seconds", type=float, default=120, help="--check: seconds per renderer")
+    ap.add_argument("--threads", type=int, default=2, help="Mitsuba threads (default 2, as facet's PoCL here)")
+    ap.add_argument("--facet", default=os.path.join(ROOT, "build", "facet"), help="the facet binary")
+    ap.add_argument("--out", default=os.path.join(ROOT, "out", "bench"), help="output folder")
+    a = ap.parse_args()
+
+    why = import_mitsuba(a.threads)
+    if why:
+        print(why)
+        return 0
+    if not os.path.exists(a.facet):
+        raise SystemExit(f"equal_time.py: {a.facet} not found (make build first)")
+    if a.quick:
+        a.budgets, a.repeats, a.reference_seconds, a.scale = "2,5", 1, 30, 0.25
+    work = os.path.join(a.out, "mitsuba")
+    assets, refs_dir = os.path.join(work, "assets"), os.path.join(work, "refs")
+    for d in (work, assets, refs_dir):
+        os.makedirs(d, exist_ok=True)
+    translate.write_assets(assets, a.facet)
+    scenes = [Scene(n, 0.25 if a.check else a.scale) for n in a.scenes.split(",")]
+    progs = {"facet": Facet(a.facet, None, work), "facet_independent": Facet(a.facet, "independent", work),
+             "mitsuba": Mitsuba("independent", assets)}
+    if a.mitsuba_best and a.mitsuba_best != "independent":
+        progs["mitsuba_best"] = Mitsuba(a.mitsuba_best, assets)
+    info = {"mitsuba": mi.__version__, "variant": mi.variant(), "threads": a.threads,
+            "load_before": " ".join(f"{x:.1f}" for x in os.getloadavg())}
+    if a.check:
+        check(scenes, progs, a.check_seconds, refs_dir, a.out)
+        return 0
+    budgets = [float(x) for x in a.budgets.split(",")]
+    t0 = time.time()
+    measure(scenes, progs, budgets, a.repeats, a.equal_spp, a.reference_seconds, refs_dir, a.out, info)
+    print(f"equal_time.py: {time.time() - t0:.0f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
