@@ -2,7 +2,7 @@
 #   make demo   installs what is missing, builds, renders the default scene into out/
 #   make test   installs what is missing, builds, runs the whole test suite (ctest), then
 #               each fuzz harness for FUZZ_SECONDS (30 s) on the stored corpus
-# Other targets: make build | deps | bench | sanitize | fuzz | format | clean (docs/robustness.md)
+# Other targets: make build | deps | bench | bench-mitsuba | sanitize | fuzz | format | clean (docs/robustness.md)
 
 BUILD ?= build
 FUZZ_BUILD ?= build-fuzz
@@ -25,7 +25,7 @@ PACKAGES := build-essential cmake pkg-config \
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test bench sanitize fuzz-build fuzz format clean
+.PHONY: all deps configure build demo test bench bench-mitsuba sanitize fuzz-build fuzz format clean
 
 all: build
 
@@ -62,9 +62,23 @@ fuzz: fuzz-build
 
 # The bench (bench/README.md): every speed and memory figure of facet, against Embree,
 # in one run; writes out/bench/bench.json and out/bench/bench.md.
+# Then the Mitsuba 3 baseline (bench/README.md): equal-time RMSE on the demo scenes against
+# Mitsuba 3, skipped when its Python package is absent. MITSUBA_BENCH_FLAGS=--quick: a short run.
+PYTHON ?= python3
+MITSUBA_BENCH_FLAGS ?=
 bench: build
 	mkdir -p out/bench
 	$(BUILD)/facet_bench --json out/bench/bench.json --markdown out/bench/bench.md
+	$(MAKE) --no-print-directory bench-mitsuba
+
+bench-mitsuba:
+	@if $(PYTHON) -c 'import mitsuba, numpy' 2>/dev/null; then \
+		mkdir -p out/bench && $(PYTHON) bench/mitsuba/equal_time.py --facet $(BUILD)/facet $(MITSUBA_BENCH_FLAGS); \
+	else \
+		echo "Mitsuba 3 not installed: pip install mitsuba==3.9.1 numpy, and libllvm19 from Debian" \
+		     "(apt-get install libllvm19; DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM-19.so):" \
+		     "skipping the Mitsuba 3 baseline"; \
+	fi
 
 # AddressSanitizer + UBSan build of everything; runs the unit, render and cli tiers (docs/robustness.md).
 # Leaks inside the OpenCL driver stack (PoCL, LLVM) are suppressed, facet's are not.

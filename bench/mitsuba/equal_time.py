@@ -25,8 +25,8 @@ Mitsuba: variant llvm_ad_rgb on 2 threads, which needs a system libLLVM (Debian'
 libllvm19: DRJIT_LIBLLVM_PATH is set to it when found). Without Mitsuba the script says
 how to install it and exits 0.
 
-Other modes: --check (agreement in mean: long renders of both at a quarter size, region
-by region with a z-test), --equal-spp N (RMSE at N samples per pixel: error per sample,
+Other modes: --check (agreement in mean: the two references, region by region with a
+z-test from their halves), --equal-spp N (RMSE at N samples per pixel: error per sample,
 insensitive to machine load).
 """
 import argparse
@@ -49,7 +49,8 @@ import translate  # noqa: E402
 
 INSTALL_HINT = ("Mitsuba 3 not installed: pip install mitsuba==3.9.1, and libllvm19 from Debian "
                 "(apt-get install libllvm19; DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM-19.so)")
-MAX_LANES = 1 << 22   # Mitsuba pass size cap: width * height * spp (memory of a wavefront)
+MAX_LANES = 1 << 26   # Mitsuba pass size cap, width * height * spp (its megakernel keeps
+                      # no per-sample arrays: 16 M samples of the Cornell box in 155 MB)
 
 mi = dr = None
 
@@ -140,7 +141,7 @@ class Facet:
         run(cmd)
         with open(out[:-4] + ".json") as f:
             rep = json.load(f)
-        return read_exr(out), int(rep["spp"]), float(rep["render_s"])
+        return read_exr(out), int(rep["spp"]) * scene.pixels, float(rep["render_s"])
 
 
 class Mitsuba:
@@ -168,52 +169,72 @@ class Mitsuba:
     def warm_up(self, scene):
         entry = self.scene(scene)
         if entry[1] is None:
-            self._pass(entry[0], 1, 999983)                 # JIT compile, not counted
-            _, t = self._pass(entry[0], 2, 999979)
-            entry[1] = t / 2
+            self._pass(entry[0], self.round_spp(1), 999983)      # JIT compile, not counted
+            _, t = self._pass(entry[0], self.round_spp(2), 999979)
+            entry[1] = t / entry[0].sensors()[0].sampler().sample_count()
         return entry
 
+    def round_spp(self, n):
+        """The largest pass size <= n (at least the smallest) that the sampler takes as
+        it is: ldsampler wants powers of 4, stratified squares, orthogonal squares of
+        primes; independent and multijitter any count."""
+        if self.sampler in ("ldsampler", "stratified"):
+            r = max(1, int(math.isqrt(n)))
+            if self.sampler == "ldsampler":
+                r = 1 << (r.bit_length() - 1)
+            return max(r * r, 4 if self.sampler == "ldsampler" else 1)
+        if self.sampler == "orthogonal":
+            p = max(2, int(math.isqrt(n)))
+            while p > 2 and any(p % d == 0 for d in range(2, int(math.isqrt(p)) + 1)):
+                p -= 1
+            return p * p
+        return max(1, n)
+
     def render(self, scene, seed, seconds=None, spp=None):
+        """Passes until the budget (or spp) is reached; each pass is sized to about half
+        the time left (so a stratified sampler keeps large stratified sets), and never
+        past what is left."""
         s, per_spp = self.warm_up(scene)
-        lanes_cap = max(1, MAX_LANES // scene.pixels)
+        sampler = s.sensors()[0].sampler()
         acc, done, elapsed, npass = None, 0, 0.0, 0
         while True:
             if seconds is not None:
                 if elapsed >= seconds:
                     break
-                want = min(max(0.1 * elapsed, 0.05), 2.0, seconds - elapsed)
+                left = seconds - elapsed
+                want = left if left < 1.0 else max(0.5 * left, 1.0)
                 n = max(1, int(want / per_spp))
             else:
                 if done >= spp:
                     break
                 n = spp - done
-            n = min(n, lanes_cap)
-            if self.sampler != "independent":      # ldsampler & co. want powers of two
-                n = 1 << (n.bit_length() - 1)
-            img, t = self._pass(s, n, seed * 1000003 + npass)
+            n = self.round_spp(min(n, max(1, MAX_LANES // scene.pixels)))
+            img, t = self._pass(s, n, (seed * 4099 + npass) % (1 << 32))
+            n = sampler.sample_count()   # what it really took
             img = np.array(img, dtype=np.float64)
             acc = img * n if acc is None else acc + img * n
             done += n
             elapsed += t
             npass += 1
             per_spp = elapsed / done
-        return acc / done, done, elapsed
+        return acc / done, done * scene.pixels, elapsed
 
 
 # --------------------------------------------------------------------------------------
 # References and errors
 
 def reference(prog, scene, seconds, refs_dir):
-    """(mean image, MSE of its own noise): two halves of independent seeds."""
+    """(half A, half B, samples per pixel of both): two halves of independent seeds."""
     path = os.path.join(refs_dir, f"{scene.key}_{prog.renderer}_{seconds:g}s.npz")
     if os.path.exists(path):
         z = np.load(path)
         return z["a"], z["b"], float(z["spp"])
     print(f"  reference {prog.label} {scene.name} {scene.width}x{scene.height}: 2 x {seconds / 2:g} s", flush=True)
-    a, spp_a, _ = prog.render(scene, 7001, seconds=seconds / 2)
-    b, spp_b, _ = prog.render(scene, 7002, seconds=seconds / 2)
-    np.savez_compressed(path, a=a.astype(np.float32), b=b.astype(np.float32), spp=spp_a + spp_b)
-    return a, b, float(spp_a + spp_b)
+    a, n_a, _ = prog.render(scene, 7001, seconds=seconds / 2)
+    b, n_b, _ = prog.render(scene, 7002, seconds=seconds / 2)
+    spp = (n_a + n_b) / scene.pixels
+    np.savez_compressed(path, a=a.astype(np.float32), b=b.astype(np.float32), spp=spp)
+    return a, b, spp
 
 
 class Ref:
@@ -254,8 +275,9 @@ def camera_project(desc, width, height):
 
 
 def regions(scene):
-    """Named pixel boxes: each sphere's inner part (by material), then a 4 x 4 grid."""
-    out = []
+    """Named pixel boxes: the whole image, each sphere's inner part (by material), then
+    a 4 x 4 grid of blocks."""
+    out = [("whole image", (0, 0, scene.width, scene.height))]
     W, H = scene.width, scene.height
     project = camera_project(scene.desc, W, H)
     for s in scene.desc.get("shapes", []):
@@ -274,13 +296,14 @@ def regions(scene):
 
 def check(scenes, progs, seconds, refs_dir, out_dir):
     """Long renders of both renderers, compared region by region."""
-    lines = [f"# facet vs Mitsuba 3: agreement in mean ({seconds:g} s each, as two halves)", ""]
+    lines = [f"# facet vs Mitsuba 3: agreement in mean (references of {seconds:g} s each, as two halves)", "",
+             "z: the difference over its standard error, estimated from each reference's two halves; "
+             "** marks |z| > 4.", ""]
     results = {}
     for sc in scenes:
         f_a, f_b, f_spp = reference(progs["facet"], sc, seconds, refs_dir)
         m_a, m_b, m_spp = reference(progs["mitsuba"], sc, seconds, refs_dir)
-        lines += [f"## {sc.name} ({sc.width}x{sc.height}; facet {f_spp / sc.pixels:.0f} spp, "
-                  f"Mitsuba {m_spp / sc.pixels:.0f} spp)", "",
+        lines += [f"## {sc.name} ({sc.width}x{sc.height}; facet {f_spp:.0f} spp, Mitsuba {m_spp:.0f} spp)", "",
                   "| region | facet (R, G, B) | Mitsuba (R, G, B) | Mitsuba / facet - 1 | max abs z |",
                   "|---|---|---|---|---|"]
         rows = []
@@ -340,7 +363,7 @@ def measure(scenes, progs, budgets, repeats, spp, ref_seconds, refs_dir, out_dir
                 rows.append({"scene": sc.name, "size": f"{sc.width}x{sc.height}", kind: amount,
                              "program": progs[key].label, "renderer": progs[key].renderer,
                              "runs": rs, "median": med,
-                             "ref_spp": {r: refs[r].spp / sc.pixels for r in refs},
+                             "ref_spp": {r: refs[r].spp for r in refs},
                              "ref_noise_rmse": {r: math.sqrt(refs[r].noise_mse) for r in refs}})
     info["load_after"] = " ".join(f"{x:.1f}" for x in os.getloadavg())
     title = f"equal spp ({spp} samples per pixel)" if spp else "equal time"
@@ -386,13 +409,13 @@ def main():
     ap.add_argument("--quick", action="store_true", help="budgets 2,5, 1 repeat, 30 s references, quarter size")
     ap.add_argument("--scenes", default=",".join(translate.SCENES), help="comma-separated scene names")
     ap.add_argument("--scale", type=float, default=1.0, help="image size relative to the scene's (default 1)")
-    ap.add_argument("--reference-seconds", type=float, default=600,
-                    help="time of each renderer's reference (two halves; default 600)")
+    ap.add_argument("--reference-seconds", type=float, default=300,
+                    help="time of each renderer's reference (two halves; default 300)")
     ap.add_argument("--mitsuba-best", default="ldsampler",
                     help="Mitsuba's best sampler, run beside its default 'independent' (default ldsampler)")
     ap.add_argument("--equal-spp", type=int, default=0, help="instead of time budgets: N samples per pixel")
-    ap.add_argument("--check", action="store_true", help="agreement in mean (long renders, region table)")
-    ap.add_argument("--check-seconds", type=float, default=120, help="--check: seconds per renderer")
+    ap.add_argument("--check", action="store_true",
+                    help="agreement in mean: the two references compared region by region")
     ap.add_argument("--threads", type=int, default=2, help="Mitsuba threads (default 2, as facet's PoCL here)")
     ap.add_argument("--facet", default=os.path.join(ROOT, "build", "facet"), help="the facet binary")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "bench"), help="output folder")
@@ -411,7 +434,7 @@ def main():
     for d in (work, assets, refs_dir):
         os.makedirs(d, exist_ok=True)
     translate.write_assets(assets, a.facet)
-    scenes = [Scene(n, 0.25 if a.check else a.scale) for n in a.scenes.split(",")]
+    scenes = [Scene(n, a.scale) for n in a.scenes.split(",")]
     progs = {"facet": Facet(a.facet, None, work), "facet_independent": Facet(a.facet, "independent", work),
              "mitsuba": Mitsuba("independent", assets)}
     if a.mitsuba_best and a.mitsuba_best != "independent":
@@ -419,10 +442,11 @@ def main():
     info = {"mitsuba": mi.__version__, "variant": mi.variant(), "threads": a.threads,
             "load_before": " ".join(f"{x:.1f}" for x in os.getloadavg())}
     if a.check:
-        check(scenes, progs, a.check_seconds, refs_dir, a.out)
+        check(scenes, progs, a.reference_seconds, refs_dir, a.out)
         return 0
     budgets = [float(x) for x in a.budgets.split(",")]
     t0 = time.time()
+    check(scenes, progs, a.reference_seconds, refs_dir, a.out)   # the references, compared
     measure(scenes, progs, budgets, a.repeats, a.equal_spp, a.reference_seconds, refs_dir, a.out, info)
     print(f"equal_time.py: {time.time() - t0:.0f} s")
     return 0
