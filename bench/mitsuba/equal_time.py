@@ -411,8 +411,8 @@ def main():
     ap.add_argument("--scale", type=float, default=1.0, help="image size relative to the scene's (default 1)")
     ap.add_argument("--reference-seconds", type=float, default=300,
                     help="time of each renderer's reference (two halves; default 300)")
-    ap.add_argument("--mitsuba-best", default="ldsampler",
-                    help="Mitsuba's best sampler, run beside its default 'independent' (default ldsampler)")
+    ap.add_argument("--mitsuba-best", default="multijitter",
+                    help="Mitsuba's best sampler, run beside its default 'independent' (default multijitter)")
     ap.add_argument("--equal-spp", type=int, default=0, help="instead of time budgets: N samples per pixel")
     ap.add_argument("--check", action="store_true",
                     help="agreement in mean: the two references compared region by region")
