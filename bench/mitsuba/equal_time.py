@@ -17,9 +17,11 @@ bench/mitsuba/<scene>.json where materials had to be replaced, else scenes/<scen
 
 Time counted: facet's `render_s` (kernel time of its progressive passes, without program
 build, scene load or file output); Mitsuba's time inside mi.render() + dr.eval() of its
-passes, after one untimed warm-up pass that JIT-compiles the kernels (the scene load and
-that compile are not counted). Both stop at the first pass ending at or after the budget,
-each pass sized to the time left (so both overrun by at most one sample per pixel).
+passes, after untimed warm-up passes that JIT-compile the kernels of every pass size it
+then uses (the scene load and those compiles are not counted). facet stops at the first
+pass ending at or after the budget, each pass sized to the time left; Mitsuba renders
+passes of two fixed sizes (about 24 % and 3 % of the budget: some samplers bake the
+sample count into the kernel) and ends within half a small pass of the budget.
 
 Mitsuba: variant llvm_ad_rgb on 2 threads, which needs a system libLLVM (Debian's
 libllvm19: DRJIT_LIBLLVM_PATH is set to it when found). Without Mitsuba the script says
@@ -166,12 +168,21 @@ class Mitsuba:
         dr.sync_thread()
         return img, time.perf_counter() - t
 
-    def warm_up(self, scene):
+    def warm_up(self, scene, sizes=()):
+        """Untimed passes that JIT-compile the kernels: Dr.Jit bakes the sample count
+        of some samplers (multijitter, ldsampler, ...) into the kernel, so every pass
+        size used later is rendered once here first."""
         entry = self.scene(scene)
         if entry[1] is None:
-            self._pass(entry[0], self.round_spp(1), 999983)      # JIT compile, not counted
+            self._pass(entry[0], self.round_spp(1), 999983)
             _, t = self._pass(entry[0], self.round_spp(2), 999979)
             entry[1] = t / entry[0].sensors()[0].sampler().sample_count()
+            entry.append(set())
+        for n in sizes:
+            if n not in entry[2]:
+                _, t = self._pass(entry[0], n, 999961)
+                entry[1] = t / entry[0].sensors()[0].sampler().sample_count()
+                entry[2].add(n)
         return entry
 
     def round_spp(self, n):
@@ -191,24 +202,34 @@ class Mitsuba:
         return max(1, n)
 
     def render(self, scene, seed, seconds=None, spp=None):
-        """Passes until the budget (or spp) is reached; each pass is sized to about half
-        the time left (so a stratified sampler keeps large stratified sets), and never
-        past what is left."""
-        s, per_spp = self.warm_up(scene)
+        """Passes of two fixed sizes, compiled beforehand: a large one (about a quarter
+        of the budget, so that a stratified sampler keeps large stratified sets) while
+        it fits in the time left, then a small one (3 % of the budget) while at least
+        half of it fits. With spp: one pass of that many samples."""
+        cap = max(1, MAX_LANES // scene.pixels)
+        s, per_spp = self.warm_up(scene)[:2]
+        if seconds is not None:
+            big = self.round_spp(min(cap, max(1, int(0.24 * seconds / per_spp))))
+            small = self.round_spp(min(cap, max(1, int(0.03 * seconds / per_spp))))
+            sizes = [big, small]
+        else:
+            sizes = [self.round_spp(min(cap, spp))]
+        s, per_spp = self.warm_up(scene, sizes)[:2]
         sampler = s.sensors()[0].sampler()
         acc, done, elapsed, npass = None, 0, 0.0, 0
         while True:
             if seconds is not None:
-                if elapsed >= seconds:
-                    break
                 left = seconds - elapsed
-                want = left if left < 1.0 else max(0.5 * left, 1.0)
-                n = max(1, int(want / per_spp))
+                if left >= sizes[0] * per_spp:
+                    n = sizes[0]
+                elif left >= 0.5 * sizes[1] * per_spp:
+                    n = sizes[1]
+                else:
+                    break
             else:
                 if done >= spp:
                     break
-                n = spp - done
-            n = self.round_spp(min(n, max(1, MAX_LANES // scene.pixels)))
+                n = sizes[0]
             img, t = self._pass(s, n, (seed * 4099 + npass) % (1 << 32))
             n = sampler.sample_count()   # what it really took
             img = np.array(img, dtype=np.float64)
