@@ -47,6 +47,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
+sys.dont_write_bytecode = True   # no __pycache__ in the source tree
 import translate  # noqa: E402
 
 INSTALL_HINT = ("Mitsuba 3 not installed: pip install mitsuba==3.9.1, and libllvm19 from Debian "
