@@ -24,6 +24,10 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::int64_t kMaxImagePixels = std::int64_t(1) << 28;
+// The longest side read. OpenImageIO decodes scanline files in chunks of up to 256 rows
+// whatever the image's height, so a 1-row image claiming 2 million columns made it
+// allocate 6.6 GB (fuzz_env_map, tests/fuzz/regressions/env_map/one_row_wide_oom.exr).
+constexpr int kMaxImageSide = 65536;
 // The most decoded bytes (float RGB) an image file may hold per byte of file: above any
 // real compression of a real image (deflate stops near 1032:1 on half floats, 2064:1 as
 // float), so a 117-byte .hdr or a small EXR that claims 16000x16000 is refused before
@@ -114,6 +118,9 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
     if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
         throw Error(fmt::format("{}: empty image ({}x{}, {} channels)", path, spec.width, spec.height, spec.nchannels));
     // Checked before allocating: a header can claim any size (16384 x 16384 is 2^28).
+    if (spec.width > kMaxImageSide || spec.height > kMaxImageSide)
+        throw Error(fmt::format("{}: the image claims {}x{} pixels: at most {} pixels a side are supported", path,
+                                spec.width, spec.height, kMaxImageSide));
     if (std::int64_t(spec.width) * spec.height > kMaxImagePixels)
         throw Error(fmt::format("{}: the image claims {}x{} pixels: at most 2^28 pixels are supported", path,
                                 spec.width, spec.height));
