@@ -118,12 +118,12 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
     if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
         throw Error(fmt::format("{}: empty image ({}x{}, {} channels)", path, spec.width, spec.height, spec.nchannels));
     // Checked before allocating: a header can claim any size (16384 x 16384 is 2^28).
-    if (spec.width > kMaxImageSide || spec.height > kMaxImageSide)
-        throw Error(fmt::format("{}: the image claims {}x{} pixels: at most {} pixels a side are supported", path,
-                                spec.width, spec.height, kMaxImageSide));
     if (std::int64_t(spec.width) * spec.height > kMaxImagePixels)
         throw Error(fmt::format("{}: the image claims {}x{} pixels: at most 2^28 pixels are supported", path,
                                 spec.width, spec.height));
+    if (spec.width > kMaxImageSide || spec.height > kMaxImageSide)
+        throw Error(fmt::format("{}: the image claims {}x{} pixels: at most {} pixels a side are supported", path,
+                                spec.width, spec.height, kMaxImageSide));
     const int channels = std::min(spec.nchannels, 3);  // R, G, B (or grey); alpha and the rest unused
     const std::uint64_t decoded = std::uint64_t(spec.width) * std::uint64_t(spec.height) * 3u * sizeof(float);
     if (decoded > kSmallImageBytes && decoded / kMaxDecodedPerFileByte > file_size)
