@@ -30,12 +30,8 @@ using test::TempDir;
 
 namespace fs = std::filesystem;
 
-const std::string kQuad =
-    R"("shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]}])";
-
-std::string scene(const TempDir& d, const std::string& name, const std::string& body) {
-    return d.write(name, "{\n" + body + "\n}\n");
-}
+using test::kQuad;
+using test::scene;
 
 // --- Radiance that would overflow the float accumulation ---------------------------
 

@@ -23,12 +23,8 @@ using test::contains;
 using test::expect_error;
 using test::TempDir;
 
-const std::string kQuad =
-    R"("shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]}])";
-
-std::string scene(const TempDir& d, const std::string& name, const std::string& body) {
-    return d.write(name, "{\n" + body + "\n}\n");
-}
+using test::kQuad;
+using test::scene;
 
 // Render settings: zero, negative, fractional and huge values, each named by its key.
 TEST(Limits, RenderSettingsOutOfRange) {

@@ -14,10 +14,7 @@ using test::TempDir;
 const std::string kTri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 const std::string kQuadShape = R"({"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]})";
 
-// A scene file `name` with `body` inside the top-level braces.
-std::string scene(const TempDir& d, const std::string& name, const std::string& body) {
-    return d.write(name, "{\n" + body + "\n}\n");
-}
+using test::scene;
 
 TEST(SceneJson, JsonFullSceneLoads) {
     TempDir d;

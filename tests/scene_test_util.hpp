@@ -16,6 +16,14 @@
 
 namespace facet::test {
 
+// A JSON "shapes" entry of one unit quad, and a scene file in `d` with `body` as its members.
+inline const std::string kQuad =
+    R"("shapes": [{"type": "quad", "corner": [0, 0, 0], "edge1": [1, 0, 0], "edge2": [0, 1, 0]}])";
+
+inline std::string scene(const TempDir& d, const std::string& name, const std::string& body) {
+    return d.write(name, "{\n" + body + "\n}\n");
+}
+
 // Runs `f`, expecting a facet::Error whose message contains every one of `parts`.
 template <typename F>
 void expect_error(F f, std::initializer_list<std::string> parts) {
