@@ -13,6 +13,7 @@
 #include "host/render/renderer.hpp"
 #include "host/scene/scene.hpp"
 #include "tests/cl_test_env.hpp"
+#include "tests/lit_scene.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/test_helpers.hpp"
 
@@ -21,29 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A diffuse box lit by an emitting quad: noisy enough that sample indices matter.
-Scene lit_scene(int size) {
-    Scene scene;
-    Material white = default_material();
-    white.diffuse = glm::vec3(0.7f);
-    Material light = default_material();
-    light.emission = glm::vec3(5.0f);
-    int w = add_material(scene, white, "white");
-    int l = add_material(scene, light, "light");
-    add_sphere(scene, glm::vec3(0.0f), 2.0f, 2, w, /*inward=*/true);
-    add_quad(scene, glm::vec3(-0.3f, 1.5f, -0.3f), glm::vec3(0.6f, 0.0f, 0.0f), glm::vec3(0.0f, 0.0f, 0.6f), l);
-    add_sphere(scene, glm::vec3(0.3f, -0.5f, 0.0f), 0.4f, 2, w, /*inward=*/false);
-    build_lights(scene);
-    scene.camera.eye = glm::vec3(0.0f, 0.0f, 1.5f);
-    scene.camera.target = glm::vec3(0.0f);
-    scene.settings.width = size;
-    scene.settings.height = size;
-    scene.settings.max_depth = 8;
-    scene.source_path = "lit_scene";
-    return scene;
-}
-
 using test::error_of;
+using test::lit_scene;
 
 FilmState some_film(int w, int h) {
     Scene scene = lit_scene(w);

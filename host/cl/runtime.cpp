@@ -199,6 +199,44 @@ ClContext ClContext::create(const std::string& selector) {
     });
 }
 
+std::vector<ClContext> ClContext::create_many(const std::string& selector) {
+    return cl_call("creating the OpenCL contexts", [&] {
+        std::vector<Found> found = discover();
+        auto context_of = [](const Found& f) {
+            ClContext ctx;
+            ctx.device_ = f.device;
+            ctx.desc_ = f.desc;
+            ctx.context_ = cl::Context(f.device);
+            ctx.queue_ = cl::CommandQueue(ctx.context_, f.device);
+            return ctx;
+        };
+        std::vector<ClContext> out;
+        const std::string which = lower(selector);
+        const std::pair<const char*, cl_device_type> types[] = {{"all", CL_DEVICE_TYPE_ALL},
+                                                                {"gpu", CL_DEVICE_TYPE_GPU},
+                                                                {"cpu", CL_DEVICE_TYPE_CPU},
+                                                                {"accelerator", CL_DEVICE_TYPE_ACCELERATOR}};
+        for (const auto& [name, type] : types) {
+            if (which != name) continue;
+            for (const Found& f : found)
+                if (f.desc.type & type) out.push_back(context_of(f));
+            if (out.empty())
+                throw Error(fmt::format("--device {}: no such device; devices are:{}", selector, device_list(found)));
+            return out;
+        }
+        std::size_t begin = 0;
+        do {
+            const std::size_t comma = selector.find(',', begin);
+            const std::string part = selector.substr(begin, comma == std::string::npos ? comma : comma - begin);
+            if (part.empty() && selector.find(',') != std::string::npos)
+                throw Error(fmt::format("--device {}: an empty entry in the list", selector));
+            out.push_back(context_of(select(found, part)));
+            begin = comma == std::string::npos ? comma : comma + 1;
+        } while (begin != std::string::npos);
+        return out;
+    });
+}
+
 std::size_t program_binary_bytes(const cl::Program& program) {
     try {
         std::vector<std::size_t> sizes = program.getInfo<CL_PROGRAM_BINARY_SIZES>();

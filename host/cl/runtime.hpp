@@ -48,6 +48,12 @@ public:
     // when nothing matches.
     static ClContext create(const std::string& selector = "");
 
+    // One context per device that `selector` names: "all" (every device), "gpu", "cpu"
+    // or "accelerator" (every device of that type), or a comma-separated list of the
+    // selectors create() takes ("0,2", "0,0" for two contexts on one device). Throws
+    // facet::Error listing the devices when a part matches none.
+    static std::vector<ClContext> create_many(const std::string& selector);
+
     const cl::Context& context() const { return context_; }
     const cl::Device& device() const { return device_; }
     cl::CommandQueue& queue() { return queue_; }

@@ -96,7 +96,13 @@ int run_cli(int argc, char** argv) {
         ->transform(CLI::CheckedTransformer(
             std::map<std::string, int>{{"sobol", FC_SAMPLER_SOBOL}, {"independent", FC_SAMPLER_INDEPENDENT}}));
     render->add_option("--device", opt.device,
-                       "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU)");
+                       "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU); "
+                       "several render together: all, gpu, cpu, or a list such as 0,2 (docs/devices.md)");
+    render
+        ->add_option("--samples-from", opt.samples_from,
+                     "First sample index: renders with disjoint ranges (--samples-from K --spp N renders K..K+N-1) "
+                     "merge with `facet merge`")
+        ->check(CLI::Range(std::uint64_t(0), std::uint64_t(0xffffffffu)));
     render->add_option("--out", opt.out,
                        "Output image, linear 32-bit float: .exr (or .hdr, .tif, .pfm); the tone-mapped PNG is written "
                        "beside it with .png (so --out cannot be a .png); default out/<scene>.exr");
@@ -119,6 +125,15 @@ int run_cli(int argc, char** argv) {
         "--generic", opt.generic,
         "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
     render->add_flag("--quiet,-q", opt.quiet, "Print only errors and the final summary");
+
+    MergeOptions merge;
+    CLI::App* merge_cmd = app.add_subcommand(
+        "merge", "Add up films of one scene holding disjoint sample ranges (docs/film-format.md) into one image");
+    merge_cmd->add_option("films", merge.films, "Films written with --film")->required();
+    merge_cmd->add_option("--out", merge.out, "Merged image (.exr; the PNG is written beside it)")->required();
+    merge_cmd->add_option("--film", merge.film, "Also write the merged film here");
+    merge_cmd->add_option("--exposure", merge.exposure, "Exposure of the PNG in stops")
+        ->check(kFinite & CLI::Range(-30.0f, 30.0f));
 
     CompareOptions cmp;
     CLI::App* compare =
@@ -153,6 +168,7 @@ int run_cli(int argc, char** argv) {
         if (*devices) return run_devices();
         if (*info) return run_info(info_opt);
         if (*render) return run_render(opt);
+        if (*merge_cmd) return run_merge(merge);
         if (*compare) return run_compare(cmp);
         if (*plot_cmd) return run_plot(plot);
         if (*sky_cmd) return run_sky(sky);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace facet {
 
@@ -14,7 +15,8 @@ struct RenderOptions {
     std::optional<int> strategy;  // FC_STRATEGY_*
     std::optional<int> sampler;   // FC_SAMPLER_*
     std::optional<double> time_limit;
-    std::string device;
+    std::string device;              // one selector or a list (ClContext::create_many)
+    std::uint64_t samples_from = 0;  // --samples-from: the first sample index
     std::string out;
     std::string report;              // CSV; summary .json and plot .svg beside it
     std::string reference;           // image to measure the error against
@@ -50,9 +52,17 @@ constexpr int kExitError = 1;
 constexpr int kExitUsage = 2;          // bad command line (the message names the option)
 constexpr int kExitInterrupted = 130;  // stopped by SIGINT/SIGTERM; the image so far was written
 
+struct MergeOptions {
+    std::vector<std::string> films;
+    std::string out;   // the merged image (EXR; PNG beside it)
+    std::string film;  // the merged film, if asked
+    float exposure = 0.0f;
+};
+
 int run_devices();
 int run_info(const InfoOptions& opt);
 int run_render(const RenderOptions& opt);
+int run_merge(const MergeOptions& opt);
 int run_compare(const CompareOptions& opt);
 int run_plot(const PlotOptions& opt);
 int run_sky(const SkyOptions& opt);

@@ -25,7 +25,7 @@
 #include "host/film/image_io.hpp"
 #include "host/render/features.hpp"
 #include "host/render/progressive.hpp"
-#include "host/render/renderer.hpp"
+#include "host/render/device_group.hpp"
 #include "host/report/report.hpp"
 #include "host/readers/load_scene.hpp"
 
@@ -47,7 +47,7 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
     if (opt.sampler) s.sampler = *opt.sampler;
 }
 
-void write_image(const std::string& out, const std::vector<float>& rgb, const Renderer& r, const Scene& scene,
+void write_image(const std::string& out, const std::vector<float>& rgb, const DeviceGroup& r, const Scene& scene,
                  float exposure, double wall_s, bool with_png = true) {
     ImageMetadata meta;
     meta.ints.push_back({"facet:spp", int(r.stats().samples_per_pixel)});
@@ -56,17 +56,16 @@ void write_image(const std::string& out, const std::vector<float>& rgb, const Re
     meta.strings.push_back({"facet:sampler", scene.settings.sampler == FC_SAMPLER_SOBOL ? "sobol" : "independent"});
     meta.floats.push_back({"facet:render_seconds", float(r.stats().render_seconds)});
     meta.floats.push_back({"facet:wall_seconds", float(wall_s)});
-    meta.strings.push_back({"facet:device", r.context().desc().platform + " / " + r.context().desc().name});
+    meta.strings.push_back({"facet:device", r.description()});
     meta.strings.push_back({"facet:scene", scene.source_path});
     write_exr(out, r.width(), r.height(), rgb, meta);
     if (with_png) write_png(replace_extension(out, ".png"), r.width(), r.height(), rgb, exposure);
 }
 
 // Saves the film (film/film_state.hpp) to `path`; false, with the message printed, on failure.
-bool save_film(const std::string& path, const Renderer& r, const Scene& scene, std::uint64_t scene_hash) {
+bool save_film(const std::string& path, const DeviceGroup& r, const Scene& scene, std::uint64_t scene_hash) {
     try {
-        write_film(path, make_film(scene, scene_hash, r.stats().samples_per_pixel, r.stats().render_seconds,
-                                   r.accumulation()));
+        write_film(path, make_film(scene, scene_hash, r.samples(), r.stats().render_seconds, r.accumulation()));
         return true;
     } catch (const Error& e) {
         say(stderr, "facet: error: {}\n", e.what());
@@ -74,12 +73,12 @@ bool save_film(const std::string& path, const Renderer& r, const Scene& scene, s
     }
 }
 
-bool save_film_or_rescue(const OutputPlan& plan, const Renderer& r, const Scene& scene, std::uint64_t scene_hash);
+bool save_film_or_rescue(const OutputPlan& plan, const DeviceGroup& r, const Scene& scene, std::uint64_t scene_hash);
 
 // The final image, its PNG, and the film when asked (--film), interrupted or when the
 // image fails. An image or film that cannot be written where asked goes to a rescue path
 // (outputs.hpp), said on stderr, and false is returned: no finished sample is lost.
-bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const Renderer& r, const Scene& scene,
+bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const DeviceGroup& r, const Scene& scene,
                  std::uint64_t scene_hash, float exposure, double wall_s, bool interrupted) {
     bool image_ok = true, png_ok = true;
     try {
@@ -112,7 +111,7 @@ bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const Re
 
 // Saves the film where planned, else at its rescue path, saying where; false when it
 // could not be saved where planned.
-bool save_film_or_rescue(const OutputPlan& plan, const Renderer& r, const Scene& scene, std::uint64_t scene_hash) {
+bool save_film_or_rescue(const OutputPlan& plan, const DeviceGroup& r, const Scene& scene, std::uint64_t scene_hash) {
     std::string film = plan.film;
     const bool ok = save_film(film, r, scene, scene_hash);
     if (!ok) {
@@ -129,7 +128,7 @@ bool save_film_or_rescue(const OutputPlan& plan, const Renderer& r, const Scene&
 // report or snapshot): the samples finished so far are not lost.
 class FilmOnError {
 public:
-    FilmOnError(const OutputPlan& plan, const Renderer& r, const Scene& scene, std::uint64_t scene_hash)
+    FilmOnError(const OutputPlan& plan, const DeviceGroup& r, const Scene& scene, std::uint64_t scene_hash)
         : plan_(plan), r_(r), scene_(scene), hash_(scene_hash), exceptions_(std::uncaught_exceptions()) {}
     // The final write has saved what there is to save.
     void disarm() { armed_ = false; }
@@ -145,17 +144,28 @@ public:
 
 private:
     const OutputPlan& plan_;
-    const Renderer& r_;
+    const DeviceGroup& r_;
     const Scene& scene_;
     std::uint64_t hash_;
     int exceptions_;
     bool armed_ = true;
 };
 
+// Each device's share and speed, when there are several.
+void print_device_shares(const DeviceGroup& group) {
+    if (group.devices().size() < 2) return;
+    double total = 0.0;
+    for (const DeviceShare& d : group.devices()) total += double(d.pixel_samples);
+    for (const DeviceShare& d : group.devices())
+        say(stdout, "share    [{}] {}: {:.1f}% of the samples, {:.3f} Msamples/s{}\n", d.desc.index, d.desc.name,
+            total > 0.0 ? 100.0 * double(d.pixel_samples) / total : 0.0, d.samples_per_s() * 1e-6,
+            d.dropped ? " (dropped: failed)" : "");
+}
+
 // The passes, through the progressive driver: after each, the report row, the
 // progress line and (on request) a snapshot, which is best effort: a failed snapshot
 // is a warning and the render goes on.
-std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene, Renderer& renderer,
+std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene, DeviceGroup& renderer,
                                     const std::optional<ImageRGB>& reference, const std::string& out,
                                     const std::string& report, Clock::time_point start, const StopSignals& signals) {
     std::vector<PassRecord> passes;
@@ -180,7 +190,7 @@ std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene
         p.wall_s = since(start);
         p.render_s = renderer.stats().render_seconds;
         p.compile_s = compile_s;
-        Renderer::Halves h = renderer.halves();
+        FilmHalves h = renderer.halves();
         p.estimate = estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]);
         if (reference) p.reference = compare_images(renderer.image(), reference->rgb, opt.reference);
         passes.push_back(p);
@@ -222,14 +232,15 @@ int run_render(const RenderOptions& opt) {
     std::optional<ImageRGB> reference;
     if (!opt.reference.empty()) reference = read_reference(opt.reference, scene.settings.width, scene.settings.height);
 
-    ClContext ctx = ClContext::create(opt.device);
     Bvh bvh = build_bvh(scene.vertices);
-    Renderer renderer(ctx, scene, bvh, opt.generic);
+    DeviceGroup renderer(ClContext::create_many(opt.device), scene, bvh, opt.generic, opt.samples_from,
+                         [](const std::string& w) { say(stderr, "facet: warning: {}\n", w); });
     const double compile_s = renderer.stats().compile_seconds;
-    if (resumed) renderer.restore(resumed->sums, resumed->spp, resumed->render_seconds);
+    if (resumed) renderer.restore(resumed->sums, resumed->samples, resumed->render_seconds);
     FilmOnError film_on_error(plan, renderer, scene, scene_hash);
     if (!opt.quiet) {
-        say(stdout, "device   {} / {}\n", ctx.desc().platform, ctx.desc().name);
+        for (const DeviceShare& d : renderer.devices())
+            if (!d.dropped) say(stdout, "device   [{}] {} / {}\n", d.desc.index, d.desc.platform, d.desc.name);
         say(stdout, "scene    {}: {} triangles, {} lights; BVH {} nodes in {:.3f} s\n", scene.source_path,
             scene.triangle_count(), scene.lights.size(), bvh.stats.nodes, bvh.stats.build_seconds);
         say(stdout, "kernels  {} program ({}), built in {:.2f} s\n", opt.generic ? "generic" : "specialised",
@@ -257,7 +268,7 @@ int run_render(const RenderOptions& opt) {
     film_on_error.disarm();
     ReportSummary summary;
     summary.scene = scene.source_path;
-    summary.device = ctx.desc().platform + " / " + ctx.desc().name;
+    summary.device = renderer.description();
     summary.image = out;
     summary.reference = opt.reference;
     summary.spp = st.samples_per_pixel;
@@ -282,6 +293,7 @@ int run_render(const RenderOptions& opt) {
     if (!summary.slope_warning.empty()) say(stderr, "facet: warning: {}\n", summary.slope_warning);
     say(stdout, "wrote    {} and {} ({} spp, {:.2f} s rendering, {:.2f} s in all)\n", out,
         replace_extension(out, ".png"), st.samples_per_pixel, st.render_seconds, since(start));
+    if (!opt.quiet) print_device_shares(renderer);
     if (!opt.quiet) {
         say(stdout, "report   {} (+ .json, .svg); RMSE ~ time^{:.2f} ({}{})\n", report, summary.slope,
             summary.slope_source, summary.slope_judged ? "" : ", too short a run to judge");

@@ -19,7 +19,7 @@ namespace {
 static_assert(std::endian::native == std::endian::little, "the film format is little-endian (docs/film-format.md)");
 
 constexpr char kMagic[8] = {'F', 'A', 'C', 'E', 'T', 'F', 'L', 'M'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 1: no "samples", indices [0, spp)
 constexpr std::uint32_t kMaxHeaderBytes = 1 << 20;
 constexpr int kMaxSide = 16384;
 
@@ -86,6 +86,11 @@ std::uint64_t film_scene_hash(const Scene& scene) {
 
 FilmState make_film(const Scene& scene, std::uint64_t scene_hash, std::uint64_t spp, double render_seconds,
                     std::vector<float> sums) {
+    return make_film(scene, scene_hash, SampleRanges{{0, spp}}, render_seconds, std::move(sums));
+}
+
+FilmState make_film(const Scene& scene, std::uint64_t scene_hash, const SampleRanges& samples, double render_seconds,
+                    std::vector<float> sums) {
     FilmState film;
     film.scene_path = scene.source_path;
     film.scene_hash = scene_hash;
@@ -96,7 +101,8 @@ FilmState make_film(const Scene& scene, std::uint64_t scene_hash, std::uint64_t 
     film.rr_depth = scene.settings.rr_depth;
     film.strategy = scene.settings.strategy;
     film.sampler = scene.settings.sampler;
-    film.spp = spp;
+    film.samples = normalized(samples);
+    film.spp = sample_count(film.samples);
     film.render_seconds = render_seconds;
     film.sums = std::move(sums);
     return film;
@@ -104,6 +110,9 @@ FilmState make_film(const Scene& scene, std::uint64_t scene_hash, std::uint64_t 
 
 void write_film(const std::string& path, const FilmState& film) {
     const std::size_t floats = 2 * std::size_t(film.width) * std::size_t(film.height) * 4;
+    if (sample_count(film.samples) != film.spp || first_overlap(film.samples))
+        throw Error(
+            fmt::format("{}: a film of {} spp cannot hold the samples {}", path, film.spp, describe(film.samples)));
     if (film.width < 1 || film.height < 1 || film.sums.size() != floats)
         throw Error(fmt::format("{}: a film of {}x{} pixels with {} values is inconsistent", path, film.width,
                                 film.height, film.sums.size()));
@@ -119,6 +128,9 @@ void write_film(const std::string& path, const FilmState& film) {
     h["strategy"] = film.strategy;
     h["sampler"] = film.sampler;
     h["spp"] = film.spp;
+    nlohmann::json ranges = nlohmann::json::array();
+    for (const SampleRange& r : normalized(film.samples)) ranges.push_back({r.begin, r.end});
+    h["samples"] = ranges;
     h["render_seconds"] = film.render_seconds;
     h["payload_floats"] = floats;
     h["payload_fnv1a64"] = fmt::format("{:016x}", payload_hash(film.sums));
@@ -142,9 +154,10 @@ FilmState read_film(const std::string& path) {
     char head[16];
     if (size < sizeof head || !in.read(head, sizeof head) || std::memcmp(head, kMagic, sizeof kMagic) != 0)
         throw Error(fmt::format("{}: not a facet film (docs/film-format.md)", path));
-    if (u32_at(head + 8) != kVersion)
-        throw Error(fmt::format("{}: film format version {}, but this facet reads version {}", path, u32_at(head + 8),
-                                kVersion));
+    const std::uint32_t version = u32_at(head + 8);
+    if (version < 1 || version > kVersion)
+        throw Error(
+            fmt::format("{}: film format version {}, but this facet reads versions 1 to {}", path, version, kVersion));
     const std::uint32_t header_bytes = u32_at(head + 12);
     if (header_bytes > kMaxHeaderBytes || sizeof head + header_bytes > size)
         throw Error(fmt::format("{}: the film's header claims {} bytes, but the file has {}: truncated or corrupt",
@@ -165,6 +178,10 @@ FilmState read_film(const std::string& path) {
         film.strategy = h.at("strategy").get<int>();
         film.sampler = h.at("sampler").get<int>();
         film.spp = h.at("spp").get<std::uint64_t>();
+        if (version == 1) film.samples = {{0, film.spp}};
+        else
+            for (const nlohmann::json& r : h.at("samples"))
+                film.samples.push_back({r.at(0).get<std::uint64_t>(), r.at(1).get<std::uint64_t>()});
         film.render_seconds = h.at("render_seconds").get<double>();
         floats = h.at("payload_floats").get<std::uint64_t>();
         checksum = parse_hex(h.at("payload_fnv1a64").get<std::string>());
@@ -173,6 +190,15 @@ FilmState read_film(const std::string& path) {
     }
     if (film.width < 1 || film.height < 1 || film.width > kMaxSide || film.height > kMaxSide)
         throw Error(fmt::format("{}: the film claims {}x{} pixels", path, film.width, film.height));
+    for (const SampleRange& r : film.samples)
+        if (r.end < r.begin || r.end > 0xffffffffull)
+            throw Error(fmt::format("{}: the film claims the sample range {}-{}", path, r.begin, r.end));
+    if (first_overlap(film.samples))
+        throw Error(fmt::format("{}: the film's sample ranges overlap ({}): corrupt", path, describe(film.samples)));
+    if (sample_count(film.samples) != film.spp)
+        throw Error(fmt::format("{}: the film claims {} spp but holds the samples {}: corrupt", path, film.spp,
+                                describe(film.samples)));
+    film.samples = normalized(film.samples);
     const std::uint64_t want = 2 * std::uint64_t(film.width) * std::uint64_t(film.height) * 4;
     if (floats != want || size - sizeof head - header_bytes != want * sizeof(float))
         throw Error(

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "host/film/sample_ranges.hpp"
+
 namespace facet {
 
 struct Scene;
@@ -19,7 +21,8 @@ struct FilmState {
     int width = 0, height = 0;
     std::uint32_t seed = 0;
     int max_depth = 0, rr_depth = 0, strategy = 0, sampler = 0;
-    std::uint64_t spp = 0;  // samples in every pixel: indices [0, spp), even ones in the first half
+    std::uint64_t spp = 0;  // samples in every pixel: sample_count(samples)
+    SampleRanges samples;   // their indices (sample_ranges.hpp), even ones in the first half
     double render_seconds = 0.0;
     // 2 * width * height RGBA float sums: the even-sample half, then the odd-sample half;
     // A counts the samples the kernel rejected (render/renderer.hpp).
@@ -30,15 +33,18 @@ struct FilmState {
 // shading, materials, lights, camera and environment map.
 std::uint64_t film_scene_hash(const Scene& scene);
 
-// A film of `scene` (settings from scene.settings) holding `sums` after `spp` samples.
+// A film of `scene` (settings from scene.settings) holding `sums` of the samples with
+// indices in `samples`; the second form for indices [0, spp).
+FilmState make_film(const Scene& scene, std::uint64_t scene_hash, const SampleRanges& samples, double render_seconds,
+                    std::vector<float> sums);
 FilmState make_film(const Scene& scene, std::uint64_t scene_hash, std::uint64_t spp, double render_seconds,
                     std::vector<float> sums);
 
 // Writes the film through write_file_safely; throws facet::Error naming the path.
 void write_film(const std::string& path, const FilmState& film);
 
-// Reads a film, checking its magic, version, sizes and checksum; throws facet::Error
-// naming the file and the problem.
+// Reads a film, checking its magic, version, sizes, sample ranges and checksum; throws
+// facet::Error naming the file and the problem. Version 1 films hold indices [0, spp).
 FilmState read_film(const std::string& path);
 
 // Throws facet::Error naming the film and the first setting in which it differs from a

@@ -129,10 +129,17 @@ void Renderer::restore(const std::vector<float>& sums, std::uint64_t spp, double
 }
 
 void Renderer::launch(std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count) {
+    launch_samples(stats_.samples_per_pixel, count, row_begin, row_count);
+}
+
+void Renderer::launch_samples(std::uint64_t first, std::uint32_t count, std::uint32_t row_begin,
+                              std::uint32_t row_count) {
     if (count == 0 || row_begin >= params_.height) return;
+    if (first + count > 0x100000000ull)
+        throw Error(fmt::format("sample indices {} to {} are beyond 2^32", first, first + count - 1));
     cl_call("rendering a pass", [&] {
         FcRenderParams p = params_;
-        p.sample_begin = std::uint32_t(stats_.samples_per_pixel);
+        p.sample_begin = std::uint32_t(first);
         p.sample_count = count;
         p.row_begin = row_begin;
         p.row_count = std::min(row_count, params_.height - row_begin);

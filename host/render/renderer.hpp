@@ -41,6 +41,9 @@ public:
     std::uint32_t target_height() const override { return std::uint32_t(height_); }
     std::uint64_t finished_spp() const override { return stats_.samples_per_pixel; }
     void launch(std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count) override;
+    // One launch of the samples [first, first + count) over a band of rows, whatever
+    // finished_spp() is (a device of a DeviceGroup renders its own share of a pass).
+    void launch_samples(std::uint64_t first, std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count);
     void end_pass(std::uint32_t count, double seconds) override;
 
     // The mean radiance so far, linear RGB, row-major from the top row, 3 floats a

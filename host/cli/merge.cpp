@@ -1,0 +1,50 @@
+// `facet merge A.film B.film ... --out image.exr`: the films of one scene and settings,
+// holding disjoint sample ranges (renders with --samples-from, or with different
+// machines' shares), added into one film; its image, PNG and (with --film) the film
+// written, and the merged film's error estimate printed.
+#include <fmt/format.h>
+
+#include "host/cli/commands.hpp"
+#include "host/error.hpp"
+#include "host/film/error_metrics.hpp"
+#include "host/film/film_halves.hpp"
+#include "host/film/film_merge.hpp"
+#include "host/film/image_io.hpp"
+
+namespace facet {
+
+int run_merge(const MergeOptions& opt) {
+    std::string why;
+    if (!can_write_float_image(opt.out, &why)) throw Error(fmt::format("--out {}: {}", opt.out, why));
+    std::vector<FilmState> films;
+    for (const std::string& path : opt.films) {
+        if (path == opt.out || path == replace_extension(opt.out, ".png"))
+            throw Error(fmt::format("--out {} would overwrite the film {}", opt.out, path));
+        films.push_back(read_film(path));
+    }
+    const FilmState merged = merge_films(films, opt.films);
+    const std::size_t pixels = std::size_t(merged.width) * std::size_t(merged.height);
+    const FilmHalves h = film_halves(merged.sums, pixels, merged.samples);
+    const std::vector<float> rgb = film_mean(h);
+    ImageMetadata meta;
+    meta.ints.push_back({"facet:spp", int(merged.spp)});
+    meta.ints.push_back({"facet:seed", int(merged.seed)});
+    meta.ints.push_back({"facet:max_depth", merged.max_depth});
+    meta.strings.push_back({"facet:samples", describe(merged.samples)});
+    meta.floats.push_back({"facet:render_seconds", float(merged.render_seconds)});
+    meta.strings.push_back({"facet:scene", merged.scene_path});
+    write_exr(opt.out, merged.width, merged.height, rgb, meta);
+    write_png(replace_extension(opt.out, ".png"), merged.width, merged.height, rgb, opt.exposure);
+    if (!opt.film.empty()) write_film(opt.film, merged);
+    const ErrorMetrics e = estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]);
+    fmt::print("merged   {} films: {} spp (samples {}), {:.2f} s of rendering\n", films.size(), merged.spp,
+               describe(merged.samples), merged.render_seconds);
+    fmt::print("estimate rmse {:.6e}, relmse {:.6e} (from the two halves)\n", e.rmse, e.relmse);
+    fmt::print("wrote    {} and {}{}\n", opt.out, replace_extension(opt.out, ".png"),
+               opt.film.empty() ? "" : " and " + opt.film);
+    if (h.rejected > 0)
+        fmt::print(stderr, "facet: warning: {} samples were NaN, infinite or negative and were dropped\n", h.rejected);
+    return kExitOk;
+}
+
+}  // namespace facet

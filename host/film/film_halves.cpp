@@ -1,0 +1,36 @@
+#include "host/film/film_halves.hpp"
+
+#include <fmt/format.h>
+
+#include "host/error.hpp"
+
+namespace facet {
+
+FilmHalves film_halves(const std::vector<float>& sums, std::size_t pixels, const SampleRanges& samples) {
+    if (sums.size() != 2 * pixels * 4)
+        throw Error(fmt::format("a film of {} values does not hold {} pixels", sums.size(), pixels));
+    FilmHalves h;
+    h.samples[0] = even_samples(samples);
+    h.samples[1] = odd_samples(samples);
+    for (int k = 0; k < 2; ++k) {
+        h.rgb[k].resize(3 * pixels);
+        const float inv = h.samples[k] ? 1.0f / float(h.samples[k]) : 0.0f;
+        const float* half = sums.data() + std::size_t(k) * pixels * 4;
+        for (std::size_t i = 0; i < pixels; ++i) {
+            for (int c = 0; c < 3; ++c) h.rgb[k][3 * i + c] = half[4 * i + c] * inv;
+            h.rejected += double(half[4 * i + 3]);
+        }
+    }
+    return h;
+}
+
+std::vector<float> film_mean(const FilmHalves& h) {
+    const std::uint64_t n = h.samples[0] + h.samples[1];
+    std::vector<float> rgb(h.rgb[0].size(), 0.0f);
+    if (n == 0) return rgb;
+    const float w0 = float(h.samples[0]) / float(n), w1 = float(h.samples[1]) / float(n);
+    for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = w0 * h.rgb[0][i] + w1 * h.rgb[1][i];
+    return rgb;
+}
+
+}  // namespace facet

@@ -1,0 +1,267 @@
+#include "host/render/device_group.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "host/error.hpp"
+
+namespace facet {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string message_of(const std::exception_ptr& e) {
+    try {
+        std::rethrow_exception(e);
+    } catch (const std::exception& x) {
+        return x.what();
+    } catch (...) {
+        return "unknown error";
+    }
+}
+
+// Runs f(i) for i in [0, n) on threads (inline for one), and returns each one's exception.
+template <typename F>
+std::vector<std::exception_ptr> for_each_concurrently(std::size_t n, F&& f) {
+    std::vector<std::exception_ptr> errors(n);
+    auto guarded = [&](std::size_t i) {
+        try {
+            f(i);
+        } catch (...) {
+            errors[i] = std::current_exception();
+        }
+    };
+    if (n == 1) {
+        guarded(0);
+        return errors;
+    }
+    std::vector<std::thread> threads;
+    for (std::size_t i = 0; i < n; ++i) threads.emplace_back(guarded, i);
+    for (std::thread& t : threads) t.join();
+    return errors;
+}
+
+}  // namespace
+
+DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, const Bvh& bvh, bool generic,
+                         std::uint64_t first_sample, Warn warn)
+    : width_(scene.settings.width),
+      height_(scene.settings.height),
+      warn_(std::move(warn)),
+      first_sample_(first_sample),
+      next_(first_sample) {
+    if (contexts.empty()) throw Error("no OpenCL device to render on");
+    const std::size_t n = contexts.size();
+    for (ClContext& c : contexts) contexts_.push_back(std::make_unique<ClContext>(std::move(c)));
+    renderers_.resize(n);
+    shares_.resize(n);
+    rate_.assign(n, 0.0);
+    committed_.assign(n, std::vector<float>(2 * pixel_count() * 4, 0.0f));
+    // One program per device, built concurrently.
+    std::vector<std::exception_ptr> errors = for_each_concurrently(n, [&](std::size_t i) {
+        shares_[i].desc = contexts_[i]->desc();
+        renderers_[i] = std::make_unique<Renderer>(*contexts_[i], scene, bvh, generic);
+    });
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!errors[i]) continue;
+        if (std::all_of(errors.begin(), errors.end(), [](const std::exception_ptr& e) { return bool(e); }))
+            std::rethrow_exception(errors[0]);
+        drop(i, message_of(errors[i]));
+    }
+    for (std::size_t i : live()) {
+        const RenderStats& s = renderers_[i]->stats();
+        shares_[i].build_s = s.compile_seconds;
+        stats_.compile_seconds = std::max(stats_.compile_seconds, s.compile_seconds);
+        stats_.upload_seconds = std::max(stats_.upload_seconds, s.upload_seconds);
+        stats_.features = s.features;
+    }
+}
+
+DeviceGroup::~DeviceGroup() = default;
+
+std::vector<std::size_t> DeviceGroup::live() const {
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < renderers_.size(); ++i)
+        if (renderers_[i]) out.push_back(i);
+    return out;
+}
+
+void DeviceGroup::drop(std::size_t device, const std::string& why) {
+    DeviceShare& s = shares_[device];
+    s.dropped = true;
+    s.error = why;
+    renderers_[device].reset();
+    if (warn_)
+        warn_(fmt::format("device [{}] {} / {} failed and is dropped; the other devices render its samples: {}",
+                          s.desc.index, s.desc.platform, s.desc.name, why));
+}
+
+std::vector<DeviceGroup::Job> DeviceGroup::deal(std::uint64_t first, std::uint32_t count, std::uint32_t row_begin,
+                                                std::uint32_t row_count) const {
+    const std::vector<std::size_t> devices = live();
+    if (devices.empty()) throw Error("every OpenCL device failed; see the warnings above");
+    // Shares in proportion to the measured speeds (equal until every device is measured),
+    // rounded by largest remainder so that they add up to `count`.
+    const bool measured = std::all_of(devices.begin(), devices.end(), [&](std::size_t i) { return rate_[i] > 0.0; });
+    double total = 0.0;
+    for (std::size_t i : devices) total += measured ? rate_[i] : 1.0;
+    std::vector<std::uint32_t> share(devices.size());
+    std::vector<std::pair<double, std::size_t>> remainder;
+    std::uint32_t dealt = 0;
+    for (std::size_t k = 0; k < devices.size(); ++k) {
+        const double exact = double(count) * (measured ? rate_[devices[k]] : 1.0) / total;
+        share[k] = std::uint32_t(std::floor(exact));
+        dealt += share[k];
+        remainder.push_back({exact - std::floor(exact), k});
+    }
+    std::stable_sort(remainder.begin(), remainder.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (std::size_t r = 0; dealt < count; ++r, ++dealt) share[remainder[r % remainder.size()].second] += 1;
+    std::vector<Job> jobs;
+    std::uint64_t at = first;
+    for (std::size_t k = 0; k < devices.size(); ++k) {
+        if (share[k] == 0) continue;
+        jobs.push_back({devices[k], at, share[k], row_begin, row_count});
+        at += share[k];
+    }
+    return jobs;
+}
+
+void DeviceGroup::run(std::vector<Job> jobs) {
+    while (!jobs.empty()) {
+        std::vector<double> seconds(jobs.size(), 0.0);
+        std::vector<std::exception_ptr> errors = for_each_concurrently(jobs.size(), [&](std::size_t j) {
+            const Job& job = jobs[j];
+            if (before_launch) before_launch(job.device);
+            const auto start = Clock::now();
+            renderers_[job.device]->launch_samples(job.first, job.count, job.row_begin, job.row_count);
+            seconds[j] = since(start);
+        });
+        std::vector<Job> again;
+        for (std::size_t j = 0; j < jobs.size(); ++j) {
+            const Job& job = jobs[j];
+            if (errors[j]) {
+                if (!renderers_[job.device]) continue;  // already dropped (two jobs of one device)
+                drop(job.device, message_of(errors[j]));
+                // Its buffer is lost since the last pass end: every job it had in this pass again.
+                for (const Job& done : pass_jobs_)
+                    if (done.device == job.device) again.push_back(done);
+                continue;
+            }
+            const double pixel_samples = double(job.count) * double(job.row_count) * double(width_);
+            shares_[job.device].pixel_samples += std::uint64_t(pixel_samples);
+            shares_[job.device].busy_s += seconds[j];
+            rate_[job.device] = pixel_samples / std::max(seconds[j], 1e-9);
+            pass_jobs_.push_back(job);
+        }
+        // Jobs of dropped devices (those that failed now, and any done before in this pass).
+        for (const Job& j : jobs)
+            if (!renderers_[j.device]) again.push_back(j);
+        std::erase_if(pass_jobs_, [&](const Job& j) { return !renderers_[j.device]; });
+        jobs.clear();
+        std::sort(again.begin(), again.end(), [](const Job& a, const Job& b) {
+            return a.first < b.first || (a.first == b.first && a.row_begin < b.row_begin);
+        });
+        again.erase(std::unique(again.begin(), again.end(),
+                                [](const Job& a, const Job& b) {
+                                    return a.first == b.first && a.count == b.count && a.row_begin == b.row_begin &&
+                                           a.row_count == b.row_count;
+                                }),
+                    again.end());
+        for (const Job& j : again) {
+            std::vector<Job> dealt = deal(j.first, j.count, j.row_begin, j.row_count);
+            jobs.insert(jobs.end(), dealt.begin(), dealt.end());
+        }
+    }
+}
+
+void DeviceGroup::launch(std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count) {
+    if (count == 0 || row_begin >= std::uint32_t(height_)) return;
+    row_count = std::min(row_count, std::uint32_t(height_) - row_begin);
+    run(deal(next_, count, row_begin, row_count));
+}
+
+void DeviceGroup::end_pass(std::uint32_t count, double seconds) {
+    // Each device's sums read back; a device failing here loses its pass, dealt again.
+    for (;;) {
+        const std::vector<std::size_t> devices = live();
+        std::vector<std::vector<float>> sums(devices.size());
+        std::vector<std::exception_ptr> errors = for_each_concurrently(
+            devices.size(), [&](std::size_t k) { sums[k] = renderers_[devices[k]]->accumulation(); });
+        std::vector<Job> again;
+        for (std::size_t k = 0; k < devices.size(); ++k) {
+            if (!errors[k]) continue;
+            drop(devices[k], message_of(errors[k]));
+            for (const Job& j : pass_jobs_)
+                if (j.device == devices[k]) again.push_back(j);
+        }
+        if (again.empty()) {
+            for (std::size_t k = 0; k < devices.size(); ++k) committed_[devices[k]] = std::move(sums[k]);
+            break;
+        }
+        std::erase_if(pass_jobs_, [&](const Job& j) { return !renderers_[j.device]; });
+        std::vector<Job> jobs;
+        for (const Job& j : again) {
+            std::vector<Job> dealt = deal(j.first, j.count, j.row_begin, j.row_count);
+            jobs.insert(jobs.end(), dealt.begin(), dealt.end());
+        }
+        run(jobs);
+    }
+    pass_jobs_.clear();
+    samples_.push_back({next_, next_ + count});
+    samples_ = normalized(samples_);
+    next_ += count;
+    stats_.samples_per_pixel = sample_count(samples_);
+    stats_.render_seconds += seconds;
+}
+
+void DeviceGroup::reset() {
+    for (std::size_t i : live()) renderers_[i]->reset();
+    for (std::vector<float>& c : committed_) std::fill(c.begin(), c.end(), 0.0f);
+    pass_jobs_.clear();
+    samples_ = base_samples_;
+    next_ = std::max(first_sample_, next_sample(base_samples_));
+    stats_.samples_per_pixel = sample_count(samples_);
+    stats_.render_seconds = base_seconds_;
+}
+
+void DeviceGroup::restore(const std::vector<float>& sums, const SampleRanges& samples, double render_seconds) {
+    if (sums.size() != 2 * pixel_count() * 4)
+        throw Error(fmt::format("a film of {} values does not fit a {}x{} image", sums.size(), width_, height_));
+    if (first_sample_ > 0 && first_sample_ < next_sample(samples))
+        throw Error(fmt::format("the film holds samples {}: samples from {} would repeat some of them",
+                                describe(samples), first_sample_));
+    base_ = sums;
+    base_samples_ = normalized(samples);
+    base_seconds_ = render_seconds;
+    reset();
+}
+
+std::vector<float> DeviceGroup::accumulation() const {
+    std::vector<float> sums = base_.empty() ? std::vector<float>(2 * pixel_count() * 4, 0.0f) : base_;
+    for (const std::vector<float>& c : committed_)
+        for (std::size_t k = 0; k < sums.size(); ++k) sums[k] += c[k];
+    return sums;
+}
+
+FilmHalves DeviceGroup::halves() const { return film_halves(accumulation(), pixel_count(), samples_); }
+
+std::vector<float> DeviceGroup::image(double* rejected_samples) const {
+    FilmHalves h = halves();
+    if (rejected_samples) *rejected_samples = h.rejected;
+    return film_mean(h);
+}
+
+std::string DeviceGroup::description() const {
+    std::string s;
+    for (const DeviceShare& d : shares_) s += (s.empty() ? "" : " + ") + d.desc.platform + " / " + d.desc.name;
+    return s;
+}
+
+}  // namespace facet
