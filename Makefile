@@ -16,12 +16,14 @@ CMAKE_FLAGS ?=
 # libembree-dev and zlib1g-dev are for the bench only (it skips their parts without them);
 # fiu-utils (libfiu) injects write failures in tests/faults/disk_full.sh (skipped without it);
 # oclgrind for the Oclgrind tier (ctest -L oclgrind, skipped without it).
+# Open MPI for `mpirun -n N facet render` (optional: CMake builds without it when absent).
 PACKAGES := build-essential cmake pkg-config \
 	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
 	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
 	libgtest-dev clang libclang-rt-14-dev clang-format \
 	libembree-dev zlib1g-dev \
-	fiu-utils oclgrind
+	fiu-utils oclgrind \
+	libopenmpi-dev openmpi-bin
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 

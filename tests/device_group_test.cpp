@@ -85,8 +85,7 @@ TEST(DeviceGroup, EveryDeviceFailingIsAnError) {
     Fixture f;
     DeviceGroup group(contexts(2), f.scene, f.bvh, false, 0, [](const std::string&) {});
     group.before_launch = [](std::size_t) { throw Error("injected failure"); };
-    EXPECT_NE(test::error_of([&] { render_fixed(group, 4, 4); }).find("every OpenCL device failed"),
-              std::string::npos);
+    EXPECT_NE(test::error_of([&] { render_fixed(group, 4, 4); }).find("every OpenCL device failed"), std::string::npos);
 }
 
 TEST(DeviceGroup, ResumeAndSamplesFromContinueAtTheirIndices) {
@@ -111,9 +110,9 @@ TEST(DeviceGroup, ResumeAndSamplesFromContinueAtTheirIndices) {
     expect_same_image(film_mean(film_halves(sums, 256, {{0, 10}})), want);
     // Samples from 2 would repeat the film's 2 and 3.
     DeviceGroup overlapping(contexts(1), f.scene, f.bvh, false, 2);
-    EXPECT_NE(test::error_of([&] { overlapping.restore(first.accumulation(), first.samples(), 0.0); })
-                  .find("would repeat"),
-              std::string::npos);
+    EXPECT_NE(
+        test::error_of([&] { overlapping.restore(first.accumulation(), first.samples(), 0.0); }).find("would repeat"),
+        std::string::npos);
 }
 
 TEST(DeviceGroup, DeviceListsSelectContexts) {

@@ -25,8 +25,7 @@ namespace {
 using test::error_of;
 
 // A film of `scene` holding samples [first, first + spp), rendered on the default device.
-FilmState render_film(const Scene& scene, const Bvh& bvh, std::uint64_t first, std::uint64_t spp,
-                      std::uint32_t pass) {
+FilmState render_film(const Scene& scene, const Bvh& bvh, std::uint64_t first, std::uint64_t spp, std::uint32_t pass) {
     const char* sel = std::getenv("FACET_TEST_DEVICE");
     DeviceGroup group({ClContext::create(sel ? sel : "")}, scene, bvh, false, first);
     render_fixed(group, spp, pass);
@@ -69,7 +68,8 @@ TEST(FilmMerge, MergedPartialRendersEqualOneRender) {
     const std::vector<float> want = image_of(whole), got = image_of(merged);
     ASSERT_EQ(got.size(), want.size());
     for (std::size_t i = 0; i < got.size(); ++i) ASSERT_NEAR(got[i], want[i], 1e-5f * std::max(1.0f, want[i])) << i;
-    const FilmHalves hw = film_halves(whole.sums, 256, whole.samples), hm = film_halves(merged.sums, 256, merged.samples);
+    const FilmHalves hw = film_halves(whole.sums, 256, whole.samples),
+                     hm = film_halves(merged.sums, 256, merged.samples);
     EXPECT_EQ(hm.samples[0], hw.samples[0]);
     EXPECT_EQ(hm.samples[1], hw.samples[1]);
     // A part alone is another image: the ranges hold different samples.
@@ -102,7 +102,9 @@ TEST(FilmMerge, RefusesOverlapsOtherScenesAndSettings) {
     wide.settings.width = 7;
     FilmState w = make_film(wide, hash, SampleRanges{{8, 10}}, 1.0, std::vector<float>(2 * 42 * 4));
     EXPECT_NE(error_of([&] { merge_films({a, w}, {"a.film", "w.film"}); }).find("size of 7x6"), std::string::npos);
-    EXPECT_EQ(error_of([&] { merge_films({a, make_film(scene, hash, SampleRanges{{8, 10}}, 1.0, sums)}, {"a", "b"}); }),
+    EXPECT_EQ(error_of([&] {
+                  merge_films({a, make_film(scene, hash, SampleRanges{{8, 10}}, 1.0, sums)}, {"a", "b"});
+              }),
               "");
 }
 

@@ -153,6 +153,14 @@ private:
 
 // Each device's share and speed, when there are several.
 void print_device_shares(const DeviceGroup& group) {
+    const std::vector<std::uint64_t>& ranks = group.rank_pixel_samples();
+    if (ranks.size() > 1) {
+        double all = 0.0;
+        for (std::uint64_t n : ranks) all += double(n);
+        for (std::size_t r = 0; r < ranks.size(); ++r)
+            say(stdout, "rank     {}: {:.1f}% of the samples\n", r, all > 0.0 ? 100.0 * double(ranks[r]) / all : 0.0);
+        say(stdout, "reduce   {:.3f} s summing the ranks' films to rank 0\n", group.reduce_seconds());
+    }
     if (group.devices().size() < 2) return;
     double total = 0.0;
     for (const DeviceShare& d : group.devices()) total += double(d.pixel_samples);
@@ -237,6 +245,10 @@ int run_render(const RenderOptions& opt) {
                          [](const std::string& w) { say(stderr, "facet: warning: {}\n", w); });
     const double compile_s = renderer.stats().compile_seconds;
     if (resumed) renderer.restore(resumed->sums, resumed->samples, resumed->render_seconds);
+    if (!renderer.ranks().leads()) {  // an MPI rank other than 0: renders what rank 0 deals out
+        renderer.follow();
+        return kExitOk;
+    }
     FilmOnError film_on_error(plan, renderer, scene, scene_hash);
     if (!opt.quiet) {
         for (const DeviceShare& d : renderer.devices())

@@ -6,8 +6,7 @@
 
 namespace facet {
 
-void check_films_combine(const FilmState& a, const std::string& a_path, const FilmState& b,
-                         const std::string& b_path) {
+void check_films_combine(const FilmState& a, const std::string& a_path, const FilmState& b, const std::string& b_path) {
     auto refuse = [&](const std::string& what, const std::string& a_value, const std::string& b_value) {
         throw Error(fmt::format("{} has {} {}, {} has {}: samples of different renders cannot be combined", b_path,
                                 what, b_value, a_path, a_value));
@@ -38,10 +37,10 @@ FilmState merge_films(const std::vector<FilmState>& films, const std::vector<std
             SampleRanges both = films[j].samples;
             both.insert(both.end(), f.samples.begin(), f.samples.end());
             if (const auto index = first_overlap(both))
-                throw Error(fmt::format("{} and {} both hold sample {} (samples {} and {}): the same samples "
-                                        "cannot be counted twice",
-                                        paths[j], paths[i], *index, describe(films[j].samples),
-                                        describe(f.samples)));
+                throw Error(
+                    fmt::format("{} and {} both hold sample {} (samples {} and {}): the same samples "
+                                "cannot be counted twice",
+                                paths[j], paths[i], *index, describe(films[j].samples), describe(f.samples)));
         }
         for (std::size_t k = 0; k < merged.sums.size(); ++k) merged.sums[k] += f.sums[k];
         merged.samples.insert(merged.samples.end(), f.samples.begin(), f.samples.end());

@@ -29,14 +29,13 @@ std::uint64_t odd_samples(const SampleRanges& ranges) { return sample_count(rang
 
 SampleRanges normalized(SampleRanges ranges) {
     std::erase_if(ranges, [](const SampleRange& r) { return r.count() == 0; });
-    std::sort(ranges.begin(), ranges.end(),
-              [](const SampleRange& a, const SampleRange& b) { return a.begin < b.begin || (a.begin == b.begin && a.end < b.end); });
+    std::sort(ranges.begin(), ranges.end(), [](const SampleRange& a, const SampleRange& b) {
+        return a.begin < b.begin || (a.begin == b.begin && a.end < b.end);
+    });
     SampleRanges out;
     for (const SampleRange& r : ranges) {
-        if (!out.empty() && out.back().end == r.begin)
-            out.back().end = r.end;
-        else
-            out.push_back(r);
+        if (!out.empty() && out.back().end == r.begin) out.back().end = r.end;
+        else out.push_back(r);
     }
     return out;
 }

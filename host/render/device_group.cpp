@@ -48,14 +48,35 @@ std::vector<std::exception_ptr> for_each_concurrently(std::size_t n, F&& f) {
     return errors;
 }
 
+// `count` dealt out in proportion to `rates` (equal until every rate is measured),
+// rounded by largest remainder so that the shares add up to `count`.
+std::vector<std::uint32_t> shares_by_rate(std::uint32_t count, const std::vector<double>& rates) {
+    const bool measured = std::all_of(rates.begin(), rates.end(), [](double r) { return r > 0.0; });
+    double total = 0.0;
+    for (double r : rates) total += measured ? r : 1.0;
+    std::vector<std::uint32_t> share(rates.size());
+    std::vector<std::pair<double, std::size_t>> remainder;
+    std::uint32_t dealt = 0;
+    for (std::size_t k = 0; k < rates.size(); ++k) {
+        const double exact = double(count) * (measured ? rates[k] : 1.0) / total;
+        share[k] = std::uint32_t(std::floor(exact));
+        dealt += share[k];
+        remainder.push_back({exact - std::floor(exact), k});
+    }
+    std::stable_sort(remainder.begin(), remainder.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (std::size_t r = 0; dealt < count; ++r, ++dealt) share[remainder[r % remainder.size()].second] += 1;
+    return share;
+}
+
+// Rank 0's commands to the other ranks: the first word, then its arguments.
+enum Command : std::uint64_t { kLaunch = 1, kEndPass = 2, kReset = 3, kStop = 4 };
+
 }  // namespace
 
 DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, const Bvh& bvh, bool generic,
                          std::uint64_t first_sample, Warn warn)
-    : width_(scene.settings.width),
-      height_(scene.settings.height),
-      warn_(std::move(warn)),
-      first_sample_(first_sample),
+    : width_(scene.settings.width), height_(scene.settings.height), warn_(std::move(warn)), first_sample_(first_sample),
       next_(first_sample) {
     if (contexts.empty()) throw Error("no OpenCL device to render on");
     const std::size_t n = contexts.size();
@@ -69,12 +90,16 @@ DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, co
         shares_[i].desc = contexts_[i]->desc();
         renderers_[i] = std::make_unique<Renderer>(*contexts_[i], scene, bvh, generic);
     });
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!errors[i]) continue;
-        if (std::all_of(errors.begin(), errors.end(), [](const std::exception_ptr& e) { return bool(e); }))
-            std::rethrow_exception(errors[0]);
-        drop(i, message_of(errors[i]));
+    const bool none = std::all_of(errors.begin(), errors.end(), [](const std::exception_ptr& e) { return bool(e); });
+    // Every rank has a device, or none renders (the others would wait for it).
+    if (!ranks_.all(!none)) {
+        if (none) std::rethrow_exception(errors[0]);
+        throw Error("another MPI rank has no device that could build the program; see its message");
     }
+    for (std::size_t i = 0; i < n; ++i)
+        if (errors[i]) drop(i, message_of(errors[i]));
+    rank_rate_.assign(std::size_t(ranks_.size()), 0.0);
+    rank_pixel_samples_.assign(std::size_t(ranks_.size()), 0);
     for (std::size_t i : live()) {
         const RenderStats& s = renderers_[i]->stats();
         shares_[i].build_s = s.compile_seconds;
@@ -84,7 +109,33 @@ DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, co
     }
 }
 
-DeviceGroup::~DeviceGroup() = default;
+DeviceGroup::~DeviceGroup() {
+    if (ranks_.size() > 1 && ranks_.leads() && !followers_stopped_) {
+        try {
+            std::vector<std::uint64_t> stop{kStop};
+            ranks_.broadcast(stop);
+        } catch (...) {  // the job is ending either way
+        }
+    }
+}
+
+void DeviceGroup::follow() {
+    if (ranks_.leads()) return;
+    try {
+        for (;;) {
+            std::vector<std::uint64_t> command;
+            ranks_.broadcast(command);
+            if (command.empty() || command[0] == kStop) return;
+            if (command[0] == kLaunch) rank_launch(command);
+            if (command[0] == kEndPass) rank_end_pass(std::uint32_t(command[1]), 0.0);
+            if (command[0] == kReset) local_reset();
+        }
+    } catch (const std::exception& e) {
+        // Rank 0 waits for this rank: nothing can go on without it.
+        fmt::print(stderr, "facet: error: MPI rank {}: {}\n", ranks_.rank(), e.what());
+        ranks_.abort(1);
+    }
+}
 
 std::vector<std::size_t> DeviceGroup::live() const {
     std::vector<std::size_t> out;
@@ -107,22 +158,9 @@ std::vector<DeviceGroup::Job> DeviceGroup::deal(std::uint64_t first, std::uint32
                                                 std::uint32_t row_count) const {
     const std::vector<std::size_t> devices = live();
     if (devices.empty()) throw Error("every OpenCL device failed; see the warnings above");
-    // Shares in proportion to the measured speeds (equal until every device is measured),
-    // rounded by largest remainder so that they add up to `count`.
-    const bool measured = std::all_of(devices.begin(), devices.end(), [&](std::size_t i) { return rate_[i] > 0.0; });
-    double total = 0.0;
-    for (std::size_t i : devices) total += measured ? rate_[i] : 1.0;
-    std::vector<std::uint32_t> share(devices.size());
-    std::vector<std::pair<double, std::size_t>> remainder;
-    std::uint32_t dealt = 0;
-    for (std::size_t k = 0; k < devices.size(); ++k) {
-        const double exact = double(count) * (measured ? rate_[devices[k]] : 1.0) / total;
-        share[k] = std::uint32_t(std::floor(exact));
-        dealt += share[k];
-        remainder.push_back({exact - std::floor(exact), k});
-    }
-    std::stable_sort(remainder.begin(), remainder.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (std::size_t r = 0; dealt < count; ++r, ++dealt) share[remainder[r % remainder.size()].second] += 1;
+    std::vector<double> rates;
+    for (std::size_t i : devices) rates.push_back(rate_[i]);
+    const std::vector<std::uint32_t> share = shares_by_rate(count, rates);
     std::vector<Job> jobs;
     std::uint64_t at = first;
     for (std::size_t k = 0; k < devices.size(); ++k) {
@@ -184,10 +222,67 @@ void DeviceGroup::run(std::vector<Job> jobs) {
 void DeviceGroup::launch(std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count) {
     if (count == 0 || row_begin >= std::uint32_t(height_)) return;
     row_count = std::min(row_count, std::uint32_t(height_) - row_begin);
-    run(deal(next_, count, row_begin, row_count));
+    if (ranks_.size() == 1) {
+        run(deal(next_, count, row_begin, row_count));
+        return;
+    }
+    // The band's samples dealt out between the ranks: [kLaunch, rows, (first, count) per rank].
+    std::vector<std::uint64_t> command{kLaunch, row_begin, row_count};
+    std::uint64_t at = next_;
+    for (std::uint32_t share : shares_by_rate(count, rank_rate_)) {
+        command.push_back(at);
+        command.push_back(share);
+        at += share;
+    }
+    ranks_.broadcast(command);
+    rank_launch(command);
+}
+
+void DeviceGroup::rank_launch(const std::vector<std::uint64_t>& command) {
+    const std::uint32_t row_begin = std::uint32_t(command[1]), row_count = std::uint32_t(command[2]);
+    const std::size_t mine = 3 + 2 * std::size_t(ranks_.rank());
+    const std::uint64_t first = command[mine];
+    const std::uint32_t count = std::uint32_t(command[mine + 1]);
+    const auto start = Clock::now();
+    if (count > 0) run(deal(first, count, row_begin, row_count));
+    const std::vector<double> seconds = ranks_.gather(since(start));
+    for (std::size_t r = 0; r < seconds.size(); ++r) {
+        const double pixel_samples = double(command[3 + 2 * r + 1]) * double(row_count) * double(width_);
+        if (pixel_samples == 0.0) continue;
+        rank_rate_[r] = pixel_samples / std::max(seconds[r], 1e-9);
+        rank_pixel_samples_[r] += std::uint64_t(pixel_samples);
+    }
 }
 
 void DeviceGroup::end_pass(std::uint32_t count, double seconds) {
+    if (ranks_.size() > 1) {
+        std::vector<std::uint64_t> command{kEndPass, count};
+        ranks_.broadcast(command);
+    }
+    rank_end_pass(count, seconds);
+}
+
+void DeviceGroup::rank_end_pass(std::uint32_t count, double seconds) {
+    commit();
+    if (ranks_.size() > 1) {
+        // The films of every rank summed to rank 0.
+        const auto start = Clock::now();
+        std::vector<float> local(2 * pixel_count() * 4, 0.0f);
+        for (const std::vector<float>& c : committed_)
+            for (std::size_t k = 0; k < local.size(); ++k) local[k] += c[k];
+        if (ranks_.leads()) reduced_.assign(local.size(), 0.0f);
+        ranks_.reduce_sum(local.data(), reduced_.data(), local.size());
+        reduce_seconds_ += since(start);
+    }
+    pass_jobs_.clear();
+    samples_.push_back({next_, next_ + count});
+    samples_ = normalized(samples_);
+    next_ += count;
+    stats_.samples_per_pixel = sample_count(samples_);
+    stats_.render_seconds += seconds;
+}
+
+void DeviceGroup::commit() {
     // Each device's sums read back; a device failing here loses its pass, dealt again.
     for (;;) {
         const std::vector<std::size_t> devices = live();
@@ -203,7 +298,7 @@ void DeviceGroup::end_pass(std::uint32_t count, double seconds) {
         }
         if (again.empty()) {
             for (std::size_t k = 0; k < devices.size(); ++k) committed_[devices[k]] = std::move(sums[k]);
-            break;
+            return;
         }
         std::erase_if(pass_jobs_, [&](const Job& j) { return !renderers_[j.device]; });
         std::vector<Job> jobs;
@@ -213,17 +308,20 @@ void DeviceGroup::end_pass(std::uint32_t count, double seconds) {
         }
         run(jobs);
     }
-    pass_jobs_.clear();
-    samples_.push_back({next_, next_ + count});
-    samples_ = normalized(samples_);
-    next_ += count;
-    stats_.samples_per_pixel = sample_count(samples_);
-    stats_.render_seconds += seconds;
 }
 
 void DeviceGroup::reset() {
+    if (ranks_.size() > 1) {
+        std::vector<std::uint64_t> command{kReset};
+        ranks_.broadcast(command);
+    }
+    local_reset();
+}
+
+void DeviceGroup::local_reset() {
     for (std::size_t i : live()) renderers_[i]->reset();
     for (std::vector<float>& c : committed_) std::fill(c.begin(), c.end(), 0.0f);
+    if (!reduced_.empty()) std::fill(reduced_.begin(), reduced_.end(), 0.0f);
     pass_jobs_.clear();
     samples_ = base_samples_;
     next_ = std::max(first_sample_, next_sample(base_samples_));
@@ -237,14 +335,19 @@ void DeviceGroup::restore(const std::vector<float>& sums, const SampleRanges& sa
     if (first_sample_ > 0 && first_sample_ < next_sample(samples))
         throw Error(fmt::format("the film holds samples {}: samples from {} would repeat some of them",
                                 describe(samples), first_sample_));
-    base_ = sums;
+    // Rank 0 holds the film; the other ranks add new samples only.
+    if (ranks_.leads()) base_ = sums;
     base_samples_ = normalized(samples);
     base_seconds_ = render_seconds;
-    reset();
+    local_reset();
 }
 
 std::vector<float> DeviceGroup::accumulation() const {
     std::vector<float> sums = base_.empty() ? std::vector<float>(2 * pixel_count() * 4, 0.0f) : base_;
+    if (ranks_.size() > 1) {
+        for (std::size_t k = 0; k < reduced_.size(); ++k) sums[k] += reduced_[k];
+        return sums;
+    }
     for (const std::vector<float>& c : committed_)
         for (std::size_t k = 0; k < sums.size(); ++k) sums[k] += c[k];
     return sums;
@@ -261,6 +364,7 @@ std::vector<float> DeviceGroup::image(double* rejected_samples) const {
 std::string DeviceGroup::description() const {
     std::string s;
     for (const DeviceShare& d : shares_) s += (s.empty() ? "" : " + ") + d.desc.platform + " / " + d.desc.name;
+    if (ranks_.size() > 1) s += fmt::format(" (rank 0 of {} MPI ranks)", ranks_.size());
     return s;
 }
 

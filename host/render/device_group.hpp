@@ -5,6 +5,13 @@
 // the films are summed on the host in device order. A device that fails is dropped with a
 // warning: the samples it finished in earlier passes are kept, and its shares of the
 // current pass are rendered again by the others. One device is the plain case.
+//
+// In an MPI job (render/mpi_ranks.hpp) every rank builds its own group; rank 0 runs the
+// progressive driver and each of its calls goes to every rank: a launch's samples are
+// dealt out between the ranks by their measured speeds (then between each rank's
+// devices), and at the end of a pass the films are summed to rank 0 (MPI_Reduce), whose
+// accumulation(), halves() and image() then describe the whole job. The other ranks
+// call follow() instead of rendering.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +24,7 @@
 #include "host/cl/runtime.hpp"
 #include "host/film/film_halves.hpp"
 #include "host/film/sample_ranges.hpp"
+#include "host/render/mpi_ranks.hpp"
 #include "host/render/pass_target.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/scene.hpp"
@@ -26,11 +34,11 @@ namespace facet {
 // What one device did.
 struct DeviceShare {
     DeviceDesc desc;
-    double build_s = 0.0;              // its program build
-    std::uint64_t pixel_samples = 0;   // samples it added, over all pixels
-    double busy_s = 0.0;               // seconds in its launches
-    bool dropped = false;              // failed and dropped
-    std::string error;                 // why
+    double build_s = 0.0;             // its program build
+    std::uint64_t pixel_samples = 0;  // samples it added, over all pixels
+    double busy_s = 0.0;              // seconds in its launches
+    bool dropped = false;             // failed and dropped
+    std::string error;                // why
     double samples_per_s() const { return busy_s > 0.0 ? double(pixel_samples) / busy_s : 0.0; }
 };
 
@@ -73,6 +81,13 @@ public:
     const std::vector<DeviceShare>& devices() const { return shares_; }
     // "platform / name", joined by " + " for several devices.
     std::string description() const;
+    // MPI: the job's ranks, each rank's share of the samples (at rank 0), and the seconds
+    // spent summing the films to rank 0.
+    const Ranks& ranks() const { return ranks_; }
+    const std::vector<std::uint64_t>& rank_pixel_samples() const { return rank_pixel_samples_; }
+    double reduce_seconds() const { return reduce_seconds_; }
+    // At ranks other than 0: does what rank 0's calls ask until its group ends.
+    void follow();
     // Called in a device's thread before each of its launches; an exception from it
     // counts as that device failing (the tests inject failures with it).
     std::function<void(std::size_t device)> before_launch;
@@ -95,22 +110,33 @@ private:
     // this pass is dealt again to the others, until all are done.
     void run(std::vector<Job> jobs);
     void drop(std::size_t device, const std::string& why);
+    // What every rank does for rank 0's launch, end of pass and reset.
+    void rank_launch(const std::vector<std::uint64_t>& command);
+    void rank_end_pass(std::uint32_t count, double seconds);
+    void local_reset();
+    void commit();
 
     int width_ = 0, height_ = 0;
     Warn warn_;
     std::vector<std::unique_ptr<ClContext>> contexts_;
     std::vector<std::unique_ptr<Renderer>> renderers_;  // null once dropped
     std::vector<DeviceShare> shares_;
-    std::vector<double> rate_;                  // pixel samples per second, as last measured
+    std::vector<double> rate_;                   // pixel samples per second, as last measured
     std::vector<std::vector<float>> committed_;  // each device's sums at the last pass end
-    std::vector<float> base_;                   // a restored film's sums
+    std::vector<float> base_;                    // a restored film's sums
     SampleRanges base_samples_;
     double base_seconds_ = 0.0;
     SampleRanges samples_;  // of the film: base and finished passes
     std::uint64_t first_sample_ = 0;
-    std::uint64_t next_ = 0;  // the index of the current pass's first sample
+    std::uint64_t next_ = 0;      // the index of the current pass's first sample
     std::vector<Job> pass_jobs_;  // the current pass's jobs, to deal again if a device fails
     RenderStats stats_;
+    const Ranks& ranks_ = Ranks::world();
+    std::vector<double> rank_rate_;                  // at rank 0: each rank's pixel samples per second
+    std::vector<std::uint64_t> rank_pixel_samples_;  // at rank 0
+    std::vector<float> reduced_;                     // at rank 0: every rank's sums
+    double reduce_seconds_ = 0.0;
+    bool followers_stopped_ = false;
 };
 
 }  // namespace facet

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# MPI ranks on one image: `mpirun -n 2` (two ranks on this machine, one PoCL thread each)
+# gives the image of one process rendering the same samples, as do two devices in one
+# process and two ranks of two devices each (determinism up to float summation order);
+# --resume and --film work on rank 0. Skipped without mpirun or a facet built without MPI.
+source "$(dirname "${BASH_SOURCE[0]}")/common.bash"
+cd "$tmp" || exit 1
+export POCL_MAX_PTHREAD_COUNT=1
+# Open MPI refuses root unless told (CI containers run as root).
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+opts=(--width 24 --height 24 --seed 7 --spp 12)
+
+rmse_below() {
+    local r
+    r=$("$FACET" compare "$1" "$2" 2>/dev/null | awk '$1 == "rmse" { print $2 }')
+    [ -n "$r" ] && awk -v r="$r" -v l="$3" 'BEGIN { exit !(r + 0 <= l + 0) }' || { echo "    rmse $r"; return 1; }
+}
+
+if ! command -v mpirun >/dev/null; then
+    skip "mpi (no mpirun: apt-get install openmpi-bin)"
+    finish
+    exit
+fi
+mpi=(timeout 240 mpirun -n 2 --oversubscribe)
+run one-process 0 "wrote" -- "$FACET" render "$scene" "${opts[@]}" --quiet --out "$tmp/one.exr"
+run two-ranks 0 "rank     1: .*% of the samples" -- "${mpi[@]}" "$FACET" render "$scene" "${opts[@]}" \
+    --out "$tmp/ranks.exr" --film "$tmp/ranks.film"
+if ! grep -q "rank     1" "$tmp/log"; then
+    skip "mpi (facet built without MPI: -DFACET_MPI=ON with libopenmpi-dev)"
+    finish
+    exit
+fi
+check two-ranks-equal-one-process rmse_below "$tmp/ranks.exr" "$tmp/one.exr" 1e-5
+check film-of-the-whole-job grep -aq '"spp": 12,' "$tmp/ranks.film"
+check one-report test -s "$tmp/ranks.csv"
+run two-devices 0 "wrote" -- "$FACET" render "$scene" "${opts[@]}" --quiet --device 0,0 --out "$tmp/devices.exr"
+check two-devices-equal-one-process rmse_below "$tmp/devices.exr" "$tmp/one.exr" 1e-5
+run two-ranks-two-devices 0 "wrote" -- "${mpi[@]}" "$FACET" render "$scene" "${opts[@]}" --quiet --device 0,0 \
+    --out "$tmp/both.exr"
+check ranks-and-devices-equal-one-process rmse_below "$tmp/both.exr" "$tmp/one.exr" 1e-5
+# Resumed by two ranks: samples 12..19, the image of one process rendering 20.
+run one-process-20 0 "wrote" -- "$FACET" render "$scene" --width 24 --height 24 --seed 7 --spp 20 --quiet \
+    --out "$tmp/one20.exr"
+run ranks-resume 0 "wrote .*20 spp" -- "${mpi[@]}" "$FACET" render "$scene" --width 24 --height 24 --seed 7 --spp 20 \
+    --quiet --resume "$tmp/ranks.film" --out "$tmp/resumed.exr"
+check ranks-resume-equals-one-process rmse_below "$tmp/resumed.exr" "$tmp/one20.exr" 1e-5
+finish
