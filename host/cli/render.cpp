@@ -6,6 +6,7 @@
 // (exit 130); SIGPIPE is ignored (cli/stop_signals.hpp, cli/console.hpp).
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -246,6 +247,8 @@ int run_render(const RenderOptions& opt) {
     const double compile_s = renderer.stats().compile_seconds;
     if (resumed) renderer.restore(resumed->sums, resumed->samples, resumed->render_seconds);
     if (!renderer.ranks().leads()) {  // an MPI rank other than 0: renders what rank 0 deals out
+        // Ctrl-C on mpirun reaches every rank: rank 0 ends the pass, writes, and stops the others.
+        for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, SIG_IGN);
         renderer.follow();
         return kExitOk;
     }

@@ -44,4 +44,17 @@ run one-process-20 0 "wrote" -- "$FACET" render "$scene" --width 24 --height 24 
 run ranks-resume 0 "wrote .*20 spp" -- "${mpi[@]}" "$FACET" render "$scene" --width 24 --height 24 --seed 7 --spp 20 \
     --quiet --resume "$tmp/ranks.film" --out "$tmp/resumed.exr"
 check ranks-resume-equals-one-process rmse_below "$tmp/resumed.exr" "$tmp/one20.exr" 1e-5
+# Ctrl-C on mpirun: rank 0 ends the pass and writes the whole job's samples, the film too.
+mpirun -n 2 --oversubscribe "$FACET" render "$scene" --width 24 --height 24 --spp 1000000 --out "$tmp/int/i.exr" \
+    >"$tmp/int.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+    [ -s "$tmp/int/i.csv" ] && break
+    sleep 0.1
+done
+kill -INT "$pid"
+wait "$pid"
+cp "$tmp/int.log" "$tmp/log"
+check interrupt-writes-image readable_image "$tmp/int/i.exr"
+check interrupt-writes-film eval 'test -s "$tmp/int/i.film" && grep -q "interrupted; wrote the" "$tmp/log"'
 finish
