@@ -155,18 +155,6 @@ ImageRGB read_image(const std::string& path) {
     }
 }
 
-ImageRGB read_reference(const std::string& path, int width, int height) {
-    ImageRGB ref = read_image(path);
-    if (ref.width != width || ref.height != height)
-        throw Error(fmt::format("reference {}: the reference is {}x{} but the render is {}x{}", path, ref.width,
-                                ref.height, width, height));
-    for (std::size_t i = 0; i < ref.rgb.size(); ++i)
-        if (!std::isfinite(ref.rgb[i]))
-            throw Error(fmt::format("reference {}: channel {} of pixel ({}, {}) is not finite", path, i % 3,
-                                    (i / 3) % std::size_t(width), (i / 3) / std::size_t(width)));
-    return ref;
-}
-
 // OpenEXR reads a file's whole chunk-offset table when it opens it, sized from the
 // header, and each header attribute at its declared size: a few hundred corrupt bytes
 // can claim a 1.7 GB attribute or 2^31 lines and take gigabytes and seconds before
@@ -275,10 +263,6 @@ bool can_write_float_image(const std::string& path, std::string* why) {
     std::unique_ptr<ImageOutput> out = ImageOutput::create(path);
     if (!out) return refuse(fmt::format("this OpenImageIO cannot write {} files: {}", ext, OIIO::geterror()));
     return true;
-}
-
-std::string replace_extension(const std::string& path, const std::string& ext) {
-    return fs::path(path).replace_extension(ext).string();
 }
 
 }  // namespace facet
