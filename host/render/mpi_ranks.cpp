@@ -96,11 +96,13 @@ void Ranks::reduce_sum(const float* in, float* out, std::size_t n) const {
 
 bool Ranks::all(bool ok) const {
     if (size_ == 1) return ok;
-    int mine = ok ? 1 : 0, every = 0;
 #if FACET_WITH_MPI
+    int mine = ok ? 1 : 0, every = 0;
     check(MPI_Allreduce(&mine, &every, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
-#endif
     return every == 1;
+#else
+    return ok;
+#endif
 }
 
 void Ranks::abort(int code) const {
