@@ -102,8 +102,8 @@ struct PfmHeader {
 PfmHeader parse_pfm_header(const std::string& path, const std::string& data) {
     PfmHeader h;
     if (data.size() < 3 || data[0] != 'P' || (data[1] != 'F' && data[1] != 'f'))
-        throw Error(fmt::format("{}: not a PFM image (this facet is built without OpenImageIO and reads .pfm only)",
-                                path));
+        throw Error(
+            fmt::format("{}: not a PFM image (this facet is built without OpenImageIO and reads .pfm only)", path));
     h.channels = data[1] == 'F' ? 3 : 1;
     std::istringstream in(data.substr(2, 256));
     double scale = 0.0;
@@ -189,9 +189,10 @@ ImageRGB read_image(const std::string& path) {
 bool can_write_float_image(const std::string& path, std::string* why) {
     if (lower_extension(path) == ".pfm") return true;
     if (why)
-        *why = fmt::format("this facet is built without OpenImageIO (FACET_OIIO=OFF) and writes linear images as "
-                           ".pfm only: give {}",
-                           replace_extension(path, ".pfm"));
+        *why = fmt::format(
+            "this facet is built without OpenImageIO (FACET_OIIO=OFF) and writes linear images as "
+            ".pfm only: give {}",
+            replace_extension(path, ".pfm"));
     return false;
 }
 

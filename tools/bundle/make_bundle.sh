@@ -31,7 +31,7 @@ for b in "${bins[@]}"; do ldd "$b"; done | awk '$2 == "=>" && $3 ~ /^\// { print
     while read -r name path; do
         [[ $name =~ $skip ]] || cp -L "$path" "$out/lib/$name"
     done
-loader=$(ldconfig -p | awk '/libOpenCL\.so\.1 / { print $NF; exit }')
+loader=$(ldconfig -p | awk '/libOpenCL\.so\.1 / && !found { print $NF; found = 1 }')
 [ -n "$loader" ] || { echo "make_bundle: no libOpenCL.so.1 (apt-get install ocl-icd-libopencl1)" >&2; exit 1; }
 cp -L "$loader" "$out/lib/libOpenCL.so.1"
 strip --strip-unneeded "$out"/lib/* 2>/dev/null || true
