@@ -48,6 +48,8 @@ std::vector<std::exception_ptr> for_each_concurrently(std::size_t n, F&& f) {
     return errors;
 }
 
+}  // namespace
+
 // `count` dealt out in proportion to `rates` (equal until every rate is measured),
 // rounded by largest remainder so that the shares add up to `count`.
 std::vector<std::uint32_t> shares_by_rate(std::uint32_t count, const std::vector<double>& rates) {
@@ -68,11 +70,6 @@ std::vector<std::uint32_t> shares_by_rate(std::uint32_t count, const std::vector
     for (std::size_t r = 0; dealt < count; ++r, ++dealt) share[remainder[r % remainder.size()].second] += 1;
     return share;
 }
-
-// Rank 0's commands to the other ranks: the first word, then its arguments.
-enum Command : std::uint64_t { kLaunch = 1, kEndPass = 2, kReset = 3, kStop = 4 };
-
-}  // namespace
 
 DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, const Bvh& bvh, bool generic,
                          std::uint64_t first_sample, Warn warn)
@@ -106,34 +103,6 @@ DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, co
         stats_.compile_seconds = std::max(stats_.compile_seconds, s.compile_seconds);
         stats_.upload_seconds = std::max(stats_.upload_seconds, s.upload_seconds);
         stats_.features = s.features;
-    }
-}
-
-DeviceGroup::~DeviceGroup() {
-    if (ranks_.size() > 1 && ranks_.leads() && !followers_stopped_) {
-        try {
-            std::vector<std::uint64_t> stop{kStop};
-            ranks_.broadcast(stop);
-        } catch (...) {  // the job is ending either way
-        }
-    }
-}
-
-void DeviceGroup::follow() {
-    if (ranks_.leads()) return;
-    try {
-        for (;;) {
-            std::vector<std::uint64_t> command;
-            ranks_.broadcast(command);
-            if (command.empty() || command[0] == kStop) return;
-            if (command[0] == kLaunch) rank_launch(command);
-            if (command[0] == kEndPass) rank_end_pass(std::uint32_t(command[1]), 0.0);
-            if (command[0] == kReset) local_reset();
-        }
-    } catch (const std::exception& e) {
-        // Rank 0 waits for this rank: nothing can go on without it.
-        fmt::print(stderr, "facet: error: MPI rank {}: {}\n", ranks_.rank(), e.what());
-        ranks_.abort(1);
     }
 }
 
@@ -219,69 +188,6 @@ void DeviceGroup::run(std::vector<Job> jobs) {
     }
 }
 
-void DeviceGroup::launch(std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count) {
-    if (count == 0 || row_begin >= std::uint32_t(height_)) return;
-    row_count = std::min(row_count, std::uint32_t(height_) - row_begin);
-    if (ranks_.size() == 1) {
-        run(deal(next_, count, row_begin, row_count));
-        return;
-    }
-    // The band's samples dealt out between the ranks: [kLaunch, rows, (first, count) per rank].
-    std::vector<std::uint64_t> command{kLaunch, row_begin, row_count};
-    std::uint64_t at = next_;
-    for (std::uint32_t share : shares_by_rate(count, rank_rate_)) {
-        command.push_back(at);
-        command.push_back(share);
-        at += share;
-    }
-    ranks_.broadcast(command);
-    rank_launch(command);
-}
-
-void DeviceGroup::rank_launch(const std::vector<std::uint64_t>& command) {
-    const std::uint32_t row_begin = std::uint32_t(command[1]), row_count = std::uint32_t(command[2]);
-    const std::size_t mine = 3 + 2 * std::size_t(ranks_.rank());
-    const std::uint64_t first = command[mine];
-    const std::uint32_t count = std::uint32_t(command[mine + 1]);
-    const auto start = Clock::now();
-    if (count > 0) run(deal(first, count, row_begin, row_count));
-    const std::vector<double> seconds = ranks_.gather(since(start));
-    for (std::size_t r = 0; r < seconds.size(); ++r) {
-        const double pixel_samples = double(command[3 + 2 * r + 1]) * double(row_count) * double(width_);
-        if (pixel_samples == 0.0) continue;
-        rank_rate_[r] = pixel_samples / std::max(seconds[r], 1e-9);
-        rank_pixel_samples_[r] += std::uint64_t(pixel_samples);
-    }
-}
-
-void DeviceGroup::end_pass(std::uint32_t count, double seconds) {
-    if (ranks_.size() > 1) {
-        std::vector<std::uint64_t> command{kEndPass, count};
-        ranks_.broadcast(command);
-    }
-    rank_end_pass(count, seconds);
-}
-
-void DeviceGroup::rank_end_pass(std::uint32_t count, double seconds) {
-    commit();
-    if (ranks_.size() > 1) {
-        // The films of every rank summed to rank 0.
-        const auto start = Clock::now();
-        std::vector<float> local(2 * pixel_count() * 4, 0.0f);
-        for (const std::vector<float>& c : committed_)
-            for (std::size_t k = 0; k < local.size(); ++k) local[k] += c[k];
-        if (ranks_.leads()) reduced_.assign(local.size(), 0.0f);
-        ranks_.reduce_sum(local.data(), reduced_.data(), local.size());
-        reduce_seconds_ += since(start);
-    }
-    pass_jobs_.clear();
-    samples_.push_back({next_, next_ + count});
-    samples_ = normalized(samples_);
-    next_ += count;
-    stats_.samples_per_pixel = sample_count(samples_);
-    stats_.render_seconds += seconds;
-}
-
 void DeviceGroup::commit() {
     // Each device's sums read back; a device failing here loses its pass, dealt again.
     for (;;) {
@@ -308,14 +214,6 @@ void DeviceGroup::commit() {
         }
         run(jobs);
     }
-}
-
-void DeviceGroup::reset() {
-    if (ranks_.size() > 1) {
-        std::vector<std::uint64_t> command{kReset};
-        ranks_.broadcast(command);
-    }
-    local_reset();
 }
 
 void DeviceGroup::local_reset() {

@@ -42,6 +42,10 @@ struct DeviceShare {
     double samples_per_s() const { return busy_s > 0.0 ? double(pixel_samples) / busy_s : 0.0; }
 };
 
+// `count` samples dealt out in proportion to `rates` (equal shares until every rate is
+// measured), rounded by largest remainder so that the shares add up to `count`.
+std::vector<std::uint32_t> shares_by_rate(std::uint32_t count, const std::vector<double>& rates);
+
 class DeviceGroup : public PassTarget {
 public:
     using Warn = std::function<void(const std::string&)>;
