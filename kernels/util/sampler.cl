@@ -66,8 +66,6 @@ inline uint sobol_dimension(uint i, uint d) {
 
 inline uint hash_pair(uint a, uint b) { return (uint)mix64(((ulong)a << 32) | (ulong)b); }
 
-inline float bits_to_unit(uint x) { return (float)(x >> 8) * 0x1p-24f; }
-
 inline Sampler sampler_init(uint kind, uint seed, uint pixel, uint sample) {
     Sampler s;
     s.kind = kind;
@@ -112,7 +110,7 @@ inline float4 sampler_get4(Sampler* s, uint set) {
     rev.x = i;
     uint4 seeds = (uint4)(hash_pair(seed, 1u), hash_pair(seed, 2u), hash_pair(seed, 3u), hash_pair(seed, 4u));
     uint4 x = nested_uniform_scramble4_reversed(rev, seeds);
-    return convert_float4(x >> 8) * 0x1p-24f;
+    return convert_float4(x >> 8) * 0x1p-24f; /* the top 24 bits: every float in [0, 1) exact */
 }
 
 #endif
