@@ -6,7 +6,12 @@
  * sampling the BSDF and hitting an emitter, and the two are combined by multiple
  * importance sampling with the power heuristic (Veach 1997, ch. 9). Paths end at
  * max_depth bounces or by Russian roulette after rr_depth bounces (survival
- * probability = the path throughput's largest channel, pbrt-v4's rule).
+ * probability = the largest channel of the path throughput times eta_scale, at most
+ * 0.95; pbrt-v4's and Mitsuba 3's rule). eta_scale is the product of etap^2 over the
+ * refractions so far: a refraction's weight carries the radiance scaling 1 / etap^2
+ * (dielectric.cl), which the way out of the medium undoes, so without it roulette would
+ * kill most paths inside glass (survival 1 / 2.25 at ior 1.5, 1 / 5.76 in diamond) and
+ * the survivors would return as fireflies (docs/sampling.md, "Russian roulette").
  *
  * Dielectrics transmit: a sampled or light direction may cross the surface, and the
  * next ray then starts on the far side (offset along -ng); inside or outside is read
@@ -78,6 +83,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
     __constant const FcRenderParams* P = sc->params;
     float3 radiance = (float3)(0.0f);
     float3 throughput = (float3)(1.0f);
+    float eta_scale = 1.0f;         /* product of etap^2 over the refractions (roulette only) */
     float prev_bsdf_pdf = INFINITY; /* density of the sampled direction; camera rays: a delta */
     for (uint depth = 0;; ++depth) {
         Hit hit;
@@ -144,9 +150,11 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         if (!(side * bs.wi.z > 0.0f)) break;
         throughput *= bs.weight;
         prev_bsdf_pdf = bs.delta ? INFINITY : bs.pdf;
+        /* A refraction (wi below, wo above) from the side of relative index mat.ior. */
+        if (bs.wi.z < 0.0f) eta_scale *= mat.ior * mat.ior;
 
         if (depth + 1u >= P->rr_depth) {
-            float survive = fmin(max3(throughput), 0.95f);
+            float survive = fmin(max3(throughput) * eta_scale, 0.95f);
             if (ub.w >= survive) break;
             throughput /= survive;
         }
