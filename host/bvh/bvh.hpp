@@ -22,6 +22,7 @@ struct BvhOptions {
 struct BvhStats {
     std::size_t triangles = 0;
     std::size_t nodes = 0;         // FcBvhNode count (each holds up to four children)
+    std::size_t leaf_blocks = 0;   // FcTriBlock count (four triangle lanes each)
     std::size_t binary_nodes = 0;  // nodes of the binary SAH tree it was collapsed from
     std::size_t leaves = 0;
     int max_depth = 0;  // 4-wide nodes on the longest root-to-leaf path
@@ -30,14 +31,21 @@ struct BvhStats {
     double build_seconds = 0.0;    // all of build_bvh: filtering and per-triangle bounds, the
                                    // binary SAH build, the 4-wide collapse, the packed
                                    // triangles in leaf order, freeing the builder's buffers
-    std::size_t device_bytes = 0;  // nodes + triangles as uploaded
+    std::size_t device_bytes = 0;  // node buffer (nodes + leaf blocks) + triangles as uploaded
 };
 
 struct Bvh {
-    std::vector<FcBvhNode> nodes;       // nodes[0] is the root
+    // The node buffer as uploaded: nodes[0, stats.nodes) are the tree (nodes[0] the root),
+    // the rest holds the leaves' FcTriBlock, addressed in 16-byte rows from the start
+    // (kernels/shared/bvh_layout.h); read them with leaf_block().
+    std::vector<FcBvhNode> nodes;
     std::vector<FcTriangle> triangles;  // reordered; FcTriangle::prim is the input index
     BvhStats stats;
 };
+
+// The leaf block at 16-byte row `row` of the node buffer (a leaf's FcBvhNode::index,
+// plus 10 rows per further block); throws an Error naming the row when it is outside.
+FcTriBlock leaf_block(const Bvh& bvh, std::int64_t row);
 
 // Builds the tree over `vertices`, three consecutive entries per triangle
 // (vertices.size() must be a multiple of 3). Degenerate (zero-area) and non-finite
