@@ -16,7 +16,9 @@ struct BvhOptions {
     int max_leaf_size = 8;           // a leaf never holds more triangles than this
     int exact_max = 16;              // ranges up to this size get the exact SAH sweep (0: bin everywhere)
     float traversal_cost = 1.0f;     // SAH cost of visiting a node, relative to...
-    float intersection_cost = 1.0f;  // ...the cost of one ray/triangle test
+    float intersection_cost = 1.0f;  // ...the cost of one ray/triangle block test
+    int block_size = 4;              // triangles tested at once (FcTriBlock lanes): a leaf of n costs
+                                     // ceil(n / block_size) tests (Embree's blocked SAH); 1, 2, 4 or 8
 };
 
 struct BvhStats {
@@ -27,7 +29,8 @@ struct BvhStats {
     std::size_t leaves = 0;
     int max_depth = 0;  // 4-wide nodes on the longest root-to-leaf path
     int max_leaf_size = 0;
-    double sah_cost = 0.0;         // of the binary SAH tree, normalised by the root's surface area
+    double sah_cost = 0.0;         // of the binary SAH tree (leaves counted in blocks of
+                                   // BvhOptions::block_size), normalised by the root's surface area
     double build_seconds = 0.0;    // all of build_bvh: filtering and per-triangle bounds, the
                                    // binary SAH build, the 4-wide collapse, the packed
                                    // triangles in leaf order, freeing the builder's buffers
