@@ -434,7 +434,7 @@ int run(int argc, char** argv) {
                 bench_scene(ctx, c, quick, only == "build", trace_local, bvh_options, build_md, trace_md, render_md));
         }
         bench_print(
-            "\n### BVH build (one thread; SAH cost normalised by the root's area, traversal = intersection = 1)\n\n{}",
+            "\n### BVH build (one thread; SAH cost normalised by the root's area, traversal = one 4-triangle block test = 1)\n\n{}",
             build_md.str());
         if (only != "build") {
             bench_print(
