@@ -509,5 +509,45 @@ TEST(Bvh, OffsetOriginAvoidsSelfHits) {
     }
 }
 
+// A surface in the plane x = 0 of a large scene: the origin offset along x is the small
+// fixed one (ray.cl: coordinates near 0), far below the rounding of the other
+// coordinates, so only the triangle test's error bound on t keeps the ray off the
+// surface it leaves. The wall and a second quad share one leaf block (LargeScene's lit
+// wall, where half the shadow rays were blocked by the wall at 1e5 and up).
+TEST(Bvh, NoSelfHitsOnAPlaneThroughZeroAtLargeScale) {
+    for (float scale : {1.0f, 1e5f, 1e10f}) {
+        const glm::vec3 w0 = scale * glm::vec3(0.0f, -1.0f, -1.0f), wy = scale * glm::vec3(0.0f, 2.0f, 0.0f),
+                        wz = scale * glm::vec3(0.0f, 0.0f, 2.0f);
+        const glm::vec3 l0 = scale * glm::vec3(0.0f, 2.0f, -1.0f), lx = scale * glm::vec3(2.0f, 0.0f, 0.0f);
+        std::vector<glm::vec3> soup = {w0, w0 + wy, w0 + wy + wz, w0, w0 + wy + wz, w0 + wz,
+                                       l0, l0 + lx, l0 + lx + wz, l0, l0 + lx + wz, l0 + wz};
+        Bvh bvh = build_bvh(soup);
+        ASSERT_EQ(bvh.stats.leaves, 1u);
+        std::mt19937 rng(6);
+        std::uniform_real_distribution<float> u01(0.0f, 1.0f), u(-1.0f, 1.0f);
+        std::vector<glm::vec4> points, normals;
+        std::vector<glm::vec3> dirs;
+        for (int i = 0; i < 4096; ++i) {
+            points.emplace_back(w0 + u01(rng) * wy + u01(rng) * wz, 0.0f);
+            normals.emplace_back(1.0f, 0.0f, 0.0f, 0.0f);
+            dirs.emplace_back(0.05f + u01(rng), u(rng), u(rng));  // leaving on the +x side
+        }
+        auto& ctx = test::context();
+        cl::Kernel k(test::program("kernels/test/trace_kernels.cl"), "offset_origins");
+        cl::Buffer pb = upload(points), nb = upload(normals);
+        cl::Buffer ob(ctx.context(), CL_MEM_WRITE_ONLY, points.size() * sizeof(glm::vec4));
+        k.setArg(0, pb), k.setArg(1, nb), k.setArg(2, ob);
+        ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(points.size()));
+        std::vector<glm::vec4> origins(points.size());
+        ctx.queue().enqueueReadBuffer(ob, CL_TRUE, 0, origins.size() * sizeof(glm::vec4), origins.data());
+        Rays rays;
+        for (std::size_t i = 0; i < origins.size(); ++i) rays.add(glm::vec3(origins[i]), dirs[i]);
+        Result r = expect_agreement(bvh, soup, rays);
+        int self = 0;
+        for (std::size_t i = 0; i < origins.size(); ++i) self += r.prim(i) == 0 || r.prim(i) == 1;
+        EXPECT_EQ(self, 0) << "scale " << scale;
+    }
+}
+
 }  // namespace
 }  // namespace facet

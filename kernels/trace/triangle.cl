@@ -57,6 +57,11 @@ inline Tri4 tri4_load(__global const float4* rows, const TriRay* r) {
     return p;
 }
 
+/* gamma(n) = n eps / (1 - n eps), eps = 2^-24: bounds of n roundings (pbrt-v3 3.9.1). */
+#define FC_GAMMA2 1.1920930376163766e-07f
+#define FC_GAMMA3 1.788139663006007e-07f
+#define FC_GAMMA5 2.9802331269482156e-07f
+
 /* a*b - c*d with an error under 1.5 ulps, so its sign is exact (Kahan's algorithm
  * with fma); the paper falls back to double precision instead, which OpenCL C 1.2
  * devices need not have. */
@@ -66,7 +71,7 @@ inline float4 diff_of_products4(float4 a, float4 b, float4 c, float4 d) {
     return fma(a, b, -cd) + err;
 }
 
-/* Lanes hit with 0 < t < tmax: -1 in the mask; their distance in *t and their scaled
+/* Lanes hit with t < tmax and t above its rounding error (below): -1 in the mask; their distance in *t and their scaled
  * barycentrics (edge functions v, w of vertices b and c, and their sum det) for
  * tri4_weights(). Lanes whose three vertices are equal (a block's padding) never hit. */
 inline int4 tri4_hit(const TriRay* r, const Tri4* p, float tmax, float4* t_out, float4* v_out, float4* w_out,
@@ -104,11 +109,25 @@ inline int4 tri4_hit(const TriRay* r, const Tri4* p, float tmax, float4* t_out, 
      * format allows 1e18): then weight the distances by the barycentrics instead. */
     const int4 overflow = ~isfinite(tt);
     if (any(overflow)) t = select(t, (u / det) * az + (v / det) * bz + (w / det) * cz, overflow);
+    /* A hit nearer than the rounding error of t is no hit (pbrt-v3 section 3.9.6, its
+     * deltaT, with the error of the edge functions and of the sheared coordinates): a ray
+     * leaving a surface whose origin offset (ray.cl) is below the rounding of the other
+     * triangles' coordinates cannot hit that surface again. The edge function terms are
+     * divided by det before they meet the distances, so that the bound does not overflow
+     * at the scene format's 1e18. */
+    const float4 max_x = fmax(fmax(fabs(ax), fabs(bx)), fabs(cx));
+    const float4 max_y = fmax(fmax(fabs(ay), fabs(by)), fabs(cy));
+    const float4 max_z = fmax(fmax(fabs(az), fabs(bz)), fabs(cz));
+    const float4 inv_det = fabs(1.0f / det);
+    const float4 delta_x = FC_GAMMA5 * (max_x + max_z), delta_y = FC_GAMMA5 * (max_y + max_z);
+    const float4 delta_e = 2.0f * (FC_GAMMA2 * max_x * max_y + delta_y * max_x + delta_x * max_y) * inv_det;
+    const float4 max_e = fmax(fmax(fabs(u), fabs(v)), fabs(w)) * inv_det;
+    const float4 delta_t = 3.0f * (FC_GAMMA3 * max_e * max_z + delta_e * max_z + FC_GAMMA3 * max_z * max_e);
     *t_out = t;
     *v_out = v;
     *w_out = w;
     *det_out = det;
-    return ~miss & (t > 0.0f) & (t < tmax);
+    return ~miss & (t > delta_t) & (t < tmax);
 }
 
 /* The barycentric weights u (of vertex b) and v (of c) of lane `lane`. */
