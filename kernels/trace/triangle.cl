@@ -114,20 +114,24 @@ inline int4 tri4_hit(const TriRay* r, const Tri4* p, float tmax, float4* t_out, 
      * leaving a surface whose origin offset (ray.cl) is below the rounding of the other
      * triangles' coordinates cannot hit that surface again. The edge function terms are
      * divided by det before they meet the distances, so that the bound does not overflow
-     * at the scene format's 1e18. */
-    const float4 max_x = fmax(fmax(fabs(ax), fabs(bx)), fabs(cx));
-    const float4 max_y = fmax(fmax(fabs(ay), fabs(by)), fabs(cy));
-    const float4 max_z = fmax(fmax(fabs(az), fabs(bz)), fabs(cz));
-    const float4 inv_det = fabs(1.0f / det);
-    const float4 delta_x = FC_GAMMA5 * (max_x + max_z), delta_y = FC_GAMMA5 * (max_y + max_z);
-    const float4 delta_e = 2.0f * (FC_GAMMA2 * max_x * max_y + delta_y * max_x + delta_x * max_y) * inv_det;
-    const float4 max_e = fmax(fmax(fabs(u), fabs(v)), fabs(w)) * inv_det;
-    const float4 delta_t = 3.0f * (FC_GAMMA3 * max_e * max_z + delta_e * max_z + FC_GAMMA3 * max_z * max_e);
+     * at the scene format's 1e18. Only blocks with a hit pay for it (most have none). */
+    int4 hit = ~miss & (t > 0.0f) & (t < tmax);
+    if (any(hit)) {
+        const float4 max_x = fmax(fmax(fabs(ax), fabs(bx)), fabs(cx));
+        const float4 max_y = fmax(fmax(fabs(ay), fabs(by)), fabs(cy));
+        const float4 max_z = fmax(fmax(fabs(az), fabs(bz)), fabs(cz));
+        const float4 inv_det = fabs(1.0f / det);
+        const float4 delta_x = FC_GAMMA5 * (max_x + max_z), delta_y = FC_GAMMA5 * (max_y + max_z);
+        const float4 delta_e = 2.0f * (FC_GAMMA2 * max_x * max_y + delta_y * max_x + delta_x * max_y) * inv_det;
+        const float4 max_e = fmax(fmax(fabs(u), fabs(v)), fabs(w)) * inv_det;
+        const float4 delta_t = 3.0f * (FC_GAMMA3 * max_e * max_z + delta_e * max_z + FC_GAMMA3 * max_z * max_e);
+        hit &= t > delta_t;
+    }
     *t_out = t;
     *v_out = v;
     *w_out = w;
     *det_out = det;
-    return ~miss & (t > delta_t) & (t < tmax);
+    return hit;
 }
 
 /* The barycentric weights u (of vertex b) and v (of c) of lane `lane`. */
