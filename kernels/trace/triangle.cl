@@ -4,7 +4,8 @@
  * test's, bit for bit (Embree's triangle4 leaves do the same with SSE/AVX lanes). The
  * vertices are translated to the ray origin and sheared so the ray runs along +z; the
  * 2D edge functions of a shared edge are then computed from identical values in both
- * triangles, so a ray through an edge or a vertex cannot slip between neighbours. No
+ * triangles, so a ray through an edge or a vertex cannot slip between neighbours. A hit
+ * nearer than the rounding error of its distance is no hit (pbrt-v3 section 3.9.6). No
  * backface culling. */
 #ifndef FACET_TRACE_TRIANGLE_CL
 #define FACET_TRACE_TRIANGLE_CL
