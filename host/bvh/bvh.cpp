@@ -1,6 +1,6 @@
 // build_bvh: filters the triangle soup, runs the binned SAH builder
-// (bvh/sah_builder.cpp), collapses its binary tree into 4-wide nodes and lays the
-// triangles out in leaf order.
+// (bvh/sah_builder.cpp), collapses its binary tree into 4-wide nodes, lays the
+// triangles out in leaf order and appends the leaves' four-triangle blocks to the nodes.
 #include "host/bvh/bvh.hpp"
 
 #include <chrono>
@@ -97,7 +97,56 @@ int collapse(const std::vector<bvh_detail::BinaryNode>& bin, std::vector<FcBvhNo
     return max_depth;
 }
 
+constexpr std::int64_t kRowsPerNode = sizeof(FcBvhNode) / 16, kRowsPerBlock = sizeof(FcTriBlock) / 16;
+static_assert(sizeof(FcBvhNode) % 16 == 0 && sizeof(FcTriBlock) % 16 == 0, "the node buffer is addressed in rows");
+
+// Appends the leaves' triangles to the node buffer as FcTriBlock, in node order, and
+// points every leaf slot at its first block (a row index).
+std::size_t pack_leaf_blocks(std::vector<FcBvhNode>& nodes, const std::vector<FcTriangle>& tris) {
+    const std::size_t tree_nodes = nodes.size();
+    std::vector<FcTriBlock> blocks;
+    blocks.reserve(tris.size() / 2 + 1);
+    const std::int64_t base = static_cast<std::int64_t>(tree_nodes) * kRowsPerNode;
+    for (std::size_t n = 0; n < tree_nodes; ++n)
+        for (int k = 0; k < 4; ++k) {
+            FcBvhNode& node = nodes[n];
+            if (node.count[k] <= 0) continue;
+            const std::int64_t row = base + static_cast<std::int64_t>(blocks.size()) * kRowsPerBlock;
+            if (row + ((node.count[k] + 3) / 4) * kRowsPerBlock > INT32_MAX)
+                throw Error("build_bvh: the node buffer outgrows 32-bit row indices (" + std::to_string(tris.size()) +
+                            " triangles)");
+            const std::int32_t first = node.index[k];
+            for (std::int32_t b = 0; b < node.count[k]; b += 4) {
+                FcTriBlock& blk = blocks.emplace_back();
+                std::memset(&blk, 0, sizeof blk);
+                for (int lane = 0; lane < 4; ++lane) {
+                    blk.tri[lane] = -1;
+                    if (b + lane >= node.count[k]) continue;
+                    const FcTriangle& t = tris[static_cast<std::size_t>(first + b + lane)];
+                    blk.x0[lane] = t.v0[0], blk.y0[lane] = t.v0[1], blk.z0[lane] = t.v0[2];
+                    blk.x1[lane] = t.v1[0], blk.y1[lane] = t.v1[1], blk.z1[lane] = t.v1[2];
+                    blk.x2[lane] = t.v2[0], blk.y2[lane] = t.v2[1], blk.z2[lane] = t.v2[2];
+                    blk.tri[lane] = first + b + lane;
+                }
+            }
+            node.index[k] = static_cast<std::int32_t>(row);
+        }
+    const std::size_t bytes = blocks.size() * sizeof(FcTriBlock);
+    nodes.resize(tree_nodes + (bytes + sizeof(FcBvhNode) - 1) / sizeof(FcBvhNode));
+    if (bytes) std::memcpy(reinterpret_cast<unsigned char*>(nodes.data() + tree_nodes), blocks.data(), bytes);
+    return blocks.size();
+}
+
 }  // namespace
+
+FcTriBlock leaf_block(const Bvh& bvh, std::int64_t row) {
+    const auto rows = static_cast<std::int64_t>(bvh.nodes.size()) * kRowsPerNode;
+    if (row < static_cast<std::int64_t>(bvh.stats.nodes) * kRowsPerNode || row + kRowsPerBlock > rows)
+        throw Error("leaf_block: row " + std::to_string(row) + " is outside the leaf blocks of the node buffer");
+    FcTriBlock b;
+    std::memcpy(&b, reinterpret_cast<const unsigned char*>(bvh.nodes.data()) + row * 16, sizeof b);
+    return b;
+}
 
 Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options, std::size_t* skipped) {
     using Clock = std::chrono::steady_clock;
@@ -144,8 +193,9 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
             t.pad0 = t.pad1 = 0;
         }
 
-        st.triangles = bvh.triangles.size();
         st.nodes = bvh.nodes.size();
+        st.leaf_blocks = pack_leaf_blocks(bvh.nodes, bvh.triangles);
+        st.triangles = bvh.triangles.size();
         st.leaves = built.leaves;
         st.max_depth = depth;
         st.binary_nodes = built.nodes.size();

@@ -16,28 +16,39 @@ struct BvhOptions {
     int max_leaf_size = 8;           // a leaf never holds more triangles than this
     int exact_max = 16;              // ranges up to this size get the exact SAH sweep (0: bin everywhere)
     float traversal_cost = 1.0f;     // SAH cost of visiting a node, relative to...
-    float intersection_cost = 1.0f;  // ...the cost of one ray/triangle test
+    float intersection_cost = 1.0f;  // ...the cost of one ray/triangle block test
+    int block_size = 4;              // triangles tested at once (FcTriBlock lanes): a leaf of n costs
+                                     // ceil(n / block_size) tests (Embree's blocked SAH); 1, 2, 4 or 8
 };
 
 struct BvhStats {
     std::size_t triangles = 0;
     std::size_t nodes = 0;         // FcBvhNode count (each holds up to four children)
+    std::size_t leaf_blocks = 0;   // FcTriBlock count (four triangle lanes each)
     std::size_t binary_nodes = 0;  // nodes of the binary SAH tree it was collapsed from
     std::size_t leaves = 0;
     int max_depth = 0;  // 4-wide nodes on the longest root-to-leaf path
     int max_leaf_size = 0;
-    double sah_cost = 0.0;         // of the binary SAH tree, normalised by the root's surface area
+    double sah_cost = 0.0;         // of the binary SAH tree (leaves counted in blocks of
+                                   // BvhOptions::block_size), normalised by the root's surface area
     double build_seconds = 0.0;    // all of build_bvh: filtering and per-triangle bounds, the
                                    // binary SAH build, the 4-wide collapse, the packed
                                    // triangles in leaf order, freeing the builder's buffers
-    std::size_t device_bytes = 0;  // nodes + triangles as uploaded
+    std::size_t device_bytes = 0;  // node buffer (nodes + leaf blocks) + triangles as uploaded
 };
 
 struct Bvh {
-    std::vector<FcBvhNode> nodes;       // nodes[0] is the root
+    // The node buffer as uploaded: nodes[0, stats.nodes) are the tree (nodes[0] the root),
+    // the rest holds the leaves' FcTriBlock, addressed in 16-byte rows from the start
+    // (kernels/shared/bvh_layout.h); read them with leaf_block().
+    std::vector<FcBvhNode> nodes;
     std::vector<FcTriangle> triangles;  // reordered; FcTriangle::prim is the input index
     BvhStats stats;
 };
+
+// The leaf block at 16-byte row `row` of the node buffer (a leaf's FcBvhNode::index,
+// plus 10 rows per further block); throws an Error naming the row when it is outside.
+FcTriBlock leaf_block(const Bvh& bvh, std::int64_t row);
 
 // Builds the tree over `vertices`, three consecutive entries per triangle
 // (vertices.size() must be a multiple of 3). Degenerate (zero-area) and non-finite

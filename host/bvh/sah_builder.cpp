@@ -6,7 +6,10 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <string>
 #include <type_traits>
+
+#include "host/error.hpp"
 
 namespace facet::bvh_detail {
 namespace {
@@ -87,6 +90,13 @@ constexpr std::uint32_t kTwoSetsMin = 128;
 
 int ceil_log2(std::uint32_t n) { return n <= 1 ? 0 : 32 - std::countl_zero(n - 1); }
 
+// log2 of BvhOptions::block_size.
+int block_shift(int block_size) {
+    if (block_size != 1 && block_size != 2 && block_size != 4 && block_size != 8)
+        throw Error("build_bvh: block_size " + std::to_string(block_size) + " is not 1, 2, 4 or 8");
+    return std::countr_zero(static_cast<unsigned>(block_size));
+}
+
 void set_child(BinaryNode& node, int side, const Box& box) {
     float* lo = side == 0 ? node.a_min : node.b_min;
     float* hi = side == 0 ? node.a_max : node.b_max;
@@ -123,8 +133,9 @@ public:
     Builder(std::vector<PrimRef>& refs, const BvhOptions& opt)
         : refs_(refs), opt_(opt), nb_(std::clamp(opt.bins, 2, 256)),
           max_leaf_(static_cast<std::uint32_t>(std::max(opt.max_leaf_size, 1))),
-          exact_max_(static_cast<std::uint32_t>(std::clamp(opt.exact_max, 0, kExactMax))), bins_(6 * nb_),
-          counts_(6 * nb_), right_area_(nb_), right_count_(nb_), scratch_(new PrimRef[refs.size()]) {}
+          exact_max_(static_cast<std::uint32_t>(std::clamp(opt.exact_max, 0, kExactMax))),
+          block_shift_(block_shift(opt.block_size)), bins_(6 * nb_), counts_(6 * nb_), right_area_(nb_),
+          right_count_(nb_), scratch_(new PrimRef[refs.size()]) {}
 
     BuildOutput run();
 
@@ -140,6 +151,9 @@ private:
     int nb_;
     std::uint32_t max_leaf_;
     std::uint32_t exact_max_;
+    int block_shift_;  // log2 of BvhOptions::block_size
+    // Intersection tests of a leaf of n references: n in blocks, rounded up.
+    std::uint32_t blocks(std::uint32_t n) const { return (n + (1u << block_shift_) - 1u) >> block_shift_; }
     std::vector<Box> bins_;  // [axis * nb_ + bin]
     std::vector<std::uint32_t> counts_;
     std::vector<f4> right_area_;  // per bin boundary, lane a = axis a
@@ -255,8 +269,10 @@ bool Builder::sah_split(const Task& t, Split& s, float& best_cost) {
             l2.grow(z[k - 1]);
             count += counts_at(k - 1);
             const i4 rcount = right_count_[k];
-            const f4 cost = half_areas(l0, l1, l2) * __builtin_convertvector(count, f4) +
-                            right_area_[k] * __builtin_convertvector(rcount, f4);
+            const i4 round = {(1 << block_shift_) - 1, (1 << block_shift_) - 1, (1 << block_shift_) - 1, 0};
+            const i4 lblocks = (count + round) >> block_shift_, rblocks = (rcount + round) >> block_shift_;
+            const f4 cost = half_areas(l0, l1, l2) * __builtin_convertvector(lblocks, f4) +
+                            right_area_[k] * __builtin_convertvector(rblocks, f4);
             const i4 better = axis_ok & (count != none) & (rcount != none) & (cost < best);
             best = better ? cost : best;
             best_at = better ? i4{k, k, k, k} : best_at;
@@ -370,7 +386,8 @@ bool Builder::exact_split(const Task& t, Split& s, float& best_cost) {
             l0.grow(lo[order[0][i - 1]], hi[order[0][i - 1]]);
             l1.grow(lo[order[1][i - 1]], hi[order[1][i - 1]]);
             l2.grow(lo[order[2][i - 1]], hi[order[2][i - 1]]);
-            const float fi = static_cast<float>(i), fr = static_cast<float>(n - i);
+            const auto fi = static_cast<float>(blocks(static_cast<std::uint32_t>(i)));
+            const auto fr = static_cast<float>(blocks(static_cast<std::uint32_t>(n - i)));
             const f4 cost = half_areas(l0, l1, l2) * f4{fi, fi, fi, fi} + right_area[i] * f4{fr, fr, fr, fr};
             const i4 better = cost < best;  // strict: the first best split per axis
             best = better ? cost : best;
@@ -428,7 +445,7 @@ bool Builder::decide(const Task& t, Split& s) {
     if (n <= exact_max_ ? exact_split(t, s, cost) : sah_split(t, s, cost)) {
         float area = t.box.half_area();
         float split_cost = opt_.traversal_cost + opt_.intersection_cost * (area > 0.0f ? cost / area : 0.0f);
-        return fits && opt_.intersection_cost * static_cast<float>(n) <= split_cost;
+        return fits && opt_.intersection_cost * static_cast<float>(blocks(n)) <= split_cost;
     }
     if (fits) return true;  // all centroids coincide: nothing to gain from splitting
     median_split(t, s);
@@ -475,7 +492,7 @@ BuildOutput Builder::run() {
             ++out.leaves;
             out.max_depth = std::max(out.max_depth, depth);
             out.max_leaf_size = std::max(out.max_leaf_size, static_cast<int>(count));
-            leaf_sum += area * count;
+            leaf_sum += area * blocks(count);
             continue;
         }
         int index = 0;

@@ -1,5 +1,6 @@
 /* BVH traversal over the 4-wide nodes of shared/bvh_layout.h: one node fetch tests all four
- * child boxes with float4 arithmetic, leaves are intersected at once and the nearest
+ * child boxes with float4 arithmetic, leaves are intersected at once (four triangles a
+ * block, kernels/trace/triangle.cl) and the nearest
  * inner child is visited next, the others pushed farthest first on a small private
  * stack (Aila & Laine 2009, "Understanding the efficiency of ray traversal on GPUs";
  * Wald et al. 2008 for the wide node). The host keeps the tree shallow enough for
@@ -64,21 +65,27 @@ inline bool box_hit(const BoxRay* r, __global const float* lo, __global const fl
     return tn <= tf;
 }
 
-/* Intersects leaf [first, first + count); with `any`, stops at the first hit. */
-inline bool leaf_hit(__global const FcTriangle* tris, int first, int count, const TriRay* tr, float3 o, Hit* hit,
-                     bool any) {
+/* Intersects the leaf of `count` triangles whose blocks start at row `row` of the node
+ * buffer, a block of four lanes at a time; with `any_hit`, stops at the first hit. Within a
+ * block the nearest hit lane wins (the lowest on a tie), and a later block's hit must be
+ * strictly nearer: the hit a loop over the triangles in order would keep. */
+inline bool leaf_hit(__global const float4* rows, int row, int count, const TriRay* tr, Hit* hit, bool any_hit) {
     bool found = false;
-    for (int i = first; i < first + count; ++i) {
-        float t, u, v;
-        if (intersect_fc_triangle(tr, o, &tris[i], hit->t, &t, &u, &v)) {
-            hit->t = t;
-            hit->u = u;
-            hit->v = v;
-            hit->prim = tris[i].prim;
-            hit->tri = i;
-            found = true;
-            if (any) return true;
-        }
+    for (int first = 0; first < count; first += 4, row += 10) {
+        __global const float4* b = rows + row;
+        const Tri4 p = tri4_load(b, tr);
+        float4 t, v, w, det;
+        const int4 mask = tri4_hit(tr, &p, hit->t, &t, &v, &w, &det);
+        if (!any(mask)) continue;
+        if (any_hit) return true;
+        const uint lane = tri4_nearest(mask, t);
+        const int4 tri = vload4(0, (__global const int*)(b + 9));
+        const float ts[4] = {t.x, t.y, t.z, t.w};
+        const int tris[4] = {tri.x, tri.y, tri.z, tri.w};
+        hit->t = ts[lane];
+        hit->tri = tris[lane];
+        tri4_weights(v, w, det, lane, &hit->u, &hit->v);
+        found = true;
     }
     return found;
 }
@@ -115,22 +122,16 @@ inline int4 children_hit(__global const FcBvhNode* n, float3 o, float3 inv_d, in
     return tn <= tf;
 }
 
-/* A 4-bit mask from an int4 of 0 / -1 lanes: bit c set where lane c is. */
-inline uint lane_bits(int4 m) { return (uint)((m.x & 1) | (m.y & 2) | (m.z & 4) | (m.w & 8)); }
-
-/* Index of the lowest set bit of a non-zero mask (OpenCL C 1.2 has clz, not ctz). */
-inline uint lowest_bit(uint bits) { return 31u - clz(bits & (0u - bits)); }
-
 /* The traversal shared by trace_closest and trace_any. Per node: the four boxes in one
  * go, then the hit leaves (their hits shorten the ray before any inner child is
  * entered), then the hit inner children, nearest first: with one there is nothing to
  * sort, with two one comparison, with three or four an insertion sort. The others go on
  * the stack with their entry distance, and an entry farther than the nearest hit found
  * since is dropped when popped, without fetching its node. */
-inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d, Hit* hit,
-                      bool any) {
+inline bool trace_bvh(__global const FcBvhNode* nodes, float3 o, float3 d, Hit* hit, bool any) {
     const BoxRay br = box_ray_setup(o, d);
-    const TriRay tr = tri_ray_setup(d);
+    const TriRay tr = tri_ray_setup(o, d);
+    __global const float4* rows = (__global const float4*)nodes;
     /* Rows of FcBvhNode: lo_x lo_y lo_z hi_x hi_y hi_z. */
     const int3 near_row = (int3)(0, 1, 2) + 3 * br.neg;
     const int3 far_row = (int3)(3, 4, 5) - 3 * br.neg;
@@ -153,7 +154,7 @@ inline bool trace_bvh(__global const FcBvhNode* nodes, __global const FcTriangle
             do {
                 const uint c = lowest_bit(leaves);
                 leaves &= leaves - 1u;
-                if (leaf_hit(tris, idx[c], cnt[c], &tr, o, hit, any)) {
+                if (leaf_hit(rows, idx[c], cnt[c], &tr, hit, any)) {
                     found = true;
                     if (any) return true;
                 }
@@ -226,17 +227,20 @@ inline bool trace_closest(__global const FcBvhNode* nodes, __global const FcTria
     hit->v = 0.0f;
     hit->prim = -1;
     hit->tri = -1;
-    return trace_bvh(nodes, tris, o, d, hit, false);
+    if (!trace_bvh(nodes, o, d, hit, false)) return false;
+    hit->prim = tris[hit->tri].prim;
+    return true;
 }
 
 /* Whether anything is hit with 0 < t < tmax (shadow rays). */
 inline bool trace_any(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,
                       float tmax) {
+    (void)tris; /* the leaves' blocks hold the vertices */
     Hit hit;
     hit.t = tmax;
     hit.prim = -1;
     hit.tri = -1;
-    return trace_bvh(nodes, tris, o, d, &hit, true);
+    return trace_bvh(nodes, o, d, &hit, true);
 }
 
 #endif
