@@ -159,7 +159,7 @@ inline bool dielectric_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSamp
     if (!(fabs(wo.z) > 0.0f)) return false;
     if (dielectric_is_smooth(m)) return dielectric_sample_smooth(m, wo, u.z, s);
     float3 wv = wo.z < 0.0f ? -wo : wo;
-    float3 h = ndf_sample(m, wv, u.xy);
+    float3 h = ndf_sample_two_sided(m, wv, u.xy);
     float oh = dot(wo, h);
     if (u.z < fresnel_dielectric(oh, m->ior)) {
         s->wi = 2.0f * oh * h - wo; /* Walter 2007, eq. 39 */
