@@ -1,9 +1,10 @@
 // Energy compensation (kernels/bsdf/energy_compensation.cl) and EON (kernels/bsdf/eon.cl):
 // white furnaces (the directional albedo of a white lobe, F = 1, is 1 within 1%) at
 // alpha in {0.05, 0.1, 0.25, 0.5, 0.75, 1} and theta_o up to 80 degrees for conductors
-// (GGX, Beckmann), rough plastic (Lambert under a compensated Schlick layer) and EON;
-// reciprocity of every compensated lobe; the tables of albedo_tables.cl against a fresh
-// integration on the kernels. The furnace tables print what docs/brdf.md shows.
+// (GGX, Beckmann), rough plastic (Lambert under a compensated Schlick layer), rough
+// dielectrics (reflection + transmission, from both sides) and EON; reciprocity of every
+// reciprocal compensated lobe (the dielectric's albedo scaling is not). The furnace tables
+// print what docs/brdf.md shows.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,6 +71,16 @@ FcMaterial white_plastic(int ndf, float alpha) {
     return m;
 }
 
+// A clear rough dielectric of index 1.5 (GGX or Beckmann), exact Fresnel.
+FcMaterial clear_dielectric(int ndf, float alpha) {
+    FcMaterial m = white_conductor(ndf, alpha);
+    m.specular_model = FC_SPECULAR_DIELECTRIC;
+    m.fresnel = FC_FRESNEL_DIELECTRIC;
+    m.ior = 1.5f;
+    for (int c = 0; c < 3; ++c) m.specular[c] = 1.0f;
+    return m;
+}
+
 FcMaterial white_eon(float r) {
     FcMaterial m = lobe_material(FC_DIFFUSE_EON, FC_SPECULAR_NONE);
     for (int c = 0; c < 3; ++c) m.diffuse[c] = 1.0f;
@@ -80,7 +91,8 @@ FcMaterial white_eon(float r) {
 // Runs the furnace over the alpha x theta grid for `make(alpha)`, with and without the
 // compensation, prints the table (single scattering / compensated) and checks the
 // compensated albedo is 1 within 1% (and 4 standard errors).
-void furnace(const char* title, FcMaterial (*make)(int, float), int ndf) {
+void furnace(const char* title, FcMaterial (*make)(int, float), int ndf, bool from_below = false,
+             double tolerance = 0.01) {
     std::vector<FcMaterial> mats;
     std::vector<Vec3> wo;
     for (float a : kAlphas)
@@ -89,7 +101,9 @@ void furnace(const char* title, FcMaterial (*make)(int, float), int ndf) {
                 FcMaterial m = make(ndf, a);
                 if (!on) m.flags &= ~FC_MAT_ENERGY_COMPENSATION;
                 mats.push_back(m);
-                wo.push_back(direction(t, 0.3));
+                Vec3 w = direction(t, 0.3);
+                if (from_below) w.z = -w.z;
+                wo.push_back(w);
             }
     std::vector<Albedo> r = albedos(mats, wo, kSamples);
     std::printf("\n%s: albedo, single scattering / compensated\n| alpha |", title);
@@ -104,7 +118,7 @@ void furnace(const char* title, FcMaterial (*make)(int, float), int ndf) {
             std::printf(" %.3f / %.3f |", ss.mean[0], ec.mean[0]);
             EXPECT_EQ(ec.bad, 0);
             for (int c = 0; c < 3; ++c)
-                EXPECT_NEAR(ec.mean[c], 1.0, 0.01 + 4.0 * ec.error[c])
+                EXPECT_NEAR(ec.mean[c], 1.0, tolerance + 4.0 * ec.error[c])
                     << title << " alpha " << a << " theta_o " << t << " channel " << c;
         }
         std::printf("\n");
@@ -123,6 +137,20 @@ TEST(EnergyCompensation, FurnacePlasticGgx) {
 
 TEST(EnergyCompensation, FurnacePlasticBeckmann) {
     furnace("Beckmann rough plastic, white base, F0 = 0.04", white_plastic, FC_NDF_BECKMANN);
+}
+
+// Rough dielectrics: the energy albedo (reflection + transmission times etap^2), from
+// outside and from inside (total internal reflection), Turquin's albedo scaling. From
+// inside the 16 x 12 x 8 table's interpolation across the critical angle and the index
+// leaves up to 2.5% (docs/brdf.md): asserted at 3% there, 1% from outside.
+TEST(EnergyCompensation, FurnaceDielectricGgx) {
+    furnace("GGX rough dielectric, ior 1.5, from outside", clear_dielectric, FC_NDF_GGX);
+    furnace("GGX rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_GGX, true, 0.03);
+}
+
+TEST(EnergyCompensation, FurnaceDielectricBeckmann) {
+    furnace("Beckmann rough dielectric, ior 1.5, from outside", clear_dielectric, FC_NDF_BECKMANN);
+    furnace("Beckmann rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_BECKMANN, true, 0.03);
 }
 
 TEST(EnergyCompensation, FurnaceEon) {

@@ -226,6 +226,7 @@ struct Config {
 // A white material with one lobe and F = 1 (Fresnel ONE, or F0 = 1 for Schlick-only lobes).
 FcMaterial white(int diffuse_model, int specular_model) {
     FcMaterial m = device_material(make_material("microfacet"));
+    m.flags &= ~FC_MAT_ENERGY_COMPENSATION;  // single scattering (energy_compensation_test.cpp has the rest)
     m.diffuse_model = diffuse_model, m.specular_model = specular_model;
     set3(m.diffuse, 1.0f, 1.0f, 1.0f);
     set3(m.specular, 1.0f, 1.0f, 1.0f);

@@ -39,8 +39,8 @@ constexpr Preset kPresets[] = {
      FC_FRESNEL_SCHLICK, true},
     {"conductor", FC_DIFFUSE_NONE, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_CONDUCTOR,
      true},
-    {"dielectric", FC_DIFFUSE_NONE, FC_SPECULAR_DIELECTRIC, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_DIELECTRIC,
-     true},
+    // the dielectric's compensation (Turquin's albedo scaling) is not reciprocal: opt-in
+    {"dielectric", FC_DIFFUSE_NONE, FC_SPECULAR_DIELECTRIC, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_DIELECTRIC},
     {"eon", FC_DIFFUSE_EON, FC_SPECULAR_NONE, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
 };
 

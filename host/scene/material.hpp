@@ -50,7 +50,8 @@ struct Material {
     bool two_sided_emission = false;
     // Multiple-scattering energy compensation of the GGX / Beckmann lobes and the 1 - E_spec
     // coupling of the diffuse base (docs/brdf.md); the presets turn it on for ggx,
-    // microfacet, conductor and dielectric, off for the classic named models.
+    // microfacet and conductor, off for the classic named models and for the dielectric
+    // (whose albedo scaling is not reciprocal: opt-in).
     bool energy_compensation = false;
 };
 

@@ -128,4 +128,30 @@ inline float3 ec_diffuse_coupling(const FcMaterial* m, float3 wo, float3 wi) {
     return lo * li / den;
 }
 
+/* Rough dielectrics (Turquin 2019, "Practical multiple scattering compensation for
+ * microfacet models", albedo scaling): f = f_ss / E(mu_o), E = E_R + E_T the energy albedo
+ * of the single-scattering dielectric seen from wo (table fc_albedo_dielectric, by the
+ * relative index seen from wo's side). The missing energy is returned in proportion to
+ * the single-scattering lobes, reflection and transmission alike. Unlike f_ms above this is
+ * not reciprocal (a known limit of albedo scaling; docs/brdf.md). */
+inline float ec_dielectric_albedo(const FcMaterial* m, float3 wo) {
+    float e = wo.z > 0.0f ? m->ior : 1.0f / m->ior;
+    int side = e >= 1.0f ? 0 : 1;
+    float ee = side == 0 ? e : 1.0f / e;
+    float x =
+        clamp((ee - 1.0f) / (ee + 1.0f), 0.0f, FC_ALBEDO_D_X_MAX) * ((float)(FC_ALBEDO_D_N_X - 1) / FC_ALBEDO_D_X_MAX);
+    float y = ec_r(m) * (float)(FC_ALBEDO_D_N_R - 1);
+    float z = clamp(fabs(wo.z), 0.0f, 1.0f) * (float)(FC_ALBEDO_D_N_MU - 1);
+    int k = min((int)x, FC_ALBEDO_D_N_X - 2), j = min((int)y, FC_ALBEDO_D_N_R - 2),
+        i = min((int)z, FC_ALBEDO_D_N_MU - 2);
+    float tx = x - (float)k, ty = y - (float)j, tz = z - (float)i;
+    __constant const float* t =
+        fc_albedo_dielectric +
+        (((ec_ndf(m) * 2 + side) * FC_ALBEDO_D_N_X + k) * FC_ALBEDO_D_N_R + j) * FC_ALBEDO_D_N_MU + i;
+    const int sr = FC_ALBEDO_D_N_MU, sx = FC_ALBEDO_D_N_MU * FC_ALBEDO_D_N_R;
+    float a = mix(mix(t[0], t[1], tz), mix(t[sr], t[sr + 1], tz), ty);
+    float b = mix(mix(t[sx], t[sx + 1], tz), mix(t[sx + sr], t[sx + sr + 1], tz), ty);
+    return clamp(mix(a, b, tx), 0.05f, 1.0f);
+}
+
 #endif

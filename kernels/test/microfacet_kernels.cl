@@ -247,7 +247,7 @@ __kernel void mf_extreme_sweep(uint seed, __global uint* counters, __global FcMa
         bool side_ok = dielectric ? fabs(s.wi.z) > 0.0f : s.wi.z > 0.0f;
         if (!s.delta) ok = ok && side_ok && sweep_value_ok(s.f) && s.pdf > 0.0f && isfinite(s.pdf);
         if (!ok) sweep_fail(counters, fail_mats, fail_dirs, &m, wo, s.wi, 3, s.pdf);
-        if (ok && dielectric && (s.delta || ndf_samples_visible(&m))) {
+        if (ok && dielectric && !ec_enabled(&m) && (s.delta || ndf_samples_visible(&m))) {
             float etap = (s.wi.z * wo.z > 0.0f) ? 1.0f : relative_eta(m.ior, wo.z);
             float energy = max3(s.weight) * etap * etap;
             if (!(energy <= 1.001f)) sweep_fail(counters, fail_mats, fail_dirs, &m, wo, s.wi, 6, energy);
