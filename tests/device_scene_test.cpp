@@ -34,6 +34,7 @@ void expect_same(const Material& a, const Material& b, std::string_view what) {
     EXPECT_EQ(a.ior, b.ior) << what;
     EXPECT_EQ(a.sigma, b.sigma) << what;
     EXPECT_EQ(a.two_sided_emission, b.two_sided_emission) << what;
+    EXPECT_EQ(a.energy_compensation, b.energy_compensation) << what;
 }
 
 TEST(DeviceScene, MaterialsRoundTrip) {
@@ -41,10 +42,11 @@ TEST(DeviceScene, MaterialsRoundTrip) {
         Material m = make_material(std::string(name));
         m.emission = glm::vec3(1.0f, 2.0f, 3.0f);
         m.two_sided_emission = true;
-        m.sigma = 0.7f;
+        m.sigma = m.eon_roughness = 0.7f;  // one kernel field for both (EON's or Oren-Nayar's)
         m.alpha_y = 0.2f;
         const FcMaterial d = device_material(m);
-        EXPECT_EQ(d.flags, FC_MAT_TWO_SIDED_EMISSION) << name;
+        EXPECT_EQ(d.flags, FC_MAT_TWO_SIDED_EMISSION | (m.energy_compensation ? FC_MAT_ENERGY_COMPENSATION : 0u))
+            << name;
         EXPECT_EQ(d.emission[2], 3.0f) << name;
         EXPECT_EQ(d.alpha_y, 0.2f) << name;
         expect_same(host_material(d), m, name);

@@ -26,7 +26,8 @@ TEST(Material, PresetsFollowTheTable) {
                         {"ggx", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET},
                         {"microfacet", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET},
                         {"conductor", FC_DIFFUSE_NONE, FC_SPECULAR_MICROFACET},
-                        {"dielectric", FC_DIFFUSE_NONE, FC_SPECULAR_DIELECTRIC}};
+                        {"dielectric", FC_DIFFUSE_NONE, FC_SPECULAR_DIELECTRIC},
+                        {"eon", FC_DIFFUSE_EON, FC_SPECULAR_NONE}};
     ASSERT_EQ(material_model_names().size(), std::size(rows));
     for (const Row& r : rows) {
         // conductor and dielectric: their own colours (dielectric_test.cpp checks them)
@@ -58,6 +59,11 @@ TEST(Material, PresetsFollowTheTable) {
     EXPECT_EQ(ggx.geometry, FC_G_SMITH_CORRELATED);
     EXPECT_FALSE(material_preset("phong").has_value());
     EXPECT_THROW(make_material("phong"), Error);
+    // energy compensation: on for the GGX-based presets, off for the classic models
+    for (const char* on : {"ggx", "microfacet", "conductor"}) EXPECT_TRUE(make_material(on).energy_compensation) << on;
+    for (const char* off :
+         {"lambert", "oren_nayar", "cook_torrance", "blinn_phong", "ashikhmin_shirley", "eon", "dielectric"})
+        EXPECT_FALSE(make_material(off).energy_compensation) << off;
     try {
         make_material("phong");
     } catch (const Error& e) {
@@ -70,7 +76,8 @@ TEST(Material, PresetsFollowTheTable) {
 TEST(Material, EnumNameTables) {
     const MaterialEnum kinds[] = {MaterialEnum::Diffuse,  MaterialEnum::Specular, MaterialEnum::Ndf,
                                   MaterialEnum::Geometry, MaterialEnum::Fresnel,  MaterialEnum::Sampling};
-    const int counts[] = {FC_DIFFUSE_COUNT, FC_SPECULAR_COUNT, FC_NDF_COUNT, FC_G_COUNT, FC_FRESNEL_COUNT, 2};
+    const int counts[] = {FC_DIFFUSE_COUNT, FC_SPECULAR_COUNT, FC_NDF_COUNT,
+                          FC_G_COUNT,       FC_FRESNEL_COUNT,  FC_SAMPLE_COUNT};
     for (std::size_t k = 0; k < std::size(kinds); ++k) {
         const auto& names = enum_names(kinds[k]);
         ASSERT_EQ(int(names.size()), counts[k]) << enum_kind_name(kinds[k]);
@@ -83,7 +90,7 @@ TEST(Material, EnumNameTables) {
         EXPECT_EQ(enum_to_name(kinds[k], 99), "invalid(99)");
     }
     EXPECT_EQ(enum_from_name(MaterialEnum::Geometry, "Smith_Correlated"), FC_G_SMITH_CORRELATED);
-    EXPECT_EQ(enum_name_list(MaterialEnum::Sampling), "visible or all");
+    EXPECT_EQ(enum_name_list(MaterialEnum::Sampling), "visible, all, spherical_cap or bounded");
     EXPECT_EQ(enum_name_list(MaterialEnum::Ndf), "beckmann, ggx or blinn_phong");
 }
 

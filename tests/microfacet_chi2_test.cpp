@@ -1,9 +1,11 @@
 // Statistical tests of the samplers (the rest is in microfacet_test.cpp): every sampler
 // of kernels/bsdf/ against its pdf by a chi-square test (chi2_test_util.hpp), >= 1e6
-// samples per configuration: the microfacet lobe for GGX and Beckmann x visible / all
-// normals x 7 roughnesses and 2 anisotropic pairs x 6 view angles (F = 1), Blinn-Phong's
-// NDF, the normals themselves, and through bsdf_sample the Blinn-Phong lobes,
-// Ashikhmin-Shirley, the cosine-sampled diffuse lobes and diffuse + specular mixtures.
+// samples per configuration: the microfacet lobe for GGX (Heitz 2018's visible normals,
+// D cos, spherical caps, bounded visible normals) and Beckmann (visible / all normals) x
+// 7 roughnesses and 2 anisotropic pairs x 6 view angles (F = 1), Blinn-Phong's NDF, the
+// normals themselves, and through bsdf_sample the Blinn-Phong lobes, Ashikhmin-Shirley,
+// the diffuse lobes (EON's CLTC sampling included), diffuse + specular mixtures and the
+// energy-compensated lobes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,13 +28,19 @@ constexpr float kAlphas[] = {0.002f, 0.01f, 0.05f, 0.1f, 0.3f, 0.5f, 1.0f};
 constexpr float kAniso[][2] = {{0.05f, 0.3f}, {0.3f, 0.05f}};
 
 // Every chi-square test of this file, for the Sidak correction.
-constexpr int kNdfGrid = 2 * (7 + 2) * 6;  // per NDF: sampling x alphas x angles
-constexpr int kChi2Tests = 2 * kNdfGrid + 5 * 6 + 36 + 11 * 4;
+constexpr int kNdfGrid = (7 + 2) * 6;  // per NDF and sampler: alphas x angles
+constexpr int kChi2Tests = 6 * kNdfGrid + 5 * 6 + 54 + 18 * 4;
 const double kLevel = test::chi2::sidak(0.01, kChi2Tests);
+
+// GGX has four samplers (Heitz 2018 the oracle, D cos, spherical caps, bounded); Beckmann two.
+std::vector<int> samplers(int ndf) {
+    if (ndf == FC_NDF_GGX) return {FC_SAMPLE_VISIBLE, FC_SAMPLE_ALL, FC_SAMPLE_SPHERICAL_CAP, FC_SAMPLE_BOUNDED};
+    return {FC_SAMPLE_VISIBLE, FC_SAMPLE_ALL};
+}
 
 void chi_square_ndf(int ndf) {
     int run = 0, failed = 0;
-    for (int sampling : {FC_SAMPLE_VISIBLE, FC_SAMPLE_ALL})
+    for (int sampling : samplers(ndf))
         for (int a = 0; a < 9; ++a)
             for (double deg : kAngles) {
                 float ax = a < 7 ? kAlphas[a] : kAniso[a - 7][0];
@@ -43,6 +51,9 @@ void chi_square_ndf(int ndf) {
                                     1000u + unsigned(run));
                 ++run;
                 failed += r.ok ? 0 : 1;
+                if (sampling >= FC_SAMPLE_SPHERICAL_CAP && a == 4)
+                    std::printf("[ chi2     ] sampler %d alpha %g theta_o %g: refused %.4f\n", sampling, double(ax),
+                                deg, double(r.refused) / double(std::uint64_t(kItems) * kPerItem));
                 EXPECT_TRUE(r.ok) << "ndf " << ndf << " sampling " << sampling << " alpha (" << ax << ", " << ay
                                   << ") theta_o " << deg << ": " << r.message;
             }
@@ -68,7 +79,7 @@ TEST(MicrofacetChi2, ChiSquareBlinnPhongNdf) {
 // The normals themselves (h-space), against ndf_pdf.
 TEST(MicrofacetChi2, ChiSquareNormals) {
     for (int ndf : {FC_NDF_GGX, FC_NDF_BECKMANN})
-        for (int sampling : {FC_SAMPLE_VISIBLE, FC_SAMPLE_ALL})
+        for (int sampling : samplers(ndf))
             for (int a = 0; a < 3; ++a)
                 for (double deg : {0.0, 60.0, 89.0}) {
                     float ax = a == 0 ? 0.01f : a == 1 ? 0.3f : 0.05f;
@@ -106,7 +117,27 @@ TEST(MicrofacetChi2, ChiSquareBsdf) {
         m.fresnel = FC_FRESNEL_SCHLICK;
         add(m, 2.0 * double(alpha));
     }
-    ASSERT_EQ(cases.size(), 11u);
+    // energy-compensated lobes (the f_ms mixture) and EON's CLTC sampling
+    for (auto [ndf, alpha] : {std::pair{FC_NDF_GGX, 0.5f}, std::pair{FC_NDF_BECKMANN, 0.75f}}) {
+        FcMaterial m = microfacet_material(ndf, FC_SAMPLE_VISIBLE, alpha, alpha);
+        m.flags = FC_MAT_ENERGY_COMPENSATION;
+        add(m, 2.0 * double(alpha));
+        m.diffuse_model = FC_DIFFUSE_LAMBERT_1MF0;
+        m.fresnel = FC_FRESNEL_SCHLICK;
+        add(m, 2.0 * double(alpha));
+    }
+    for (float r : {0.3f, 1.0f}) {
+        FcMaterial m = lobe_material(FC_DIFFUSE_EON, FC_SPECULAR_NONE);
+        m.sigma = r;
+        add(m, 10.0);
+    }
+    {
+        FcMaterial m = microfacet_material(FC_NDF_GGX, FC_SAMPLE_BOUNDED, 0.3f, 0.3f);
+        m.diffuse_model = FC_DIFFUSE_EON;
+        m.fresnel = FC_FRESNEL_SCHLICK;
+        add(m, 0.6);
+    }
+    ASSERT_EQ(cases.size(), 18u);
     for (std::size_t c = 0; c < cases.size(); ++c)
         for (double deg : {0.0, 30.0, 60.0, 85.0}) {
             Vec3 wo = direction(deg, 0.7);

@@ -70,8 +70,8 @@ struct LobeWidth {
 };
 
 // The width keys, one knob in the units users write, each model given its own quantity:
-//   "roughness" r in [0, 1]   microfacet alpha = r, exponent = 2 / r^2 - 2, and
-//                             Oren-Nayar's sigma = r (radians)
+//   "roughness" r in [0, 1]   microfacet alpha = r, exponent = 2 / r^2 - 2,
+//                             Oren-Nayar's sigma = r (radians) and EON's roughness = r
 //   "shininess" s in [0, 1e6] exponent = s, alpha = sqrt(2 / (2 + s))
 //   "sigma" in [0, pi/2]      Oren-Nayar's sigma alone
 // "_x" / "_y" set one axis (alpha and exponent only). Applied in this order: roughness,
@@ -82,6 +82,7 @@ void lobe_widths(const MaterialKeys& k, Material& m) {
         LobeWidth::from_roughness(r).set_x(m);
         LobeWidth::from_roughness(r).set_y(m);
         m.sigma = r;
+        m.eon_roughness = r;
     }
     if (k.has("roughness_x")) LobeWidth::from_roughness(k.number("roughness_x", 0, 1)).set_x(m);
     if (k.has("roughness_y")) LobeWidth::from_roughness(k.number("roughness_y", 0, 1)).set_y(m);
@@ -128,10 +129,32 @@ void lobe_choices(const MaterialKeys& k, Material& m) {
 }  // namespace
 
 void JsonLoader::material(const std::string& name, const Json& v, const std::string& path) {
-    r.object(v, path, {"model",     "diffuse",     "specular",    "f0",        "emission",      "two_sided_emission",
-                       "roughness", "roughness_x", "roughness_y", "shininess", "shininess_x",   "shininess_y",
-                       "sigma",     "ior",         "eta",         "k",         "diffuse_model", "specular_model",
-                       "ndf",       "geometry",    "fresnel",     "sampling",  "conductor",     "transmittance"});
+    r.object(v, path,
+             {"model",
+              "diffuse",
+              "specular",
+              "f0",
+              "emission",
+              "two_sided_emission",
+              "roughness",
+              "roughness_x",
+              "roughness_y",
+              "shininess",
+              "shininess_x",
+              "shininess_y",
+              "sigma",
+              "ior",
+              "eta",
+              "k",
+              "diffuse_model",
+              "specular_model",
+              "ndf",
+              "geometry",
+              "fresnel",
+              "sampling",
+              "conductor",
+              "transmittance",
+              "energy_compensation"});
     const MaterialKeys k{r, v, path};
     Material m = preset(k);
     SpecularColour specular;
@@ -146,6 +169,8 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
     if (specular) specular_colour(m) = *specular;
     if (k.has("two_sided_emission") && r.boolean(v["two_sided_emission"], k.key("two_sided_emission")))
         m.two_sided_emission = true;
+    if (k.has("energy_compensation"))
+        m.energy_compensation = r.boolean(v["energy_compensation"], k.key("energy_compensation"));
     if (std::string warning = clamp_reflectance(m); !warning.empty())
         scene.warnings.push_back(fmt::format("{}: {}: {}", r.file(), path, warning));
     if (std::string problem = validate_material(m); !problem.empty()) r.fail(path, problem);

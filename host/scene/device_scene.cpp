@@ -44,8 +44,9 @@ FcMaterial device_material(const Material& m) {
     d.exponent_x = m.exponent_x;
     d.exponent_y = m.exponent_y;
     d.ior = m.ior;
-    d.sigma = m.sigma;
-    d.flags = m.two_sided_emission ? FC_MAT_TWO_SIDED_EMISSION : 0u;
+    d.sigma = m.diffuse_model == FC_DIFFUSE_EON ? m.eon_roughness : m.sigma;  // one field, by diffuse model
+    d.flags = (m.two_sided_emission ? FC_MAT_TWO_SIDED_EMISSION : 0u) |
+              (m.energy_compensation ? FC_MAT_ENERGY_COMPENSATION : 0u);
     return d;
 }
 
@@ -67,8 +68,9 @@ Material host_material(const FcMaterial& d) {
     m.exponent_x = d.exponent_x;
     m.exponent_y = d.exponent_y;
     m.ior = d.ior;
-    m.sigma = d.sigma;
+    m.sigma = m.eon_roughness = d.sigma;
     m.two_sided_emission = (d.flags & FC_MAT_TWO_SIDED_EMISSION) != 0;
+    m.energy_compensation = (d.flags & FC_MAT_ENERGY_COMPENSATION) != 0;
     return m;
 }
 

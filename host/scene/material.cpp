@@ -20,6 +20,7 @@ struct Preset {
     std::string_view name;
     int diffuse, specular, ndf, geometry;
     int fresnel = FC_FRESNEL_SCHLICK;
+    bool energy_compensation = false;  // on for the GGX-based presets, off for the classic models
 };
 // The named models, once (docs/brdf.md describes them); microfacet is ggx's lobes with any
 // D, G, F.
@@ -32,10 +33,15 @@ constexpr Preset kPresets[] = {
      FC_G_SMITH_CORRELATED},
     {"ashikhmin_shirley", FC_DIFFUSE_ASHIKHMIN_SHIRLEY, FC_SPECULAR_ASHIKHMIN_SHIRLEY, FC_NDF_GGX,
      FC_G_SMITH_CORRELATED},
-    {"ggx", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
-    {"microfacet", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
-    {"conductor", FC_DIFFUSE_NONE, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_CONDUCTOR},
+    {"ggx", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_SCHLICK,
+     true},
+    {"microfacet", FC_DIFFUSE_LAMBERT_1MF0, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED,
+     FC_FRESNEL_SCHLICK, true},
+    {"conductor", FC_DIFFUSE_NONE, FC_SPECULAR_MICROFACET, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_CONDUCTOR,
+     true},
+    // the dielectric's compensation (Turquin's albedo scaling) is not reciprocal: opt-in
     {"dielectric", FC_DIFFUSE_NONE, FC_SPECULAR_DIELECTRIC, FC_NDF_GGX, FC_G_SMITH_CORRELATED, FC_FRESNEL_DIELECTRIC},
+    {"eon", FC_DIFFUSE_EON, FC_SPECULAR_NONE, FC_NDF_GGX, FC_G_SMITH_CORRELATED},
 };
 
 // The name tables, generated from material_layout.h's lists (value order).
@@ -128,6 +134,7 @@ std::optional<Material> material_preset(std::string_view model) {
         m.ndf = p.ndf;
         m.geometry = p.geometry;
         m.fresnel = p.fresnel;
+        m.energy_compensation = p.energy_compensation;
         if (p.specular == FC_SPECULAR_DIELECTRIC) {
             m.f0 = m.ks = m.transmittance = glm::vec3(1.0f);  // clear: no absorption at the refractions
             m.alpha_x = m.alpha_y = 0.0f;                     // smooth glass
@@ -278,11 +285,8 @@ std::string validate_material(const Material& m) {
     const struct {
         const char* name;
         float v;
-    } scalars[] = {{"alpha_x", m.alpha_x},
-                   {"alpha_y", m.alpha_y},
-                   {"exponent_x", m.exponent_x},
-                   {"exponent_y", m.exponent_y},
-                   {"sigma", m.sigma}};
+    } scalars[] = {{"alpha_x", m.alpha_x},       {"alpha_y", m.alpha_y}, {"exponent_x", m.exponent_x},
+                   {"exponent_y", m.exponent_y}, {"sigma", m.sigma},     {"eon_roughness", m.eon_roughness}};
     for (const auto& s : scalars)
         if (bad(s.v, s.v >= 0.0f)) return fmt::format("{} must be a finite number >= 0 (got {:g})", s.name, s.v);
     if (bad(m.ior, m.ior > 0.0f)) return fmt::format("ior must be a finite number > 0 (got {:g})", m.ior);
@@ -332,6 +336,7 @@ void clamp_material(Material& m) {
     clampf(m.alpha_x, 0.0f, 10.0f);
     clampf(m.alpha_y, 0.0f, 10.0f);
     clampf(m.sigma, 0.0f, kPiF / 2.0f);
+    clampf(m.eon_roughness, 0.0f, 1.0f);
 }
 
 std::string describe_material(const Material& m) {
@@ -339,6 +344,7 @@ std::string describe_material(const Material& m) {
     if (m.diffuse_model != FC_DIFFUSE_NONE) {
         s += fmt::format(" diffuse {} {}", enum_to_name(MaterialEnum::Diffuse, m.diffuse_model), rgb(m.diffuse));
         if (m.diffuse_model == FC_DIFFUSE_OREN_NAYAR) s += fmt::format(" sigma={:g}", m.sigma);
+        if (m.diffuse_model == FC_DIFFUSE_EON) s += fmt::format(" roughness={:g}", m.eon_roughness);
     }
     switch (m.specular_model) {
         case FC_SPECULAR_MICROFACET:
@@ -352,6 +358,7 @@ std::string describe_material(const Material& m) {
             if (m.ndf == FC_NDF_BLINN_PHONG) s += fmt::format(" exponent={:g}", m.exponent_x);
             else s += fmt::format(" alpha=({:g}, {:g})", m.alpha_x, m.alpha_y);
             s += " sampling=" + enum_to_name(MaterialEnum::Sampling, m.sampling);
+            if (m.energy_compensation) s += " energy_compensation";
             break;
         case FC_SPECULAR_BLINN_PHONG:
         case FC_SPECULAR_BLINN_PHONG_NORMALIZED:

@@ -44,9 +44,15 @@ struct Material {
     float alpha_y = 0.3f;
     float exponent_x = 2.0f / (0.3f * 0.3f) - 2.0f;  // Phong-style exponents (alpha 0.3)
     float exponent_y = 2.0f / (0.3f * 0.3f) - 2.0f;
-    float ior = 1.5f;    // relative index (Schlick from ior, dielectric)
-    float sigma = 0.3f;  // Oren-Nayar's sigma, radians
+    float ior = 1.5f;            // relative index (Schlick from ior, dielectric)
+    float sigma = 0.3f;          // Oren-Nayar's sigma, radians
+    float eon_roughness = 0.3f;  // EON's roughness r in [0, 1] (Portsmouth et al. 2024)
     bool two_sided_emission = false;
+    // Multiple-scattering energy compensation of the GGX / Beckmann lobes and the 1 - E_spec
+    // coupling of the diffuse base (docs/brdf.md); the presets turn it on for ggx,
+    // microfacet and conductor, off for the classic named models and for the dielectric
+    // (whose albedo scaling is not reciprocal: opt-in).
+    bool energy_compensation = false;
 };
 
 // The colour field the material's specular lobe reads: ks for the Blinn-Phong lobes,

@@ -51,7 +51,7 @@ inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
     float p = specular_probability(m, wo);
     float pdf = 0.0f;
-    if (p < 1.0f) pdf += (1.0f - p) * cosine_hemisphere_pdf(wo, wi);
+    if (p < 1.0f) pdf += (1.0f - p) * diffuse_pdf(m, wo, wi);
     if (p > 0.0f) pdf += p * specular_pdf(m, wo, wi);
     return pdf;
 }
@@ -78,8 +78,8 @@ inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s)
             s->weight /= p; /* the mirror was chosen with probability p */
             return all_finite(s->weight);
         }
-    } else {
-        s->wi = square_to_cosine_hemisphere(u.xy);
+    } else if (!diffuse_sample(m, wo, u.xy, &s->wi)) {
+        return false;
     }
     if (s->wi.z <= 0.0f) return false;
     return finish_sample(s, bsdf_eval(m, wo, s->wi), bsdf_pdf(m, wo, s->wi));

@@ -31,6 +31,10 @@
  * It is not symmetric: f(wo, wi) / n_o^2 = f(wi, wo) / n_i^2 (Veach 1997, eq. 5.14).
  * Below, f_t is written as the importance form times 1 / etap^2.
  *
+ * Energy compensation (FC_MAT_ENERGY_COMPENSATION, GGX / Beckmann with height-correlated
+ * Smith): f is divided by the single-scattering energy albedo seen from wo (Turquin 2019's
+ * albedo scaling, energy_compensation.cl); not reciprocal.
+ *
  * Every output is finite and >= 0; degenerate half vectors (|n_i wi + n_o wo| = 0, as
  * wi = -wo at eta ~ 1) and wo or wi on the surface (z = 0) give f = 0 and pdf = 0. */
 #ifndef FACET_BSDF_DIELECTRIC_CL
@@ -38,6 +42,7 @@
 
 #include "kernels/shared/material_layout.h"
 #include "kernels/bsdf/bsdf_sample.cl"
+#include "kernels/bsdf/energy_compensation.cl"
 #include "kernels/bsdf/fresnel.cl"
 #include "kernels/bsdf/ndf.cl"
 #include "kernels/bsdf/refraction.cl"
@@ -121,6 +126,7 @@ inline float3 dielectric_eval(const FcMaterial* m, float3 wo, float3 wi) {
         float importance = fl * d * g * fabs(ih * oh) / (fabs(wi.z) * fabs(wo.z)) * (p.etap * p.etap) / (p.len * p.len);
         f = dielectric_tint(m) * (importance / (p.etap * p.etap));
     }
+    if (ec_enabled(m)) f /= ec_dielectric_albedo(m, wo); /* Turquin 2019 (energy_compensation.cl) */
     return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
 }
 
@@ -159,7 +165,7 @@ inline bool dielectric_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSamp
     if (!(fabs(wo.z) > 0.0f)) return false;
     if (dielectric_is_smooth(m)) return dielectric_sample_smooth(m, wo, u.z, s);
     float3 wv = wo.z < 0.0f ? -wo : wo;
-    float3 h = ndf_sample(m, wv, u.xy);
+    float3 h = ndf_sample_two_sided(m, wv, u.xy);
     float oh = dot(wo, h);
     if (u.z < fresnel_dielectric(oh, m->ior)) {
         s->wi = 2.0f * oh * h - wo; /* Walter 2007, eq. 39 */

@@ -86,4 +86,61 @@ inline float ggx_pdf_visible(float ax, float ay, float3 wo, float3 m) {
     return ggx_D(ax, ay, m) * wm / ggx_projected_area(ax, ay, wo);
 }
 
+/* The spherical-cap visible-normal samplers, in the hemisphere configuration of
+ * Heitz 2018 (wo stretched to unit roughness, i = normalize(ax wo.x, ay wo.y, wo.z)):
+ * a visible normal is i + o, o uniform on the part of the unit sphere with o.z >= -b,
+ * unstretched (Dupuy & Benyoub 2023, "Sound and Robust Sampling of the GGX Distribution
+ * of Visible Normals", with b = i.z: the same distribution as Heitz 2018). Eto &
+ * Tokuyoshi 2023 ("Bounded VNDF Sampling for Smith-GGX Reflections", SIGGRAPH Asia
+ * technical communications, eqs. 5-8) shrink the cap to b = k i.z,
+ *     k = (1 - a^2) s^2 / (s^2 + a^2 wo.z^2),  s = 1 + |wo.xy|,  a = min(ax, ay, 1),
+ * a conservative bound that drops most of the normals whose reflection of wo goes below
+ * the horizon (all of them at normal incidence and at alpha = 1). u.x picks the height
+ * of o, u.y its azimuth. */
+inline float ggx_bounded_k(float ax, float ay, float3 wo) {
+    float a = clamp(fmin(ax, ay), 0.0f, 1.0f);
+    float s = 1.0f + sqrt(wo.x * wo.x + wo.y * wo.y);
+    float a2 = a * a, s2 = s * s;
+    return (1.0f - a2) * s2 / (s2 + a2 * wo.z * wo.z);
+}
+
+inline float3 ggx_sample_cap(float ax, float ay, float3 wo, float2 u, float k) {
+    float3 i = normalize((float3)(ax * wo.x, ay * wo.y, wo.z));
+    float b = k * i.z;
+    float z = (1.0f - u.x) * (1.0f + b) - b;
+    float sin_t = safe_sqrt(1.0f - z * z);
+    float phi = 2.0f * FC_PI * u.y;
+    float3 h = i + (float3)(sin_t * cos(phi), sin_t * sin(phi), z);
+    return normalize_or((float3)(ax * h.x, ay * h.y, fmax(h.z, 0.0f)), (float3)(0.0f, 0.0f, 1.0f));
+}
+
+inline float3 ggx_sample_visible_cap(float ax, float ay, float3 wo, float2 u) {
+    return ggx_sample_cap(ax, ay, wo, u, 1.0f);
+}
+
+inline float3 ggx_sample_bounded(float ax, float ay, float3 wo, float2 u) {
+    return ggx_sample_cap(ax, ay, wo, u, ggx_bounded_k(ax, ay, wo));
+}
+
+/* The density of the reflected direction of a bounded sample whose normal is m (Eto &
+ * Tokuyoshi 2023, eq. 8 times the reflection's Jacobian): D(m) / (2 (k wo.z + t)),
+ * t = |(ax wo.x, ay wo.y, wo.z)|; k = 1 gives Heitz's D / (4 wo.z (1 + Lambda(wo))). */
+inline float ggx_reflection_pdf_bounded(float ax, float ay, float3 wo, float3 m) {
+    float t = sqrt(sqr(ax * wo.x) + sqr(ay * wo.y) + wo.z * wo.z);
+    return ggx_D(ax, ay, m) / (2.0f * (ggx_bounded_k(ax, ay, wo) * wo.z + t));
+}
+
+/* The density of the bounded sampler's normal m: 4 (wo.m) times the above, for m
+ * inside the cap (the reflection of the stretched wo about the stretched m has
+ * z >= -k i.z), else 0. */
+inline float ggx_pdf_bounded(float ax, float ay, float3 wo, float3 m) {
+    float wm = dot(wo, m);
+    if (!(wo.z > 0.0f) || !(wm > 0.0f)) return 0.0f;
+    float3 i = normalize((float3)(ax * wo.x, ay * wo.y, wo.z));
+    float3 h = normalize_or((float3)(m.x / ax, m.y / ay, m.z), (float3)(0.0f, 0.0f, 1.0f));
+    float oz = 2.0f * dot(i, h) * h.z - i.z;
+    if (oz < -ggx_bounded_k(ax, ay, wo) * i.z) return 0.0f;
+    return 4.0f * wm * ggx_reflection_pdf_bounded(ax, ay, wo, m);
+}
+
 #endif

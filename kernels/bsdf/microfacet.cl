@@ -26,14 +26,22 @@
  *   pdf return for its wi (recomputed from wo + wi), so weight = f cos_i / pdf is
  *   G F / G1(wo) for visible-normal sampling: at most 1 for F = 1 and the exact Smith
  *   terms, separable or height-correlated (Heitz 2014, section 6).
- * - No fast or finite math anywhere (docs/conventions.md): NaN/Inf tests must hold. */
+ * - No fast or finite math anywhere (docs/conventions.md): NaN/Inf tests must hold.
+ *
+ * Energy compensation (FC_MAT_ENERGY_COMPENSATION, GGX / Beckmann with height-correlated
+ * Smith): f adds Kulla & Conty's multiple-scattering lobe f_ms (energy_compensation.cl),
+ * and sampling becomes a mixture: with probability p = 1 - E(mu_o) a cosine-weighted
+ * direction, else the NDF's; pdf = p cos_i / pi + (1 - p) pdf_ss. The weight bound
+ * above then no longer holds (f_ms is not importance-sampled exactly). */
 #ifndef FACET_BSDF_MICROFACET_CL
 #define FACET_BSDF_MICROFACET_CL
 
 #include "kernels/shared/material_layout.h"
 #include "kernels/bsdf/bsdf_sample.cl"
+#include "kernels/bsdf/energy_compensation.cl"
 #include "kernels/bsdf/fresnel.cl"
 #include "kernels/bsdf/geometry.cl"
+#include "kernels/bsdf/lambert.cl"
 #include "kernels/bsdf/ndf.cl"
 
 inline bool microfacet_is_mirror(const FcMaterial* m) {
@@ -57,23 +65,32 @@ inline float3 microfacet_eval(const FcMaterial* m, float3 wo, float3 wi) {
     float3 h;
     float wo_h;
     if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return (float3)(0.0f);
+    float3 f = ec_enabled(m) ? ec_ms_eval(m, wo, wi) : (float3)(0.0f);
     float d = ndf_D(m, h);
-    if (!(d > 0.0f)) return (float3)(0.0f);
+    if (!(d > 0.0f)) return all_finite(f) ? f : (float3)(0.0f); /* D underflows far from a narrow peak */
     /* G / (4 cos_o cos_i); the implicit G cancels the denominator exactly. */
     float g_over = (m->geometry == FC_G_IMPLICIT) ? 0.25f : geometry_G(m, wo, wi, h) / (4.0f * wo.z * wi.z);
-    float3 f = fresnel_eval(m, dot(wo, h)) * (d * g_over);
+    f += fresnel_eval(m, dot(wo, h)) * (d * g_over);
     return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
+}
+
+/* The density of the NDF's sampling, for wi of half vector h (wo.h = wo_h). */
+inline float microfacet_ss_pdf(const FcMaterial* m, float3 wo, float3 h, float wo_h) {
+    /* ndf_pdf(h) / (4 wo.h); for visible normals the factor wo.h cancels analytically,
+     * D(h) / (4 wo.z (1 + Lambda(wo))), which keeps f cos / pdf = G F / G1(wo) <= 1 in
+     * float even where wo.h suffers cancellation (wi ~ -wo at grazing angles). */
+    return ndf_samples_visible(m) ? ndf_reflection_pdf_visible(m, wo, h) : ndf_pdf(m, wo, h) / (4.0f * wo_h);
 }
 
 inline float microfacet_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     float3 h;
     float wo_h;
     if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return 0.0f;
-    /* ndf_pdf(h) / (4 wo.h); for visible normals the factor wo.h cancels analytically,
-     * D(h) / (4 wo.z (1 + Lambda(wo))), which keeps f cos / pdf = G F / G1(wo) <= 1 in
-     * float even where wo.h suffers cancellation (wi ~ -wo at grazing angles). */
-    float pdf =
-        ndf_samples_visible(m) ? ndf_D(m, h) / (4.0f * ndf_projected_area(m, wo)) : ndf_pdf(m, wo, h) / (4.0f * wo_h);
+    float pdf = microfacet_ss_pdf(m, wo, h, wo_h);
+    if (ec_enabled(m)) {
+        float p = ec_ms_probability(m, wo);
+        pdf = p * cosine_hemisphere_pdf(wo, wi) + (1.0f - p) * pdf;
+    }
     return isfinite(pdf) ? fmax(pdf, 0.0f) : 0.0f;
 }
 
@@ -88,8 +105,16 @@ inline bool microfacet_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSamp
         s->weight = fresnel_eval(m, wo.z);
         return true;
     }
-    /* Draw a normal, reflect wo about it (Walter 2007, eq. 39). */
-    if (!reflect_about(wo, ndf_sample(m, wo, u), &s->wi)) return false;
+    /* With compensation, the multiple-scattering lobe's share by cosine sampling. */
+    float p = ec_enabled(m) ? ec_ms_probability(m, wo) : 0.0f;
+    if (u.x < p) {
+        s->wi = square_to_cosine_hemisphere((float2)(u.x / p, u.y));
+        if (!(s->wi.z > 0.0f)) return false;
+    } else {
+        u.x = fmin((u.x - p) / (1.0f - p), FC_ONE_MINUS_EPSILON);
+        /* Draw a normal, reflect wo about it (Walter 2007, eq. 39). */
+        if (!reflect_about(wo, ndf_sample(m, wo, u), &s->wi)) return false;
+    }
     return finish_sample(s, microfacet_eval(m, wo, s->wi), microfacet_pdf(m, wo, s->wi));
 }
 

@@ -6,8 +6,13 @@
  *   isotropic G approximations, the mirror limit), the equivalent Beckmann roughness
  *   alpha = sqrt(2 / (e + 2)) (Walter 2007, eq. 33; blinn_phong_ndf.cl).
  * - Sampling (FcMaterial.sampling): FC_SAMPLE_VISIBLE draws m from the distribution of
- *   visible normals D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z (Heitz & d'Eon 2014),
- *   FC_SAMPLE_ALL from D(m) cos(theta_m). Blinn-Phong always uses the latter.
+ *   visible normals D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z (Heitz & d'Eon 2014;
+ *   Heitz 2018 for GGX), FC_SAMPLE_ALL from D(m) cos(theta_m). For GGX,
+ *   FC_SAMPLE_SPHERICAL_CAP draws the visible normals by spherical caps and
+ *   FC_SAMPLE_BOUNDED from the bounded VNDF, for reflection only: the dielectric, which
+ *   needs the normals of refraction too, takes spherical caps instead
+ *   (ndf_sample_two_sided). Beckmann samples visible normals for all three, Blinn-Phong
+ *   always D cos.
  * Every density is per unit solid angle of m. */
 #ifndef FACET_BSDF_NDF_CL
 #define FACET_BSDF_NDF_CL
@@ -50,18 +55,28 @@ inline float ndf_projected_area(const FcMaterial* m, float3 wo) {
     return beckmann_projected_area(a.x, a.y, wo);
 }
 
-/* Whether the material samples visible normals (never for Blinn-Phong). */
+/* Whether the material samples visible normals (bounded ones included; never for
+ * Blinn-Phong). */
 inline bool ndf_samples_visible(const FcMaterial* m) {
-    return m->sampling == FC_SAMPLE_VISIBLE && m->ndf != FC_NDF_BLINN_PHONG;
+    return m->sampling != FC_SAMPLE_ALL && m->ndf != FC_NDF_BLINN_PHONG;
 }
 
-/* A microfacet normal for the view direction wo (wo.z > 0), u uniform in [0, 1)^2. */
-inline float3 ndf_sample(const FcMaterial* m, float3 wo, float2 u) {
+/* Whether the material samples GGX's bounded visible normals (reflection only). */
+inline bool ndf_samples_bounded(const FcMaterial* m) {
+    return m->sampling == FC_SAMPLE_BOUNDED && m->ndf == FC_NDF_GGX;
+}
+
+/* A microfacet normal for the view direction wo (wo.z > 0), u uniform in [0, 1)^2;
+ * `reflection_only` lets GGX use the bounded sampler. */
+inline float3 ndf_sample_for(const FcMaterial* m, float3 wo, float2 u, bool reflection_only) {
     bool visible = ndf_samples_visible(m);
     switch (m->ndf) {
         case FC_NDF_GGX:
-            return visible ? ggx_sample_visible(m->alpha_x, m->alpha_y, wo, u)
-                           : ggx_sample_all(m->alpha_x, m->alpha_y, u);
+            if (!visible) return ggx_sample_all(m->alpha_x, m->alpha_y, u);
+            if (m->sampling == FC_SAMPLE_BOUNDED && reflection_only)
+                return ggx_sample_bounded(m->alpha_x, m->alpha_y, wo, u);
+            if (m->sampling == FC_SAMPLE_VISIBLE) return ggx_sample_visible(m->alpha_x, m->alpha_y, wo, u);
+            return ggx_sample_visible_cap(m->alpha_x, m->alpha_y, wo, u);
         case FC_NDF_BLINN_PHONG:
             return bp_ndf_sample(m->exponent_x, u);
         default:
@@ -74,11 +89,17 @@ inline float3 ndf_sample(const FcMaterial* m, float3 wo, float2 u) {
     }
 }
 
+/* A normal for a reflection (the microfacet lobe), and for reflection or refraction (the
+ * dielectric). */
+inline float3 ndf_sample(const FcMaterial* m, float3 wo, float2 u) { return ndf_sample_for(m, wo, u, true); }
+inline float3 ndf_sample_two_sided(const FcMaterial* m, float3 wo, float2 u) { return ndf_sample_for(m, wo, u, false); }
+
 /* The density (per solid angle) with which ndf_sample produces the normal h. */
 inline float ndf_pdf(const FcMaterial* m, float3 wo, float3 h) {
     bool visible = ndf_samples_visible(m);
     switch (m->ndf) {
         case FC_NDF_GGX:
+            if (ndf_samples_bounded(m)) return ggx_pdf_bounded(m->alpha_x, m->alpha_y, wo, h);
             return visible ? ggx_pdf_visible(m->alpha_x, m->alpha_y, wo, h) : ggx_pdf_all(m->alpha_x, m->alpha_y, h);
         case FC_NDF_BLINN_PHONG:
             return bp_ndf_pdf(m->exponent_x, h);
@@ -90,6 +111,14 @@ inline float ndf_pdf(const FcMaterial* m, float3 wo, float3 h) {
             return 0.0f;
 #endif
     }
+}
+
+/* The density of the reflection of wo about a visible normal h, ndf_pdf(h) / (4 wo.h),
+ * with wo.h cancelled analytically: D(h) / (4 wo.z (1 + Lambda(wo))), or the bounded
+ * sampler's (ggx.cl). */
+inline float ndf_reflection_pdf_visible(const FcMaterial* m, float3 wo, float3 h) {
+    if (ndf_samples_bounded(m)) return ggx_reflection_pdf_bounded(m->alpha_x, m->alpha_y, wo, h);
+    return ndf_D(m, h) / (4.0f * ndf_projected_area(m, wo));
 }
 
 #endif

@@ -21,7 +21,8 @@
     X(FC_DIFFUSE_LAMBERT, "lambert")                                                                                   \
     X(FC_DIFFUSE_LAMBERT_1MF0, "lambert_1mf0")           /* Lambert x (1 - F0), tri-Ace (Gotanda 2010) */              \
     X(FC_DIFFUSE_OREN_NAYAR, "oren_nayar")               /* the A, B, sin(alpha) tan(beta) form (Oren & Nayar 1994) */ \
-    X(FC_DIFFUSE_ASHIKHMIN_SHIRLEY, "ashikhmin_shirley") /* 28/23 energy-conserving term (Ashikhmin & Shirley 2000) */
+    X(FC_DIFFUSE_ASHIKHMIN_SHIRLEY, "ashikhmin_shirley") /* 28/23 energy-conserving term (Ashikhmin & Shirley 2000) */ \
+    X(FC_DIFFUSE_EON, "eon")                             /* energy-preserving Oren-Nayar (Portsmouth et al. 2024) */
 
 /* Specular lobes (FcMaterial.specular_model). */
 #define FC_SPECULAR_LIST(X)                                                                                            \
@@ -56,9 +57,11 @@
     X(FC_FRESNEL_CONDUCTOR, "conductor")     /* exact, complex index eta + i k per channel */
 
 /* Microfacet sampling (FcMaterial.sampling). */
-#define FC_SAMPLE_LIST(X)                                                 \
-    X(FC_SAMPLE_VISIBLE, "visible") /* distribution of visible normals */ \
-    X(FC_SAMPLE_ALL, "all")         /* D(m) cos(theta_m) */
+#define FC_SAMPLE_LIST(X)                                                                              \
+    X(FC_SAMPLE_VISIBLE, "visible")             /* visible normals (Heitz 2018 for GGX; the oracle) */ \
+    X(FC_SAMPLE_ALL, "all")                     /* D(m) cos(theta_m) */                                \
+    X(FC_SAMPLE_SPHERICAL_CAP, "spherical_cap") /* visible normals by spherical caps (Dupuy 2023) */   \
+    X(FC_SAMPLE_BOUNDED, "bounded")             /* bounded visible normals (Eto & Tokuyoshi 2023) */
 
 /* The constants: 0, 1, ... in list order, and FC_*_COUNT after each list. */
 #define FC_MATERIAL_ENUM_VALUE(value, name) value,
@@ -72,6 +75,10 @@ enum { FC_SAMPLE_LIST(FC_MATERIAL_ENUM_VALUE) FC_SAMPLE_COUNT };
 
 /* Material flags (FcMaterial.flags). */
 #define FC_MAT_TWO_SIDED_EMISSION 1u
+/* Multiple-scattering energy compensation of the GGX / Beckmann lobes (Kulla & Conty
+ * 2017; kernels/bsdf/energy_compensation.cl), and the diffuse base weighted by
+ * 1 - E_spec instead of 1 - F0. The host sets it per material ("energy_compensation"). */
+#define FC_MAT_ENERGY_COMPENSATION 2u
 
 /* Phong-style exponents are clamped to [0, FC_PHONG_EXPONENT_MAX] (the kernels'
  * fc_phong_exponent, the host's shininess conversions and its clamp_material). */
@@ -86,7 +93,8 @@ enum { FC_SAMPLE_LIST(FC_MATERIAL_ENUM_VALUE) FC_SAMPLE_COUNT };
  * names the three apart). alpha_x/alpha_y are the microfacet roughness (alpha) along
  * the tangent and bitangent; exponent_x/exponent_y the Phong-style exponents
  * (Blinn-Phong uses exponent_x; Ashikhmin-Shirley nu = exponent_x, nv = exponent_y);
- * `sigma` is Oren-Nayar's sigma (radians). */
+ * `sigma` is Oren-Nayar's sigma (radians), or EON's roughness r in [0, 1] (the host's
+ * Material names the two apart). */
 typedef struct FcMaterial {
     float diffuse[3];
     fc_int diffuse_model;

@@ -171,7 +171,7 @@ inline FcMaterial sweep_material(Rng* r) {
     m.ndf = (int)(rng_next(r) % FC_NDF_COUNT);
     m.geometry = (int)(rng_next(r) % FC_G_COUNT);
     m.fresnel = (int)(rng_next(r) % FC_FRESNEL_COUNT);
-    m.sampling = (int)(rng_next(r) % 2u);
+    m.sampling = (int)(rng_next(r) % FC_SAMPLE_COUNT);
     m.alpha_x = sweep_log_uniform(r, -7.0f, 0.0f);
     float ratio = (rng_float(r) < 0.25f) ? 1.0f : sweep_log_uniform(r, -4.0f, 4.0f);
     m.alpha_y = clamp(m.alpha_x * ratio, 1e-7f, 1.0f);
@@ -186,7 +186,7 @@ inline FcMaterial sweep_material(Rng* r) {
         m.eta[c] = 20.0f * rng_float(r);
         m.k[c] = 10.0f * rng_float(r);
     }
-    m.flags = 0u;
+    m.flags = (rng_float(r) < 0.5f) ? FC_MAT_ENERGY_COMPENSATION : 0u;
     if (m.specular_model == FC_SPECULAR_DIELECTRIC) {
         /* eta from 1.0001 to 20, and its inverse (below 1) half the time. */
         float u = rng_float(r);
@@ -247,7 +247,7 @@ __kernel void mf_extreme_sweep(uint seed, __global uint* counters, __global FcMa
         bool side_ok = dielectric ? fabs(s.wi.z) > 0.0f : s.wi.z > 0.0f;
         if (!s.delta) ok = ok && side_ok && sweep_value_ok(s.f) && s.pdf > 0.0f && isfinite(s.pdf);
         if (!ok) sweep_fail(counters, fail_mats, fail_dirs, &m, wo, s.wi, 3, s.pdf);
-        if (ok && dielectric && (s.delta || ndf_samples_visible(&m))) {
+        if (ok && dielectric && !ec_enabled(&m) && (s.delta || ndf_samples_visible(&m))) {
             float etap = (s.wi.z * wo.z > 0.0f) ? 1.0f : relative_eta(m.ior, wo.z);
             float energy = max3(s.weight) * etap * etap;
             if (!(energy <= 1.001f)) sweep_fail(counters, fail_mats, fail_dirs, &m, wo, s.wi, 6, energy);
@@ -257,8 +257,9 @@ __kernel void mf_extreme_sweep(uint seed, __global uint* counters, __global FcMa
         bool ok = sweep_value_ok(s.weight) && all_finite(s.wi);
         if (!s.delta) ok = ok && s.wi.z > 0.0f && sweep_value_ok(s.f) && s.pdf > 0.0f && isfinite(s.pdf);
         if (!ok) sweep_fail(counters, fail_mats, fail_dirs, &m, wo, s.wi, 4, s.pdf);
-        /* weight = G F / G1(wo) <= 1 for F = 1, exact Smith G and visible normals. */
-        bool bounded = m.fresnel == FC_FRESNEL_ONE &&
+        /* weight = G F / G1(wo) <= 1 for F = 1, exact Smith G and visible normals (bounded
+         * ones too: their pdf is larger), without energy compensation. */
+        bool bounded = m.fresnel == FC_FRESNEL_ONE && !ec_enabled(&m) &&
                        (s.delta || (ndf_samples_visible(&m) &&
                                     (m.geometry == FC_G_SMITH_SEPARABLE || m.geometry == FC_G_SMITH_CORRELATED)));
         if (ok && bounded && !(max3(s.weight) <= 1.001f))

@@ -1,0 +1,157 @@
+/* Multiple-scattering energy compensation of the GGX and Beckmann microfacet lobes
+ * (FC_MAT_ENERGY_COMPENSATION; docs/brdf.md, "Energy compensation").
+ *
+ * A single-scattering lobe f_ss reflects E(mu) <= 1 of the light arriving at cos = mu
+ * (F = 1): the rest scatters more than once between microfacets. Kulla & Conty 2017
+ * ("Revisiting Physically Based Shading at Imageworks", SIGGRAPH course) add the lobe
+ *     f_ms(wo, wi) = F_ms (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg)),
+ *     E_avg = 2 int_0^1 E(mu) mu dmu,
+ * which is symmetric in wo and wi (reciprocal) and whose albedo is F_ms (1 - E(mu_o)),
+ * so that with F = 1 the total albedo is exactly 1. The Fresnel term of the light
+ * that bounces several times is (their eq. for coloured conductors)
+ *     F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)),  F_avg = 2 int_0^1 F(mu) mu dmu,
+ * F_avg by 8-point Gauss-Legendre quadrature of the material's Fresnel term (exact for
+ * Schlick's polynomial).
+ *
+ * The diffuse base under the specular layer (FC_DIFFUSE_LAMBERT_1MF0 with a compensated
+ * microfacet lobe) takes the energy the specular lobe leaves, again reciprocally:
+ *     f_d = rho/pi (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg),
+ * E_s the Fresnel-weighted albedo of the specular lobe (single + multiple scattering),
+ * so the diffuse albedo is rho (1 - E_s(mu_o)) and a white rough plastic reflects
+ * everything (Kulla & Conty 2017, "energy-conserving layering" without the internal
+ * bounces). E_s uses Schlick's form with the material's F0: E_ss,F = F0 E + (1 - F0) E5,
+ * E5 the albedo with F = (1 - wo.h)^5 (exact for Schlick, an approximation for the
+ * exact dielectric Fresnel).
+ *
+ * E, E5 and their averages are tables of albedo_tables.cl (32 x 32 in mu and in
+ * r = sqrt(alpha), bilinear), integrated on these kernels by tests/tools/albedo_tables.cpp.
+ * They hold for height-correlated Smith G, the only G compensated; an anisotropic
+ * lobe reads them at alpha = sqrt(alpha_x alpha_y), alpha above 1 at 1. */
+#ifndef FACET_BSDF_ENERGY_COMPENSATION_CL
+#define FACET_BSDF_ENERGY_COMPENSATION_CL
+
+#include "kernels/shared/material_layout.h"
+#include "kernels/bsdf/albedo_tables.cl"
+#include "kernels/bsdf/fresnel.cl"
+#include "kernels/util/math.cl"
+
+/* Whether the material's microfacet terms are compensated (GGX or Beckmann with
+ * height-correlated Smith G and the flag set). The caller handles the mirror limit. */
+inline bool ec_enabled(const FcMaterial* m) {
+    return (m->flags & FC_MAT_ENERGY_COMPENSATION) != 0u && (m->ndf == FC_NDF_GGX || m->ndf == FC_NDF_BECKMANN) &&
+           m->geometry == FC_G_SMITH_CORRELATED;
+}
+
+/* The table coordinate of the material's roughness: r = sqrt(alpha) in [0, 1]. */
+inline float ec_r(const FcMaterial* m) {
+    float a = sqrt(fmax(m->alpha_x, 0.0f) * fmax(m->alpha_y, 0.0f));
+    return clamp(sqrt(a), 0.0f, 1.0f); /* NaN -> 0 */
+}
+
+/* Bilinear lookup of a [ndf][r][mu] table at (mu, r). */
+inline float ec_lookup(__constant const float* table, int ndf, float mu, float r) {
+    float x = clamp(mu, 0.0f, 1.0f) * (float)(FC_ALBEDO_N_MU - 1);
+    float y = r * (float)(FC_ALBEDO_N_R - 1);
+    int i = min((int)x, FC_ALBEDO_N_MU - 2);
+    int j = min((int)y, FC_ALBEDO_N_R - 2);
+    float tx = x - (float)i, ty = y - (float)j;
+    __constant const float* row = table + (ndf * FC_ALBEDO_N_R + j) * FC_ALBEDO_N_MU + i;
+    float a = mix(row[0], row[1], tx);
+    float b = mix(row[FC_ALBEDO_N_MU], row[FC_ALBEDO_N_MU + 1], tx);
+    return mix(a, b, ty);
+}
+
+/* Linear lookup of a [ndf][r] table of averages. */
+inline float ec_lookup_avg(__constant const float* table, int ndf, float r) {
+    float y = r * (float)(FC_ALBEDO_N_R - 1);
+    int j = min((int)y, FC_ALBEDO_N_R - 2);
+    __constant const float* row = table + ndf * FC_ALBEDO_N_R + j;
+    return mix(row[0], row[1], y - (float)j);
+}
+
+inline int ec_ndf(const FcMaterial* m) { return m->ndf == FC_NDF_GGX ? 1 : 0; }
+
+/* E(mu): the single-scattering albedo with F = 1. */
+inline float ec_E(const FcMaterial* m, float mu) { return ec_lookup(fc_albedo_E, ec_ndf(m), mu, ec_r(m)); }
+inline float ec_E_avg(const FcMaterial* m) { return ec_lookup_avg(fc_albedo_E_avg, ec_ndf(m), ec_r(m)); }
+
+/* F_avg = 2 int F(mu) mu dmu by 8-point Gauss-Legendre on [0, 1]. */
+inline float3 ec_fresnel_avg(const FcMaterial* m) {
+    if (m->fresnel == FC_FRESNEL_ONE) return (float3)(1.0f);
+    const float t[4] = {0.18343464249564980f, 0.52553240991632899f, 0.79666647741362674f, 0.96028985649753623f};
+    const float w[4] = {0.36268378337836198f, 0.31370664587788729f, 0.22238103445337447f, 0.10122853629037626f};
+    float3 sum = (float3)(0.0f);
+    for (int k = 0; k < 4; ++k) {
+        float lo = 0.5f * (1.0f - t[k]), hi = 0.5f * (1.0f + t[k]);
+        sum += w[k] * (lo * fresnel_eval(m, lo) + hi * fresnel_eval(m, hi));
+    }
+    return sum;
+}
+
+/* F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), per channel, in [0, 1]. */
+inline float3 ec_fresnel_ms(const FcMaterial* m, float e_avg) {
+    float3 fa = clamp(ec_fresnel_avg(m), 0.0f, 1.0f);
+    return fa * fa * e_avg / ((float3)(1.0f) - fa * (1.0f - e_avg));
+}
+
+/* f_ms(wo, wi) for wo.z, wi.z > 0 (no cosine). */
+inline float3 ec_ms_eval(const FcMaterial* m, float3 wo, float3 wi) {
+    float e_avg = ec_E_avg(m);
+    float loss = 1.0f - e_avg;
+    if (!(loss > 1e-6f)) return (float3)(0.0f);
+    float k = fmax(1.0f - ec_E(m, wo.z), 0.0f) * fmax(1.0f - ec_E(m, wi.z), 0.0f) / (FC_PI * loss);
+    return ec_fresnel_ms(m, e_avg) * k;
+}
+
+/* The probability with which the compensated lobe samples f_ms (cosine-weighted)
+ * rather than f_ss: f_ms's share of the albedo at F = 1. */
+inline float ec_ms_probability(const FcMaterial* m, float3 wo) { return clamp(1.0f - ec_E(m, wo.z), 0.0f, 1.0f); }
+
+/* E_s(mu): the Fresnel-weighted albedo of the compensated specular lobe, Schlick form. */
+inline float3 ec_specular_albedo(const FcMaterial* m, float mu, float3 f_ms) {
+    float3 f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
+    float e = ec_E(m, mu);
+    float e5 = ec_lookup(fc_albedo_E5, ec_ndf(m), mu, ec_r(m));
+    return f0 * e + ((float3)(1.0f) - f0) * e5 + f_ms * (1.0f - e);
+}
+
+/* The coupled diffuse base's factor (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg). */
+inline float3 ec_diffuse_coupling(const FcMaterial* m, float3 wo, float3 wi) {
+    float e_avg = ec_E_avg(m);
+    float3 f_ms = ec_fresnel_ms(m, e_avg);
+    float3 f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
+    float e5_avg = ec_lookup_avg(fc_albedo_E5_avg, ec_ndf(m), ec_r(m));
+    float3 s_avg = f0 * e_avg + ((float3)(1.0f) - f0) * e5_avg + f_ms * (1.0f - e_avg);
+    float3 lo = fmax((float3)(1.0f) - ec_specular_albedo(m, wo.z, f_ms), (float3)(0.0f));
+    float3 li = fmax((float3)(1.0f) - ec_specular_albedo(m, wi.z, f_ms), (float3)(0.0f));
+    float3 den = fmax((float3)(1.0f) - s_avg, (float3)(1e-6f));
+    return lo * li / den;
+}
+
+/* Rough dielectrics (Turquin 2019, "Practical multiple scattering compensation for
+ * microfacet models", albedo scaling): f = f_ss / E(mu_o), E = E_R + E_T the energy albedo
+ * of the single-scattering dielectric seen from wo (table fc_albedo_dielectric, by the
+ * relative index seen from wo's side). The missing energy is returned in proportion to
+ * the single-scattering lobes, reflection and transmission alike. Unlike f_ms above this is
+ * not reciprocal (a known limit of albedo scaling; docs/brdf.md). */
+inline float ec_dielectric_albedo(const FcMaterial* m, float3 wo) {
+    float e = wo.z > 0.0f ? m->ior : 1.0f / m->ior;
+    int side = e >= 1.0f ? 0 : 1;
+    float ee = side == 0 ? e : 1.0f / e;
+    float x =
+        clamp((ee - 1.0f) / (ee + 1.0f), 0.0f, FC_ALBEDO_D_X_MAX) * ((float)(FC_ALBEDO_D_N_X - 1) / FC_ALBEDO_D_X_MAX);
+    float y = ec_r(m) * (float)(FC_ALBEDO_D_N_R - 1);
+    float z = clamp(fabs(wo.z), 0.0f, 1.0f) * (float)(FC_ALBEDO_D_N_MU - 1);
+    int k = min((int)x, FC_ALBEDO_D_N_X - 2), j = min((int)y, FC_ALBEDO_D_N_R - 2),
+        i = min((int)z, FC_ALBEDO_D_N_MU - 2);
+    float tx = x - (float)k, ty = y - (float)j, tz = z - (float)i;
+    __constant const float* t =
+        fc_albedo_dielectric +
+        (((ec_ndf(m) * 2 + side) * FC_ALBEDO_D_N_X + k) * FC_ALBEDO_D_N_R + j) * FC_ALBEDO_D_N_MU + i;
+    const int sr = FC_ALBEDO_D_N_MU, sx = FC_ALBEDO_D_N_MU * FC_ALBEDO_D_N_R;
+    float a = mix(mix(t[0], t[1], tz), mix(t[sr], t[sr + 1], tz), ty);
+    float b = mix(mix(t[sx], t[sx + 1], tz), mix(t[sx + sr], t[sx + sr + 1], tz), ty);
+    return clamp(mix(a, b, tx), 0.05f, 1.0f);
+}
+
+#endif

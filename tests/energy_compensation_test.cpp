@@ -1,0 +1,247 @@
+// Energy compensation (kernels/bsdf/energy_compensation.cl) and EON (kernels/bsdf/eon.cl):
+// white furnaces (the directional albedo of a white lobe, F = 1, is 1 within 1%) at
+// alpha in {0.05, 0.1, 0.25, 0.5, 0.75, 1} and theta_o up to 80 degrees for conductors
+// (GGX, Beckmann), rough plastic (Lambert under a compensated Schlick layer), rough
+// dielectrics (reflection + transmission, from both sides) and EON; reciprocity of every
+// reciprocal compensated lobe (the dielectric's albedo scaling is not). The furnace tables
+// print what docs/brdf.md shows.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "tests/cl_test_env.hpp"
+#include "tests/microfacet_test_util.hpp"
+#include "kernels/shared/material_layout.h"
+
+namespace facet {
+namespace {
+
+using test::mf::direction;
+using test::mf::f4;
+using test::mf::lobe_material;
+using test::mf::Vec3;
+
+const char* kKernels = "kernels/test/albedo_kernels.cl";
+constexpr float kAlphas[] = {0.05f, 0.1f, 0.25f, 0.5f, 0.75f, 1.0f};
+constexpr double kThetas[] = {0.0, 20.0, 40.0, 60.0, 70.0, 80.0};
+constexpr unsigned kSamples = 1u << 16;
+
+struct Albedo {
+    double mean[3], error[3];
+    int bad;
+};
+
+// The directional albedo of mats[i] seen from wo[i] (albedo_furnace).
+std::vector<Albedo> albedos(const std::vector<FcMaterial>& mats, const std::vector<Vec3>& wo, unsigned samples) {
+    using namespace test;
+    std::vector<cl_float4> dirs;
+    for (const Vec3& v : wo) dirs.push_back(f4(v));
+    cl::Buffer bm = mf::upload(mats), bd = mf::upload(dirs);
+    cl::Buffer bo(context().context(), CL_MEM_WRITE_ONLY, 2 * mats.size() * sizeof(cl_float4));
+    cl::Kernel k(program(kKernels), "albedo_furnace");
+    k.setArg(0, bm), k.setArg(1, bd), k.setArg(2, samples), k.setArg(3, bo);
+    context().queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(mats.size()));
+    std::vector<cl_float4> out = mf::download<cl_float4>(bo, 2 * mats.size());
+    std::vector<Albedo> r(mats.size());
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+        for (int c = 0; c < 3; ++c) r[i].mean[c] = out[2 * i].s[c], r[i].error[c] = out[2 * i + 1].s[c];
+        r[i].bad = int(out[2 * i + 1].s[3]);
+    }
+    return r;
+}
+
+FcMaterial white_conductor(int ndf, float alpha) {
+    FcMaterial m = lobe_material(FC_DIFFUSE_NONE, FC_SPECULAR_MICROFACET);
+    m.ndf = ndf;
+    m.fresnel = FC_FRESNEL_ONE;
+    m.alpha_x = m.alpha_y = alpha;
+    m.flags = FC_MAT_ENERGY_COMPENSATION;
+    return m;
+}
+
+FcMaterial white_plastic(int ndf, float alpha) {
+    FcMaterial m = white_conductor(ndf, alpha);
+    m.diffuse_model = FC_DIFFUSE_LAMBERT_1MF0;
+    m.fresnel = FC_FRESNEL_SCHLICK;
+    for (int c = 0; c < 3; ++c) m.diffuse[c] = 1.0f, m.specular[c] = 0.04f;
+    return m;
+}
+
+// A clear rough dielectric of index 1.5 (GGX or Beckmann), exact Fresnel.
+FcMaterial clear_dielectric(int ndf, float alpha) {
+    FcMaterial m = white_conductor(ndf, alpha);
+    m.specular_model = FC_SPECULAR_DIELECTRIC;
+    m.fresnel = FC_FRESNEL_DIELECTRIC;
+    m.ior = 1.5f;
+    for (int c = 0; c < 3; ++c) m.specular[c] = 1.0f;
+    return m;
+}
+
+FcMaterial white_eon(float r) {
+    FcMaterial m = lobe_material(FC_DIFFUSE_EON, FC_SPECULAR_NONE);
+    for (int c = 0; c < 3; ++c) m.diffuse[c] = 1.0f;
+    m.sigma = r;
+    return m;
+}
+
+// Runs the furnace over the alpha x theta grid for `make(alpha)`, with and without the
+// compensation, prints the table (single scattering / compensated) and checks the
+// compensated albedo is 1 within 1% (and 4 standard errors).
+void furnace(const char* title, FcMaterial (*make)(int, float), int ndf, bool from_below = false,
+             double tolerance = 0.01) {
+    std::vector<FcMaterial> mats;
+    std::vector<Vec3> wo;
+    for (float a : kAlphas)
+        for (double t : kThetas)
+            for (bool on : {false, true}) {
+                FcMaterial m = make(ndf, a);
+                if (!on) m.flags &= ~FC_MAT_ENERGY_COMPENSATION;
+                mats.push_back(m);
+                Vec3 w = direction(t, 0.3);
+                if (from_below) w.z = -w.z;
+                wo.push_back(w);
+            }
+    std::vector<Albedo> r = albedos(mats, wo, kSamples);
+    std::printf("\n%s: albedo, single scattering / compensated\n| alpha |", title);
+    for (double t : kThetas) std::printf(" %g deg |", t);
+    std::printf("\n|---|---|---|---|---|---|---|\n");
+    std::size_t i = 0;
+    for (float a : kAlphas) {
+        std::printf("| %.2f |", double(a));
+        for (double t : kThetas) {
+            const Albedo &ss = r[i], &ec = r[i + 1];
+            i += 2;
+            std::printf(" %.3f / %.3f |", ss.mean[0], ec.mean[0]);
+            EXPECT_EQ(ec.bad, 0);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(ec.mean[c], 1.0, tolerance + 4.0 * ec.error[c])
+                    << title << " alpha " << a << " theta_o " << t << " channel " << c;
+        }
+        std::printf("\n");
+    }
+}
+
+TEST(EnergyCompensation, FurnaceConductorGgx) { furnace("GGX conductor, F = 1", white_conductor, FC_NDF_GGX); }
+
+TEST(EnergyCompensation, FurnaceConductorBeckmann) {
+    furnace("Beckmann conductor, F = 1", white_conductor, FC_NDF_BECKMANN);
+}
+
+TEST(EnergyCompensation, FurnacePlasticGgx) {
+    furnace("GGX rough plastic, white base, F0 = 0.04", white_plastic, FC_NDF_GGX);
+}
+
+TEST(EnergyCompensation, FurnacePlasticBeckmann) {
+    furnace("Beckmann rough plastic, white base, F0 = 0.04", white_plastic, FC_NDF_BECKMANN);
+}
+
+// Rough dielectrics: the energy albedo (reflection + transmission times etap^2), from
+// outside and from inside (total internal reflection), Turquin's albedo scaling. From
+// inside the 16 x 12 x 8 table's interpolation across the critical angle and the index
+// leaves up to 2.5% (docs/brdf.md): asserted at 3% there, 1% from outside.
+TEST(EnergyCompensation, FurnaceDielectricGgx) {
+    furnace("GGX rough dielectric, ior 1.5, from outside", clear_dielectric, FC_NDF_GGX);
+    furnace("GGX rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_GGX, true, 0.03);
+}
+
+TEST(EnergyCompensation, FurnaceDielectricBeckmann) {
+    furnace("Beckmann rough dielectric, ior 1.5, from outside", clear_dielectric, FC_NDF_BECKMANN);
+    furnace("Beckmann rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_BECKMANN, true, 0.03);
+}
+
+TEST(EnergyCompensation, FurnaceEon) {
+    const float rs[] = {0.0f, 0.25f, 0.5f, 0.75f, 1.0f};
+    std::vector<FcMaterial> mats;
+    std::vector<Vec3> wo;
+    for (float r : rs)
+        for (double t : kThetas) mats.push_back(white_eon(r)), wo.push_back(direction(t, 0.3));
+    std::vector<Albedo> a = albedos(mats, wo, kSamples);
+    std::printf("\nEON, rho = 1: albedo\n| r |");
+    for (double t : kThetas) std::printf(" %g deg |", t);
+    std::printf("\n|---|---|---|---|---|---|---|\n");
+    std::size_t i = 0;
+    for (float r : rs) {
+        std::printf("| %.2f |", double(r));
+        for (double t : kThetas) {
+            std::printf(" %.4f |", a[i].mean[0]);
+            EXPECT_EQ(a[i].bad, 0);
+            EXPECT_NEAR(a[i].mean[0], 1.0, 0.01 + 4.0 * a[i].error[0]) << "EON r " << r << " theta_o " << t;
+            ++i;
+        }
+        std::printf("\n");
+    }
+}
+
+// A coloured conductor (gold's complex index): the compensation adds energy, never
+// more than a white furnace allows, and keeps each channel below 1.
+TEST(EnergyCompensation, ColouredConductorGainsEnergyBelowOne) {
+    std::vector<FcMaterial> mats;
+    std::vector<Vec3> wo;
+    for (float a : {0.25f, 0.5f, 1.0f})
+        for (bool on : {false, true}) {
+            FcMaterial m = white_conductor(FC_NDF_GGX, a);
+            m.fresnel = FC_FRESNEL_CONDUCTOR;
+            const float eta[3] = {0.188f, 0.543f, 1.33f}, k[3] = {3.40f, 2.23f, 1.87f};
+            for (int c = 0; c < 3; ++c) m.eta[c] = eta[c], m.k[c] = k[c];
+            if (!on) m.flags = 0u;
+            mats.push_back(m);
+            wo.push_back(direction(30.0, 0.0));
+        }
+    std::vector<Albedo> r = albedos(mats, wo, kSamples);
+    for (std::size_t i = 0; i < r.size(); i += 2)
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_GT(r[i + 1].mean[c], r[i].mean[c] + 2e-3) << "alpha index " << i / 2 << " channel " << c;
+            EXPECT_LT(r[i + 1].mean[c], 1.0) << "alpha index " << i / 2 << " channel " << c;
+        }
+}
+
+// f(wo, wi) = f(wi, wo) to float precision for every compensated lobe, anisotropic too.
+TEST(EnergyCompensation, Reciprocity) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<FcMaterial> mats;
+    std::vector<cl_float4> wo, wi;
+    auto dir = [&] {
+        double z = 0.02 + 0.98 * double(u(rng)), phi = 6.283185307179586 * double(u(rng));
+        double s = std::sqrt(1.0 - z * z);
+        return f4(Vec3{s * std::cos(phi), s * std::sin(phi), z});
+    };
+    for (int i = 0; i < 3000; ++i) {
+        int ndf = i % 2 ? FC_NDF_GGX : FC_NDF_BECKMANN;
+        FcMaterial m = i % 3 == 0 ? white_conductor(ndf, 0.02f + u(rng)) : white_plastic(ndf, 0.02f + u(rng));
+        if (i % 5 == 0) m.alpha_y = 0.02f + u(rng);
+        if (i % 7 == 0) m = white_eon(u(rng));
+        if (i % 11 == 0) {
+            m.fresnel = FC_FRESNEL_CONDUCTOR;
+            for (int c = 0; c < 3; ++c) m.eta[c] = 0.2f + 2.0f * u(rng), m.k[c] = 4.0f * u(rng);
+        }
+        for (int c = 0; c < 3; ++c) m.diffuse[c] = u(rng), m.specular[c] = u(rng);
+        mats.push_back(m);
+        wo.push_back(dir());
+        wi.push_back(dir());
+    }
+    using namespace test;
+    cl::Buffer bm = mf::upload(mats), a = mf::upload(wo), b = mf::upload(wi);
+    cl::Buffer bo(context().context(), CL_MEM_WRITE_ONLY, 2 * mats.size() * sizeof(cl_float4));
+    cl::Kernel k(program(kKernels), "albedo_reciprocity");
+    k.setArg(0, bm), k.setArg(1, a), k.setArg(2, b), k.setArg(3, bo);
+    context().queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(mats.size()));
+    std::vector<cl_float4> out = mf::download<cl_float4>(bo, 2 * mats.size());
+    int failures = 0;
+    for (std::size_t i = 0; i < mats.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            float f = out[2 * i].s[c], g = out[2 * i + 1].s[c];
+            bool ok = std::isfinite(f) && f >= 0.0f && std::fabs(f - g) <= 1e-5f * std::fmax(std::fabs(f), 1e-3f);
+            if (!ok && ++failures <= 10)
+                ADD_FAILURE() << "material " << i << " (diffuse " << mats[i].diffuse_model << ", ndf " << mats[i].ndf
+                              << ") channel " << c << ": f(wo, wi) = " << f << ", f(wi, wo) = " << g;
+        }
+    EXPECT_EQ(failures, 0);
+}
+
+}  // namespace
+}  // namespace facet

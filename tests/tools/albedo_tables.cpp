@@ -1,0 +1,161 @@
+// Writes kernels/bsdf/albedo_tables.cl: the directional albedos E(mu) (F = 1) and
+// E5(mu) (F = (1 - wo.h)^5) of the single-scattering GGX and Beckmann lobes with
+// height-correlated Smith G, and their cosine-weighted averages, which the energy
+// compensation of kernels/bsdf/energy_compensation.cl reads. The albedos are integrated
+// on the kernels themselves (kernels/test/albedo_kernels.cl, albedo_table) with 2^16
+// visible-normal samples per node; the averages 2 int E(mu) mu dmu are the exact
+// integrals of the piecewise-linear interpolant the kernels use, so the compensated
+// lobes' albedo integrates to exactly 1 at F = 1 whatever the table's resolution. It also
+// writes the rough dielectric's energy albedo E_R + E_T for Turquin 2019's albedo scaling.
+//
+// Usage (from the repository root, after building the target facet_albedo_tables):
+//   ./build/tests/facet_albedo_tables > kernels/bsdf/albedo_tables.cl && make format
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "tests/cl_test_env.hpp"
+#include "kernels/shared/material_layout.h"
+
+namespace {
+
+constexpr int kNMu = 32;
+constexpr int kNR = 32;
+constexpr unsigned kSamples = 1u << 16;
+
+// E and E5 at every node of one NDF, [r][mu].
+std::vector<cl_float2> integrate(int ndf) {
+    using namespace facet::test;
+    const std::size_t n = std::size_t(kNMu) * kNR;
+    cl::Buffer out(context().context(), CL_MEM_WRITE_ONLY, n * sizeof(cl_float2));
+    cl::Kernel k(program("kernels/test/albedo_kernels.cl"), "albedo_table");
+    k.setArg(0, ndf);
+    k.setArg(1, kNMu);
+    k.setArg(2, kNR);
+    k.setArg(3, kSamples);
+    k.setArg(4, out);
+    context().queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    std::vector<cl_float2> v(n);
+    context().queue().enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(cl_float2), v.data());
+    return v;
+}
+
+// The rough dielectric's energy albedo E_R + E_T of one NDF and side, [x][r][mu].
+constexpr int kDMu = 16;
+constexpr int kDR = 12;
+constexpr int kDX = 8;
+constexpr float kDXMax = 0.5f;  // x = (eta - 1) / (eta + 1): eta up to 3
+constexpr unsigned kDSamples = 1u << 14;
+
+std::vector<float> integrate_dielectric(int ndf, int side) {
+    using namespace facet::test;
+    const std::size_t n = std::size_t(kDMu) * kDR * kDX;
+    cl::Buffer out(context().context(), CL_MEM_WRITE_ONLY, n * sizeof(float));
+    cl::Kernel k(program("kernels/test/albedo_kernels.cl"), "albedo_dielectric_table");
+    k.setArg(0, ndf);
+    k.setArg(1, side);
+    k.setArg(2, kDMu);
+    k.setArg(3, kDR);
+    k.setArg(4, kDX);
+    k.setArg(5, kDXMax);
+    k.setArg(6, kDSamples);
+    k.setArg(7, out);
+    context().queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    std::vector<float> v(n);
+    context().queue().enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float), v.data());
+    // alpha = 0 and eta = 1 do not scatter: E = 1 exactly
+    for (int x = 0; x < kDX; ++x)
+        for (int j = 0; j < kDR; ++j)
+            for (int i = 0; i < kDMu; ++i)
+                if (x == 0 || j == 0) v[(std::size_t(x) * kDR + j) * kDMu + i] = 1.0f;
+    return v;
+}
+
+// 2 int_0^1 E(mu) mu dmu of the piecewise-linear interpolant of row[0..kNMu).
+double average(const std::vector<double>& row) {
+    const double h = 1.0 / (kNMu - 1);
+    double s = 0.0;
+    for (int i = 0; i + 1 < kNMu; ++i) {
+        const double mu = i * h;
+        s += 2.0 * h * (row[i] * (mu / 2.0 + h / 6.0) + row[i + 1] * (mu / 2.0 + h / 3.0));
+    }
+    return s;
+}
+
+// A float literal of OpenCL C: 7 significant digits, always with a point ("1.0f", not "1f").
+std::string literal(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.7g", x);
+    std::string s = buf;
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s + "f";
+}
+
+void print_array(const char* name, const std::vector<double>& v, int per_line) {
+    std::printf("__constant float %s[%zu] = {\n", name, v.size());
+    for (std::size_t i = 0; i < v.size(); ++i)
+        std::printf("%s%s,%s", i % per_line == 0 ? "    " : " ", literal(v[i]).c_str(),
+                    (i + 1) % per_line == 0 ? "\n" : "");
+    std::printf("};\n");
+}
+
+}  // namespace
+
+int main() {
+    try {
+        // [ndf][r][mu] in FC_NDF order: Beckmann (0), GGX (1).
+        static_assert(FC_NDF_BECKMANN == 0 && FC_NDF_GGX == 1, "albedo tables are indexed by ndf");
+        std::vector<double> e, e5, e_avg, e5_avg;
+        for (int ndf : {FC_NDF_BECKMANN, FC_NDF_GGX}) {
+            std::vector<cl_float2> t = integrate(ndf);
+            for (int j = 0; j < kNR; ++j) {
+                std::vector<double> row(kNMu), row5(kNMu);
+                for (int i = 0; i < kNMu; ++i) {
+                    // alpha = 0 is the mirror: E = 1 and E5 = (1 - mu)^5 exactly
+                    const double mu = double(i) / (kNMu - 1);
+                    row[i] = j == 0 ? 1.0 : double(t[j * kNMu + i].s[0]);
+                    row5[i] = j == 0 ? (1.0 - mu) * (1.0 - mu) * (1.0 - mu) * (1.0 - mu) * (1.0 - mu)
+                                     : double(t[j * kNMu + i].s[1]);
+                }
+                e.insert(e.end(), row.begin(), row.end());
+                e5.insert(e5.end(), row5.begin(), row5.end());
+                e_avg.push_back(average(row));
+                e5_avg.push_back(average(row5));
+            }
+        }
+        std::vector<double> d;
+        for (int ndf : {FC_NDF_BECKMANN, FC_NDF_GGX})
+            for (int side : {0, 1})
+                for (float v : integrate_dielectric(ndf, side)) d.push_back(double(v));
+        std::printf(
+            "/* Generated by tests/tools/albedo_tables.cpp (facet_albedo_tables): do not edit.\n"
+            " * Directional albedos of the single-scattering microfacet lobes with height-correlated\n"
+            " * Smith G, integrated on the kernels with %u visible-normal samples per node:\n"
+            " * fc_albedo_E[ndf][r][mu] with F = 1, fc_albedo_E5 with F = (1 - wo.h)^5, at\n"
+            " * mu = i / %d and r = sqrt(alpha) = j / %d (ndf: 0 Beckmann, 1 GGX), and their\n"
+            " * averages 2 int E(mu) mu dmu over the linear interpolant, [ndf][r]. */\n",
+            kSamples, kNMu - 1, kNR - 1);
+        std::printf("#ifndef FACET_BSDF_ALBEDO_TABLES_CL\n#define FACET_BSDF_ALBEDO_TABLES_CL\n\n");
+        std::printf("#define FC_ALBEDO_N_MU %d\n#define FC_ALBEDO_N_R %d\n\n", kNMu, kNR);
+        print_array("fc_albedo_E", e, 8);
+        print_array("fc_albedo_E5", e5, 8);
+        print_array("fc_albedo_E_avg", e_avg, 8);
+        print_array("fc_albedo_E5_avg", e5_avg, 8);
+        std::printf(
+            "\n/* The rough dielectric's energy albedo E_R + E_T (transmission times etap^2, exact\n"
+            " * Fresnel) seen from wo, %u samples per node: fc_albedo_dielectric[ndf][side][x][r][mu]\n"
+            " * at mu = i / %d, r = j / %d and x = (eta - 1) / (eta + 1) = %g k / %d, eta the relative\n"
+            " * index n_far / n_near (side 0) or its inverse (side 1, leaving the denser medium). */\n",
+            kDSamples, kDMu - 1, kDR - 1, double(kDXMax), kDX - 1);
+        std::printf("#define FC_ALBEDO_D_N_MU %d\n#define FC_ALBEDO_D_N_R %d\n#define FC_ALBEDO_D_N_X %d\n", kDMu, kDR,
+                    kDX);
+        std::printf("#define FC_ALBEDO_D_X_MAX %s\n\n", literal(kDXMax).c_str());
+        print_array("fc_albedo_dielectric", d, 8);
+        std::printf("\n#endif\n");
+        return 0;
+    } catch (const std::exception& ex) {
+        std::fprintf(stderr, "facet_albedo_tables: %s\n", ex.what());
+        return 1;
+    }
+}
