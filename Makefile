@@ -13,7 +13,9 @@ CLANG_FORMAT ?= $(shell command -v clang-format-14 || echo clang-format)
 CMAKE_FLAGS ?=
 
 # Debian 12 packages facet needs to build, test and run on the CPU (PoCL).
-# libembree-dev and zlib1g-dev are for the bench only (it skips their parts without them);
+# libtinygltf-dev (glTF), libassimp-dev (PLY) and zlib1g-dev (gzip'd meshes) read users' assets;
+# assimp-testmodels holds the malformed glTF files of SceneGltf.AssimpTestModels (skipped without it);
+# libembree-dev is for the bench only (it skips its part without it);
 # fiu-utils (libfiu) injects write failures in tests/faults/disk_full.sh (skipped without it);
 # oclgrind for the Oclgrind tier (ctest -L oclgrind, skipped without it).
 # Open MPI for `mpirun -n N facet render` (optional: CMake builds without it when absent).
@@ -21,7 +23,8 @@ PACKAGES := build-essential cmake pkg-config \
 	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
 	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
 	libgtest-dev clang libclang-rt-14-dev clang-format \
-	libembree-dev zlib1g-dev \
+	libtinygltf-dev libassimp-dev zlib1g-dev assimp-testmodels \
+	libembree-dev \
 	fiu-utils oclgrind \
 	libopenmpi-dev openmpi-bin
 

@@ -25,7 +25,6 @@
 #include "bench/bench.hpp"
 #include "bench/embree_bench.hpp"
 #include "host/film/error_metrics.hpp"
-#include "bench/ply_mesh.hpp"
 #include "host/bvh/bvh.hpp"
 #include "host/cl/runtime.hpp"
 #include "host/error.hpp"
@@ -357,13 +356,11 @@ int run(int argc, char** argv) {
         "facet_bench: BVH build, trace (against Embree), render throughput, program build and equal-time "
         "error (figures, not tests)"};
     std::string device, assets = (fs::path(FACET_SOURCE_DIR) / ".." / "shared" / "assets").string(), json_out, md_out;
-    std::string cache = (fs::temp_directory_path() / "facet_bench").string();
     bool quick = false;
     app.add_option("--device", device, "OpenCL device (index or name part)");
     app.add_option("--assets", assets, "Folder of the shared assets (skipped when absent)");
     app.add_option("--json", json_out, "Also write the figures as JSON to this file");
     app.add_option("--markdown", md_out, "Also write the tables as Markdown to this file");
-    app.add_option("--cache", cache, "Folder for meshes converted from PLY (the full dragon)");
     app.add_flag("--quick", quick, "Smaller images and fewer repetitions");
     std::size_t trace_local = 64;
     app.add_option("--trace-local", trace_local, "Work-group size of the trace kernels (default 64, as the renderer)")
@@ -397,12 +394,9 @@ int run(int argc, char** argv) {
             if (fs::exists(p)) cases.push_back({name, p.string()});
             else bench_print("skipping {}: {} not found\n", name, p.string());
         }
-        fs::path ply = fs::path(assets) / "dragon_stanford" / "dragon_vrip.ply.gz";
-        fs::path obj = fs::path(cache) / "dragon_vrip.obj";
-        std::string why;
+        fs::path ply = fs::path(assets) / "dragon_stanford" / "dragon_vrip.ply.gz";  // read by load_scene
         if (!fs::exists(ply)) bench_print("skipping dragon: {} not found\n", ply.string());
-        else if (!ply_gz_to_obj(ply.string(), obj.string(), &why)) bench_print("skipping dragon: {}\n", why);
-        else cases.push_back({"dragon", obj.string()});
+        else cases.push_back({"dragon", ply.string()});
     }
     const std::string device_label = fmt::format("{} / {} ({}, {} compute units)", ctx.desc().platform, ctx.desc().name,
                                                  ctx.desc().driver, ctx.desc().compute_units);

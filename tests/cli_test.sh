@@ -35,6 +35,13 @@ expect info 0 "triangles" -- "$FACET" info "$SCENES/cornell_box.json"
 # A bare OBJ renders with a default camera and light.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$tmp/tet.obj"
 expect render-obj 0 "wrote" -- "$FACET" render "$tmp/tet.obj" "${small[@]}" --out "$tmp/tet.exr"
+expect info-obj-normals 0 "normals +.*tet\.obj: normals: 12 flat" -- "$FACET" info "$tmp/tet.obj"
+# PLY and glTF 2.0 on their own; other renderers' scene files named for what they are.
+printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >"$tmp/tet.ply"
+expect render-ply 0 "wrote" -- "$FACET" render "$tmp/tet.ply" "${small[@]}" --out "$tmp/tetply.exr"
+expect render-gltf 0 "wrote" -- "$FACET" render "$SCENES/gltf_materials.gltf" "${small[@]}" --out "$tmp/gltf.exr"
+printf 'LookAt 0 0 5 0 0 0 0 1 0\nCamera "perspective"\nWorldBegin\nShape "sphere"\n' >"$tmp/scene.pbrt"
+expect foreign-pbrt 1 "not a facet scene: this looks like a pbrt-v4 file" -- "$FACET" render "$tmp/scene.pbrt" "${small[@]}"
 
 # Bad input: a clear message naming the file or option, a non-zero exit, no crash.
 expect missing-scene 1 "nope\.json" -- "$FACET" render "$tmp/nope.json" "${small[@]}"

@@ -38,10 +38,12 @@ void replay(const char* harness, const std::function<void(std::string_view)>& ta
 TEST(FuzzRegression, SceneJson) { replay("scene_json", fuzz::scene_json); }
 TEST(FuzzRegression, ObjMtl) { replay("obj_mtl", fuzz::obj_mtl); }
 TEST(FuzzRegression, EnvMap) { replay("env_map", fuzz::env_map); }
+TEST(FuzzRegression, Gltf) { replay("gltf", fuzz::gltf); }
+TEST(FuzzRegression, Ply) { replay("ply", fuzz::ply); }
 
 // The stored seed corpus loads (or fails cleanly) too: the harnesses' conventions hold.
 TEST(FuzzRegression, SeedCorpus) {
-    for (const char* h : {"scene_json", "obj_mtl", "env_map"}) {
+    for (const char* h : {"scene_json", "obj_mtl", "env_map", "gltf", "ply"}) {
         const std::filesystem::path dir = std::filesystem::path(FACET_FUZZ_DIR) / "corpus" / h;
         for (const auto& e : std::filesystem::directory_iterator(dir)) {
             SCOPED_TRACE(e.path().string());
@@ -50,6 +52,8 @@ TEST(FuzzRegression, SeedCorpus) {
             const std::string name(h);
             EXPECT_NO_THROW(name == "scene_json" ? fuzz::scene_json(bytes)
                             : name == "obj_mtl"  ? fuzz::obj_mtl(bytes)
+                            : name == "gltf"     ? fuzz::gltf(bytes)
+                            : name == "ply"      ? fuzz::ply(bytes)
                                                  : fuzz::env_map(bytes));
         }
     }

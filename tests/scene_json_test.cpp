@@ -154,6 +154,17 @@ TEST(SceneJson, JsonMissingMeshFile) {
                  {"b.json", "meshes[0]", "bad.obj:4:"});
 }
 
+TEST(SceneJson, JsonMeshNormalRule) {
+    TempDir d;
+    d.write("fold.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 2\nf 1 2 3\nf 1 4 2\n");
+    const Scene flat = load_scene(scene(d, "a.json", R"("meshes": [{"file": "fold.obj"}])"));
+    EXPECT_NEAR(flat.shading[0].n0[2], 1.0f, 1e-6f);
+    const Scene smooth = load_scene(scene(d, "b.json", R"("meshes": [{"file": "fold.obj", "normals": "smooth"}])"));
+    EXPECT_NEAR(smooth.shading[0].n0[2], glm::normalize(glm::vec3(0, 2, 1)).z, 1e-6f);
+    expect_error([&] { load_scene(scene(d, "c.json", R"("meshes": [{"file": "fold.obj", "normals": "soft"}])")); },
+                 {"c.json: meshes[0].normals", "unknown normal rule 'soft'"});
+}
+
 TEST(SceneJson, JsonWithoutCameraFramesTheScene) {
     TempDir d;
     const Scene s = load_scene(scene(d, "a.json", R"("shapes": [)" + kQuadShape + "]"));

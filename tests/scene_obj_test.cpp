@@ -67,10 +67,10 @@ TEST(SceneObj, ObjCrlfQuadsNegativeIndices) {
     expect_error([&] { load(d.write("bad.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 9\r\n")); }, {"bad.obj:4:"});
 }
 
-TEST(SceneObj, ObjSmoothNormalsWhenMissing) {
+TEST(SceneObj, ObjSmoothNormalsInSmoothingGroup) {
     TempDir d;
     // Triangle A (area 0.5) faces +z, triangle B (area 1) faces +y; they share vertices 1 and 2.
-    const auto p = d.write("fold.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 2\nf 1 2 3\nf 1 4 2\n");
+    const auto p = d.write("fold.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 2\ns 1\nf 1 2 3\nf 1 4 2\n");
     const Scene s = load(p);
     ASSERT_EQ(s.triangle_count(), 2u);
     const glm::vec3 shared = glm::normalize(glm::vec3(0, 2, 1));  // area-weighted sum
@@ -78,6 +78,57 @@ TEST(SceneObj, ObjSmoothNormalsWhenMissing) {
     EXPECT_NEAR(glm::length(vec(s.shading[0].n1) - shared), 0.0f, 1e-5f);
     EXPECT_NEAR(glm::length(vec(s.shading[0].n2) - glm::vec3(0, 0, 1)), 0.0f, 1e-5f);
     EXPECT_NEAR(glm::length(vec(s.shading[1].n1) - glm::vec3(0, 1, 0)), 0.0f, 1e-5f);
+}
+
+// Without normals, a face is smoothed only with faces of its own smoothing group; 's off',
+// 's 0' or no 's' at all leave it flat (the 8-vertex cube stays a cube).
+TEST(SceneObj, ObjSmoothingGroupsAndFlatFaces) {
+    TempDir d;
+    const std::string fold = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 2\n";
+    const glm::vec3 up(0, 0, 1), side(0, 1, 0), shared = glm::normalize(glm::vec3(0, 2, 1));
+    auto expect_corner = [](const Scene& s, std::size_t t, const float n[3], glm::vec3 want) {
+        EXPECT_NEAR(glm::length(vec(n) - want), 0.0f, 1e-5f) << "triangle " << t;
+    };
+    for (const char* flat : {"", "s off\n", "s 0\n"}) {
+        const Scene s = load(d.write("flat.obj", fold + flat + "f 1 2 3\nf 1 4 2\n"));
+        expect_corner(s, 0, s.shading[0].n0, up);
+        expect_corner(s, 1, s.shading[1].n0, side);
+        ASSERT_EQ(s.normal_sources.size(), 1u);
+        EXPECT_NE(s.normal_sources[0].find("6 flat (no normal in the file, smoothing off)"), std::string::npos)
+            << s.normal_sources[0];
+    }
+    // Two groups: no smoothing across the fold.
+    const Scene two = load(d.write("two.obj", fold + "s 1\nf 1 2 3\ns 2\nf 1 4 2\n"));
+    expect_corner(two, 0, two.shading[0].n0, up);
+    expect_corner(two, 1, two.shading[1].n0, side);
+    // 's off' after a group ends it.
+    const Scene off = load(d.write("off.obj", fold + "s 3\nf 1 2 3\ns off\nf 1 4 2\n"));
+    expect_corner(off, 0, off.shading[0].n0, up);
+    expect_corner(off, 1, off.shading[1].n0, side);
+    // One group across both.
+    const Scene one = load(d.write("one.obj", fold + "s 7\nf 1 2 3\nf 1 4 2\n"));
+    expect_corner(one, 0, one.shading[0].n0, shared);
+    ASSERT_EQ(one.normal_sources.size(), 1u);
+    EXPECT_NE(one.normal_sources[0].find("one.obj: normals: 6 smoothed"), std::string::npos) << one.normal_sources[0];
+    // The rule forced: smooth ignores 's off', flat ignores the file's normals.
+    ObjLoadOptions smooth;
+    smooth.normals = NormalRule::Smooth;
+    Scene forced;
+    load_obj(d.path("flat.obj"), forced, smooth);
+    expect_corner(forced, 0, forced.shading[0].n0, shared);
+    ObjLoadOptions flat;
+    flat.normals = NormalRule::Flat;
+    Scene ignored;
+    load_obj(d.write("vn.obj", fold + "vn 1 0 0\nf 1//1 2//1 3//1\n"), ignored, flat);
+    expect_corner(ignored, 0, ignored.shading[0].n0, up);
+    EXPECT_NE(ignored.normal_sources[0].find("3 flat (\"normals\": \"flat\")"), std::string::npos);
+}
+
+TEST(SceneObj, ObjBadSmoothingGroupNamesLine) {
+    TempDir d;
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (const char* bad : {"s on\n", "s -1\n", "s\n", "s 1 2\n"})
+        expect_error([&] { load(d.write("s.obj", tri + bad + "f 1 2 3\n")); }, {"s.obj:4:", "'s' expects"});
 }
 
 TEST(SceneObj, ObjNormalsUsedWhenPresent) {

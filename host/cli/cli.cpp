@@ -66,11 +66,14 @@ int run_cli(int argc, char** argv) {
 
     InfoOptions info_opt;
     CLI::App* info = app.add_subcommand("info", "Print what a scene holds: triangles, materials, lights, BVH");
-    info->add_option("scene", info_opt.scene, "Scene file (.json) or mesh (.obj)")->required();
+    info->add_option("scene", info_opt.scene,
+                     "Scene file (.json), mesh (.obj, .ply, .ply.gz) or glTF 2.0 (.gltf, .glb)")
+        ->required();
 
     RenderOptions opt;
     CLI::App* render = app.add_subcommand("render", "Render a scene progressively to EXR + PNG");
-    render->add_option("scene", opt.scene, "Scene file (.json) or mesh (.obj)")->required();
+    render->add_option("scene", opt.scene, "Scene file (.json), mesh (.obj, .ply, .ply.gz) or glTF 2.0 (.gltf, .glb)")
+        ->required();
     render->add_option("--spp", opt.spp, "Samples per pixel (default: the scene's)")->check(in_range(limits::kSpp));
     render
         ->add_option("--time", opt.time_limit,

@@ -29,6 +29,7 @@ int run_info(const InfoOptions& opt) {
                        ? fmt::format(" emission ({:.3f}, {:.3f}, {:.3f})", m.emission[0], m.emission[1], m.emission[2])
                        : "");
     }
+    for (const std::string& line : scene.normal_sources) fmt::print("normals     {}\n", line);
     std::size_t area = 0, punctual = 0;
     for (const FcLight& l : scene.lights) {
         if (l.type == FC_LIGHT_AREA_TRIANGLE) ++area;

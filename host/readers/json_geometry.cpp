@@ -1,4 +1,6 @@
-// JSON scene files: meshes (OBJ files), shapes (spheres, quads) and their transforms.
+// JSON scene files: meshes (OBJ, PLY and glTF files, chosen by extension), shapes (spheres, quads) and their
+// transforms.
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -7,7 +9,10 @@
 
 #include "host/error.hpp"
 #include "host/readers/json_loader.hpp"
+#include "host/readers/gltf_reader.hpp"
+#include "host/readers/gzip_file.hpp"
 #include "host/readers/obj_reader.hpp"
+#include "host/readers/ply_reader.hpp"
 #include "host/util/wide_vector.hpp"
 
 namespace facet {
@@ -53,7 +58,7 @@ glm::mat4 JsonLoader::transform(const Json& v, const std::string& path) {
 }
 
 void JsonLoader::mesh(const Json& v, const std::string& path) {
-    r.object(v, path, {"file", "material", "materials", "transform"});
+    r.object(v, path, {"file", "material", "materials", "transform", "normals"});
     r.require(v, path, "file");
     const std::string full = existing_file(v["file"], JsonReader::key(path, "file"), "mesh file");
     ObjLoadOptions options;
@@ -66,8 +71,32 @@ void JsonLoader::mesh(const Json& v, const std::string& path) {
             options.material_map[item.key()] = material_ref(item.value(), JsonReader::key(p, item.key()));
     }
     if (v.contains("transform")) options.transform = transform(v["transform"], JsonReader::key(path, "transform"));
+    if (v.contains("normals")) {
+        const std::string p = JsonReader::key(path, "normals");
+        const std::string name = r.string(v["normals"], p);
+        const std::optional<NormalRule> rule = normal_rule_from_name(name);
+        if (!rule) r.fail(p, fmt::format("unknown normal rule '{}' (expected file, smooth or flat)", name));
+        options.normals = *rule;
+    }
+    const std::string ext = extension_under_gz(full);
+    MeshOptions mesh_options;
+    mesh_options.transform = options.transform;
+    mesh_options.material_override = options.material_override;
+    mesh_options.normals = options.normals;
+    if ((ext == ".ply" || ext == ".gltf" || ext == ".glb") && !options.material_map.empty())
+        r.fail(JsonReader::key(path, "materials"),
+               "maps MTL material names, which only an OBJ has (use 'material' to replace every material)");
     try {
-        load_obj(full, scene, options);
+        if (ext == ".ply") {
+            load_ply(full, scene, mesh_options);
+        } else if (ext == ".gltf" || ext == ".glb") {
+            GltfLoadOptions gltf_options;
+            gltf_options.mesh = mesh_options;
+            gltf_options.take_camera = false;
+            load_gltf(full, scene, gltf_options);
+        } else {
+            load_obj(full, scene, options);
+        }
     } catch (const Error& e) {
         throw Error(fmt::format("{}: {}: {}", r.file(), path, e.what()));
     }

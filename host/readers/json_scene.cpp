@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "host/error.hpp"
+#include "host/readers/foreign_scene.hpp"
 #include "host/readers/json_loader.hpp"
 #include "host/readers/text_parse.hpp"
 #include "host/scene/settings_limits.hpp"
@@ -98,6 +99,7 @@ void for_each_in(JsonLoader& l, const Json& root, const char* name, F each) {
 bool load_json_scene(const std::string& path, Scene& scene) {
     const std::string content = text::read_file(path, "scene file");
     const Json root = parse_json(path, content);
+    if (std::string kind = foreign_json_kind(root); !kind.empty()) refuse_foreign_scene(path, kind);
     for (std::string& w : duplicate_json_keys(path, content)) scene.warnings.push_back(std::move(w));
     JsonLoader l{JsonReader(path), text::directory_of(path), scene, {}, -1};
     l.r.object(root, "", {"camera", "render", "materials", "meshes", "shapes", "lights", "environment"});

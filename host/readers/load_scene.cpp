@@ -1,16 +1,23 @@
-// load_scene: a JSON scene file, or a bare OBJ framed by a default camera and lit
-// by a default light when it has no emitters of its own.
+// load_scene: a JSON scene file, or a bare OBJ, PLY or glTF framed by a default camera
+// (glTF: its own first camera, if it has one) and lit by a default light when it has no
+// emitters of its own.
 #include "host/readers/load_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
 #include "host/error.hpp"
+#include "host/readers/foreign_scene.hpp"
+#include "host/readers/gltf_reader.hpp"
+#include "host/readers/gzip_file.hpp"
 #include "host/readers/json_scene.hpp"
 #include "host/readers/obj_reader.hpp"
+#include "host/readers/ply_reader.hpp"
 #include "host/util/strings.hpp"
 
 namespace facet {
@@ -65,23 +72,42 @@ void check_geometry(const Scene& scene, const std::string& path) {
     }
 }
 
+// The first bytes of a file ("" when it cannot be read: the caller's error names it).
+std::string file_head(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(4096, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+    return head;
+}
+
 }  // namespace
 
 Scene load_scene(const std::string& path) {
     Scene scene;
     scene.source_path = path;
-    const std::string ext = lower(std::filesystem::path(path).extension().string());
-    if (ext == ".obj") {
-        load_obj(path, scene);
+    const std::string ext = extension_under_gz(path);
+    if (ext == ".obj" || ext == ".ply") {
+        if (ext == ".obj") load_obj(path, scene);
+        else load_ply(path, scene);
         check_geometry(scene, path);
         scene.camera = frame_camera(scene);
         if (!has_emitter(scene)) add_default_light(scene);
+    } else if (ext == ".gltf" || ext == ".glb") {
+        const bool has_camera = load_gltf(path, scene);
+        check_geometry(scene, path);
+        if (!has_camera) scene.camera = frame_camera(scene);
+        if (!has_emitter(scene) && scene.punctual_lights.empty()) add_default_light(scene);
     } else if (ext == ".json") {
         const bool has_camera = load_json_scene(path, scene);
         check_geometry(scene, path);
         if (!has_camera) scene.camera = frame_camera(scene);
     } else {
-        throw Error(fmt::format("{}: unknown scene format '{}' (expected a .json scene or an .obj mesh)", path, ext));
+        if (std::string kind = foreign_scene_kind(ext, file_head(path)); !kind.empty())
+            refuse_foreign_scene(path, kind);
+        throw Error(fmt::format(
+            "{}: unknown scene format '{}' (expected a .json scene, an .obj or .ply mesh, or a .gltf or .glb file)",
+            path, ext));
     }
     build_lights(scene);
     if (scene.lights.empty()) {

@@ -1,6 +1,6 @@
-// Loading a scene from a file: a JSON scene (host/readers/json_scene.cpp) or a bare OBJ
-// (host/readers/obj_reader.cpp). Every function throws facet::Error with a message that
-// names the file (and the line where there is one) and says what is wrong.
+// Loading a scene from a file: a JSON scene (host/readers/json_scene.cpp), a bare OBJ
+// (obj_reader.cpp) or PLY (ply_reader.cpp), or a glTF 2.0 file (gltf_reader.cpp). Every function throws facet::Error
+// with a message that names the file (and the line where there is one) and says what is wrong.
 #pragma once
 
 #include <string>
@@ -9,8 +9,9 @@
 
 namespace facet {
 
-// Loads a JSON scene (*.json) or a mesh (*.obj, framed by a default camera and lit
-// by a default light). Calls build_lights() before returning.
+// Loads a JSON scene (*.json), a mesh (*.obj, *.ply, *.ply.gz, framed by a default
+// camera and lit by a default light) or a glTF 2.0 file (*.gltf, *.glb: its own camera
+// and lights where it has them, else the defaults). Calls build_lights() before returning.
 Scene load_scene(const std::string& path);
 
 }  // namespace facet

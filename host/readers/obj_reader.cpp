@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <cstdint>
 #include <map>
+#include <unordered_map>
 
 #include <fmt/format.h>
 #include <tiny_obj_loader.h>
@@ -16,6 +18,7 @@
 
 #include "host/error.hpp"
 #include "host/scene/material.hpp"
+#include "host/readers/mesh_normals.hpp"
 #include "host/readers/mtl_material.hpp"
 #include "host/readers/obj_validate.hpp"
 #include "host/readers/text_parse.hpp"
@@ -165,20 +168,25 @@ void check_indices(const std::string& path, const tinyobj::ObjReader& reader) {
     }
 }
 
-// The mesh in world space: positions, OBJ normals by the inverse transpose, and smooth,
-// area-weighted vertex normals for corners without an OBJ normal. A mirroring transform
-// reverses the winding (and the sign of position cross products): triangles are stored
-// with two corners swapped to keep the front face.
+// The mesh in world space: positions and OBJ normals (by the inverse transpose), and
+// the smooth, area-weighted vertex normals of each smoothing group ('s 1', 's 2', ...)
+// for corners without an OBJ normal; a face with smoothing off ('s off', 's 0', or no
+// 's' before it) is flat there. NormalRule::Smooth smooths such faces as one group,
+// NormalRule::Flat ignores the file's normals. A mirroring transform reverses the
+// winding (and the sign of position cross products): triangles are stored with two
+// corners swapped to keep the front face.
 struct WorldMesh {
     const tinyobj::attrib_t& attrib;
+    NormalRule rule;
     std::vector<glm::vec3> pos;
-    std::vector<glm::dvec3> smooth;  // area-weighted sums, in double (edges up to 1e18)
+    std::unordered_map<std::uint64_t, glm::dvec3> smooth;  // (vertex, group): area-weighted sums, in double
     glm::mat3 normal_matrix;
     bool mirrored;
     float side;
 
-    WorldMesh(const tinyobj::ObjReader& reader, const glm::mat4& transform)
-        : attrib(reader.GetAttrib()), normal_matrix(glm::transpose(glm::inverse(glm::mat3(transform)))),
+    WorldMesh(const tinyobj::ObjReader& reader, const glm::mat4& transform, NormalRule normal_rule)
+        : attrib(reader.GetAttrib()), rule(normal_rule),
+          normal_matrix(glm::transpose(glm::inverse(glm::mat3(transform)))),
           mirrored(glm::determinant(glm::mat3(transform)) < 0.0f), side(mirrored ? -1.0f : 1.0f) {
         const std::size_t npos = attrib.vertices.size() / 3;
         pos.resize(npos);
@@ -186,26 +194,50 @@ struct WorldMesh {
             const glm::vec4 p(attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2], 1.0f);
             pos[i] = glm::vec3(transform * p);
         }
-        smooth.assign(npos, glm::dvec3(0.0));
         for (const auto& shape : reader.GetShapes()) {
             const auto& idx = shape.mesh.indices;
-            for (std::size_t k = 0; k + 2 < idx.size(); k += 3) {
-                const std::size_t a = std::size_t(idx[k].vertex_index), b = std::size_t(idx[k + 1].vertex_index),
-                                  c = std::size_t(idx[k + 2].vertex_index);
+            for (std::size_t f = 0; 3 * f + 2 < idx.size(); ++f) {
+                const unsigned group = this->group(shape.mesh, f);
+                if (group == 0) continue;
+                const std::size_t a = std::size_t(idx[3 * f].vertex_index),
+                                  b = std::size_t(idx[3 * f + 1].vertex_index),
+                                  c = std::size_t(idx[3 * f + 2].vertex_index);
                 const glm::dvec3 area2 = wide_cross(pos[b] - pos[a], pos[c] - pos[a]);
-                for (std::size_t v : {a, b, c}) smooth[v] += double(side) * area2;
+                for (std::size_t v : {a, b, c}) smooth[key(v, group)] += double(side) * area2;
             }
         }
     }
 
-    // The corner's OBJ normal, else the smooth one, else (zero or invalid) the face's own.
-    glm::vec3 normal(const tinyobj::index_t& i, glm::vec3 face_n) const {
-        glm::vec3 n = unit_or(smooth[static_cast<std::size_t>(i.vertex_index)], face_n);
-        if (i.normal_index >= 0) {
+    static std::uint64_t key(std::size_t vertex, unsigned group) { return (std::uint64_t(vertex) << 32) | group; }
+
+    // The face's smoothing group as the rule reads it (0: flat).
+    unsigned group(const tinyobj::mesh_t& mesh, std::size_t face) const {
+        if (rule == NormalRule::Flat) return 0;
+        if (rule == NormalRule::Smooth) return 1;
+        return face < mesh.smoothing_group_ids.size() ? mesh.smoothing_group_ids[face] : 0;
+    }
+
+    // The corner's OBJ normal, else its group's smooth one, else (none, zero or invalid)
+    // the face's own; `counts` says which.
+    glm::vec3 normal(const tinyobj::index_t& i, unsigned group, glm::vec3 face_n, NormalCounts& counts) const {
+        if (i.normal_index >= 0 && rule != NormalRule::Flat) {
             const std::size_t k = static_cast<std::size_t>(i.normal_index);
-            n = normal_matrix * glm::vec3(attrib.normals[3 * k], attrib.normals[3 * k + 1], attrib.normals[3 * k + 2]);
+            const glm::vec3 n =
+                normal_matrix * glm::vec3(attrib.normals[3 * k], attrib.normals[3 * k + 1], attrib.normals[3 * k + 2]);
+            if (usable(n)) {
+                ++counts.file;
+                return n;
+            }
         }
-        return usable(n) ? n : face_n;
+        if (group != 0) {
+            const auto it = smooth.find(key(static_cast<std::size_t>(i.vertex_index), group));
+            if (it != smooth.end() && usable(glm::vec3(it->second))) {
+                ++counts.smoothed;
+                return unit_or(it->second, face_n);
+            }
+        }
+        ++counts.flat;
+        return face_n;
     }
 };
 
@@ -214,6 +246,7 @@ struct WorldMesh {
 void add_faces(const std::string& path, const tinyobj::ObjReader& reader, const WorldMesh& mesh,
                ObjMaterials& materials, Scene& scene) {
     std::size_t degenerate = 0, kept = 0;
+    NormalCounts counts;
     for (const auto& shape : reader.GetShapes()) {
         const auto& idx = shape.mesh.indices;
         for (std::size_t f = 0; 3 * f + 2 < idx.size(); ++f) {
@@ -225,7 +258,8 @@ void add_faces(const std::string& path, const tinyobj::ObjReader& reader, const 
             }
             ++kept;
             const glm::vec3 fn = mesh.side * triangle_normal(p[0], p[1], p[2]);
-            for (std::size_t c = 0; c < 3; ++c) n[c] = mesh.normal(idx[3 * f + c], fn);
+            const unsigned group = mesh.group(shape.mesh, f);
+            for (std::size_t c = 0; c < 3; ++c) n[c] = mesh.normal(idx[3 * f + c], group, fn, counts);
             if (mesh.mirrored) {
                 std::swap(p[1], p[2]);
                 std::swap(n[1], n[2]);
@@ -239,6 +273,10 @@ void add_faces(const std::string& path, const tinyobj::ObjReader& reader, const 
     if (degenerate > 0)
         scene.warnings.push_back(
             fmt::format("{}: {} of {} triangles have zero area and were dropped", path, degenerate, degenerate + kept));
+    scene.normal_sources.push_back(describe_normals(
+        path, counts,
+        mesh.rule == NormalRule::Smooth ? forced_reason(mesh.rule) : "area-weighted within the smoothing group",
+        mesh.rule == NormalRule::Flat ? forced_reason(mesh.rule) : "no normal in the file, smoothing off"));
 }
 
 }  // namespace
@@ -256,7 +294,7 @@ void load_obj(const std::string& path, Scene& scene, const ObjLoadOptions& optio
     check_material_names(path, obj, options, scene);
     ObjMaterials materials(path, obj, options, scene);
     check_indices(path, obj.reader);
-    const WorldMesh mesh(obj.reader, options.transform);
+    const WorldMesh mesh(obj.reader, options.transform, options.normals);
     add_faces(path, obj.reader, mesh, materials, scene);
 }
 

@@ -7,6 +7,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "host/readers/mesh_normals.hpp"
 #include "host/scene/scene.hpp"
 
 namespace facet {
@@ -22,6 +23,7 @@ struct ObjLoadOptions {
     glm::mat4 transform{1.0f};
     int material_override = -1;               // as above
     std::map<std::string, int> material_map;  // MTL material name -> scene material index
+    NormalRule normals = NormalRule::File;    // the file's normals and smoothing groups, or forced
 };
 
 // As above, with a per-MTL-material override (`material_map`); a name in the map

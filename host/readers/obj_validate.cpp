@@ -98,6 +98,10 @@ ObjScan validate_obj(const std::string& path, std::string_view content) {
         } else if (kw == "f") {
             check_face(ctx, f, scan);
             ++scan.faces;
+        } else if (kw == "s") {
+            long group = 0;
+            if (f.size() != 2 || (f[1] != "off" && (!text::parse_int(f[1], group) || group < 0 || group > 0xffffffffL)))
+                ctx.fail("'s' expects 'off' or a smoothing group number >= 0");
         } else if (kw == "mtllib") {
             if (f.size() < 2) ctx.fail("'mtllib' without a file name");
             for (std::size_t i = 1; i < f.size(); ++i) {
@@ -108,7 +112,7 @@ ObjScan validate_obj(const std::string& path, std::string_view content) {
                 scan.usemtls.push_back({ctx.line, std::string(text::rest_after_keyword(lines[li]))});
             }
         }
-        // Anything else (o, g, s, l, p, vp, cstype, ...) is left to tinyobjloader or ignored.
+        // Anything else (o, g, l, p, vp, cstype, ...) is left to tinyobjloader or ignored.
     }
     if (scan.faces == 0) {
         throw Error(fmt::format("{}: no faces (an OBJ scene needs at least one 'f' statement)", path));

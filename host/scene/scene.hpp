@@ -61,6 +61,8 @@ struct Scene {
     RenderSettings settings;
     std::string source_path;            // the file it was loaded from
     std::vector<std::string> warnings;  // non-fatal problems met while loading
+    // One line per mesh file: how its shading normals were obtained (`facet info` prints them).
+    std::vector<std::string> normal_sources;
 
     std::size_t triangle_count() const { return shading.size(); }
 };

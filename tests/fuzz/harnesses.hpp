@@ -1,4 +1,4 @@
-// The three fuzz targets as plain functions, shared by the libFuzzer executables
+// The fuzz targets as plain functions, shared by the libFuzzer executables
 // (fuzz_*.cpp, one call each) and by the regression test that replays every input in
 // tests/fuzz/regressions/<harness>/ through the gcc build (tests/fuzz_regression_test.cpp).
 // Each returns normally for a scene that loads and keeps the invariants of
@@ -22,7 +22,9 @@
 #include "host/readers/environment_file.hpp"
 #include "host/scene/environment_map.hpp"
 #include "host/readers/load_scene.hpp"
+#include "host/readers/gltf_reader.hpp"
 #include "host/readers/obj_reader.hpp"
+#include "host/readers/ply_reader.hpp"
 
 namespace facet::fuzz {
 
@@ -111,6 +113,64 @@ inline void env_map(std::string_view input) {
                  add_material(scene, default_material(), "floor"));
         scene.environment = std::move(env);
         build_lights(scene);
+        check_scene(scene);
+    } catch (const Error&) {
+        // a clear error: the expected outcome of a bad file
+    }
+}
+
+// --- glTF ------------------------------------------------------------------------------
+// The input is written as in.glb when it starts with glTF's binary magic ("glTF"), else
+// as in.gltf; beside it lies buf.bin (96 bytes: four VEC3 positions then six uint16
+// indices and padding) for a .gltf to name. Loaded by load_scene (tinygltf, the accessor
+// checks, materials, nodes, camera, lights, default light), then by load_gltf into a
+// JSON-scene-like setting with a mirroring transform and forced smooth normals.
+inline void gltf(std::string_view input) {
+    static const bool files = [] {
+        std::string bin;
+        const float pos[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+        const std::uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
+        bin.append(reinterpret_cast<const char*>(pos), sizeof pos);
+        bin.append(reinterpret_cast<const char*>(idx), sizeof idx);
+        bin.resize(96, '\0');
+        write_file("buf.bin", bin);
+        return true;
+    }();
+    (void)files;
+    const bool glb = input.substr(0, 4) == "glTF";
+    const std::string path = write_file(glb ? "in.glb" : "in.gltf", input);
+    try {
+        check_scene(load_scene(path));
+        Scene scene;
+        GltfLoadOptions options;
+        options.mesh.transform = glm::scale(glm::mat4(1.0f), glm::vec3(-2.0f, 0.5f, 3.0f));
+        options.mesh.normals = NormalRule::Smooth;
+        options.take_camera = false;
+        load_gltf(path, scene, options);
+        build_lights(scene);
+        scene.camera = frame_camera(scene);
+        check_scene(scene);
+    } catch (const Error&) {
+        // a clear error: the expected outcome of a bad file
+    }
+}
+
+// --- PLY -------------------------------------------------------------------------------
+// The input is written as in.ply, or as in.ply.gz when it starts with gzip's magic bytes,
+// and loaded by load_scene (the header check, Assimp, normals, default camera and light),
+// then by load_ply with a mirroring transform.
+inline void ply(std::string_view input) {
+    const bool gz = input.size() >= 2 && static_cast<unsigned char>(input[0]) == 0x1f &&
+                    static_cast<unsigned char>(input[1]) == 0x8b;
+    const std::string path = write_file(gz ? "in.ply.gz" : "in.ply", input);
+    try {
+        check_scene(load_scene(path));
+        Scene scene;
+        MeshOptions options;
+        options.transform = glm::scale(glm::mat4(1.0f), glm::vec3(-2.0f, 0.5f, 3.0f));
+        load_ply(path, scene, options);
+        build_lights(scene);
+        scene.camera = frame_camera(scene);
         check_scene(scene);
     } catch (const Error&) {
         // a clear error: the expected outcome of a bad file

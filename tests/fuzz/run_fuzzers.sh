@@ -8,7 +8,7 @@
 # A finding (crash, sanitizer report, leak, timeout, out-of-memory, broken invariant)
 # fails the script and leaves its input in BUILD_FUZZ_DIR/fuzz-run/<h>/ (crash-*,
 # timeout-*, oom-*, leak-*): reproduce with `BUILD_FUZZ_DIR/fuzz_<h> FILE`.
-# Environment: FUZZ_HARNESSES (default "scene_json obj_mtl env_map"), FUZZ_JOBS
+# Environment: FUZZ_HARNESSES (default "scene_json obj_mtl env_map gltf ply"), FUZZ_JOBS
 # (parallel harnesses, default 1), FUZZ_RSS_MB (default 2048), FUZZ_TIMEOUT (seconds
 # an input may take, default 10).
 set -u
@@ -16,7 +16,7 @@ build=$(cd "${1:?usage: run_fuzzers.sh BUILD_FUZZ_DIR [SECONDS_EACH]}" && pwd) |
 seconds=${2:-30}
 here=$(cd "$(dirname "$0")" && pwd)
 assets=$(cd "$here/../../.." && pwd)/shared/assets
-harnesses=${FUZZ_HARNESSES:-scene_json obj_mtl env_map}
+harnesses=${FUZZ_HARNESSES:-scene_json obj_mtl env_map gltf ply}
 rss=${FUZZ_RSS_MB:-2048}
 timeout=${FUZZ_TIMEOUT:-10}
 # UBSan reports abort (the build uses -fno-sanitize-recover); leaks are findings.
@@ -40,6 +40,15 @@ asset_seeds() {
                 head -c 3000 "$(dirname "$obj")/$mtl" >>"$out"
             fi
         done < <(find "$assets" -name '*.obj' -size -20M | sort | head -n 12)
+        ;;
+    gltf)
+        # The small glTF files of Debian's assimp-testmodels, when installed.
+        find /usr/share/assimp/models/glTF2 \( -name '*.glb' -o -name '*.gltf' \) -size -64k 2>/dev/null |
+            sort | head -n 24 | while IFS= read -r f; do n=$((n + 1)); cp "$f" "$dir/testmodel_$n.${f##*.}"; done
+        ;;
+    ply)
+        # The first 200 vertices and faces' worth of each PLY of the assets is too
+        # structured to cut; the stored seeds cover the formats.
         ;;
     env_map)
         local maps

@@ -1,0 +1,78 @@
+// PLY headers, checked line by line.
+#include "host/readers/ply_header.hpp"
+
+#include <fmt/format.h>
+
+#include "host/error.hpp"
+#include "host/readers/text_parse.hpp"
+
+namespace facet {
+namespace {
+
+bool scalar_type(std::string_view t) {
+    for (std::string_view k : {"char", "uchar", "short", "ushort", "int", "uint", "float", "double", "int8", "uint8",
+                               "int16", "uint16", "int32", "uint32", "float32", "float64"})
+        if (t == k) return true;
+    return false;
+}
+
+}  // namespace
+
+PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
+    PlyHeader h;
+    auto fail = [&](int line, const std::string& what) { throw Error(fmt::format("{}:{}: {}", path, line, what)); };
+    std::size_t pos = 0;
+    std::string element;
+    std::uint64_t elements = 0;  // every element's count, summed
+    bool format = false;
+    for (int line = 1;; ++line) {
+        const std::size_t end = bytes.find('\n', pos);
+        if (end == std::string_view::npos || line > 100000)
+            fail(line, "the PLY header has no 'end_header' line (the file is cut short or not a PLY file)");
+        std::string_view text = bytes.substr(pos, end - pos);
+        if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+        pos = end + 1;
+        const auto f = text::split_fields(text);
+        if (line == 1) {
+            if (f.size() != 1 || f[0] != "ply") fail(1, "not a PLY file (the first line must be 'ply')");
+            continue;
+        }
+        if (f.empty() || f[0] == "comment" || f[0] == "obj_info") continue;
+        if (f[0] == "end_header") break;
+        if (f[0] == "format") {
+            if (f.size() != 3 || (f[1] != "ascii" && f[1] != "binary_little_endian" && f[1] != "binary_big_endian"))
+                fail(line, "expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
+            h.binary = f[1] != "ascii";
+            format = true;
+        } else if (f[0] == "element") {
+            long count = 0;
+            if (f.size() != 3 || !text::parse_int(f[2], count) || count < 0 || count > (1L << 40))
+                fail(line, "expected 'element NAME COUNT' with a count in [0, 2^40]");
+            element = std::string(f[1]);
+            elements += std::uint64_t(count);
+            if (element == "vertex") h.vertices = std::uint64_t(count);
+            if (element == "face") h.faces = std::uint64_t(count);
+        } else if (f[0] == "property") {
+            if (element.empty()) fail(line, "a property before any element");
+            const bool list = f.size() == 5 && f[1] == "list" && scalar_type(f[2]) && scalar_type(f[3]);
+            if (!list && !(f.size() == 3 && scalar_type(f[1])))
+                fail(line, "expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
+        } else {
+            fail(line, fmt::format("unknown PLY header line '{}'", f[0]));
+        }
+    }
+    if (!format) fail(2, "the PLY header has no 'format' line");
+    if (h.vertices == 0 || h.faces == 0)
+        throw Error(fmt::format("{}: the PLY file has no vertices or no faces (element vertex / element face)", path));
+    // Every element takes at least one byte (binary) or two (ASCII: a number and a blank):
+    // a header promising more is cut short or corrupt (and would make Assimp allocate for it).
+    if (elements > (bytes.size() - pos) / (h.binary ? 1 : 2) + 1)
+        throw Error(
+            fmt::format("{}: the PLY header promises {} elements, but only {} bytes follow it (the file is "
+                        "cut short or corrupt)",
+                        path, elements, bytes.size() - pos));
+    h.body_offset = pos;
+    return h;
+}
+
+}  // namespace facet

@@ -1,0 +1,23 @@
+// A PLY header checked line by line before Assimp reads the file, so that a malformed
+// header gives "file.ply:LINE: ..." (and never reaches Assimp, which loops forever on a
+// header without end_header).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace facet {
+
+struct PlyHeader {
+    std::uint64_t vertices = 0, faces = 0;
+    bool binary = false;
+    std::size_t body_offset = 0;  // the first byte after "end_header\n"
+};
+
+// Throws facet::Error naming `path` and the line when the header is not a PLY header
+// (first line "ply", a format line, elements with counts and typed properties, and
+// "end_header"), or when it has no vertex or face element.
+PlyHeader check_ply_header(const std::string& path, std::string_view bytes);
+
+}  // namespace facet

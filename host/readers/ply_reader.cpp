@@ -1,0 +1,81 @@
+// PLY through Assimp: the file is read (and inflated when gzip'd) here, checked to be a
+// PLY, then handed to Assimp's PLY importer from memory with triangulation and
+// validation of its data structure; every index it returns is checked again here.
+#include "host/readers/ply_reader.hpp"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <fmt/format.h>
+
+#include "host/error.hpp"
+#include "host/readers/gzip_file.hpp"
+#include "host/readers/ply_header.hpp"
+
+namespace facet {
+namespace {
+
+// The mesh's triangles, its positions and (when it has them) normals; points and lines
+// (which Assimp sorts out) are skipped.
+std::size_t convert(const std::string& path, const aiMesh& m, IndexedMesh& out) {
+    out.positions.resize(m.mNumVertices);
+    for (unsigned i = 0; i < m.mNumVertices; ++i)
+        out.positions[i] = glm::vec3(m.mVertices[i].x, m.mVertices[i].y, m.mVertices[i].z);
+    if (m.mNormals) {
+        out.normals.resize(m.mNumVertices);
+        for (unsigned i = 0; i < m.mNumVertices; ++i)
+            out.normals[i] = glm::vec3(m.mNormals[i].x, m.mNormals[i].y, m.mNormals[i].z);
+    }
+    std::size_t skipped = 0;
+    out.indices.reserve(std::size_t(m.mNumFaces) * 3);
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+        const aiFace& face = m.mFaces[f];
+        if (face.mNumIndices != 3) {
+            ++skipped;
+            continue;
+        }
+        for (unsigned c = 0; c < 3; ++c) {
+            if (face.mIndices[c] >= m.mNumVertices)
+                throw Error(fmt::format("{}: face {} names vertex {}, but there are {} vertices", path, f,
+                                        face.mIndices[c], m.mNumVertices));
+            out.indices.push_back(face.mIndices[c]);
+        }
+    }
+    return skipped;
+}
+
+}  // namespace
+
+void load_ply(const std::string& path, Scene& scene, const MeshOptions& options) {
+    const std::string bytes = read_maybe_gzipped(path, "PLY file");
+    check_ply_header(path, bytes);
+    Assimp::Importer importer;
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene* ai = nullptr;
+    try {
+        ai = importer.ReadFileFromMemory(bytes.data(), bytes.size(),
+                                         aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                             aiProcess_SortByPType | aiProcess_ValidateDataStructure,
+                                         "ply");
+    } catch (const std::exception& e) {  // Assimp catches its own; this is for allocation failures
+        throw Error(fmt::format("{}: cannot read the PLY file: {}", path, e.what()));
+    }
+    if (!ai || !ai->mRootNode)
+        throw Error(fmt::format("{}: cannot read the PLY file: {}", path, importer.GetErrorString()));
+    if (ai->mNumMeshes == 0) throw Error(fmt::format("{}: the PLY file has no faces", path));
+    int material = options.material_override;
+    if (material < 0) material = add_material(scene, default_material(), "default");
+    MeshTally tally;
+    std::size_t skipped = 0;
+    for (unsigned i = 0; i < ai->mNumMeshes; ++i) {
+        IndexedMesh mesh;
+        skipped += convert(path, *ai->mMeshes[i], mesh);
+        add_indexed_mesh(mesh, options.transform, material, options.normals, true, scene, tally);
+    }
+    if (skipped > 0)
+        scene.warnings.push_back(fmt::format("{}: {} faces with fewer than 3 vertices were skipped", path, skipped));
+    finish_mesh_file(path, tally, options.normals, "area-weighted vertex normals: the PLY has none", "no usable normal",
+                     scene);
+}
+
+}  // namespace facet
