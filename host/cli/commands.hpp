@@ -4,6 +4,9 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "host/film/tonemap.hpp"
 
 namespace facet {
 
@@ -13,7 +16,14 @@ struct RenderOptions {
     std::optional<std::uint32_t> seed;
     std::optional<int> strategy;  // FC_STRATEGY_*
     std::optional<int> sampler;   // FC_SAMPLER_*
+    std::optional<int> filter;    // FC_FILTER_*
+    std::optional<float> filter_radius;
+    std::optional<float> clamp;  // the largest contribution of one sample (biased; off by default)
+    // The camera: --eye, --target, --up (3 numbers each), --fov, --aperture, --focus-distance.
+    std::vector<float> eye, target, up;
+    std::optional<float> fov, aperture, focus_distance;
     std::optional<double> time_limit;
+    std::optional<double> noise_threshold;  // stop once the half-buffer relMSE estimate is this low
     std::string device;
     std::string out;
     std::string report;              // CSV; summary .json and plot .svg beside it
@@ -22,6 +32,7 @@ struct RenderOptions {
     std::string resume;              // --resume: a film to continue
     std::optional<double> snapshot;  // seconds between snapshots of the image so far
     float exposure = 0.0f;
+    ToneMap tonemap = ToneMap::Clip;  // of the PNG
     bool quiet = false;
     bool generic = false;  // build every kernel feature, not only the scene's
 };

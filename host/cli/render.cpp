@@ -12,6 +12,7 @@
 #include <fstream>
 
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 
 #include "host/bvh/bvh.hpp"
 #include "host/cli/commands.hpp"
@@ -27,6 +28,7 @@
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/report/report.hpp"
+#include "host/scene/pixel_filter.hpp"
 #include "host/readers/load_scene.hpp"
 
 namespace facet {
@@ -45,21 +47,42 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
     if (opt.seed) s.seed = *opt.seed;
     if (opt.strategy) s.strategy = *opt.strategy;
     if (opt.sampler) s.sampler = *opt.sampler;
+    if (opt.filter) s.filter = *opt.filter;
+    if (opt.filter_radius) s.filter_radius = *opt.filter_radius;
+    if (opt.clamp) s.clamp = *opt.clamp;
+    CameraDesc& c = scene.camera;
+    auto vec = [](const std::vector<float>& v) { return glm::vec3(v[0], v[1], v[2]); };
+    if (opt.eye.size() == 3) c.eye = vec(opt.eye);
+    if (opt.target.size() == 3) c.target = vec(opt.target);
+    if (opt.up.size() == 3) c.up = vec(opt.up);
+    if (opt.fov) c.fov_y_degrees = *opt.fov;
+    if (opt.aperture) c.aperture = *opt.aperture;
+    if (opt.focus_distance) c.focus_distance = *opt.focus_distance;
+    const glm::vec3 forward = c.target - c.eye;
+    if (!(glm::length(forward) > 0.0f) || !std::isfinite(glm::length(forward)))
+        throw Error("--eye and --target: the camera needs two distinct points at a finite distance");
+    if (!(glm::length(glm::cross(glm::normalize(forward), c.up)) > 1e-6f))
+        throw Error("--up: must be non-zero and not parallel to the view direction (--target minus --eye)");
 }
 
 void write_image(const std::string& out, const std::vector<float>& rgb, const Renderer& r, const Scene& scene,
-                 float exposure, double wall_s, bool with_png = true) {
+                 const RenderOptions& opt, double wall_s, bool with_png = true) {
     ImageMetadata meta;
     meta.ints.push_back({"facet:spp", int(r.stats().samples_per_pixel)});
     meta.ints.push_back({"facet:seed", int(scene.settings.seed)});
     meta.ints.push_back({"facet:max_depth", scene.settings.max_depth});
     meta.strings.push_back({"facet:sampler", scene.settings.sampler == FC_SAMPLER_SOBOL ? "sobol" : "independent"});
+    const RenderSettings& s = scene.settings;
+    meta.strings.push_back({"facet:filter", pixel_filter_info(s.filter).name});
+    meta.floats.push_back({"facet:filter_radius", pixel_filter_radius(s.filter, s.filter_radius)});
+    // The clamp biases the image: recorded when on (0 would read as "clamped to 0").
+    if (s.clamp > 0.0f) meta.floats.push_back({"facet:clamp", s.clamp});
     meta.floats.push_back({"facet:render_seconds", float(r.stats().render_seconds)});
     meta.floats.push_back({"facet:wall_seconds", float(wall_s)});
     meta.strings.push_back({"facet:device", r.context().desc().platform + " / " + r.context().desc().name});
     meta.strings.push_back({"facet:scene", scene.source_path});
     write_exr(out, r.width(), r.height(), rgb, meta);
-    if (with_png) write_png(replace_extension(out, ".png"), r.width(), r.height(), rgb, exposure);
+    if (with_png) write_png(replace_extension(out, ".png"), r.width(), r.height(), rgb, opt.exposure, opt.tonemap);
 }
 
 // Saves the film (film/film_state.hpp) to `path`; false, with the message printed, on failure.
@@ -80,17 +103,17 @@ bool save_film_or_rescue(const OutputPlan& plan, const Renderer& r, const Scene&
 // image fails. An image or film that cannot be written where asked goes to a rescue path
 // (outputs.hpp), said on stderr, and false is returned: no finished sample is lost.
 bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const Renderer& r, const Scene& scene,
-                 std::uint64_t scene_hash, float exposure, double wall_s, bool interrupted) {
+                 std::uint64_t scene_hash, const RenderOptions& opt, double wall_s, bool interrupted) {
     bool image_ok = true, png_ok = true;
     try {
-        write_image(plan.image, rgb, r, scene, exposure, wall_s, false);
+        write_image(plan.image, rgb, r, scene, opt, wall_s, false);
     } catch (const Error& e) {
         say(stderr, "facet: error: {}\n", e.what());
         image_ok = false;
     }
     if (image_ok) {
         try {
-            write_png(plan.png, r.width(), r.height(), rgb, exposure);
+            write_png(plan.png, r.width(), r.height(), rgb, opt.exposure, opt.tonemap);
         } catch (const Error& e) {
             say(stderr, "facet: error: {} (the linear image {} was written)\n", e.what(), plan.image);
             png_ok = false;
@@ -98,7 +121,7 @@ bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const Re
     } else {
         const std::string rescue = rescue_path(plan.image);
         try {
-            write_image(rescue, rgb, r, scene, exposure, wall_s, true);
+            write_image(rescue, rgb, r, scene, opt, wall_s, true);
             say(stderr, "facet: the image was saved to {} (and {}) instead\n", rescue,
                 replace_extension(rescue, ".png"));
         } catch (const Error& e) {
@@ -167,7 +190,10 @@ std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene
     ProgressiveOptions po;
     po.target_spp = target;
     po.time_limit_s = opt.time_limit;
-    po.stop = [&] { return signals.first() != 0; };
+    // --noise-threshold: the estimate is too noisy below 16 spp to stop on.
+    constexpr std::uint64_t kMinAdaptiveSpp = 16;
+    bool converged = false;
+    po.stop = [&] { return converged || signals.first() != 0; };
     po.on_first_pass_estimate = [&](double first_pass_s) {
         if (opt.time_limit && first_pass_s > *opt.time_limit)
             say(stderr, "facet: warning: one sample per pixel takes about {}, more than --time {}; rendering one\n",
@@ -185,13 +211,15 @@ std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene
         if (reference) p.reference = compare_images(renderer.image(), reference->rgb, opt.reference);
         passes.push_back(p);
         write_report_csv(report, passes);
+        converged = opt.noise_threshold && p.spp >= kMinAdaptiveSpp && p.estimate.relmse <= *opt.noise_threshold;
+        const bool last = d.last || converged;
 
         const double rate_spp = double(p.spp) / std::max(p.render_s, 1e-9);
-        progress.update(p, target, d.remaining_s, rate_spp * pixels * 1e-6, d.last);
-        if (opt.snapshot && p.wall_s - last_snapshot >= *opt.snapshot && !d.last) {
+        progress.update(p, target, d.remaining_s, rate_spp * pixels * 1e-6, last);
+        if (opt.snapshot && p.wall_s - last_snapshot >= *opt.snapshot && !last) {
             last_snapshot = p.wall_s;
             try {
-                write_image(out, renderer.image(), renderer, scene, opt.exposure, p.wall_s);
+                write_image(out, renderer.image(), renderer, scene, opt, p.wall_s);
             } catch (const Error& e) {
                 say(stderr, "facet: warning: snapshot not written ({}); rendering goes on\n", e.what());
             }
@@ -253,7 +281,7 @@ int run_render(const RenderOptions& opt) {
 
     double rejected = 0.0;
     std::vector<float> rgb = renderer.image(&rejected);
-    const bool written = write_final(plan, rgb, renderer, scene, scene_hash, opt.exposure, since(start), interrupted);
+    const bool written = write_final(plan, rgb, renderer, scene, scene_hash, opt, since(start), interrupted);
     film_on_error.disarm();
     ReportSummary summary;
     summary.scene = scene.source_path;
@@ -270,6 +298,14 @@ int run_render(const RenderOptions& opt) {
     summary.rejected_samples = rejected;
     summary.stratified = scene.settings.sampler == FC_SAMPLER_SOBOL;
     summary.sampler = summary.stratified ? "sobol" : "independent";
+    summary.filter = pixel_filter_info(scene.settings.filter).name;
+    summary.filter_radius = pixel_filter_radius(scene.settings.filter, scene.settings.filter_radius);
+    summary.clamp = scene.settings.clamp;
+    if (reference) summary.reference_spp = reference->spp;
+    summary.noise_threshold = opt.noise_threshold.value_or(0.0);
+    summary.converged = opt.noise_threshold && !passes.empty() &&
+                        passes.back().spp < std::uint64_t(scene.settings.spp) &&
+                        passes.back().estimate.relmse <= *opt.noise_threshold;
     fit_convergence(passes, summary);
     write_report_csv(report, passes);
     write_report_json(plan.report_json, summary, passes);
@@ -277,14 +313,19 @@ int run_render(const RenderOptions& opt) {
     if (!written) return kExitError;
 
     if (interrupted) say(stderr, "facet: interrupted; wrote the {} spp finished so far\n", st.samples_per_pixel);
+    if (summary.converged && !opt.quiet)
+        say(stdout, "adaptive the error estimate (relMSE {:.3g}) reached --noise-threshold {} at {} spp\n",
+            passes.back().estimate.relmse, *opt.noise_threshold, st.samples_per_pixel);
     if (rejected > 0)
         say(stderr, "facet: warning: {} samples were NaN, infinite or negative and were dropped\n", rejected);
     if (!summary.slope_warning.empty()) say(stderr, "facet: warning: {}\n", summary.slope_warning);
     say(stdout, "wrote    {} and {} ({} spp, {:.2f} s rendering, {:.2f} s in all)\n", out,
         replace_extension(out, ".png"), st.samples_per_pixel, st.render_seconds, since(start));
     if (!opt.quiet) {
-        say(stdout, "report   {} (+ .json, .svg); RMSE ~ time^{:.2f} ({}{})\n", report, summary.slope,
-            summary.slope_source, summary.slope_judged ? "" : ", too short a run to judge");
+        if (std::isfinite(summary.slope))
+            say(stdout, "report   {} (+ .json, .svg); RMSE ~ time^{:.2f} ({}{})\n", report, summary.slope,
+                summary.slope_source, summary.slope_judged ? "" : ", too short a run to judge");
+        else say(stdout, "report   {} (+ .json, .svg); the run was too short to fit a convergence rate\n", report);
     }
     return interrupted ? kExitInterrupted : kExitOk;
 }

@@ -73,8 +73,9 @@ void write_image_file(const std::string& path, const ImageSpec& spec, TypeDesc t
         [&](const std::string& tmp) { verify_pixels(tmp, spec, path); });
 }
 
-float srgb_encode(float linear) {
-    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+// The sRGB transfer function's inverse (IEC 61966-2-1).
+float srgb_decode(float encoded) {
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
 
 void check_size(const std::string& path, int width, int height, const std::vector<float>& rgb) {
@@ -96,14 +97,14 @@ void write_exr(const std::string& path, int width, int height, const std::vector
     write_image_file(path, spec, TypeDesc::FLOAT, rgb.data());
 }
 
-void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure) {
+void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure,
+               ToneMap tonemap) {
     check_size(path, width, height, rgb);
     float scale = std::exp2(exposure);
     std::vector<std::uint8_t> bytes(rgb.size());
     for (std::size_t i = 0; i < rgb.size(); ++i) {
-        float v = rgb[i] * scale;
-        v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
-        bytes[i] = std::uint8_t(std::lround(srgb_encode(v) * 255.0f));
+        const float v = rgb[i] * scale;
+        bytes[i] = std::uint8_t(std::lround(tonemap_display(tonemap, std::isnan(v) ? 0.0f : v) * 255.0f));
     }
     ImageSpec spec(width, height, 3, TypeDesc::UINT8);
     spec.attribute("Software", "facet");
@@ -138,6 +139,17 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
     img.width = spec.width;
     img.height = spec.height;
     img.spp = spec.get_int_attribute("facet:spp", -1);
+    // Integer formats hold display-encoded values: sRGB unless the file says linear.
+    const bool integer = spec.format.basetype == TypeDesc::UINT8 || spec.format.basetype == TypeDesc::UINT16;
+    const std::string space = spec.get_string_attribute("oiio:ColorSpace", "sRGB");
+    if (integer && space != "Linear" && space != "linear") {
+        img.decoded_srgb = true;
+        img.note = fmt::format(
+            "{}: an {}-bit sRGB image, decoded to linear radiance; it stops at 1 (no sun, no highlights): "
+            "an EXR or HDR image holds the light itself",
+            path, spec.format.basetype == TypeDesc::UINT8 ? 8 : 16);
+        for (float& v : all) v = srgb_decode(v);
+    }
     img.rgb.resize(std::size_t(spec.width) * spec.height * 3);
     for (std::size_t i = 0; i < std::size_t(spec.width) * spec.height; ++i)
         for (int c = 0; c < 3; ++c)
@@ -157,6 +169,11 @@ ImageRGB read_image(const std::string& path) {
 
 ImageRGB read_reference(const std::string& path, int width, int height) {
     ImageRGB ref = read_image(path);
+    if (ref.decoded_srgb)
+        throw Error(
+            fmt::format("reference {}: an integer (8-bit sRGB) image is tone-mapped and clipped at 1, not "
+                        "the linear radiance a render is measured against: give the EXR (or HDR)",
+                        path));
     if (ref.width != width || ref.height != height)
         throw Error(fmt::format("reference {}: the reference is {}x{} but the render is {}x{}", path, ref.width,
                                 ref.height, width, height));
