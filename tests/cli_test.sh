@@ -150,8 +150,30 @@ expect json-filter-and-lens 0 "wrote" -- "$FACET" render "$tmp/keys.json" "${sma
 printf '{"render": {"filter": "sinc"}, "shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1,0,0], "edge2": [0,1,0]}]}\n' >"$tmp/badfilter.json"
 expect json-filter-unknown 1 "badfilter\.json: render\.filter: unknown filter 'sinc' \(expected box, tent, gaussian or mitchell\)" \
     -- "$FACET" info "$tmp/badfilter.json"
+printf '{"environment": {"file": "cb.png"}, "shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1,0,0], "edge2": [0,1,0]}]}\n' >"$tmp/png_env.json"
+expect env-8bit-decoded-with-note 0 "warning: .*cb\.png: an 8-bit sRGB image, decoded to linear" -- "$FACET" render \
+    "$tmp/png_env.json" "${small[@]}" --out "$tmp/png_env.exr"
 expect reference-8bit-refused 1 "cb\.png.*8-bit sRGB" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" \
     --reference "$tmp/cb.png" --out "$tmp/x.exr"
+
+expect aov-layers 0 "aovs .*albedo, normal, depth" -- "$FACET" render "$SCENES/cornell_box.json" --width 24 \
+    --height 24 --spp 2 --aov albedo,normal,depth --out "$tmp/aov.exr"
+for ch in albedo.R normal.X depth.Z; do
+    grep -aq "$ch" "$tmp/aov.exr" && ok "aov-channel-$ch" || bad "aov-channel-$ch"
+done
+expect aov-reads-back-as-rgb 0 "rmse" -- "$FACET" compare "$tmp/aov.exr" "$tmp/aov.exr"
+expect aov-unknown 2 "--aov" -- "$FACET" render "$SCENES/cornell_box.json" --aov albedo,motion
+expect aov-needs-exr 1 "--aov: .*aov\.hdr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --aov depth \
+    --out "$tmp/aov.hdr"
+
+expect adaptive-tiles 0 "wrote .* spp mean" -- "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 \
+    --spp 256 --noise-threshold 0.02 --adaptive tiles --out "$tmp/tiles.exr"
+grep -q '"mode": "tiles"' "$tmp/tiles.json" && grep -aq "facet:mean_spp" "$tmp/tiles.exr" && ok "adaptive-tiles-recorded" ||
+    bad "adaptive-tiles-recorded"
+expect adaptive-tiles-needs-threshold 2 "--adaptive.*--noise-threshold" -- "$FACET" render "$SCENES/cornell_box.json" \
+    --adaptive tiles
+expect adaptive-tiles-no-film 1 "--adaptive tiles: .*film" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" \
+    --noise-threshold 0.1 --adaptive tiles --film "$tmp/t.film" --out "$tmp/t.exr"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

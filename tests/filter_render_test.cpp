@@ -34,7 +34,8 @@ double filter_1d(int filter, double r, double x) {
     const double a = std::abs(x);
     if (a > r) return 0.0;
     switch (filter) {
-        case FC_FILTER_TENT: return 1.0 - a / r;
+        case FC_FILTER_TENT:
+            return 1.0 - a / r;
         case FC_FILTER_GAUSSIAN: {
             const double sigma = r / 3.0;
             return std::exp(-a * a / (2 * sigma * sigma)) - std::exp(-r * r / (2 * sigma * sigma));
@@ -42,9 +43,11 @@ double filter_1d(int filter, double r, double x) {
         case FC_FILTER_MITCHELL: {
             const double B = 1.0 / 3.0, C = 1.0 / 3.0, t = 2.0 * a / r;
             if (t < 1.0) return ((12 - 9 * B - 6 * C) * t * t * t + (-18 + 12 * B + 6 * C) * t * t + (6 - 2 * B)) / 6;
-            return ((-B - 6 * C) * t * t * t + (6 * B + 30 * C) * t * t + (-12 * B - 48 * C) * t + (8 * B + 24 * C)) / 6;
+            return ((-B - 6 * C) * t * t * t + (6 * B + 30 * C) * t * t + (-12 * B - 48 * C) * t + (8 * B + 24 * C)) /
+                   6;
         }
-        default: return 1.0;
+        default:
+            return 1.0;
     }
 }
 
@@ -148,8 +151,8 @@ TEST(FilterRender, MitchellNegativeLobesUndershoot) {
 }
 
 // A perspective camera 10 units from a half-plane edge at x = 0.1 (inside a column near
-// the image's centre: a sharp edge leaves one partly lit pixel), with a thin lens of radius `aperture` focused at `focus`: how many columns of
-// the middle row are partly lit (the edge's width in pixels).
+// the image's centre: a sharp edge leaves one partly lit pixel), with a thin lens of radius `aperture` focused at
+// `focus`: how many columns of the middle row are partly lit (the edge's width in pixels).
 int edge_width(float plane_distance, float aperture, float focus) {
     Scene scene = half_plane_scene(FC_FILTER_BOX, 0.0f, 256);
     scene.vertices.clear();

@@ -127,6 +127,14 @@ int run_cli(int argc, char** argv) {
                      "Adaptive stopping: end once the reference-free error estimate (relMSE of the two half-images, "
                      "from 16 spp on) is at most RELMSE (whichever of --spp, --time and this ends first)")
         ->check(kFinite & positive_up_to(1e30, "relMSE"));
+    render
+        ->add_option("--adaptive", opt.adaptive,
+                     "With --noise-threshold: global (default; the whole image stops at once) or tiles (after 16 "
+                     "spp, bands of 8 rows whose own estimate is above the threshold get their samples doubled, "
+                     "round after round)")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, RenderOptions::Adaptive>{
+            {"global", RenderOptions::Adaptive::Global}, {"tiles", RenderOptions::Adaptive::Tiles}}))
+        ->needs("--noise-threshold");
     render->add_option("--width", opt.width, "Image width in pixels (default: the scene's)")
         ->check(in_range(limits::kWidth));
     render->add_option("--height", opt.height, "Image height in pixels (default: the scene's)")
@@ -216,6 +224,12 @@ int run_cli(int argc, char** argv) {
                      "sigmoid in stops, AgX-like: highlights roll off over 7 stops instead of clipping)")
         ->transform(CLI::CheckedTransformer(
             std::map<std::string, ToneMap>{{"clip", ToneMap::Clip}, {"filmic", ToneMap::Filmic}}));
+    render
+        ->add_option("--aov", opt.aov,
+                     "Extra layers of the EXR for denoisers and compositors, at the first non-specular hit: any of "
+                     "albedo, normal, depth, comma-separated (albedo.R/G/B, normal.X/Y/Z, depth.Z)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"albedo", "normal", "depth"}));
     render->add_flag(
         "--generic", opt.generic,
         "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");

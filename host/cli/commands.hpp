@@ -24,6 +24,9 @@ struct RenderOptions {
     std::optional<float> fov, aperture, focus_distance;
     std::optional<double> time_limit;
     std::optional<double> noise_threshold;  // stop once the half-buffer relMSE estimate is this low
+    // --adaptive: the whole image at once, or per band of rows (cli/adaptive_tiles.hpp)
+    enum class Adaptive { Global, Tiles } adaptive = Adaptive::Global;
+    bool adaptive_tiles() const { return adaptive == Adaptive::Tiles; }
     std::string device;
     std::string out;
     std::string report;              // CSV; summary .json and plot .svg beside it
@@ -33,6 +36,7 @@ struct RenderOptions {
     std::optional<double> snapshot;  // seconds between snapshots of the image so far
     float exposure = 0.0f;
     ToneMap tonemap = ToneMap::Clip;  // of the PNG
+    std::vector<std::string> aov;     // --aov: extra EXR layers (albedo, normal, depth)
     bool quiet = false;
     bool generic = false;  // build every kernel feature, not only the scene's
 };

@@ -18,7 +18,7 @@ std::string fmt_seconds(double s);
 int terminal_columns();
 
 // The progress line within `columns`: percentage done, spp, time left, the error, time
-// elapsed, speed and pass number, dropping from the end what does not fit.
+// elapsed, speed and pass number, in that order of importance, each kept if it still fits.
 std::string progress_line(const PassRecord& p, std::uint64_t target, double remaining, double msamples,
                           std::size_t columns);
 

@@ -17,6 +17,7 @@
 #include "host/error.hpp"
 #include "host/film/safe_write.hpp"
 #include "host/util/input_file.hpp"
+#include "host/util/strings.hpp"
 
 namespace facet {
 namespace {
@@ -85,16 +86,36 @@ void check_size(const std::string& path, int width, int height, const std::vecto
 
 }  // namespace
 
-void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb,
-               const ImageMetadata& meta) {
+void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb, const ImageMetadata& meta,
+               const std::vector<ImageLayer>& layers) {
     check_size(path, width, height, rgb);
-    ImageSpec spec(width, height, 3, TypeDesc::FLOAT);
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    std::vector<std::string> names = {"R", "G", "B"};
+    for (const ImageLayer& l : layers) {
+        if (l.channels.empty() || l.values.size() != pixels * l.channels.size())
+            throw Error(fmt::format("{}: the {} layer of {} values does not fit a {}x{} image", path, l.name,
+                                    l.values.size(), width, height));
+        for (const std::string& c : l.channels) names.push_back(l.name + "." + c);
+    }
+    if (!layers.empty() && lower(fs::path(path).extension().string()) != ".exr")
+        throw Error(fmt::format("{}: only an EXR holds extra layers ({}...): give a .exr name", path, names[3]));
+    ImageSpec spec(width, height, int(names.size()), TypeDesc::FLOAT);
+    spec.channelnames = names;
     spec.attribute("compression", "zip");
     spec.attribute("Software", "facet");
     for (const auto& [k, v] : meta.strings) spec.attribute(k, v);
     for (const auto& [k, v] : meta.floats) spec.attribute(k, v);
     for (const auto& [k, v] : meta.ints) spec.attribute(k, v);
-    write_image_file(path, spec, TypeDesc::FLOAT, rgb.data());
+    if (layers.empty()) return write_image_file(path, spec, TypeDesc::FLOAT, rgb.data());
+    // Interleaved: R, G, B, then each layer's channels, pixel by pixel.
+    std::vector<float> all(pixels * names.size());
+    for (std::size_t i = 0; i < pixels; ++i) {
+        float* out = &all[i * names.size()];
+        for (int c = 0; c < 3; ++c) *out++ = rgb[3 * i + std::size_t(c)];
+        for (const ImageLayer& l : layers)
+            for (std::size_t c = 0; c < l.channels.size(); ++c) *out++ = l.values[i * l.channels.size() + c];
+    }
+    write_image_file(path, spec, TypeDesc::FLOAT, all.data());
 }
 
 void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure,

@@ -17,11 +17,20 @@ struct ImageMetadata {
     std::vector<std::pair<std::string, int>> ints;             // e.g. {"facet:spp", 64}
 };
 
+// An extra layer of an EXR beside its R, G, B: channels "<name>.<channel>" (OpenEXR's
+// layer convention, which compositors and denoisers read), e.g. {"albedo", {"R", "G", "B"}}.
+struct ImageLayer {
+    std::string name;
+    std::vector<std::string> channels;
+    std::vector<float> values;  // channels.size() floats a pixel, top row first
+};
+
 // Writes linear RGB floats (3 per pixel, top row first) as a 32-bit float EXR, so that
 // images can serve as references at full precision (another float format when the
-// extension says so: .hdr, .tif, .pfm, without the metadata EXR holds).
+// extension says so: .hdr, .tif, .pfm, without the metadata EXR holds). `layers` go into
+// the EXR after R, G, B; another format cannot hold them (facet::Error).
 void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb,
-               const ImageMetadata& meta = {});
+               const ImageMetadata& meta = {}, const std::vector<ImageLayer>& layers = {});
 
 // Writes an 8-bit sRGB PNG: radiance times 2^exposure, tone-mapped (film/tonemap.hpp:
 // clamped to [0, 1] and sRGB-encoded, or the filmic curve).

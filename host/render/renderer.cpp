@@ -129,10 +129,15 @@ void Renderer::restore(const std::vector<float>& sums, std::uint64_t spp, double
 }
 
 void Renderer::launch(std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count) {
+    launch_at(stats_.samples_per_pixel, count, row_begin, row_count);
+}
+
+void Renderer::launch_at(std::uint64_t sample_begin, std::uint32_t count, std::uint32_t row_begin,
+                         std::uint32_t row_count) {
     if (count == 0 || row_begin >= params_.height) return;
     cl_call("rendering a pass", [&] {
         FcRenderParams p = params_;
-        p.sample_begin = std::uint32_t(stats_.samples_per_pixel);
+        p.sample_begin = std::uint32_t(sample_begin);
         p.sample_count = count;
         p.row_begin = row_begin;
         p.row_count = std::min(row_count, params_.height - row_begin);

@@ -41,6 +41,9 @@ public:
     std::uint32_t target_height() const override { return std::uint32_t(height_); }
     std::uint64_t finished_spp() const override { return stats_.samples_per_pixel; }
     void launch(std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count) override;
+    // A launch of samples [sample_begin, sample_begin + count) over a band of rows, for
+    // drivers that give bands different sample counts (cli/adaptive_tiles.hpp).
+    void launch_at(std::uint64_t sample_begin, std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count);
     void end_pass(std::uint32_t count, double seconds) override;
 
     // The mean radiance so far, linear RGB, row-major from the top row, 3 floats a

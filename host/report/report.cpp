@@ -90,9 +90,9 @@ void fit_convergence(const std::vector<PassRecord>& passes, ReportSummary& summa
         const PassRecord& last = passes.back();
         const double n = double(last.spp);
         const double ref_share = summary.reference_spp > 0 ? n / double(summary.reference_spp) : 0.0;
-        const double floor = last.estimate.mse * (1.0 + ref_share);
+        const double floor = last.estimate.rmse * last.estimate.rmse * (1.0 + ref_share);
         summary.noise_floor_mse = floor;
-        if (!(last.reference->mse > 2.0 * floor)) too_flat = false;
+        if (!(last.reference->rmse * last.reference->rmse > 2.0 * floor)) too_flat = false;
     }
     if (too_flat || too_steep) {
         summary.slope_warning = fmt::format(
@@ -149,7 +149,7 @@ void write_report_json(const std::string& path, const ReportSummary& s, const st
     // The clamp trades variance for bias: the estimates above do not see the bias.
     j["clamp"] = s.clamp > 0.0 ? nlohmann::json(s.clamp) : nlohmann::json();
     if (s.noise_threshold > 0.0)
-        j["adaptive"] = {{"noise_threshold_relmse", s.noise_threshold}, {"reached", s.converged}};
+        j["adaptive"] = {{"noise_threshold_relmse", s.noise_threshold}, {"reached", s.converged}, {"mode", s.adaptive}};
     if (s.clamp > 0.0) j["clamp_note"] = "each sample clamped: the image is biased (darker) where samples exceed it";
     j["estimator"] = "half-buffer: (a - b)^2 n_a n_b / n^2 per pixel, unbiased for the variance of the image";
     if (!s.slope_warning.empty()) j["warning"] = s.slope_warning;

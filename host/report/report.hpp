@@ -46,6 +46,7 @@ struct ReportSummary {
     double clamp = 0.0;            // --clamp (biased) when > 0, else off
     double noise_threshold = 0.0;  // --noise-threshold (relMSE) when > 0
     bool converged = false;        // ended by reaching it
+    std::string adaptive;          // "global" or "tiles" with a threshold, else empty
 };
 
 // The fitted slope of RMSE against render time over the passes (reference RMSE when

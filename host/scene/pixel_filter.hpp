@@ -13,10 +13,10 @@
 namespace facet {
 
 struct PixelFilterInfo {
-    int code;               // FC_FILTER_*
-    const char* name;       // in the scene file and on the command line
-    float default_radius;   // pixels
-    const char* words;      // for --help and the docs
+    int code;              // FC_FILTER_*
+    const char* name;      // in the scene file and on the command line
+    float default_radius;  // pixels
+    const char* words;     // for --help and the docs
 };
 
 inline constexpr std::array<PixelFilterInfo, 4> kPixelFilters{{
