@@ -150,9 +150,9 @@ expect json-filter-and-lens 0 "wrote" -- "$FACET" render "$tmp/keys.json" "${sma
 printf '{"render": {"filter": "sinc"}, "shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1,0,0], "edge2": [0,1,0]}]}\n' >"$tmp/badfilter.json"
 expect json-filter-unknown 1 "badfilter\.json: render\.filter: unknown filter 'sinc' \(expected box, tent, gaussian or mitchell\)" \
     -- "$FACET" info "$tmp/badfilter.json"
-printf '{"environment": {"file": "cb.png"}, "shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1,0,0], "edge2": [0,1,0]}]}\n' >"$tmp/png_env.json"
+printf '{"environment": {"file": "cb.png"}, "shapes": [{"type": "quad", "corner": [0,0,0], "edge1": [1,0,0], "edge2": [0,1,0]}]}\n' >"$tmp/png_env_scene.json"
 expect env-8bit-decoded-with-note 0 "warning: .*cb\.png: an 8-bit sRGB image, decoded to linear" -- "$FACET" render \
-    "$tmp/png_env.json" "${small[@]}" --out "$tmp/png_env.exr"
+    "$tmp/png_env_scene.json" "${small[@]}" --out "$tmp/png_env.exr"
 expect reference-8bit-refused 1 "cb\.png.*8-bit sRGB" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" \
     --reference "$tmp/cb.png" --out "$tmp/x.exr"
 
