@@ -33,6 +33,13 @@ TEST(ProgressLine, FitsTheTerminalAndShowsThePercentage) {
     EXPECT_EQ(narrow.find("rmse"), std::string::npos) << narrow;
 }
 
+TEST(ProgressLine, LogLinesStartWithThePass) {
+    // tests/faults/signals.sh waits for "^pass" in a render's log.
+    const std::string line = progress_line(record(), 4096, 120.0, 1.234, 200, true);
+    EXPECT_EQ(line.rfind("pass 12   38%  1536/4096 spp", 0), 0u) << line;
+    EXPECT_EQ(line.find("pass", 1), std::string::npos) << line;
+}
+
 TEST(ProgressLine, TimeLimitSetsThePercentage) {
     // --time ends the render first: 70 s done, 30 s left is 70%.
     EXPECT_EQ(progress_line(record(), 1u << 24, 30.0, 1.0, 80).rfind(" 70%", 0), 0u);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include <fmt/format.h>
 
@@ -28,7 +29,7 @@ int terminal_columns() {
 }
 
 std::string progress_line(const PassRecord& p, std::uint64_t target, double remaining, double msamples,
-                          std::size_t columns) {
+                          std::size_t columns, bool pass_first) {
     // Done: the larger of the samples' and the time's share (--time may end the render first).
     double done = target > 0 ? double(p.spp) / double(target) : 0.0;
     if (std::isfinite(remaining) && p.render_s + remaining > 0.0)
@@ -45,8 +46,10 @@ std::string progress_line(const PassRecord& p, std::uint64_t target, double rema
                                   fmt::format("{} elapsed", fmt_seconds(p.wall_s)),
                                   fmt::format("{:.3f} Msamples/s", msamples),
                                   fmt::format("pass {}", p.pass)};
-    std::string line;
+    // A log (not a terminal) starts each line with "pass N", which scripts wait for.
+    std::string line = pass_first ? fmt::format("pass {}", p.pass) : std::string();
     for (const std::string& f : fields) {
+        if (pass_first && &f == &fields[std::size(fields) - 1]) continue;
         if (f.empty()) continue;
         const std::size_t extra = (line.empty() ? 0 : 2) + f.size();
         if (line.size() + extra > columns) continue;
@@ -64,7 +67,7 @@ void Progress::update(const PassRecord& p, std::uint64_t target, double remainin
         const std::string line = progress_line(p, target, remaining, msamples, columns);
         say(stdout, "\r{:<{}}{}", line, columns, last ? "\n" : "");
     } else if (last || p.wall_s - last_print_ >= 2.0 || p.pass == 1) {
-        say(stdout, "{}\n", progress_line(p, target, remaining, msamples, 200));
+        say(stdout, "{}\n", progress_line(p, target, remaining, msamples, 200, true));
         last_print_ = p.wall_s;
     }
 }
