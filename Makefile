@@ -1,7 +1,10 @@
 # The two commands of the README:
-#   make demo   installs what is missing, builds, renders the default scene into out/
-#   make test   installs what is missing, builds, runs the whole test suite (ctest), then
-#               each fuzz harness for FUZZ_SECONDS (30 s) on the stored corpus
+#   make demo   installs what rendering needs (DEMO_PACKAGES) if missing, builds facet alone
+#               (no tests, no bench) in build-demo, renders the default scene into out/
+#   make test   installs what is missing (PACKAGES: the test toolchain too), builds, runs the
+#               whole test suite (ctest), then each fuzz harness for FUZZ_SECONDS (30 s) on
+#               the stored corpus
+#   make bench  installs what is missing (PACKAGES, with Embree), builds, runs the bench
 # Other targets: make build | deps | bench | bench-mitsuba | sanitize | fuzz | format | clean (docs/robustness.md)
 
 BUILD ?= build
@@ -28,14 +31,26 @@ PACKAGES := build-essential cmake pkg-config \
 	fiu-utils oclgrind \
 	libopenmpi-dev openmpi-bin
 
+# What `make demo` needs to build and run facet, nothing of the test or bench toolchain.
+DEMO_PACKAGES := build-essential cmake pkg-config \
+	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
+	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev
+DEMO_BUILD ?= build-demo
+
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
-.PHONY: all deps configure build demo test bench bench-mitsuba sanitize fuzz-build fuzz format clean
+.PHONY: all deps deps-demo install-packages configure build demo test bench bench-mitsuba sanitize fuzz-build fuzz format clean
 
 all: build
 
 deps:
-	@missing=""; for p in $(PACKAGES); do \
+	@$(MAKE) --no-print-directory install-packages WANT="$(PACKAGES)"
+
+deps-demo:
+	@$(MAKE) --no-print-directory install-packages WANT="$(DEMO_PACKAGES)"
+
+install-packages:
+	@missing=""; for p in $(WANT); do \
 		dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
@@ -50,8 +65,10 @@ configure: deps
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-demo: build
-	$(BUILD)/facet render scenes/cornell_box.json --out out/cornell_box.exr
+demo: deps-demo
+	cmake -S . -B $(DEMO_BUILD) -DCMAKE_BUILD_TYPE=Release -DFACET_BUILD_TESTS=OFF -DFACET_BUILD_BENCH=OFF $(CMAKE_FLAGS)
+	cmake --build $(DEMO_BUILD) -j $(JOBS) --target facet
+	$(DEMO_BUILD)/facet render scenes/cornell_box.json --out out/cornell_box.exr
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -100,4 +117,4 @@ format:
 	git ls-files '*.cpp' '*.hpp' '*.h' '*.cl' | xargs $(CLANG_FORMAT) -i
 
 clean:
-	rm -rf $(BUILD) build-asan $(FUZZ_BUILD) out
+	rm -rf $(BUILD) $(DEMO_BUILD) build-asan $(FUZZ_BUILD) out

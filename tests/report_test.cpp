@@ -119,6 +119,61 @@ TEST(Report, ConvergenceWarningFlagsBias) {
     EXPECT_TRUE(s.slope_warning.empty());
 }
 
+TEST(Report, NoBiasWarningAtTheReferenceNoiseFloor) {
+    // An unbiased render measured against a 64 spp reference: its error against the
+    // reference levels off at the reference's own noise, sqrt(v (1 + n / 64)).
+    std::vector<PassRecord> passes;
+    for (int i = 0; i < 8; ++i) {
+        PassRecord p;
+        p.pass = i + 1;
+        p.spp = 8u << i;
+        p.render_s = 0.1 * double(1 << i);
+        const double v = 0.04 / double(p.spp);  // the render's variance
+        p.estimate = ErrorMetrics{v, std::sqrt(v), 0.0};
+        const double floor_mse = v + 0.04 / 64.0;
+        p.reference = ErrorMetrics{floor_mse, std::sqrt(floor_mse), 0.0};
+        passes.push_back(p);
+    }
+    ReportSummary s;
+    fit_convergence(passes, s);
+    ASSERT_TRUE(s.slope_judged);
+    EXPECT_GT(s.slope, -0.35) << "the curve flattens: without the floor it would be flagged";
+    EXPECT_FALSE(s.slope_warning.empty()) << "without the reference's sample count the floor is v alone";
+    s.reference_spp = 64;
+    fit_convergence(passes, s);
+    EXPECT_TRUE(s.slope_warning.empty()) << s.slope_warning;
+    // A real bias stays flagged: the error is far above the floor.
+    for (PassRecord& p : passes) p.reference->rmse = 0.2;
+    fit_convergence(passes, s);
+    EXPECT_FALSE(s.slope_warning.empty());
+}
+
+TEST(Report, HeavyTailedEstimateIsNotABrokenSampler) {
+    // The half-buffer estimate of a scene with rare bright paths (glass under a sun)
+    // jumps when a firefly lands in one half: the fitted slope is flat, but with an
+    // uncertainty that covers -1/2, so no "broken sampler" warning.
+    const double jumps[] = {1.0, 3.0, 0.9, 2.5, 0.8, 2.2, 0.7, 1.9};
+    std::vector<PassRecord> passes;
+    for (int i = 0; i < 8; ++i) {
+        PassRecord p;
+        p.pass = i + 1;
+        p.spp = 8u << i;
+        p.render_s = 0.1 * double(1 << i);
+        p.estimate = ErrorMetrics{0.0, jumps[i] * 0.05 / std::sqrt(std::sqrt(double(1 << i))), 0.0};
+        passes.push_back(p);
+    }
+    ReportSummary s;
+    fit_convergence(passes, s);
+    ASSERT_TRUE(s.slope_judged);
+    EXPECT_GT(s.slope, -0.35);
+    EXPECT_GT(s.slope_stderr, 0.05);
+    EXPECT_TRUE(s.slope_warning.empty()) << s.slope_warning;
+    // The same slope on a smooth curve is flagged.
+    for (int i = 0; i < 8; ++i) passes[std::size_t(i)].estimate.rmse = 0.05 / std::pow(double(1 << i), 0.2);
+    fit_convergence(passes, s);
+    EXPECT_FALSE(s.slope_warning.empty());
+}
+
 TEST(Report, CsvRoundTripAndPlot) {
     const test::TempDir tmp;
     const fs::path& dir = tmp.dir();

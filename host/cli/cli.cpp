@@ -13,7 +13,9 @@
 
 #include "host/cli/commands.hpp"
 #include "host/error.hpp"
+#include "host/scene/pixel_filter.hpp"
 #include "host/scene/settings_limits.hpp"
+#include "host/util/strings.hpp"
 #include "kernels/shared/render_layout.h"
 
 namespace facet {
@@ -55,6 +57,50 @@ const CLI::Validator kSeconds(
     },
     "SECONDS > 0");
 
+// A number in (0, hi], said in words when it is not.
+CLI::Validator positive_up_to(double hi, const char* unit) {
+    const std::string words = fmt::format("a number in (0, {:g}] ({})", hi, unit);
+    return CLI::Validator(
+        [hi, words](std::string& text) {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0') return std::string();  // left to the conversion's message
+            return v > 0.0 && v <= hi ? std::string() : fmt::format("Value {} is not {}", text, words);
+        },
+        words);
+}
+
+std::map<std::string, int> pixel_filter_map() {
+    std::map<std::string, int> m;
+    for (const PixelFilterInfo& f : kPixelFilters) m[f.name] = f.code;
+    return m;
+}
+
+std::string pixel_filter_help() {
+    std::string out;
+    for (const PixelFilterInfo& f : kPixelFilters) out += (out.empty() ? "" : ", ") + std::string(f.words);
+    return out;
+}
+
+// After an unknown option: "did you mean --spp?" for each unexpected --word that is
+// within 2 edits of an option of the subcommand it was given to.
+void suggest_options(const CLI::App& app) {
+    const CLI::App* cmd = &app;
+    for (const CLI::App* sub : app.get_subcommands()) cmd = sub;  // the one parsed
+    for (const std::string& extra : app.remaining(/*recurse=*/true)) {
+        if (extra.rfind("--", 0) != 0) continue;
+        const std::string word = extra.substr(0, extra.find('='));
+        std::string best;
+        std::size_t best_distance = 3;
+        for (const CLI::Option* o : cmd->get_options())
+            for (const std::string& name : o->get_lnames()) {
+                const std::size_t d = edit_distance(word, "--" + name);
+                if (d < best_distance) best_distance = d, best = "--" + name;
+            }
+        if (!best.empty()) std::cerr << fmt::format("facet: {}: did you mean {}?\n", word, best);
+    }
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
@@ -79,6 +125,19 @@ int run_cli(int argc, char** argv) {
         ->add_option("--time", opt.time_limit,
                      "Stop after this many seconds of rendering (whichever of --spp and --time ends first)")
         ->check(kFinite & kSeconds);
+    render
+        ->add_option("--noise-threshold", opt.noise_threshold,
+                     "Adaptive stopping: end once the reference-free error estimate (relMSE of the two half-images, "
+                     "from 16 spp on) is at most RELMSE (whichever of --spp, --time and this ends first)")
+        ->check(kFinite & positive_up_to(1e30, "relMSE"));
+    render
+        ->add_option("--adaptive", opt.adaptive,
+                     "With --noise-threshold: global (default; the whole image stops at once) or tiles (after 16 "
+                     "spp, bands of 8 rows whose own estimate is above the threshold get their samples doubled, "
+                     "round after round)")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, RenderOptions::Adaptive>{
+            {"global", RenderOptions::Adaptive::Global}, {"tiles", RenderOptions::Adaptive::Tiles}}))
+        ->needs("--noise-threshold");
     render->add_option("--width", opt.width, "Image width in pixels (default: the scene's)")
         ->check(in_range(limits::kWidth));
     render->add_option("--height", opt.height, "Image height in pixels (default: the scene's)")
@@ -98,6 +157,50 @@ int run_cli(int argc, char** argv) {
                      "Sample generator: sobol (default; Owen-scrambled Sobol', Burley 2020) or independent (PCG32)")
         ->transform(CLI::CheckedTransformer(
             std::map<std::string, int>{{"sobol", FC_SAMPLER_SOBOL}, {"independent", FC_SAMPLER_INDEPENDENT}}));
+    render
+        ->add_option("--filter", opt.filter,
+                     "Pixel filter, drawn by filter importance sampling: " + pixel_filter_help() +
+                         "; default: the scene's, else box")
+        ->transform(CLI::CheckedTransformer(pixel_filter_map()));
+    render
+        ->add_option("--filter-radius", opt.filter_radius,
+                     "Radius of the pixel filter in pixels (default: the filter's)")
+        ->check(kFinite & positive_up_to(kMaxFilterRadius, "pixels"));
+    render
+        ->add_option("--clamp", opt.clamp,
+                     "Clamp each sample's contribution to this value (its largest channel): fewer fireflies, but "
+                     "biased (darker); off by default, recorded in the EXR metadata and the report")
+        ->check(kFinite & positive_up_to(FC_MAX_RADIANCE, "radiance"));
+    render->add_option("--eye", opt.eye, "Camera position X,Y,Z (replaces the scene's)")
+        ->delimiter(',')
+        ->expected(3)
+        ->check(kFinite);
+    render->add_option("--target", opt.target, "Point the camera looks at, X,Y,Z")
+        ->delimiter(',')
+        ->expected(3)
+        ->check(kFinite);
+    render->add_option("--up", opt.up, "Camera up direction X,Y,Z")->delimiter(',')->expected(3)->check(kFinite);
+    render->add_option("--fov", opt.fov, "Vertical field of view in degrees (perspective)")
+        ->check(kFinite & CLI::Validator(
+                              [](std::string& text) {
+                                  const double v = std::strtod(text.c_str(), nullptr);
+                                  return v > 0.0 && v < 180.0
+                                             ? std::string()
+                                             : fmt::format("Value {} is not a number of degrees in (0, 180)", text);
+                              },
+                              "DEGREES in (0, 180)"));
+    render->add_option("--aperture", opt.aperture, "Thin-lens radius in scene units (0: a pinhole; depth of field)")
+        ->check(kFinite & CLI::Validator(
+                              [](std::string& text) {
+                                  return std::strtod(text.c_str(), nullptr) >= 0.0
+                                             ? std::string()
+                                             : fmt::format("Value {} is not a number >= 0", text);
+                              },
+                              "RADIUS >= 0"));
+    render
+        ->add_option("--focus-distance", opt.focus_distance,
+                     "Distance of the plane in focus along the view direction (default: to --target)")
+        ->check(kFinite & positive_up_to(1e30f, "scene units"));
     render->add_option("--device", opt.device,
                        "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU); "
                        "several render together: all, gpu, cpu, or a list such as 0,2 (docs/devices.md)");
@@ -124,6 +227,18 @@ int run_cli(int argc, char** argv) {
                        "samples and time too)");
     render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops")
         ->check(kFinite & CLI::Range(-30.0f, 30.0f));
+    render
+        ->add_option("--tonemap", opt.tonemap,
+                     "Tone mapping of the PNG: clip (default; linear clamped to 1, sRGB-encoded) or filmic (a "
+                     "sigmoid in stops, AgX-like: highlights roll off over 7 stops instead of clipping)")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, ToneMap>{{"clip", ToneMap::Clip}, {"filmic", ToneMap::Filmic}}));
+    render
+        ->add_option("--aov", opt.aov,
+                     "Extra layers of the EXR for denoisers and compositors, at the first non-specular hit: any of "
+                     "albedo, normal, depth, comma-separated (albedo.R/G/B, normal.X/Y/Z, depth.Z)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"albedo", "normal", "depth"}));
     render->add_flag(
         "--generic", opt.generic,
         "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
@@ -161,11 +276,19 @@ int run_cli(int argc, char** argv) {
     sky_cmd->add_option("--turbidity", sky.turbidity, "Atmospheric turbidity (Preetham's model)")
         ->check(kFinite & CLI::Range(1.7f, 10.0f));
 
+    // A bare `facet`: the help, not "a subcommand is required".
+    if (argc <= 1) {
+        std::cout << app.help();
+        return kExitOk;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        // Prints the help, or the option and the problem ("--spp: Value 0 not in range").
-        return app.exit(e) == 0 ? kExitOk : kExitUsage;
+        // Prints the help, or the option and the problem ("--spp: Value 0 not in range"),
+        // and for an unknown option the closest known one.
+        const int status = app.exit(e) == 0 ? kExitOk : kExitUsage;
+        if (dynamic_cast<const CLI::ExtrasError*>(&e)) suggest_options(app);
+        return status;
     }
     try {
         if (*devices) return run_devices();

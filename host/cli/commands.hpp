@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "host/film/tonemap.hpp"
+
 namespace facet {
 
 struct RenderOptions {
@@ -14,7 +16,17 @@ struct RenderOptions {
     std::optional<std::uint32_t> seed;
     std::optional<int> strategy;  // FC_STRATEGY_*
     std::optional<int> sampler;   // FC_SAMPLER_*
+    std::optional<int> filter;    // FC_FILTER_*
+    std::optional<float> filter_radius;
+    std::optional<float> clamp;  // the largest contribution of one sample (biased; off by default)
+    // The camera: --eye, --target, --up (3 numbers each), --fov, --aperture, --focus-distance.
+    std::vector<float> eye, target, up;
+    std::optional<float> fov, aperture, focus_distance;
     std::optional<double> time_limit;
+    std::optional<double> noise_threshold;  // stop once the half-buffer relMSE estimate is this low
+    // --adaptive: the whole image at once, or per band of rows (cli/adaptive_tiles.hpp)
+    enum class Adaptive { Global, Tiles } adaptive = Adaptive::Global;
+    bool adaptive_tiles() const { return adaptive == Adaptive::Tiles; }
     std::string device;              // one selector or a list (ClContext::create_many)
     std::uint64_t samples_from = 0;  // --samples-from: the first sample index
     std::string out;
@@ -24,6 +36,8 @@ struct RenderOptions {
     std::string resume;              // --resume: a film to continue
     std::optional<double> snapshot;  // seconds between snapshots of the image so far
     float exposure = 0.0f;
+    ToneMap tonemap = ToneMap::Clip;  // of the PNG
+    std::vector<std::string> aov;     // --aov: extra EXR layers (albedo, normal, depth)
     bool quiet = false;
     bool generic = false;  // build every kernel feature, not only the scene's
 };

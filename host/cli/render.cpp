@@ -13,8 +13,10 @@
 #include <fstream>
 
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 
 #include "host/bvh/bvh.hpp"
+#include "host/cli/adaptive_tiles.hpp"
 #include "host/cli/commands.hpp"
 #include "host/cli/console.hpp"
 #include "host/cli/outputs.hpp"
@@ -24,16 +26,27 @@
 #include "host/film/error_metrics.hpp"
 #include "host/film/film_state.hpp"
 #include "host/film/image_io.hpp"
+#include "host/render/aov.hpp"
 #include "host/render/features.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/device_group.hpp"
 #include "host/report/report.hpp"
+#include "host/scene/pixel_filter.hpp"
+#include "host/util/strings.hpp"
 #include "host/readers/load_scene.hpp"
 
 namespace facet {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Camera samples per pixel of the AOV pass (at most the render's): enough for
+// antialiased edges; the AOVs hold no lighting noise.
+constexpr int kAovSpp = 64;
+
+// --noise-threshold: the estimate is too noisy below 16 spp to stop on; --adaptive tiles
+// renders this many uniformly first.
+constexpr std::uint64_t kMinAdaptiveSpp = 16;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -46,21 +59,57 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
     if (opt.seed) s.seed = *opt.seed;
     if (opt.strategy) s.strategy = *opt.strategy;
     if (opt.sampler) s.sampler = *opt.sampler;
+    if (opt.filter) s.filter = *opt.filter;
+    if (opt.filter_radius) s.filter_radius = *opt.filter_radius;
+    if (opt.clamp) s.clamp = *opt.clamp;
+    CameraDesc& c = scene.camera;
+    auto vec = [](const std::vector<float>& v) { return glm::vec3(v[0], v[1], v[2]); };
+    if (opt.eye.size() == 3) c.eye = vec(opt.eye);
+    if (opt.target.size() == 3) c.target = vec(opt.target);
+    if (opt.up.size() == 3) c.up = vec(opt.up);
+    if (opt.fov) c.fov_y_degrees = *opt.fov;
+    if (opt.aperture) c.aperture = *opt.aperture;
+    if (opt.focus_distance) c.focus_distance = *opt.focus_distance;
+    const glm::vec3 forward = c.target - c.eye;
+    if (!(glm::length(forward) > 0.0f) || !std::isfinite(glm::length(forward)))
+        throw Error("--eye and --target: the camera needs two distinct points at a finite distance");
+    if (!(glm::length(glm::cross(glm::normalize(forward), c.up)) > 1e-6f))
+        throw Error("--up: must be non-zero and not parallel to the view direction (--target minus --eye)");
+}
+
+// The --aov layers of the EXR, in the order asked.
+std::vector<ImageLayer> aov_layers(const RenderOptions& opt, const AovImages& aovs) {
+    std::vector<ImageLayer> layers;
+    for (const std::string& name : opt.aov) {
+        if (name == "albedo") layers.push_back({"albedo", {"R", "G", "B"}, aovs.albedo});
+        else if (name == "normal") layers.push_back({"normal", {"X", "Y", "Z"}, aovs.normal});
+        else if (name == "depth") layers.push_back({"depth", {"Z"}, aovs.depth});
+    }
+    return layers;
 }
 
 void write_image(const std::string& out, const std::vector<float>& rgb, const DeviceGroup& r, const Scene& scene,
-                 float exposure, double wall_s, bool with_png = true) {
+                 const RenderOptions& opt, double wall_s, bool with_png = true,
+                 const std::vector<ImageLayer>& layers = {}, const ImageMetadata& extra = {}) {
     ImageMetadata meta;
     meta.ints.push_back({"facet:spp", int(r.stats().samples_per_pixel)});
     meta.ints.push_back({"facet:seed", int(scene.settings.seed)});
     meta.ints.push_back({"facet:max_depth", scene.settings.max_depth});
     meta.strings.push_back({"facet:sampler", scene.settings.sampler == FC_SAMPLER_SOBOL ? "sobol" : "independent"});
+    const RenderSettings& s = scene.settings;
+    meta.strings.push_back({"facet:filter", pixel_filter_info(s.filter).name});
+    meta.floats.push_back({"facet:filter_radius", pixel_filter_radius(s.filter, s.filter_radius)});
+    // The clamp biases the image: recorded when on (0 would read as "clamped to 0").
+    if (s.clamp > 0.0f) meta.floats.push_back({"facet:clamp", s.clamp});
     meta.floats.push_back({"facet:render_seconds", float(r.stats().render_seconds)});
     meta.floats.push_back({"facet:wall_seconds", float(wall_s)});
     meta.strings.push_back({"facet:device", r.description()});
     meta.strings.push_back({"facet:scene", scene.source_path});
-    write_exr(out, r.width(), r.height(), rgb, meta);
-    if (with_png) write_png(replace_extension(out, ".png"), r.width(), r.height(), rgb, exposure);
+    meta.strings.insert(meta.strings.end(), extra.strings.begin(), extra.strings.end());
+    meta.floats.insert(meta.floats.end(), extra.floats.begin(), extra.floats.end());
+    meta.ints.insert(meta.ints.end(), extra.ints.begin(), extra.ints.end());
+    write_exr(out, r.width(), r.height(), rgb, meta, layers);
+    if (with_png) write_png(replace_extension(out, ".png"), r.width(), r.height(), rgb, opt.exposure, opt.tonemap);
 }
 
 // Saves the film (film/film_state.hpp) to `path`; false, with the message printed, on failure.
@@ -79,18 +128,21 @@ bool save_film_or_rescue(const OutputPlan& plan, const DeviceGroup& r, const Sce
 // The final image, its PNG, and the film when asked (--film), interrupted or when the
 // image fails. An image or film that cannot be written where asked goes to a rescue path
 // (outputs.hpp), said on stderr, and false is returned: no finished sample is lost.
+// Per-tile adaptive renders have no film (their bands hold different sample counts):
+// `film_possible` false.
 bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const DeviceGroup& r, const Scene& scene,
-                 std::uint64_t scene_hash, float exposure, double wall_s, bool interrupted) {
+                 std::uint64_t scene_hash, const RenderOptions& opt, double wall_s, bool interrupted,
+                 const std::vector<ImageLayer>& layers, const ImageMetadata& extra, bool film_possible) {
     bool image_ok = true, png_ok = true;
     try {
-        write_image(plan.image, rgb, r, scene, exposure, wall_s, false);
+        write_image(plan.image, rgb, r, scene, opt, wall_s, false, layers, extra);
     } catch (const Error& e) {
         say(stderr, "facet: error: {}\n", e.what());
         image_ok = false;
     }
     if (image_ok) {
         try {
-            write_png(plan.png, r.width(), r.height(), rgb, exposure);
+            write_png(plan.png, r.width(), r.height(), rgb, opt.exposure, opt.tonemap);
         } catch (const Error& e) {
             say(stderr, "facet: error: {} (the linear image {} was written)\n", e.what(), plan.image);
             png_ok = false;
@@ -98,14 +150,14 @@ bool write_final(const OutputPlan& plan, const std::vector<float>& rgb, const De
     } else {
         const std::string rescue = rescue_path(plan.image);
         try {
-            write_image(rescue, rgb, r, scene, exposure, wall_s, true);
+            write_image(rescue, rgb, r, scene, opt, wall_s, true, layers, extra);
             say(stderr, "facet: the image was saved to {} (and {}) instead\n", rescue,
                 replace_extension(rescue, ".png"));
         } catch (const Error& e) {
             say(stderr, "facet: error: the image could not be saved to {} either: {}\n", rescue, e.what());
         }
     }
-    const bool want_film = interrupted || plan.film_requested || !image_ok;
+    const bool want_film = film_possible && (interrupted || plan.film_requested || !image_ok);
     const bool film_ok = !want_film || save_film_or_rescue(plan, r, scene, scene_hash);
     return image_ok && png_ok && film_ok;
 }
@@ -176,17 +228,18 @@ void print_device_shares(const DeviceGroup& group) {
 // is a warning and the render goes on.
 std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene, DeviceGroup& renderer,
                                     const std::optional<ImageRGB>& reference, const std::string& out,
-                                    const std::string& report, Clock::time_point start, const StopSignals& signals) {
+                                    const std::string& report, Clock::time_point start, const StopSignals& signals,
+                                    const std::vector<ImageLayer>& layers, std::uint64_t target) {
     std::vector<PassRecord> passes;
     Progress progress(opt.quiet);
-    const std::uint64_t target = std::uint64_t(scene.settings.spp);
     const double pixels = double(renderer.pixel_count());
     const double compile_s = renderer.stats().compile_seconds;
     double last_snapshot = 0.0;
     ProgressiveOptions po;
     po.target_spp = target;
     po.time_limit_s = opt.time_limit;
-    po.stop = [&] { return signals.first() != 0; };
+    bool converged = false;
+    po.stop = [&] { return converged || signals.first() != 0; };
     po.on_first_pass_estimate = [&](double first_pass_s) {
         if (opt.time_limit && first_pass_s > *opt.time_limit)
             say(stderr, "facet: warning: one sample per pixel takes about {}, more than --time {}; rendering one\n",
@@ -204,13 +257,15 @@ std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene
         if (reference) p.reference = compare_images(renderer.image(), reference->rgb, opt.reference);
         passes.push_back(p);
         write_report_csv(report, passes);
+        converged = opt.noise_threshold && p.spp >= kMinAdaptiveSpp && p.estimate.relmse <= *opt.noise_threshold;
+        const bool last = d.last || converged;
 
         const double rate_spp = double(p.spp) / std::max(p.render_s, 1e-9);
-        progress.update(p, target, d.remaining_s, rate_spp * pixels * 1e-6, d.last);
-        if (opt.snapshot && p.wall_s - last_snapshot >= *opt.snapshot && !d.last) {
+        progress.update(p, target, d.remaining_s, rate_spp * pixels * 1e-6, last);
+        if (opt.snapshot && p.wall_s - last_snapshot >= *opt.snapshot && !last) {
             last_snapshot = p.wall_s;
             try {
-                write_image(out, renderer.image(), renderer, scene, opt.exposure, p.wall_s);
+                write_image(out, renderer.image(), renderer, scene, opt, p.wall_s, true, layers);
             } catch (const Error& e) {
                 say(stderr, "facet: warning: snapshot not written ({}); rendering goes on\n", e.what());
             }
@@ -218,6 +273,26 @@ std::vector<PassRecord> render_loop(const RenderOptions& opt, const Scene& scene
     };
     render_progressive(renderer, po);
     return passes;
+}
+
+// The camera line: where it is and what it sees, and, for a bare OBJ, that the camera
+// was framed and the default light added (load_scene.cpp), with how to choose.
+std::string describe_camera(const RenderOptions& opt, const Scene& scene) {
+    const CameraDesc& c = scene.camera;
+    std::string line = fmt::format("camera   eye ({:g}, {:g}, {:g}), target ({:g}, {:g}, {:g}), ", c.eye.x, c.eye.y,
+                                   c.eye.z, c.target.x, c.target.y, c.target.z);
+    line += c.projection == FC_PROJECTION_ORTHOGRAPHIC ? fmt::format("orthographic, height {:g}", c.ortho_height)
+                                                       : fmt::format("fov {:g} degrees", c.fov_y_degrees);
+    if (c.projection == FC_PROJECTION_PERSPECTIVE && c.aperture > 0.0f)
+        line += fmt::format(", lens radius {:g} focused at {:g}", c.aperture,
+                            c.focus_distance > 0.0f ? c.focus_distance : glm::length(c.target - c.eye));
+    const bool obj = lower(std::filesystem::path(opt.scene).extension().string()) == ".obj";
+    if (obj && opt.eye.empty() && opt.target.empty()) line += " (framed to fit the model: --eye, --target to choose)";
+    line += "\n";
+    if (obj && std::find(scene.material_names.begin(), scene.material_names.end(), "default_light") !=
+                   scene.material_names.end())
+        line += "light    the OBJ has no emitters: a default area light was added above and in front of it\n";
+    return line;
 }
 
 }  // namespace
@@ -228,6 +303,14 @@ int run_render(const RenderOptions& opt) {
     Scene scene = load_scene(opt.scene);
     apply_overrides(opt, scene);
     for (const std::string& w : scene.warnings) say(stderr, "facet: warning: {}\n", w);
+    if (opt.adaptive_tiles() && (!opt.film.empty() || !opt.resume.empty()))
+        throw Error(
+            "--adaptive tiles: its bands of rows hold different sample counts, which a film cannot hold: "
+            "no --film or --resume");
+    if (opt.adaptive_tiles() && (opt.samples_from != 0 || Ranks::world().size() > 1))
+        throw Error(
+            "--adaptive tiles: each band's samples are indices 0 to its count, so it renders in one process "
+            "from sample 0: no --samples-from or MPI ranks");
     const OutputPlan plan = plan_outputs(opt);
     const std::string& out = plan.image;
     const std::string& report = plan.report;
@@ -241,8 +324,21 @@ int run_render(const RenderOptions& opt) {
     std::optional<ImageRGB> reference;
     if (!opt.reference.empty()) reference = read_reference(opt.reference, scene.settings.width, scene.settings.height);
 
+    if (!opt.aov.empty() && lower(std::filesystem::path(out).extension().string()) != ".exr")
+        throw Error(fmt::format("--aov: the layers go into the EXR, but --out {} is not one", out));
+
+    std::vector<ClContext> contexts = ClContext::create_many(opt.device);
     Bvh bvh = build_bvh(scene.vertices);
-    DeviceGroup renderer(ClContext::create_many(opt.device), scene, bvh, opt.generic, opt.samples_from,
+    // The AOVs first (rank 0's first device), their buffers released before the path
+    // tracer uploads the scene.
+    std::vector<ImageLayer> layers;
+    if (!opt.aov.empty() && Ranks::world().leads()) {
+        const std::uint32_t aov_spp = std::uint32_t(std::min(scene.settings.spp, kAovSpp));
+        const AovImages aovs = render_aovs(contexts.front(), scene, bvh, aov_spp);
+        layers = aov_layers(opt, aovs);
+        if (!opt.quiet) say(stdout, "aovs     {} ({} spp) in {:.2f} s\n", name_list(opt.aov), aov_spp, aovs.seconds);
+    }
+    DeviceGroup renderer(std::move(contexts), scene, bvh, opt.generic, opt.samples_from,
                          [](const std::string& w) { say(stderr, "facet: warning: {}\n", w); });
     const double compile_s = renderer.stats().compile_seconds;
     if (resumed) renderer.restore(resumed->sums, resumed->samples, resumed->render_seconds);
@@ -261,11 +357,21 @@ int run_render(const RenderOptions& opt) {
         say(stdout, "kernels  {} program ({}), built in {:.2f} s\n", opt.generic ? "generic" : "specialised",
             describe_features(renderer.stats().features), compile_s);
         if (resumed) say(stdout, "resumed  {} spp from {}\n", resumed->spp, opt.resume);
+        say(stdout, "{}", describe_camera(opt, scene));
     }
 
     // Held until every file is written: a second Ctrl-C during the writes is counted, not fatal.
     StopSignals signals;
-    std::vector<PassRecord> passes = render_loop(opt, scene, renderer, reference, out, report, start, signals);
+    const std::uint64_t uniform_target =
+        opt.adaptive_tiles() ? std::min<std::uint64_t>(kMinAdaptiveSpp, std::uint64_t(scene.settings.spp))
+                             : std::uint64_t(scene.settings.spp);
+    std::vector<PassRecord> passes =
+        render_loop(opt, scene, renderer, reference, out, report, start, signals, layers, uniform_target);
+    std::optional<TileRun> tiles;
+    if (opt.adaptive_tiles() && signals.first() == 0 && renderer.stats().samples_per_pixel > 0) {
+        film_on_error.disarm();  // from here on the bands differ: no film
+        tiles = render_adaptive_tiles(opt, scene, renderer, reference, report, start, signals, passes);
+    }
     const bool interrupted = signals.first() != 0;
     const RenderStats& st = renderer.stats();
     if (st.samples_per_pixel == 0) {
@@ -279,7 +385,19 @@ int run_render(const RenderOptions& opt) {
 
     double rejected = 0.0;
     std::vector<float> rgb = renderer.image(&rejected);
-    const bool written = write_final(plan, rgb, renderer, scene, scene_hash, opt.exposure, since(start), interrupted);
+    ImageMetadata extra;
+    std::uint64_t final_spp = st.samples_per_pixel;
+    if (tiles) {
+        rgb = tiles->image.rgb;
+        final_spp = std::uint64_t(tiles->image.mean_spp + 0.5);
+        // facet:spp stays the fewest samples of any pixel (the uniform passes).
+        extra.strings.push_back({"facet:adaptive", "tiles"});
+        extra.floats.push_back({"facet:mean_spp", float(tiles->image.mean_spp)});
+        extra.ints.push_back(
+            {"facet:max_spp", int(*std::max_element(tiles->layout.spp.begin(), tiles->layout.spp.end()))});
+    }
+    const bool written =
+        write_final(plan, rgb, renderer, scene, scene_hash, opt, since(start), interrupted, layers, extra, !tiles);
     film_on_error.disarm();
     ReportSummary summary;
     summary.scene = scene.source_path;
@@ -296,6 +414,17 @@ int run_render(const RenderOptions& opt) {
     summary.rejected_samples = rejected;
     summary.stratified = scene.settings.sampler == FC_SAMPLER_SOBOL;
     summary.sampler = summary.stratified ? "sobol" : "independent";
+    summary.filter = pixel_filter_info(scene.settings.filter).name;
+    summary.filter_radius = pixel_filter_radius(scene.settings.filter, scene.settings.filter_radius);
+    summary.clamp = scene.settings.clamp;
+    if (reference) summary.reference_spp = reference->spp;
+    summary.noise_threshold = opt.noise_threshold.value_or(0.0);
+    summary.converged = tiles ? tiles->converged
+                              : opt.noise_threshold && !passes.empty() &&
+                                    passes.back().spp < std::uint64_t(scene.settings.spp) &&
+                                    passes.back().estimate.relmse <= *opt.noise_threshold;
+    summary.adaptive = !opt.noise_threshold ? "" : tiles ? "tiles" : "global";
+    if (tiles) summary.spp = final_spp;
     fit_convergence(passes, summary);
     write_report_csv(report, passes);
     write_report_json(plan.report_json, summary, passes);
@@ -303,15 +432,25 @@ int run_render(const RenderOptions& opt) {
     if (!written) return kExitError;
 
     if (interrupted) say(stderr, "facet: interrupted; wrote the {} spp finished so far\n", st.samples_per_pixel);
+    if (summary.converged && !opt.quiet)
+        say(stdout, "adaptive the error estimate (relMSE {:.3g}) reached --noise-threshold {} at {} spp{}\n",
+            passes.back().estimate.relmse, *opt.noise_threshold, final_spp,
+            tiles ? fmt::format(" (mean; every band of {} rows below it)", tiles->layout.band_rows) : "");
+    if (std::none_of(rgb.begin(), rgb.end(), [](float v) { return v != 0.0f; }))
+        say(stderr,
+            "facet: warning: the image is black: no light reaches the camera (no emitters in view or lighting "
+            "the visible surfaces; for an OBJ, --eye and --target choose another view)\n");
     if (rejected > 0)
         say(stderr, "facet: warning: {} samples were NaN, infinite or negative and were dropped\n", rejected);
     if (!summary.slope_warning.empty()) say(stderr, "facet: warning: {}\n", summary.slope_warning);
-    say(stdout, "wrote    {} and {} ({} spp, {:.2f} s rendering, {:.2f} s in all)\n", out,
-        replace_extension(out, ".png"), st.samples_per_pixel, st.render_seconds, since(start));
+    say(stdout, "wrote    {} and {} ({} spp{}, {:.2f} s rendering, {:.2f} s in all)\n", out,
+        replace_extension(out, ".png"), final_spp, tiles ? " mean" : "", st.render_seconds, since(start));
     if (!opt.quiet) print_device_shares(renderer);
     if (!opt.quiet) {
-        say(stdout, "report   {} (+ .json, .svg); RMSE ~ time^{:.2f} ({}{})\n", report, summary.slope,
-            summary.slope_source, summary.slope_judged ? "" : ", too short a run to judge");
+        if (std::isfinite(summary.slope))
+            say(stdout, "report   {} (+ .json, .svg); RMSE ~ time^{:.2f} ({}{})\n", report, summary.slope,
+                summary.slope_source, summary.slope_judged ? "" : ", too short a run to judge");
+        else say(stdout, "report   {} (+ .json, .svg); the run was too short to fit a convergence rate\n", report);
     }
     return interrupted ? kExitInterrupted : kExitOk;
 }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "host/error.hpp"
+#include "host/scene/pixel_filter.hpp"
 #include "host/film/safe_write.hpp"
 #include "host/scene/scene.hpp"
 #include "host/scene/device_scene.hpp"
@@ -81,6 +82,12 @@ std::uint64_t film_scene_hash(const Scene& scene) {
     f.value(c.projection);
     f.value(c.fov_y_degrees);
     f.value(c.ortho_height);
+    f.value(c.aperture);
+    f.value(c.focus_distance);
+    // The pixel filter and the clamp change every sample: a film continues only with them.
+    f.value(scene.settings.filter);
+    f.value(pixel_filter_radius(scene.settings.filter, scene.settings.filter_radius));
+    f.value(scene.settings.clamp);
     return f.h;
 }
 

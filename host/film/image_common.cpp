@@ -12,6 +12,11 @@ namespace facet {
 
 ImageRGB read_reference(const std::string& path, int width, int height) {
     ImageRGB ref = read_image(path);
+    if (ref.decoded_srgb)
+        throw Error(
+            fmt::format("reference {}: an integer (8-bit sRGB) image is tone-mapped and clipped at 1, not "
+                        "the linear radiance a render is measured against: give the EXR (or HDR)",
+                        path));
     if (ref.width != width || ref.height != height)
         throw Error(fmt::format("reference {}: the reference is {}x{} but the render is {}x{}", path, ref.width,
                                 ref.height, width, height));

@@ -17,6 +17,7 @@
 #include "host/error.hpp"
 #include "host/film/safe_write.hpp"
 #include "host/util/input_file.hpp"
+#include "host/util/strings.hpp"
 
 namespace facet {
 namespace {
@@ -73,8 +74,9 @@ void write_image_file(const std::string& path, const ImageSpec& spec, TypeDesc t
         [&](const std::string& tmp) { verify_pixels(tmp, spec, path); });
 }
 
-float srgb_encode(float linear) {
-    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+// The sRGB transfer function's inverse (IEC 61966-2-1).
+float srgb_decode(float encoded) {
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
 
 void check_size(const std::string& path, int width, int height, const std::vector<float>& rgb) {
@@ -84,26 +86,46 @@ void check_size(const std::string& path, int width, int height, const std::vecto
 
 }  // namespace
 
-void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb,
-               const ImageMetadata& meta) {
+void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb, const ImageMetadata& meta,
+               const std::vector<ImageLayer>& layers) {
     check_size(path, width, height, rgb);
-    ImageSpec spec(width, height, 3, TypeDesc::FLOAT);
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    std::vector<std::string> names = {"R", "G", "B"};
+    for (const ImageLayer& l : layers) {
+        if (l.channels.empty() || l.values.size() != pixels * l.channels.size())
+            throw Error(fmt::format("{}: the {} layer of {} values does not fit a {}x{} image", path, l.name,
+                                    l.values.size(), width, height));
+        for (const std::string& c : l.channels) names.push_back(l.name + "." + c);
+    }
+    if (!layers.empty() && lower(fs::path(path).extension().string()) != ".exr")
+        throw Error(fmt::format("{}: only an EXR holds extra layers ({}...): give a .exr name", path, names[3]));
+    ImageSpec spec(width, height, int(names.size()), TypeDesc::FLOAT);
+    spec.channelnames = names;
     spec.attribute("compression", "zip");
     spec.attribute("Software", "facet");
     for (const auto& [k, v] : meta.strings) spec.attribute(k, v);
     for (const auto& [k, v] : meta.floats) spec.attribute(k, v);
     for (const auto& [k, v] : meta.ints) spec.attribute(k, v);
-    write_image_file(path, spec, TypeDesc::FLOAT, rgb.data());
+    if (layers.empty()) return write_image_file(path, spec, TypeDesc::FLOAT, rgb.data());
+    // Interleaved: R, G, B, then each layer's channels, pixel by pixel.
+    std::vector<float> all(pixels * names.size());
+    for (std::size_t i = 0; i < pixels; ++i) {
+        float* out = &all[i * names.size()];
+        for (int c = 0; c < 3; ++c) *out++ = rgb[3 * i + std::size_t(c)];
+        for (const ImageLayer& l : layers)
+            for (std::size_t c = 0; c < l.channels.size(); ++c) *out++ = l.values[i * l.channels.size() + c];
+    }
+    write_image_file(path, spec, TypeDesc::FLOAT, all.data());
 }
 
-void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure) {
+void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure,
+               ToneMap tonemap) {
     check_size(path, width, height, rgb);
     float scale = std::exp2(exposure);
     std::vector<std::uint8_t> bytes(rgb.size());
     for (std::size_t i = 0; i < rgb.size(); ++i) {
-        float v = rgb[i] * scale;
-        v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
-        bytes[i] = std::uint8_t(std::lround(srgb_encode(v) * 255.0f));
+        const float v = rgb[i] * scale;
+        bytes[i] = std::uint8_t(std::lround(tonemap_display(tonemap, std::isnan(v) ? 0.0f : v) * 255.0f));
     }
     ImageSpec spec(width, height, 3, TypeDesc::UINT8);
     spec.attribute("Software", "facet");
@@ -138,6 +160,17 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
     img.width = spec.width;
     img.height = spec.height;
     img.spp = spec.get_int_attribute("facet:spp", -1);
+    // Integer formats hold display-encoded values: sRGB unless the file says linear.
+    const bool integer = spec.format.basetype == TypeDesc::UINT8 || spec.format.basetype == TypeDesc::UINT16;
+    const std::string space = spec.get_string_attribute("oiio:ColorSpace", "sRGB");
+    if (integer && space != "Linear" && space != "linear") {
+        img.decoded_srgb = true;
+        img.note = fmt::format(
+            "{}: an {}-bit sRGB image, decoded to linear radiance; it stops at 1 (no sun, no highlights): "
+            "an EXR or HDR image holds the light itself",
+            path, spec.format.basetype == TypeDesc::UINT8 ? 8 : 16);
+        for (float& v : all) v = srgb_decode(v);
+    }
     img.rgb.resize(std::size_t(spec.width) * spec.height * 3);
     for (std::size_t i = 0; i < std::size_t(spec.width) * spec.height; ++i)
         for (int c = 0; c < 3; ++c)

@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "host/film/tonemap.hpp"
+
 namespace facet {
 
 struct ImageMetadata {
@@ -15,25 +17,40 @@ struct ImageMetadata {
     std::vector<std::pair<std::string, int>> ints;             // e.g. {"facet:spp", 64}
 };
 
+// An extra layer of an EXR beside its R, G, B: channels "<name>.<channel>" (OpenEXR's
+// layer convention, which compositors and denoisers read), e.g. {"albedo", {"R", "G", "B"}}.
+struct ImageLayer {
+    std::string name;
+    std::vector<std::string> channels;
+    std::vector<float> values;  // channels.size() floats a pixel, top row first
+};
+
 // Writes linear RGB floats (3 per pixel, top row first) as a 32-bit float EXR, so that
 // images can serve as references at full precision (another float format when the
-// extension says so: .hdr, .tif, .pfm, without the metadata EXR holds).
+// extension says so: .hdr, .tif, .pfm, without the metadata EXR holds). `layers` go into
+// the EXR after R, G, B; another format cannot hold them (facet::Error).
 void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb,
-               const ImageMetadata& meta = {});
+               const ImageMetadata& meta = {}, const std::vector<ImageLayer>& layers = {});
 
-// Writes an 8-bit sRGB PNG: radiance times 2^exposure, clamped to [0, 1], encoded with
-// the sRGB transfer function (IEC 61966-2-1).
-void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure = 0.0f);
+// Writes an 8-bit sRGB PNG: radiance times 2^exposure, tone-mapped (film/tonemap.hpp:
+// clamped to [0, 1] and sRGB-encoded, or the filmic curve).
+void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure = 0.0f,
+               ToneMap tonemap = ToneMap::Clip);
 
 struct ImageRGB {
     int width = 0;
     int height = 0;
     std::vector<float> rgb;  // 3 floats a pixel, top row first
     int spp = -1;            // facet:spp metadata, when the file has it
+    // An 8-bit or 16-bit integer image in sRGB (PNG, JPEG...): its values were decoded to
+    // linear, and `note` says so (such an image stops at 1: no sun, no highlights).
+    bool decoded_srgb = false;
+    std::string note;
 };
 
-// Reads any image OpenImageIO can (EXR, HDR, PNG...) as RGB floats (values as stored:
-// EXR and HDR are linear, 8-bit formats are not converted). A one-channel image is
+// Reads any image OpenImageIO can (EXR, HDR, PNG...) as linear RGB floats: EXR and HDR
+// as stored, integer images in sRGB (8-bit PNG, JPEG) decoded to linear with a note
+// (ImageRGB::note). A one-channel image is
 // replicated to grey. Throws facet::Error naming the file on failure, and for images
 // of more than 2^28 pixels (checked on the header, before reading).
 ImageRGB read_image(const std::string& path);
@@ -43,8 +60,9 @@ ImageRGB read_image(const std::string& path);
 // and the data window must hold at most 2^28 pixels. Throws facet::Error naming the file.
 void check_image_header(const std::string& path);
 
-// Reads a reference image for a render of width x height: the size must match and
-// every texel must be finite, else facet::Error names the file and the problem.
+// Reads a reference image for a render of width x height: the size must match, every
+// texel must be finite and the file must hold linear radiance (an 8-bit sRGB image is
+// tone-mapped and clipped at 1: refused), else facet::Error names the file and the problem.
 ImageRGB read_reference(const std::string& path, int width, int height);
 
 // Whether `path`'s extension names a format that holds linear floats and that this

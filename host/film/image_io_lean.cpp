@@ -119,8 +119,11 @@ PfmHeader parse_pfm_header(const std::string& path, const std::string& data) {
 
 }  // namespace
 
-void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb, const ImageMetadata&) {
+void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb, const ImageMetadata&,
+               const std::vector<ImageLayer>& layers) {
     check_size(path, width, height, rgb);
+    if (!layers.empty())
+        throw Error(fmt::format("{}: this lean build writes PFM, which cannot hold the --aov layers", path));
     std::string why;
     if (!can_write_float_image(path, &why)) throw Error(fmt::format("{}: {}", path, why));
     std::string out = fmt::format("PF\n{} {}\n-1.0\n", width, height);
@@ -130,7 +133,8 @@ void write_exr(const std::string& path, int width, int height, const std::vector
     write_bytes_safely(path, "image", out);
 }
 
-void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure) {
+void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure,
+               ToneMap tonemap) {
     check_size(path, width, height, rgb);
     const float scale = std::exp2(exposure);
     std::string raw;
@@ -138,9 +142,8 @@ void write_png(const std::string& path, int width, int height, const std::vector
     for (int y = 0; y < height; ++y) {
         raw.push_back(0);  // filter: none
         for (int i = 0; i < width * 3; ++i) {
-            float v = rgb[std::size_t(y) * width * 3 + i] * scale;
-            v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
-            raw.push_back(char(std::lround(srgb_encode(v) * 255.0f)));
+            const float v = rgb[std::size_t(y) * width * 3 + i] * scale;
+            raw.push_back(char(std::lround(tonemap_display(tonemap, std::isnan(v) ? 0.0f : v) * 255.0f)));
         }
     }
     std::string png = "\x89PNG\r\n\x1a\n";

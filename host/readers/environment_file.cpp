@@ -13,6 +13,7 @@ namespace facet {
 EnvironmentMap load_environment_map(const std::string& path, const glm::vec3& scale, const glm::mat3& world_to_map,
                                     std::vector<std::string>& warnings) {
     ImageRGB img = read_image(path);  // throws facet::Error naming the file
+    if (!img.note.empty()) warnings.push_back(img.note);
     try {
         return environment_from_pixels(img.width, img.height, std::move(img.rgb), scale, world_to_map, path, warnings);
     } catch (const std::bad_alloc&) {

@@ -24,6 +24,7 @@ struct JsonLoader {
     // json_scene.cpp
     void camera(const Json& v, const std::string& path);
     void render(const Json& v, const std::string& path);
+    void filter(const Json& v, const std::string& path);
     // json_material.cpp
     void material(const std::string& name, const Json& v, const std::string& path);
     int material_ref(const Json& v, const std::string& path);

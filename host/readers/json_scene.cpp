@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <type_traits>
 
 #include <fmt/format.h>
@@ -13,12 +14,13 @@
 #include "host/readers/foreign_scene.hpp"
 #include "host/readers/json_loader.hpp"
 #include "host/readers/text_parse.hpp"
+#include "host/scene/pixel_filter.hpp"
 #include "host/scene/settings_limits.hpp"
 
 namespace facet {
 
 void JsonLoader::camera(const Json& v, const std::string& path) {
-    r.object(v, path, {"eye", "target", "up", "fov", "projection", "height"});
+    r.object(v, path, {"eye", "target", "up", "fov", "projection", "height", "aperture", "focus_distance"});
     CameraDesc& c = scene.camera;
     auto k = [&](const char* name) { return JsonReader::key(path, name); };
     if (v.contains("eye")) c.eye = r.vec3(v["eye"], k("eye"));
@@ -26,6 +28,10 @@ void JsonLoader::camera(const Json& v, const std::string& path) {
     if (v.contains("up")) c.up = r.vec3(v["up"], k("up"));
     if (v.contains("fov")) c.fov_y_degrees = r.number_in(v["fov"], k("fov"), 0, 180, true, true);
     if (v.contains("height")) c.ortho_height = r.number_in(v["height"], k("height"), 0, 1e30, true);
+    // Thin-lens depth of field: the lens radius and the distance of the plane in focus.
+    if (v.contains("aperture")) c.aperture = r.number_in(v["aperture"], k("aperture"), 0, 1e30);
+    if (v.contains("focus_distance"))
+        c.focus_distance = r.number_in(v["focus_distance"], k("focus_distance"), 0, 1e30, true);
     if (v.contains("projection")) {
         const std::string p = r.string(v["projection"], k("projection"));
         if (p == "perspective") c.projection = FC_PROJECTION_PERSPECTIVE;
@@ -44,7 +50,8 @@ void JsonLoader::camera(const Json& v, const std::string& path) {
 }
 
 void JsonLoader::render(const Json& v, const std::string& path) {
-    r.object(v, path, {"width", "height", "spp", "max_depth", "rr_depth", "seed", "strategy", "sampler"});
+    r.object(v, path,
+             {"width", "height", "spp", "max_depth", "rr_depth", "seed", "strategy", "sampler", "filter", "clamp"});
     RenderSettings& s = scene.settings;
     auto k = [&](const char* name) { return JsonReader::key(path, name); };
     auto get = [&](const char* name, SettingRange range, auto& out) {
@@ -72,6 +79,25 @@ void JsonLoader::render(const Json& v, const std::string& path) {
         else if (name == "independent") s.sampler = FC_SAMPLER_INDEPENDENT;
         else r.fail(key, fmt::format("unknown sampler '{}' (expected sobol or independent)", name));
     }
+    if (v.contains("filter")) filter(v["filter"], k("filter"));
+    if (v.contains("clamp")) s.clamp = r.number_in(v["clamp"], k("clamp"), 0, FC_MAX_RADIANCE, true);
+}
+
+// "filter": "tent" or {"type": "tent", "radius": 1.5} (scene/pixel_filter.hpp).
+void JsonLoader::filter(const Json& v, const std::string& path) {
+    RenderSettings& s = scene.settings;
+    const bool is_object = v.is_object();
+    if (is_object) {
+        r.object(v, path, {"type", "radius"});
+        r.require(v, path, "type");
+    }
+    const std::string type_path = is_object ? JsonReader::key(path, "type") : path;
+    const std::string name = r.string(is_object ? v["type"] : v, type_path);
+    const std::optional<int> code = pixel_filter_code(name);
+    if (!code) r.fail(type_path, fmt::format("unknown filter '{}' (expected {})", name, pixel_filter_names()));
+    s.filter = *code;
+    if (is_object && v.contains("radius"))
+        s.filter_radius = r.number_in(v["radius"], JsonReader::key(path, "radius"), 0, kMaxFilterRadius, true);
 }
 
 std::string JsonLoader::existing_file(const Json& v, const std::string& path, const char* what) {

@@ -10,24 +10,10 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
+#include "host/util/strings.hpp"
 
 namespace facet {
 namespace {
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diag = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t up = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diag = up;
-        }
-    }
-    return row[b.size()];
-}
 
 std::string type_name(const Json& v) {
     switch (v.type()) {
@@ -69,7 +55,7 @@ std::vector<std::string> duplicate_json_keys(const std::string& file, const std:
         return true;
     };
     try {
-        const Json parsed = Json::parse(text, check);
+        const Json parsed = Json::parse(text, check, /*allow_exceptions=*/true, /*ignore_comments=*/true);
         (void)parsed;
     } catch (const Json::exception&) {
         // syntax errors are parse_json's to report
@@ -79,7 +65,9 @@ std::vector<std::string> duplicate_json_keys(const std::string& file, const std:
 
 Json parse_json(const std::string& file, const std::string& text) {
     try {
-        return Json::parse(text);
+        // Scene files may hold // and /* */ comments (not standard JSON, but every
+        // practitioner annotates a scene).
+        return Json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
     } catch (const Json::parse_error& e) {
         // e.byte is the 1-based offset of the last character read.
         const std::size_t end = std::min<std::size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());

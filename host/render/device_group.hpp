@@ -67,6 +67,11 @@ public:
     void end_pass(std::uint32_t count, double seconds) override;
     void reset() override;
 
+    // Adaptive sampling (cli/adaptive_tiles.hpp): samples [first, first + count) of a band
+    // of rows, dealt out to this process's devices; end_pass(0, seconds) then ends the
+    // round. One process only (facet::Error with several MPI ranks).
+    void launch_band(std::uint64_t first, std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count);
+
     // Continues a film (film/film_state.hpp) of the same scene and settings: its sums and
     // samples are kept and rendering goes on after its last sample index (or at
     // first_sample when that is later; earlier is refused, as it would repeat samples).

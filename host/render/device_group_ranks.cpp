@@ -8,6 +8,8 @@
 
 #include "host/render/device_group.hpp"
 
+#include "host/error.hpp"
+
 namespace facet {
 namespace {
 
@@ -65,6 +67,13 @@ void DeviceGroup::launch(std::uint32_t count, std::uint32_t row_begin, std::uint
     }
     ranks_.broadcast(command);
     rank_launch(command);
+}
+
+void DeviceGroup::launch_band(std::uint64_t first, std::uint32_t count, std::uint32_t row_begin,
+                              std::uint32_t row_count) {
+    if (ranks_.size() > 1) throw Error("adaptive bands of rows are rendered by one process, not by MPI ranks");
+    if (count == 0 || row_begin >= std::uint32_t(height_)) return;
+    run(deal(first, count, row_begin, std::min(row_count, std::uint32_t(height_) - row_begin)));
 }
 
 void DeviceGroup::rank_launch(const std::vector<std::uint64_t>& command) {

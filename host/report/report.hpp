@@ -3,6 +3,7 @@
 // plot as SVG (plot_svg.cpp).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,20 +29,31 @@ struct ReportSummary {
     double wall_s = 0.0, render_s = 0.0, compile_s = 0.0;
     bool interrupted = false;
     double rejected_samples = 0.0;
-    double slope = 0.0;         // fitted log-log slope of RMSE against render time
-    std::string slope_source;   // "reference" or "estimate"
-    std::string slope_warning;  // empty when the slope is near -1/2 (or not judged)
-    bool slope_judged = false;  // the fit spans at least a decade of samples per pixel
+    double slope = 0.0;               // fitted log-log slope of RMSE against render time
+    double slope_stderr = 0.0;        // its standard error (least squares)
+    std::int64_t reference_spp = -1;  // the reference's facet:spp metadata, -1 when unknown
+    double noise_floor_mse = 0.0;     // the MSE an unbiased render would show against it
+    std::string slope_source;         // "reference" or "estimate"
+    std::string slope_warning;        // empty when the slope is near -1/2 (or not judged)
+    bool slope_judged = false;        // the fit spans at least a decade of samples per pixel
     // The sampler stratifies (scrambled Sobol'): RMSE may then fall faster than
     // time^-1/2, down to about time^-3/2 for smooth pixels (Owen 1997), so only a slope
     // steeper than that is suspicious. "sampler" names it in the JSON summary.
     bool stratified = false;
     std::string sampler;
+    std::string filter;            // the pixel filter's name
+    double filter_radius = 0.0;    // pixels
+    double clamp = 0.0;            // --clamp (biased) when > 0, else off
+    double noise_threshold = 0.0;  // --noise-threshold (relMSE) when > 0
+    bool converged = false;        // ended by reaching it
+    std::string adaptive;          // "global" or "tiles" with a threshold, else empty
 };
 
 // The fitted slope of RMSE against render time over the passes (reference RMSE when
-// there is one, else the estimate), and a warning when it is far from -1/2 over a
-// run that spans at least a decade of samples per pixel.
+// there is one, else the estimate), and a warning when it is far from -1/2 beyond twice
+// its standard error over a run that spans at least a decade of samples per pixel;
+// against a reference, only when the final error is also above the reference's noise
+// floor (summary.reference_spp, when known).
 void fit_convergence(const std::vector<PassRecord>& passes, ReportSummary& summary);
 
 void write_report_csv(const std::string& path, const std::vector<PassRecord>& passes);

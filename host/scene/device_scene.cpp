@@ -2,6 +2,7 @@
 
 #include <cstdint>
 
+#include "host/scene/pixel_filter.hpp"
 #include "host/util/vec3.hpp"
 
 namespace facet {
@@ -21,6 +22,9 @@ FcRenderParams render_params(const Scene& scene) {
     p.environment_light = scene.environment_light;
     p.strategy = std::uint32_t(s.strategy);
     p.sampler = std::uint32_t(s.sampler);
+    p.filter = std::uint32_t(s.filter);
+    p.filter_radius = pixel_filter_radius(s.filter, s.filter_radius);
+    p.clamp = s.clamp > 0.0f ? s.clamp : FC_MAX_RADIANCE;
     return p;
 }
 

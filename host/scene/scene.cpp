@@ -33,6 +33,8 @@ FcCamera make_camera(const CameraDesc& desc, float aspect) {
     store(cam.right, right_unit * (half_height * aspect));
     store(cam.up, up_unit * half_height);
     cam.projection = desc.projection;
+    cam.lens_radius = desc.projection == FC_PROJECTION_PERSPECTIVE ? desc.aperture : 0.0f;
+    cam.focus_distance = desc.focus_distance > 0.0f ? desc.focus_distance : glm::length(desc.target - desc.eye);
     return cam;
 }
 

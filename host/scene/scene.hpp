@@ -24,6 +24,8 @@ struct CameraDesc {
     int projection = FC_PROJECTION_PERSPECTIVE;
     float fov_y_degrees = 40.0f;  // perspective: vertical field of view
     float ortho_height = 2.0f;    // orthographic: world-space height of the image
+    float aperture = 0.0f;        // perspective: radius of the thin lens (world units); 0: a pinhole
+    float focus_distance = 0.0f;  // of the plane in focus, along the view direction; 0: |target - eye|
 };
 
 struct RenderSettings {
@@ -35,6 +37,9 @@ struct RenderSettings {
     std::uint32_t seed = 0;
     int strategy = FC_STRATEGY_MIS;  // FC_STRATEGY_*: MIS, light sampling or BSDF sampling only
     int sampler = FC_SAMPLER_SOBOL;  // FC_SAMPLER_*: scrambled Sobol' or independent numbers
+    int filter = FC_FILTER_BOX;      // FC_FILTER_*: the pixel filter (scene/pixel_filter.hpp)
+    float filter_radius = 0.0f;      // pixels; 0: the filter's default
+    float clamp = 0.0f;              // the largest contribution of one sample; 0: no clamp (unbiased)
 };
 
 // A point, spot or directional light as the scene file gives it (docs/lights.md).

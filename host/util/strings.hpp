@@ -5,6 +5,7 @@
 #include <cctype>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -35,6 +36,22 @@ std::string name_list(const Range& items) {
 // "unknown <what> '<value>' (known: <known>)", `known` e.g. from name_list().
 inline std::string unknown_name(std::string_view what, std::string_view value, std::string_view known) {
     return fmt::format("unknown {} '{}' (known: {})", what, value, known);
+}
+
+// Levenshtein distance (insertions, deletions, substitutions), for "did you mean".
+inline std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
 }
 
 }  // namespace facet

@@ -1,15 +1,38 @@
-/* Camera rays: pinhole perspective and orthographic projections with a jittered
- * position inside the pixel (box filter). The camera layout is FcCamera in
- * kernels/shared/render_layout.h. */
+/* Camera rays: pinhole and thin-lens perspective, and orthographic projections. Where
+ * inside (or around) the pixel a sample looks is the pixel filter's business
+ * (kernels/camera/filter.cl). The camera layout is FcCamera in
+ * kernels/shared/render_layout.h.
+ *
+ * Thin lens (pbrt-v4's PerspectiveCamera, Kolb et al. 1995): the ray through image
+ * position (x, y) of the pinhole meets the plane of focus, focus_distance along
+ * `forward`; the thin-lens ray leaves a uniformly sampled point of the lens disk of
+ * radius lens_radius (Shirley-Chiu concentric mapping) toward that point, so points on
+ * the plane of focus are sharp and others are blurred by the aperture. */
 #ifndef FACET_CAMERA_CAMERA_CL
 #define FACET_CAMERA_CAMERA_CL
 
 #include "kernels/shared/render_layout.h"
 #include "kernels/util/math.cl"
 
-/* The ray through image position (x, y) in pixels, (0, 0) the top-left corner. */
-inline void camera_ray(__constant const FcCamera* cam, float x, float y, uint width, uint height, float3* origin,
-                       float3* dir) {
+/* A uniform point of the unit disk from u in [0, 1)^2 (Shirley and Chiu 1997). */
+inline float2 concentric_disk(float2 u) {
+    float2 o = 2.0f * u - (float2)(1.0f);
+    if (o.x == 0.0f && o.y == 0.0f) return (float2)(0.0f);
+    float r, theta;
+    if (fabs(o.x) > fabs(o.y)) {
+        r = o.x;
+        theta = (M_PI_F / 4.0f) * (o.y / o.x);
+    } else {
+        r = o.y;
+        theta = M_PI_F / 2.0f - (M_PI_F / 4.0f) * (o.x / o.y);
+    }
+    return r * (float2)(cos(theta), sin(theta));
+}
+
+/* The ray through image position (x, y) in pixels, (0, 0) the top-left corner; u_lens
+ * picks the point on the lens. */
+inline void camera_ray(__constant const FcCamera* cam, float x, float y, uint width, uint height, float2 u_lens,
+                       float3* origin, float3* dir) {
     float sx = 2.0f * x / (float)width - 1.0f;
     float sy = 1.0f - 2.0f * y / (float)height;
     float3 eye = load3c(cam->eye);
@@ -19,10 +42,18 @@ inline void camera_ray(__constant const FcCamera* cam, float x, float y, uint wi
     if (cam->projection == FC_PROJECTION_ORTHOGRAPHIC) {
         *origin = eye + sx * right + sy * up;
         *dir = forward;
-    } else {
-        *origin = eye;
-        *dir = normalize(forward + sx * right + sy * up);
+        return;
     }
+    float3 pinhole = forward + sx * right + sy * up; /* at distance 1 along forward */
+    if (!(cam->lens_radius > 0.0f)) {
+        *origin = eye;
+        *dir = normalize(pinhole);
+        return;
+    }
+    float3 focus = eye + cam->focus_distance * pinhole;
+    float2 lens = cam->lens_radius * concentric_disk(u_lens);
+    *origin = eye + lens.x * normalize(right) + lens.y * normalize(up);
+    *dir = normalize(focus - *origin);
 }
 
 #endif

@@ -25,6 +25,7 @@
 
 #include "kernels/integrator/surface.cl"
 #include "kernels/camera/camera.cl"
+#include "kernels/camera/filter.cl"
 #include "kernels/lights/light.cl"
 #include "kernels/bsdf/bsdf.cl"
 #include "kernels/util/sampler.cl"
@@ -183,13 +184,20 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
     for (uint i = 0; i < params->sample_count; ++i) {
         uint index = params->sample_begin + i;
         Sampler sampler = sampler_init(params->sampler, params->seed, pixel, index);
-        float2 jitter = sampler_get4(&sampler, FC_SET_CAMERA).xy;
+        float4 u_camera = sampler_get4(&sampler, FC_SET_CAMERA);
+        float2 offset;
+        float filter_weight = filter_sample(params->filter, params->filter_radius, u_camera.xy, &offset);
         float3 o, d;
-        camera_ray(&params->camera, (float)x + jitter.x, (float)y + jitter.y, params->width, params->height, &o, &d);
+        camera_ray(&params->camera, (float)x + 0.5f + offset.x, (float)y + 0.5f + offset.y, params->width,
+                   params->height, u_camera.zw, &o, &d);
         float3 l = path_radiance(&sc, o, d, &sampler);
-        if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f)
-            sum[index & 1u].xyz += fmin(l, (float3)(FC_MAX_RADIANCE));
-        else sum[index & 1u].w += 1.0f;
+        if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) {
+            l = fmin(l, (float3)(FC_MAX_RADIANCE));
+            /* --clamp: the sample scaled down to its largest channel's limit (hue kept) */
+            float peak = max3(l);
+            if (peak > params->clamp) l *= params->clamp / peak;
+            sum[index & 1u].xyz += filter_weight * l;
+        } else sum[index & 1u].w += 1.0f;
     }
     accum[pixel] += sum[0];
     accum[params->width * params->height + pixel] += sum[1];

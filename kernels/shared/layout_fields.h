@@ -33,11 +33,12 @@
     F(FcLight, e2) F(FcLight, area) F(FcLight, color) F(FcLight, pick_pdf)                                                  \
     F(FcLight, cos_inner) F(FcLight, cos_outer)                                                                             \
     F(FcCamera, eye) F(FcCamera, projection) F(FcCamera, forward) F(FcCamera, right)                                        \
-    F(FcCamera, up)                                                                                                         \
+    F(FcCamera, up) F(FcCamera, lens_radius) F(FcCamera, focus_distance)                                                    \
     F(FcRenderParams, camera) F(FcRenderParams, width) F(FcRenderParams, height) F(FcRenderParams, sample_begin)            \
     F(FcRenderParams, sample_count) F(FcRenderParams, seed) F(FcRenderParams, max_depth) F(FcRenderParams, rr_depth)        \
     F(FcRenderParams, light_count) F(FcRenderParams, row_begin) F(FcRenderParams, row_count) F(FcRenderParams, environment) \
     F(FcRenderParams, environment_light) F(FcRenderParams, strategy) F(FcRenderParams, sampler)                             \
+    F(FcRenderParams, filter) F(FcRenderParams, filter_radius) F(FcRenderParams, clamp)                                     \
     F(FcEnvironment, width) F(FcEnvironment, height) F(FcEnvironment, enabled) F(FcEnvironment, scale)                      \
     F(FcEnvironment, total) F(FcEnvironment, to_map)
 // clang-format on

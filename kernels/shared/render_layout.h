@@ -20,23 +20,30 @@
 #define FC_SAMPLER_INDEPENDENT 0 /* independent uniform numbers (PCG32) */
 #define FC_SAMPLER_SOBOL 1       /* Owen-scrambled Sobol', shuffled per dimension set (Burley 2020) */
 
+/* Pixel reconstruction filters (kernels/camera/filter.cl). */
+#define FC_FILTER_BOX 0      /* uniform over the pixel (radius 0.5) or a wider square */
+#define FC_FILTER_TENT 1     /* 1 - |x| / radius, separable */
+#define FC_FILTER_GAUSSIAN 2 /* truncated Gaussian, sigma = radius / 3, separable */
+#define FC_FILTER_MITCHELL 3 /* Mitchell-Netravali B = C = 1/3, negative lobes, separable */
+
 /* The largest radiance one sample adds to a pixel, per channel (larger ones are
  * clamped to it), and the largest emission, light colour and environment radiance a
  * scene may give: 2^24 samples (the most a render takes) of it sum to 1.7e37, so the
  * float accumulation, the image and the report stay finite. */
 #define FC_MAX_RADIANCE 1e30f
 
-/* A pinhole or orthographic camera. `right` and `up` span half the image plane:
- * for a perspective camera at distance 1 along `forward` (so |up| = tan(fov_y / 2)),
- * for an orthographic camera in world units. Image x grows along `right`, image y
- * (row 0 at the top) against `up`. */
+/* A pinhole, thin-lens or orthographic camera. `right` and `up` span half the image
+ * plane: for a perspective camera at distance 1 along `forward` (so |up| =
+ * tan(fov_y / 2)), for an orthographic camera in world units. Image x grows along
+ * `right`, image y (row 0 at the top) against `up`. A perspective camera with
+ * lens_radius > 0 is a thin lens focused at focus_distance along `forward`. */
 typedef struct FcCamera {
     float eye[3];
     fc_int projection;
     float forward[3];
-    float pad0;
+    float lens_radius; /* world units; 0: a pinhole */
     float right[3];
-    float pad1;
+    float focus_distance; /* world units along `forward`, > 0 */
     float up[3];
     float pad2;
 } FcCamera;
@@ -60,7 +67,9 @@ typedef struct FcRenderParams {
     fc_int environment_light; /* index of the FC_LIGHT_ENVIRONMENT light, or -1 */
     fc_uint strategy;         /* FC_STRATEGY_*: how direct light is estimated */
     fc_uint sampler;          /* FC_SAMPLER_*: where the sample values come from */
-    fc_uint pad_sampler[3];
+    fc_uint filter;           /* FC_FILTER_*: the pixel reconstruction filter */
+    float filter_radius;      /* in pixels, > 0 */
+    float clamp;              /* the largest contribution of one sample (its largest channel) */
     FcEnvironment environment;
 } FcRenderParams;
 

@@ -1,0 +1,85 @@
+#include "host/render/aov.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <span>
+
+#include "host/render/features.hpp"
+#include "host/scene/device_scene.hpp"
+
+namespace facet {
+namespace {
+
+template <typename T>
+cl::Buffer upload(const cl::Context& ctx, std::span<const T> v) {
+    const T zero{};
+    const std::span<const T> data = v.empty() ? std::span<const T>(&zero, 1) : v;
+    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size_bytes(), const_cast<T*>(data.data()));
+}
+
+// Rows per launch: about 2^18 pixel-samples of primary rays and delta bounces, far below
+// any display watchdog.
+std::uint32_t rows_per_launch(std::uint32_t width, std::uint32_t spp) {
+    const std::uint64_t per_row = std::uint64_t(width) * std::max<std::uint32_t>(spp, 1);
+    return std::uint32_t(std::max<std::uint64_t>(1, (std::uint64_t(1) << 18) / per_row));
+}
+
+}  // namespace
+
+AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::uint32_t spp) {
+    const auto start = std::chrono::steady_clock::now();
+    const DeviceScene dev = compile(scene, bvh);
+    const std::uint32_t width = dev.params.width, height = dev.params.height;
+    const std::size_t pixels = std::size_t(width) * height;
+    std::vector<cl_float4> sums(2 * pixels);
+    const ProgramBuild build = build_program(ctx, "kernels/aov/aov.cl", feature_prelude(scene_features(scene)));
+    cl_call("rendering the AOVs", [&] {
+        const cl::Context& c = ctx.context();
+        cl::Kernel kernel(build.program, "aov_pass");
+        const std::size_t local = std::max<std::size_t>(
+            1, std::min<std::size_t>(64, kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(ctx.device())));
+        cl::Buffer params(c, CL_MEM_READ_ONLY, sizeof(FcRenderParams));
+        cl::Buffer nodes = upload(c, dev.nodes), tris = upload(c, dev.triangles), shading = upload(c, dev.shading);
+        cl::Buffer materials = upload(c, std::span<const FcMaterial>(dev.materials));
+        cl::Buffer accum(c, CL_MEM_READ_WRITE, sums.size() * sizeof(cl_float4));
+        ctx.queue().enqueueFillBuffer(accum, cl_float4{{0.0f, 0.0f, 0.0f, 0.0f}}, 0, sums.size() * sizeof(cl_float4));
+        kernel.setArg(0, params);
+        kernel.setArg(1, nodes);
+        kernel.setArg(2, tris);
+        kernel.setArg(3, shading);
+        kernel.setArg(4, materials);
+        kernel.setArg(5, accum);
+        const std::uint32_t rows = rows_per_launch(width, spp);
+        for (std::uint32_t row = 0; row < height; row += rows) {
+            FcRenderParams p = dev.params;
+            p.sample_begin = 0;
+            p.sample_count = spp;
+            p.row_begin = row;
+            p.row_count = std::min(rows, height - row);
+            ctx.queue().enqueueWriteBuffer(params, CL_TRUE, 0, sizeof p, &p);
+            const std::size_t items = std::size_t(p.row_count) * width;
+            ctx.queue().enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange((items + local - 1) / local * local),
+                                             cl::NDRange(local));
+            ctx.queue().finish();
+        }
+        ctx.queue().enqueueReadBuffer(accum, CL_TRUE, 0, sums.size() * sizeof(cl_float4), sums.data());
+    });
+    AovImages out;
+    out.albedo.resize(3 * pixels);
+    out.normal.resize(3 * pixels);
+    out.depth.resize(pixels);
+    const float inv = spp > 0 ? 1.0f / float(spp) : 0.0f;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const cl_float4& a = sums[i];
+        const cl_float4& n = sums[pixels + i];
+        for (int c = 0; c < 3; ++c) {
+            out.albedo[3 * i + std::size_t(c)] = a.s[c] * inv;
+            out.normal[3 * i + std::size_t(c)] = n.s[c] * inv;
+        }
+        out.depth[i] = a.s[3] > 0.0f ? n.s[3] / a.s[3] : 0.0f;
+    }
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+}  // namespace facet

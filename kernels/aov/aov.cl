@@ -1,0 +1,98 @@
+/* Auxiliary images (AOVs) for denoisers (Intel Open Image Denoise, OptiX) and
+ * compositors, at the first non-specular hit of each camera sample: the albedo, the
+ * shading normal and the depth. Camera samples are drawn as the path tracer draws them
+ * (pixel filter, thin lens; kernels/integrator/path.cl), so the AOVs are filtered as the
+ * image is. Delta (mirror, smooth glass) surfaces are passed through along a sampled
+ * direction, their weight carried into the albedo, as OIDN asks for.
+ *   albedo  the diffuse reflectance plus the specular lobe's Fresnel reflectance at the
+ *           viewing angle, clamped to [0, 1] per channel (Cycles' denoising albedo);
+ *           0 where the sample escapes
+ *   normal  the world-space shading normal, facing the incoming ray; 0 where it escapes
+ *   depth   the length of the path from the camera to the hit (through mirrors: the
+ *           depth of the reflection); averaged over the samples that hit
+ * The accumulation buffer holds two float4 a pixel: (albedo sum, sum of |weight| over the
+ * samples that hit) then (normal sum, sum of |weight| x depth); samples are weighted as
+ * kernels/camera/filter.cl says. */
+#ifndef FACET_AOV_AOV_CL
+#define FACET_AOV_AOV_CL
+
+#include "kernels/integrator/surface.cl"
+#include "kernels/camera/camera.cl"
+#include "kernels/camera/filter.cl"
+#include "kernels/bsdf/bsdf.cl"
+#include "kernels/util/sampler.cl"
+
+/* Delta surfaces followed at most this many times before a sample counts as escaped. */
+#define FC_AOV_MAX_DELTA_BOUNCES 16u
+
+/* The reflectance a denoiser sees at a non-delta surface, seen from wo_local. */
+inline float3 aov_albedo(const FcMaterial* m, float3 wo_local) {
+    float3 a = (float3)(0.0f);
+    if (m->diffuse_model != FC_DIFFUSE_NONE) a += load3p(m->diffuse);
+    if (m->specular_model == FC_SPECULAR_BLINN_PHONG || m->specular_model == FC_SPECULAR_BLINN_PHONG_NORMALIZED)
+        a += load3p(m->specular);
+    else if (m->specular_model != FC_SPECULAR_NONE) a += fresnel_eval(m, fabs(wo_local.z));
+    return clamp(a, 0.0f, 1.0f);
+}
+
+__kernel void aov_pass(__constant const FcRenderParams* params, __global const FcBvhNode* nodes,
+                       __global const FcTriangle* tris, __global const FcTriShading* shading,
+                       __global const FcMaterial* materials, __global float4* accum) {
+    uint gid = get_global_id(0);
+    uint x = gid % params->width;
+    uint y = params->row_begin + gid / params->width;
+    if (gid / params->width >= params->row_count || y >= params->height) return;
+    uint pixel = y * params->width + x;
+    float4 albedo_sum = (float4)(0.0f), normal_sum = (float4)(0.0f);
+    for (uint i = 0; i < params->sample_count; ++i) {
+        uint index = params->sample_begin + i;
+        Sampler sampler = sampler_init(params->sampler, params->seed, pixel, index);
+        float4 u_camera = sampler_get4(&sampler, FC_SET_CAMERA);
+        float2 offset;
+        float weight = filter_sample(params->filter, params->filter_radius, u_camera.xy, &offset);
+        float3 o, d;
+        camera_ray(&params->camera, (float)x + 0.5f + offset.x, (float)y + 0.5f + offset.y, params->width,
+                   params->height, u_camera.zw, &o, &d);
+        float3 throughput = (float3)(1.0f);
+        float distance = 0.0f;
+        for (uint bounce = 0; bounce <= FC_AOV_MAX_DELTA_BOUNCES; ++bounce) {
+            Hit hit;
+            if (!trace_closest(nodes, tris, o, d, INFINITY, &hit)) break;
+            distance += hit.t;
+            Surface s = surface_at(tris, shading, &hit);
+            FcMaterial mat = materials[s.material];
+            const FcMaterial* m = &mat;
+            float3 wo = -d;
+            if (dot(s.ng, wo) < 0.0f) { /* the side the ray arrived from (as path.cl) */
+                s.ng = -s.ng;
+                s.ns = -s.ns;
+                if (bsdf_is_dielectric(m)) mat.ior = 1.0f / mat.ior;
+            }
+            Frame frame = frame_from_normal(s.ns);
+            float3 wo_local = frame_to_local(&frame, wo);
+            if (wo_local.z <= 0.0f) {
+                s.ns = s.ng;
+                frame = frame_from_normal(s.ng);
+                wo_local = frame_to_local(&frame, wo);
+            }
+            if (!bsdf_is_delta(m)) {
+                /* Albedo and normal filtered as the image is; the depth averaged with |weight| */
+                albedo_sum += (float4)(weight * throughput * aov_albedo(m, wo_local), fabs(weight));
+                normal_sum += (float4)(weight * s.ns, fabs(weight) * distance);
+                break;
+            }
+            BsdfSample bs;
+            if (!bsdf_sample(m, wo_local, sampler_get4(&sampler, sampler_set_bsdf(bounce)).xyz, &bs)) break;
+            float3 wi = frame_to_world(&frame, bs.wi);
+            float side = dot(s.ng, wi);
+            if (!(side * bs.wi.z > 0.0f)) break;
+            throughput = fmin(throughput * bs.weight, (float3)(1.0f));
+            o = offset_ray_origin(s.p, side > 0.0f ? s.ng : -s.ng);
+            d = wi;
+        }
+    }
+    accum[pixel] += albedo_sum;
+    accum[params->width * params->height + pixel] += normal_sum;
+}
+
+#endif

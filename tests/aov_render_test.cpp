@@ -1,0 +1,74 @@
+// The AOV pass (kernels/aov/aov.cl, host/render/aov.hpp): a Lambertian quad seen head-on
+// by an orthographic camera gives its reflectance as the albedo, its normal facing the
+// camera and its distance as the depth; pixels that see nothing hold 0; the pixel filter
+// blends the AOVs at an edge as it blends the image. Suite AovRender (the render tier).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "host/bvh/bvh.hpp"
+#include "host/render/aov.hpp"
+#include "host/scene/scene.hpp"
+#include "tests/cl_test_env.hpp"
+
+namespace facet {
+namespace {
+
+constexpr int kSize = 16;
+
+// An orthographic camera 5 units above z = 0 looking down -z over [-2, 2]^2; a quad of
+// reflectance (0.2, 0.5, 0.7) over x in [-2, 0] (the image's left half).
+Scene quad_scene() {
+    Scene scene;
+    Material m = default_material();
+    m.diffuse = glm::vec3(0.2f, 0.5f, 0.7f);
+    add_material(scene, m, "paint");
+    add_quad(scene, glm::vec3(-2.0f, -2.0f, 0.0f), glm::vec3(2.0f, 0.0f, 0.0f), glm::vec3(0.0f, 4.0f, 0.0f), 0);
+    build_lights(scene);
+    scene.camera.eye = glm::vec3(0.0f, 0.0f, 5.0f);
+    scene.camera.target = glm::vec3(0.0f);
+    scene.camera.projection = FC_PROJECTION_ORTHOGRAPHIC;
+    scene.camera.ortho_height = 4.0f;
+    scene.settings.width = scene.settings.height = kSize;
+    return scene;
+}
+
+TEST(AovRender, LambertianQuadAlbedoNormalDepth) {
+    const Scene scene = quad_scene();
+    const AovImages a = render_aovs(test::context(), scene, build_bvh(scene.vertices), 16);
+    ASSERT_EQ(a.albedo.size(), std::size_t(3 * kSize * kSize));
+    ASSERT_EQ(a.depth.size(), std::size_t(kSize * kSize));
+    for (int y = 0; y < kSize; ++y) {
+        const std::size_t on = std::size_t(y) * kSize + 3, off = std::size_t(y) * kSize + 12;
+        EXPECT_NEAR(a.albedo[3 * on + 0], 0.2f, 1e-5f);
+        EXPECT_NEAR(a.albedo[3 * on + 1], 0.5f, 1e-5f);
+        EXPECT_NEAR(a.albedo[3 * on + 2], 0.7f, 1e-5f);
+        EXPECT_NEAR(a.normal[3 * on + 2], 1.0f, 1e-5f);
+        EXPECT_NEAR(a.normal[3 * on + 0], 0.0f, 1e-5f);
+        EXPECT_NEAR(a.depth[on], 5.0f, 1e-4f);
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(a.albedo[3 * off + std::size_t(c)], 0.0f);
+        EXPECT_EQ(a.depth[off], 0.0f);
+    }
+    // The column on the quad's edge (x = 0 between columns 7 and 8) is covered by the box
+    // filter of column 7 only.
+    EXPECT_NEAR(a.albedo[3 * (std::size_t(8) * kSize + 7)], 0.2f, 1e-5f);
+    EXPECT_EQ(a.albedo[3 * (std::size_t(8) * kSize + 8)], 0.0f);
+}
+
+TEST(AovRender, TentFilterBlendsTheEdge) {
+    Scene scene = quad_scene();
+    scene.settings.filter = FC_FILTER_TENT;
+    const AovImages a = render_aovs(test::context(), scene, build_bvh(scene.vertices), 256);
+    // Column 7's centre is half a pixel left of the edge: a tent of radius 1 sees the quad
+    // with weight 1 - 0.5^2 / 2 = 0.875 (column 8, mirrored: 0.125).
+    double left = 0.0, right = 0.0;
+    for (int y = 0; y < kSize; ++y) {
+        left += double(a.albedo[3 * (std::size_t(y) * kSize + 7)]) / kSize;
+        right += double(a.albedo[3 * (std::size_t(y) * kSize + 8)]) / kSize;
+    }
+    EXPECT_NEAR(left, 0.2 * 0.875, 0.005);
+    EXPECT_NEAR(right, 0.2 * 0.125, 0.005);
+}
+
+}  // namespace
+}  // namespace facet
