@@ -215,6 +215,33 @@ TEST(SceneGltf, CameraAndPunctualLights) {
     EXPECT_EQ(s.lights.size(), 3u);
 }
 
+TEST(SceneGltf, CameraChosenByName) {
+    TempDir d;
+    ModelBuilder b;
+    b.mesh_node(b.square(true, false));
+    for (int i = 0; i < 2; ++i) {
+        tinygltf::Camera cam;
+        cam.type = "perspective";
+        cam.name = i == 0 ? "front" : "side";
+        cam.perspective.yfov = i == 0 ? M_PI / 4 : M_PI / 3;
+        cam.perspective.znear = 0.1;
+        b.m.cameras.push_back(cam);
+        tinygltf::Node cn;
+        cn.camera = i;
+        cn.translation = {double(i), 0.5, 5};
+        b.node(cn);
+    }
+    const std::string file = b.write(d, "two_cameras.gltf");
+    EXPECT_EQ(load_scene(file).camera.eye, glm::vec3(0.0f, 0.5f, 5.0f));  // the first by default
+    const Scene side = load_scene(file, "side");
+    EXPECT_EQ(side.camera.eye, glm::vec3(1.0f, 0.5f, 5.0f));
+    EXPECT_NEAR(side.camera.fov_y_degrees, 60.0f, 1e-4f);
+    for (const std::string& w : side.warnings) EXPECT_EQ(w.find("every camera but the first"), std::string::npos) << w;
+    expect_error([&] { load_scene(file, "top"); }, {"two_cameras.gltf", "--camera top", "'front', 'side'"});
+    expect_error([&] { load_scene(std::string(FACET_SCENES_DIR) + "/cornell_box.json", "front"); },
+                 {"cornell_box.json", "only glTF files name their cameras"});
+}
+
 TEST(SceneGltf, MaterialsMappedOntoFacetModels) {
     TempDir d;
     ModelBuilder b;

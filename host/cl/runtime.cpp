@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,19 @@
 
 namespace facet {
 namespace {
+
+// FACET_DEVICE_MEMORY_MIB: a cap on the memory facet assumes each device has (its global
+// memory and its largest allocation), to share a device or to test the out-of-memory paths
+// on any machine; unset or empty: the driver's figures.
+std::uint64_t device_memory_cap() {
+    const char* env = std::getenv("FACET_DEVICE_MEMORY_MIB");
+    if (!env || !*env) return UINT64_MAX;
+    char* end = nullptr;
+    const unsigned long long mib = std::strtoull(env, &end, 10);
+    if (*end != '\0' || mib == 0 || mib > (1ull << 40) || env[0] == '-')
+        throw Error(fmt::format("FACET_DEVICE_MEMORY_MIB={}: not a whole number of MiB in [1, 2^40]", env));
+    return std::uint64_t(mib) << 20;
+}
 
 std::string trimmed(std::string s) {
     while (!s.empty() && (s.back() == '\0' || std::isspace(static_cast<unsigned char>(s.back())))) s.pop_back();
@@ -60,6 +74,8 @@ std::vector<Found> discover() {
             desc.type = d.getInfo<CL_DEVICE_TYPE>();
             desc.global_mem = d.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>();
             desc.max_alloc = d.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>();
+            desc.global_mem = std::min<std::uint64_t>(desc.global_mem, device_memory_cap());
+            desc.max_alloc = std::min<std::uint64_t>(desc.max_alloc, device_memory_cap());
             desc.compute_units = d.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>();
             found.push_back(std::move(f));
         }

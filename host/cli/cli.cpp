@@ -171,6 +171,7 @@ int run_cli(int argc, char** argv) {
                      "Clamp each sample's contribution to this value (its largest channel): fewer fireflies, but "
                      "biased (darker); off by default, recorded in the EXR metadata and the report")
         ->check(kFinite & positive_up_to(FC_MAX_RADIANCE, "radiance"));
+    render->add_option("--camera", opt.camera, "A glTF file's camera by name (default: the first one)");
     render->add_option("--eye", opt.eye, "Camera position X,Y,Z (replaces the scene's)")
         ->delimiter(',')
         ->expected(3)

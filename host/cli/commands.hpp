@@ -21,6 +21,7 @@ struct RenderOptions {
     std::optional<float> clamp;  // the largest contribution of one sample (biased; off by default)
     // The camera: --eye, --target, --up (3 numbers each), --fov, --aperture, --focus-distance.
     std::vector<float> eye, target, up;
+    std::string camera;  // --camera NAME: a glTF file's camera by name
     std::optional<float> fov, aperture, focus_distance;
     std::optional<double> time_limit;
     std::optional<double> noise_threshold;  // stop once the half-buffer relMSE estimate is this low

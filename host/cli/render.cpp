@@ -300,7 +300,7 @@ std::string describe_camera(const RenderOptions& opt, const Scene& scene) {
 int run_render(const RenderOptions& opt) {
     auto start = Clock::now();
     const SigpipeIgnored sigpipe_ignored;  // `facet render ... | head -1` renders on
-    Scene scene = load_scene(opt.scene);
+    Scene scene = load_scene(opt.scene, opt.camera);
     apply_overrides(opt, scene);
     for (const std::string& w : scene.warnings) say(stderr, "facet: warning: {}\n", w);
     if (opt.adaptive_tiles() && (!opt.film.empty() || !opt.resume.empty()))

@@ -130,6 +130,13 @@ public:
         }
         std::vector<bool> on_path(model_.nodes.size(), false);
         for (int root : roots) visit(root, options_.mesh.transform, on_path, 0);
+        if (!options_.camera_name.empty() && !camera_taken_) {
+            std::string names;
+            for (const tinygltf::Camera& c : model_.cameras) names += (names.empty() ? "'" : ", '") + c.name + "'";
+            throw Error(fmt::format("{}: --camera {}: no camera of the rendered scene has that name (the file's "
+                                    "cameras: {})",
+                                    path_, options_.camera_name, names.empty() ? "none" : names));
+        }
         ignored_.warn(path_, scene_.warnings);
         finish_mesh_file(path_, tally_, options_.mesh.normals, "\"normals\": \"smooth\"",
                          "no NORMAL attribute: glTF's rule is flat shading", scene_);
@@ -261,7 +268,11 @@ private:
             ignored_.add("cameras inside a JSON scene (its own camera is used)", place);
             return;
         }
-        if (camera_taken_) {
+        if (!options_.camera_name.empty()) {
+            if (c.name != options_.camera_name) return;  // not the one asked for
+            if (camera_taken_)
+                throw Error(fmt::format("{}: --camera {}: several nodes use a camera of that name", path_, c.name));
+        } else if (camera_taken_) {
             ignored_.add("every camera but the first", fmt::format("{} '{}'", place, c.name));
             return;
         }

@@ -15,6 +15,7 @@ namespace facet {
 struct GltfLoadOptions {
     MeshOptions mesh;         // transform, material override, normal rule
     bool take_camera = true;  // set scene.camera from the first camera a node uses
+    std::string camera_name;  // non-empty: the camera of this name instead (--camera NAME)
     bool take_lights = true;  // KHR_lights_punctual into scene.punctual_lights
 };
 

@@ -83,10 +83,14 @@ std::string file_head(const std::string& path) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path, const std::string& camera_name) {
     Scene scene;
     scene.source_path = path;
     const std::string ext = extension_under_gz(path);
+    if (!camera_name.empty() && ext != ".gltf" && ext != ".glb")
+        throw Error(fmt::format("{}: --camera {}: only glTF files name their cameras (use --eye, --target, --up "
+                                "and --fov to place the camera)",
+                                path, camera_name));
     if (ext == ".obj" || ext == ".ply") {
         if (ext == ".obj") load_obj(path, scene);
         else load_ply(path, scene);
@@ -94,7 +98,9 @@ Scene load_scene(const std::string& path) {
         scene.camera = frame_camera(scene);
         if (!has_emitter(scene)) add_default_light(scene);
     } else if (ext == ".gltf" || ext == ".glb") {
-        const bool has_camera = load_gltf(path, scene);
+        GltfLoadOptions options;
+        options.camera_name = camera_name;
+        const bool has_camera = load_gltf(path, scene, options);
         check_geometry(scene, path);
         if (!has_camera) scene.camera = frame_camera(scene);
         if (!has_emitter(scene) && scene.punctual_lights.empty()) add_default_light(scene);

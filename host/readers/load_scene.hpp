@@ -12,6 +12,8 @@ namespace facet {
 // Loads a JSON scene (*.json), a mesh (*.obj, *.ply, *.ply.gz, framed by a default
 // camera and lit by a default light) or a glTF 2.0 file (*.gltf, *.glb: its own camera
 // and lights where it has them, else the defaults). Calls build_lights() before returning.
-Scene load_scene(const std::string& path);
+// `camera_name` (--camera NAME) picks a glTF file's camera by name; other scenes have no
+// named cameras and refuse it.
+Scene load_scene(const std::string& path, const std::string& camera_name = "");
 
 }  // namespace facet
