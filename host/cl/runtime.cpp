@@ -202,30 +202,27 @@ std::vector<DeviceDesc> list_devices() {
     });
 }
 
+ClContext ClContext::open(const cl::Device& device, const DeviceDesc& desc) {
+    ClContext ctx;
+    ctx.device_ = device;
+    ctx.desc_ = desc;
+    ctx.context_ = cl::Context(device);
+    ctx.queue_ = cl::CommandQueue(ctx.context_, device);
+    return ctx;
+}
+
 ClContext ClContext::create(const std::string& selector) {
     return cl_call("creating the OpenCL context", [&] {
         std::vector<Found> found = discover();
         const Found& f = select(found, selector);
-        ClContext ctx;
-        ctx.device_ = f.device;
-        ctx.desc_ = f.desc;
-        ctx.context_ = cl::Context(f.device);
-        ctx.queue_ = cl::CommandQueue(ctx.context_, f.device);
-        return ctx;
+        return open(f.device, f.desc);
     });
 }
 
 std::vector<ClContext> ClContext::create_many(const std::string& selector) {
     return cl_call("creating the OpenCL contexts", [&] {
         std::vector<Found> found = discover();
-        auto context_of = [](const Found& f) {
-            ClContext ctx;
-            ctx.device_ = f.device;
-            ctx.desc_ = f.desc;
-            ctx.context_ = cl::Context(f.device);
-            ctx.queue_ = cl::CommandQueue(ctx.context_, f.device);
-            return ctx;
-        };
+        auto context_of = [](const Found& f) { return open(f.device, f.desc); };
         std::vector<ClContext> out;
         const std::string which = lower(selector);
         const std::pair<const char*, cl_device_type> types[] = {{"all", CL_DEVICE_TYPE_ALL},
@@ -272,6 +269,9 @@ ProgramBuild build_program(const ClContext& ctx, const std::string& entry, const
     ProgramBuild build;
     build.source = assemble_program(entry, prelude);
     build.options = default_build_options();
+    // Oclgrind 21.10 cannot run LLVM's bit-reversal intrinsic, which clang makes of the
+    // sampler's vector bit reversal (kernels/util/sampler.cl): it gets the table version.
+    if (ctx.desc().platform.find("Oclgrind") != std::string::npos) build.options += " -DFC_NO_BITREVERSE_INTRINSIC";
     if (!extra_options.empty()) build.options += " " + extra_options;
     auto start = std::chrono::steady_clock::now();
     const bool caching = use_program_cache(ctx.desc());

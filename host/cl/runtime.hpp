@@ -60,6 +60,9 @@ public:
     const DeviceDesc& desc() const { return desc_; }
 
 private:
+    // A context and an in-order queue on one device.
+    static ClContext open(const cl::Device& device, const DeviceDesc& desc);
+
     cl::Context context_;
     cl::Device device_;
     cl::CommandQueue queue_;

@@ -133,9 +133,10 @@ public:
         if (!options_.camera_name.empty() && !camera_taken_) {
             std::string names;
             for (const tinygltf::Camera& c : model_.cameras) names += (names.empty() ? "'" : ", '") + c.name + "'";
-            throw Error(fmt::format("{}: --camera {}: no camera of the rendered scene has that name (the file's "
-                                    "cameras: {})",
-                                    path_, options_.camera_name, names.empty() ? "none" : names));
+            throw Error(
+                fmt::format("{}: --camera {}: no camera of the rendered scene has that name (the file's "
+                            "cameras: {})",
+                            path_, options_.camera_name, names.empty() ? "none" : names));
         }
         ignored_.warn(path_, scene_.warnings);
         finish_mesh_file(path_, tally_, options_.mesh.normals, "\"normals\": \"smooth\"",

@@ -88,9 +88,10 @@ Scene load_scene(const std::string& path, const std::string& camera_name) {
     scene.source_path = path;
     const std::string ext = extension_under_gz(path);
     if (!camera_name.empty() && ext != ".gltf" && ext != ".glb")
-        throw Error(fmt::format("{}: --camera {}: only glTF files name their cameras (use --eye, --target, --up "
-                                "and --fov to place the camera)",
-                                path, camera_name));
+        throw Error(
+            fmt::format("{}: --camera {}: only glTF files name their cameras (use --eye, --target, --up "
+                        "and --fov to place the camera)",
+                        path, camera_name));
     if (ext == ".obj" || ext == ".ply") {
         if (ext == ".obj") load_obj(path, scene);
         else load_ply(path, scene);

@@ -17,8 +17,7 @@
 #define FACET_AOV_AOV_CL
 
 #include "kernels/integrator/surface.cl"
-#include "kernels/camera/camera.cl"
-#include "kernels/camera/filter.cl"
+#include "kernels/camera/pixel_sample.cl"
 #include "kernels/bsdf/bsdf.cl"
 #include "kernels/util/sampler.cl"
 
@@ -47,12 +46,8 @@ __kernel void aov_pass(__constant const FcRenderParams* params, __global const F
     for (uint i = 0; i < params->sample_count; ++i) {
         uint index = params->sample_begin + i;
         Sampler sampler = sampler_init(params->sampler, params->seed, pixel, index);
-        float4 u_camera = sampler_get4(&sampler, FC_SET_CAMERA);
-        float2 offset;
-        float weight = filter_sample(params->filter, params->filter_radius, u_camera.xy, &offset);
         float3 o, d;
-        camera_ray(&params->camera, (float)x + 0.5f + offset.x, (float)y + 0.5f + offset.y, params->width,
-                   params->height, u_camera.zw, &o, &d);
+        float weight = pixel_sample_ray(params, x, y, &sampler, &o, &d);
         float3 throughput = (float3)(1.0f);
         float distance = 0.0f;
         for (uint bounce = 0; bounce <= FC_AOV_MAX_DELTA_BOUNCES; ++bounce) {

@@ -5,6 +5,7 @@
 #define FACET_BSDF_LAMBERT_CL
 
 #include "kernels/util/math.cl"
+#include "kernels/util/warp.cl"
 
 inline float3 lambert_eval(float3 albedo, float3 wo, float3 wi) {
     return (wo.z > 0.0f && wi.z > 0.0f) ? albedo * FC_INV_PI : (float3)(0.0f);
@@ -12,21 +13,6 @@ inline float3 lambert_eval(float3 albedo, float3 wo, float3 wi) {
 
 inline float cosine_hemisphere_pdf(float3 wo, float3 wi) {
     return (wo.z > 0.0f && wi.z > 0.0f) ? wi.z * FC_INV_PI : 0.0f;
-}
-
-/* Concentric map of the unit square onto the unit disk (Shirley & Chiu 1997). */
-inline float2 square_to_disk_concentric(float2 u) {
-    float2 p = 2.0f * u - (float2)(1.0f);
-    if (p.x == 0.0f && p.y == 0.0f) return (float2)(0.0f);
-    float r, phi;
-    if (fabs(p.x) > fabs(p.y)) {
-        r = p.x;
-        phi = (FC_PI / 4.0f) * (p.y / p.x);
-    } else {
-        r = p.y;
-        phi = (FC_PI / 2.0f) - (FC_PI / 4.0f) * (p.x / p.y);
-    }
-    return r * (float2)(cos(phi), sin(phi));
 }
 
 /* A cosine-distributed direction on the upper hemisphere; z may be 0 on the rim. */

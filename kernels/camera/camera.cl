@@ -13,21 +13,7 @@
 
 #include "kernels/shared/render_layout.h"
 #include "kernels/util/math.cl"
-
-/* A uniform point of the unit disk from u in [0, 1)^2 (Shirley and Chiu 1997). */
-inline float2 concentric_disk(float2 u) {
-    float2 o = 2.0f * u - (float2)(1.0f);
-    if (o.x == 0.0f && o.y == 0.0f) return (float2)(0.0f);
-    float r, theta;
-    if (fabs(o.x) > fabs(o.y)) {
-        r = o.x;
-        theta = (M_PI_F / 4.0f) * (o.y / o.x);
-    } else {
-        r = o.y;
-        theta = M_PI_F / 2.0f - (M_PI_F / 4.0f) * (o.x / o.y);
-    }
-    return r * (float2)(cos(theta), sin(theta));
-}
+#include "kernels/util/warp.cl"
 
 /* The ray through image position (x, y) in pixels, (0, 0) the top-left corner; u_lens
  * picks the point on the lens. */
@@ -51,7 +37,7 @@ inline void camera_ray(__constant const FcCamera* cam, float x, float y, uint wi
         return;
     }
     float3 focus = eye + cam->focus_distance * pinhole;
-    float2 lens = cam->lens_radius * concentric_disk(u_lens);
+    float2 lens = cam->lens_radius * square_to_disk_concentric(u_lens);
     *origin = eye + lens.x * normalize(right) + lens.y * normalize(up);
     *dir = normalize(focus - *origin);
 }

@@ -24,8 +24,7 @@
 #define FACET_INTEGRATOR_PATH_CL
 
 #include "kernels/integrator/surface.cl"
-#include "kernels/camera/camera.cl"
-#include "kernels/camera/filter.cl"
+#include "kernels/camera/pixel_sample.cl"
 #include "kernels/lights/light.cl"
 #include "kernels/bsdf/bsdf.cl"
 #include "kernels/util/sampler.cl"
@@ -184,12 +183,8 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
     for (uint i = 0; i < params->sample_count; ++i) {
         uint index = params->sample_begin + i;
         Sampler sampler = sampler_init(params->sampler, params->seed, pixel, index);
-        float4 u_camera = sampler_get4(&sampler, FC_SET_CAMERA);
-        float2 offset;
-        float filter_weight = filter_sample(params->filter, params->filter_radius, u_camera.xy, &offset);
         float3 o, d;
-        camera_ray(&params->camera, (float)x + 0.5f + offset.x, (float)y + 0.5f + offset.y, params->width,
-                   params->height, u_camera.zw, &o, &d);
+        float filter_weight = pixel_sample_ray(params, x, y, &sampler, &o, &d);
         float3 l = path_radiance(&sc, o, d, &sampler);
         if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) {
             l = fmin(l, (float3)(FC_MAX_RADIANCE));

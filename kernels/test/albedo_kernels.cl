@@ -44,7 +44,7 @@ __kernel void albedo_table(int ndf, int n_mu, int n_r, uint samples, __global fl
     float2 shift = (float2)(rng_float(&rng), rng_float(&rng));
     KahanSum3 e = {(float3)(0.0f), (float3)(0.0f)};
     for (uint k = 0; k < samples; ++k) {
-        float2 u = (float2)(((float)k + 0.5f) / (float)samples, bits_to_unit(reverse_bits32(k)));
+        float2 u = (float2)(((float)k + 0.5f) / (float)samples, (float)(reverse_bits32(k) >> 8) * 0x1p-24f);
         u = u + shift;
         u -= floor(u);
         BsdfSample s;
@@ -86,7 +86,7 @@ __kernel void albedo_dielectric_table(int ndf, int side, int n_mu, int n_r, int 
     float2 shift = (float2)(rng_float(&rng), rng_float(&rng));
     KahanSum3 sum = {(float3)(0.0f), (float3)(0.0f)};
     for (uint q = 0; q < samples; ++q) {
-        float2 u = (float2)(((float)q + 0.5f) / (float)samples, bits_to_unit(reverse_bits32(q)));
+        float2 u = (float2)(((float)q + 0.5f) / (float)samples, (float)(reverse_bits32(q) >> 8) * 0x1p-24f);
         u = u + shift;
         u -= floor(u);
         BsdfSample s;

@@ -78,11 +78,15 @@ inline Sampler sampler_init(uint kind, uint seed, uint pixel, uint sample) {
 /* reverse_bits32 of each lane, by swapping halves, bytes, nibbles, pairs and bits: on
  * uint4 these are vector shifts and masks, where the byte table costs 16 scalar loads. */
 inline uint4 reverse_bits4(uint4 x) {
+#ifdef FC_NO_BITREVERSE_INTRINSIC /* set by the host for Oclgrind (host/cl/runtime.cpp) */
+    return (uint4)(reverse_bits32(x.x), reverse_bits32(x.y), reverse_bits32(x.z), reverse_bits32(x.w));
+#else
     x = (x >> 16) | (x << 16);
     x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
     x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
     x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
     return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+#endif
 }
 
 /* nested_uniform_scramble of each lane with its own seed, given the lanes' bits
