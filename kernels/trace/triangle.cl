@@ -96,9 +96,11 @@ inline int4 tri4_hit(const TriRay* r, const Tri4* p, float tmax, float4* t_out, 
         v = select(v, diff_of_products4(ax, cy, ay, cx), on_edge);
         w = select(w, diff_of_products4(bx, ay, by, ax), on_edge);
     }
-    int4 miss = ((u < 0.0f) | (v < 0.0f) | (w < 0.0f)) & ((u > 0.0f) | (v > 0.0f) | (w > 0.0f));
+    /* Inside: the three edge functions of one sign (zero counts as either). The masks
+     * are built without a vector NOT: Oclgrind 21.10 evaluates `xor <4 x i1> m, true`,
+     * which LLVM makes of ~mask, to lanes of 1 or -2 instead of -1 and 0. */
     const float4 det = u + v + w;
-    miss |= det == 0.0f;
+    const int4 inside = ((u >= 0.0f) & (v >= 0.0f) & (w >= 0.0f)) | ((u <= 0.0f) & (v <= 0.0f) & (w <= 0.0f));
 
     /* Scaled distance, divided by det (no lane traps on a zero det: it is a miss). */
     az *= r->sz;
@@ -108,7 +110,7 @@ inline int4 tri4_hit(const TriRay* r, const Tri4* p, float tmax, float4* t_out, 
     float4 t = tt / det;
     /* Edge functions ~ size^2 times distances ~ size overflow past ~5e12 (the scene
      * format allows 1e18): then weight the distances by the barycentrics instead. */
-    const int4 overflow = ~isfinite(tt);
+    const int4 overflow = isinf(tt) | isnan(tt);
     if (any(overflow)) t = select(t, (u / det) * az + (v / det) * bz + (w / det) * cz, overflow);
     /* A hit nearer than the rounding error of t is no hit (pbrt-v3 section 3.9.6, its
      * deltaT, with the error of the edge functions and of the sheared coordinates): a ray
@@ -116,7 +118,7 @@ inline int4 tri4_hit(const TriRay* r, const Tri4* p, float tmax, float4* t_out, 
      * triangles' coordinates cannot hit that surface again. The edge function terms are
      * divided by det before they meet the distances, so that the bound does not overflow
      * at the scene format's 1e18. Only blocks with a hit pay for it (most have none). */
-    int4 hit = ~miss & (t > 0.0f) & (t < tmax);
+    int4 hit = inside & (det != 0.0f) & (t > 0.0f) & (t < tmax);
     if (any(hit)) {
         const float4 max_x = fmax(fmax(fabs(ax), fabs(bx)), fabs(cx));
         const float4 max_y = fmax(fmax(fabs(ay), fabs(by)), fabs(cy));

@@ -31,6 +31,7 @@ export FACET_CACHE_DIR="$work/cache"
 # predates it), and it crashed in the BSDF test kernels.
 
 failed=0
+SCENE_LIMIT_S=240
 check_log() {   # $1: what ran
     if [ -s "$work/oclgrind.log" ]; then
         echo "FAIL $1: Oclgrind reported:"
@@ -44,9 +45,14 @@ run_scene() {   # $1: scene file, then extra options
     local scene=$1
     shift
     local start=$SECONDS
-    if ! "$FACET" render "$SCENES/$scene" --width 8 --height 8 --spp 2 --out "$work/out.exr" -q "$@" >"$work/render.txt" 2>&1; then
+    # Each scene takes seconds; a runaway (garbage masks once made one run for 17 minutes
+    # at 20 GB) is cut off and reported rather than eating the tier's whole time limit.
+    timeout -k 10 "$SCENE_LIMIT_S" "$FACET" render "$SCENES/$scene" --width 8 --height 8 --spp 2 --out "$work/out.exr" -q "$@" >"$work/render.txt" 2>&1
+    local rc=$?
+    if [ $rc -ne 0 ]; then
+        [ $rc -ge 124 ] && echo "FAIL $scene $*: no result within ${SCENE_LIMIT_S} s (exit status $rc)"
         echo "FAIL $scene $*: facet render failed:"
-        cat "$work/render.txt"
+        tail -c 4000 "$work/render.txt"
         failed=1
     fi
     check_log "$scene $*"
@@ -65,7 +71,7 @@ run_scene cornell_box.json --generic
 KERNEL_TESTS='Layout.*:Dielectric.ReciprocityWithEtaSquared:Models.Reciprocity:Environment.RotationAndConvention'
 KERNEL_TESTS+=':Microfacet.GeometryMatchesReference:Microfacet.SampleMatchesEvalAndPdf'
 start=$SECONDS
-"$TESTS" --gtest_filter="$KERNEL_TESTS" --gtest_output="xml:$work/tests.xml" >"$work/tests.txt" 2>&1
+timeout -k 10 600 "$TESTS" --gtest_filter="$KERNEL_TESTS" --gtest_output="xml:$work/tests.xml" >"$work/tests.txt" 2>&1
 rc=$?
 # Oclgrind 21.10's runtime aborts at process exit ("corrupted double-linked list", in
 # static destruction after every test has finished; facet itself exits cleanly), so
