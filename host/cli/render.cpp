@@ -26,10 +26,12 @@
 #include "host/film/error_metrics.hpp"
 #include "host/film/film_state.hpp"
 #include "host/film/image_io.hpp"
+#include "host/film/sample_ranges.hpp"
 #include "host/render/aov.hpp"
 #include "host/render/features.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/device_group.hpp"
+#include "host/render/device_group_watch.hpp"
 #include "host/report/report.hpp"
 #include "host/scene/pixel_filter.hpp"
 #include "host/util/strings.hpp"
@@ -295,6 +297,21 @@ std::string describe_camera(const RenderOptions& opt, const Scene& scene) {
     return line;
 }
 
+// For a job that lost a rank: the samples the film holds, those missing, and how to add them.
+std::string describe_missing_samples(const SampleRanges& held, std::uint64_t spp, const RenderOptions& opt,
+                                     const OutputPlan& plan) {
+    const std::uint64_t have = sample_count(held), from = next_sample(held);
+    std::string s = fmt::format("facet: the film {} holds samples {} ({} spp), finished by every rank\n", plan.film,
+                                describe(held), have);
+    if (have >= spp) return s;
+    return s + fmt::format(
+                   "facet: missing: {} spp, samples {}-{}: render them with the same options but `--samples-from {} "
+                   "--spp {} --out rest.exr --film rest.film`, then `facet merge {} rest.film --out {}` (or "
+                   "continue with `--resume {}`)\n",
+                   spp - have, from, from + (spp - have) - 1, from, spp - have, plan.film,
+                   opt.out.empty() ? plan.image : opt.out, plan.film);
+}
+
 }  // namespace
 
 int run_render(const RenderOptions& opt) {
@@ -327,7 +344,14 @@ int run_render(const RenderOptions& opt) {
     if (!opt.aov.empty() && lower(std::filesystem::path(out).extension().string()) != ".exr")
         throw Error(fmt::format("--aov: the layers go into the EXR, but --out {} is not one", out));
 
-    std::vector<ClContext> contexts = ClContext::create_many(opt.device);
+    std::vector<ClContext> contexts;
+    try {
+        contexts = ClContext::create_many(opt.device);
+    } catch (const Error& e) {  // each rank opens its own devices: say which failed
+        const std::string rank = Ranks::where();
+        if (!rank.empty()) throw Error(fmt::format("{}: {}", rank, e.what()));
+        throw;
+    }
     Bvh bvh = build_bvh(scene.vertices);
     // The AOVs first (rank 0's first device), their buffers released before the path
     // tracer uploads the scene.
@@ -362,6 +386,24 @@ int run_render(const RenderOptions& opt) {
 
     // Held until every file is written: a second Ctrl-C during the writes is counted, not fatal.
     StopSignals signals;
+    // MPI: when a rank dies mpirun ends the job; the watch writes what every rank finished.
+    std::optional<DeviceGroupWatch> watch;
+    if (renderer.ranks().size() > 1)
+        watch.emplace(
+            renderer, [&] { return signals.first(); },
+            [&](const DeviceGroupWatch::Lost& lost) {
+                say(stderr, "facet: error: {}\n", lost.why);
+                const int status = lost.waiting ? kExitRankLost : kExitInterrupted;
+                if (renderer.stats().samples_per_pixel == 0) {
+                    say(stderr, "facet: no pass had finished; nothing written\n");
+                    return status;
+                }
+                write_final(plan, renderer.image(), renderer, scene, scene_hash, opt, since(start), true, layers, {},
+                            true);
+                say(stderr, "{}",
+                    describe_missing_samples(renderer.samples(), std::uint64_t(scene.settings.spp), opt, plan));
+                return status;
+            });
     const std::uint64_t uniform_target =
         opt.adaptive_tiles() ? std::min<std::uint64_t>(kMinAdaptiveSpp, std::uint64_t(scene.settings.spp))
                              : std::uint64_t(scene.settings.spp);
@@ -372,6 +414,7 @@ int run_render(const RenderOptions& opt) {
         film_on_error.disarm();  // from here on the bands differ: no film
         tiles = render_adaptive_tiles(opt, scene, renderer, reference, report, start, signals, passes);
     }
+    if (watch) watch->stand_down();
     const bool interrupted = signals.first() != 0;
     const RenderStats& st = renderer.stats();
     if (st.samples_per_pixel == 0) {

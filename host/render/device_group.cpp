@@ -217,6 +217,7 @@ void DeviceGroup::commit() {
 }
 
 void DeviceGroup::local_reset() {
+    const std::unique_lock<std::mutex> film = hold_film();
     for (std::size_t i : live()) renderers_[i]->reset();
     for (std::vector<float>& c : committed_) std::fill(c.begin(), c.end(), 0.0f);
     if (!reduced_.empty()) std::fill(reduced_.begin(), reduced_.end(), 0.0f);
@@ -233,10 +234,13 @@ void DeviceGroup::restore(const std::vector<float>& sums, const SampleRanges& sa
     if (first_sample_ > 0 && first_sample_ < next_sample(samples))
         throw Error(fmt::format("the film holds samples {}: samples from {} would repeat some of them",
                                 describe(samples), first_sample_));
-    // Rank 0 holds the film; the other ranks add new samples only.
-    if (ranks_.leads()) base_ = sums;
-    base_samples_ = normalized(samples);
-    base_seconds_ = render_seconds;
+    {
+        const std::unique_lock<std::mutex> film = hold_film();
+        // Rank 0 holds the film; the other ranks add new samples only.
+        if (ranks_.leads()) base_ = sums;
+        base_samples_ = normalized(samples);
+        base_seconds_ = render_seconds;
+    }
     local_reset();
 }
 

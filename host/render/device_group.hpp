@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,10 @@ public:
     double reduce_seconds() const { return reduce_seconds_; }
     // At ranks other than 0: does what rank 0's calls ask until its group ends.
     void follow();
+    // Held while the film (accumulation(), samples(), halves(), image(), stats()) changes
+    // at a pass end, reset or restore: a thread holding it reads one consistent film, as
+    // of the last pass end (render/device_group_watch.hpp saves it when a rank dies).
+    std::unique_lock<std::mutex> hold_film() const { return std::unique_lock<std::mutex>(film_mutex_); }
     // Called in a device's thread before each of its launches; an exception from it
     // counts as that device failing (the tests inject failures with it).
     std::function<void(std::size_t device)> before_launch;
@@ -146,6 +151,7 @@ private:
     std::vector<float> reduced_;                     // at rank 0: every rank's sums
     double reduce_seconds_ = 0.0;
     bool followers_stopped_ = false;
+    mutable std::mutex film_mutex_;
 };
 
 }  // namespace facet

@@ -102,16 +102,21 @@ void DeviceGroup::end_pass(std::uint32_t count, double seconds) {
 
 void DeviceGroup::rank_end_pass(std::uint32_t count, double seconds) {
     commit();
+    std::vector<float> reduced;
     if (ranks_.size() > 1) {
-        // The films of every rank summed to rank 0.
+        // Every rank says it has its pass (so that rank 0 knows whom it waits for), then
+        // the films of every rank are summed to rank 0.
         const auto start = Clock::now();
+        ranks_.gather(0.0);
         std::vector<float> local(2 * pixel_count() * 4, 0.0f);
         for (const std::vector<float>& c : committed_)
             for (std::size_t k = 0; k < local.size(); ++k) local[k] += c[k];
-        if (ranks_.leads()) reduced_.assign(local.size(), 0.0f);
-        ranks_.reduce_sum(local.data(), reduced_.data(), local.size());
+        if (ranks_.leads()) reduced.assign(local.size(), 0.0f);
+        ranks_.reduce_sum(local.data(), reduced.data(), local.size());
         reduce_seconds_ += since(start);
     }
+    const std::unique_lock<std::mutex> film = hold_film();
+    if (ranks_.size() > 1 && ranks_.leads()) reduced_ = std::move(reduced);
     pass_jobs_.clear();
     samples_.push_back({next_, next_ + count});
     samples_ = normalized(samples_);

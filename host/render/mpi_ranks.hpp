@@ -5,10 +5,17 @@
 // and facet was built with MPI (FACET_WITH_MPI, CMake option FACET_MPI, on when found);
 // otherwise the job is this one process. Collective calls go from rank 0 outward and are
 // made from the main thread only.
+//
+// Rank 0 waits for the others without blocking inside MPI (non-blocking calls, polled with
+// short sleeps, so that a waiting rank leaves the CPU to the renderers), and records whom it
+// is waiting for: waiting() tells another thread (render/device_group_watch.hpp) which
+// ranks have not answered when a rank dies and mpirun ends the job.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <mutex>
+#include <string>
 #include <vector>
 
 namespace facet {
@@ -22,6 +29,10 @@ public:
     int rank() const { return rank_; }
     int size() const { return size_; }
     bool leads() const { return rank_ == 0; }
+    // "MPI rank 1 of 4 on node7" when an MPI launcher started this process, from the
+    // launcher's environment (so without starting MPI: a rank that fails before the job
+    // starts exits at once, and mpirun ends the job); empty otherwise.
+    static std::string where();
 
     // Rank 0's `words` to every rank (the others' vectors are resized to match).
     void broadcast(std::vector<std::uint64_t>& words) const;
@@ -35,10 +46,26 @@ public:
     // Ends the whole job (a rank that cannot go on while the others wait for it).
     [[noreturn]] void abort(int code) const;
 
+    // What rank 0 is waiting for, as of now (safe from any thread).
+    struct Wait {
+        std::vector<int> ranks;  // in a gather: the ranks not heard from yet
+        bool reduction = false;  // in the films' reduction (every rank takes part)
+        double seconds = 0.0;    // since the call began
+        bool waiting() const { return reduction || !ranks.empty(); }
+    };
+    Wait waiting() const;
+
 private:
     Ranks() = default;
+    void begin_wait(std::vector<int> ranks, bool reduction) const;
+    void heard_from(int rank) const;
+    void end_wait() const;
+
     int rank_ = 0;
     int size_ = 1;
+    mutable std::mutex wait_mutex_;
+    mutable Wait wait_;
+    mutable double wait_start_ = 0.0;  // steady-clock seconds
 };
 
 }  // namespace facet

@@ -2,7 +2,12 @@
 # MPI ranks on one image: `mpirun -n 2` (two ranks on this machine, one PoCL thread each)
 # gives the image of one process rendering the same samples, as do two devices in one
 # process and two ranks of two devices each (determinism up to float summation order);
-# --resume and --film work on rank 0. Skipped without mpirun or a facet built without MPI.
+# --resume and --film work on rank 0; a rank killed mid-render (kill -9) loses only the
+# pass in progress: rank 0 writes the film and image of the samples every rank finished,
+# names the dead rank and the missing samples, and exits non-zero; those samples rendered
+# with --samples-from and merged give the image of one uninterrupted render. A rank without
+# an OpenCL platform says so and ends the job. Skipped without mpirun or a facet built
+# without MPI.
 source "$(dirname "${BASH_SOURCE[0]}")/common.bash"
 cd "$tmp" || exit 1
 export POCL_MAX_PTHREAD_COUNT=1
@@ -57,4 +62,48 @@ wait "$pid"
 cp "$tmp/int.log" "$tmp/log"
 check interrupt-writes-image readable_image "$tmp/int/i.exr"
 check interrupt-writes-film eval 'test -s "$tmp/int/i.film" && grep -q "interrupted; wrote the" "$tmp/log"'
+
+# kill -9 of rank 1 in mid-render (Open MPI then ends the job: SIGTERM, SIGKILL 1 s later).
+rank_pid() { # MPIRUN_PID RANK: the pid of that rank's process
+    local p
+    for p in $(pgrep -P "$1"); do
+        tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$2" && echo "$p" && return
+    done
+}
+mpirun -n 2 --oversubscribe "$FACET" render "$scene" --width 24 --height 24 --seed 7 --spp 1000000 \
+    --out "$tmp/dead/d.exr" >"$tmp/dead.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+    [ -s "$tmp/dead/d.csv" ] && break
+    sleep 0.1
+done
+sleep 0.5
+victim=$(rank_pid "$pid" 1)
+[ -n "$victim" ] && kill -9 "$victim"
+wait "$pid"
+status=$?
+cp "$tmp/dead.log" "$tmp/log"
+check dead-rank-exit-non-zero test "$status" -ne 0
+check dead-rank-named grep -q "waits for MPI rank 1: that rank died" "$tmp/log"
+check dead-rank-image-written readable_image "$tmp/dead/d.exr"
+held=$(sed -n 's/.*holds samples 0-\([0-9]*\) (.*/\1/p' "$tmp/log")
+held=$((${held:-0} + 1))
+check dead-rank-film-records-samples eval \
+    '[ "$held" -gt 1 ] && tr -d " \n" <"$tmp/dead/d.film" | grep -aq "\"samples\":\[\[0,$held\]\]"'
+check dead-rank-missing-named grep -q "missing: $((1000000 - held)) spp, samples $held-999999" "$tmp/log"
+# The film reads back whole, and the missing samples (here 6 of them) merged with it give
+# the image of one process rendering them all.
+run dead-rank-rest 0 "wrote" -- "$FACET" render "$scene" --width 24 --height 24 --seed 7 --quiet \
+    --samples-from "$held" --spp 6 --out "$tmp/rest.exr" --film "$tmp/rest.film"
+run dead-rank-merge 0 "merged   2 films: $((held + 6)) spp" -- "$FACET" merge "$tmp/dead/d.film" "$tmp/rest.film" \
+    --out "$tmp/merged.exr"
+run dead-rank-whole 0 "wrote" -- "$FACET" render "$scene" --width 24 --height 24 --seed 7 --quiet \
+    --spp "$((held + 6))" --out "$tmp/whole.exr"
+check dead-rank-merge-equals-whole rmse_below "$tmp/merged.exr" "$tmp/whole.exr" 1e-5
+
+# A rank with no OpenCL platform: its message names it, and the job ends (no hang).
+mkdir -p "$tmp/no-icd"
+run rank-without-device 1 "MPI rank 1 of 2 on .*: .*clGetPlatformIDs" -- timeout 120 mpirun -n 1 --oversubscribe \
+    "$FACET" render "$scene" "${opts[@]}" --out "$tmp/nodev.exr" : -n 1 env OCL_ICD_VENDORS="$tmp/no-icd" \
+    "$FACET" render "$scene" "${opts[@]}" --out "$tmp/nodev.exr"
 finish
