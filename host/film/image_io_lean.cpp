@@ -37,10 +37,6 @@ void check_size(const std::string& path, int width, int height, const std::vecto
         throw Error(fmt::format("{}: image of {}x{} with {} values is inconsistent", path, width, height, rgb.size()));
 }
 
-float srgb_encode(float linear) {
-    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
-}
-
 // CRC-32 (ISO 3309, as PNG chunks use) and Adler-32 (RFC 1950, the zlib stream's).
 std::uint32_t crc32(const std::string& bytes, std::size_t begin) {
     static const std::array<std::uint32_t, 256> table = [] {
