@@ -72,16 +72,20 @@ void DeviceGroupWatch::watch() {
         Lost lost;
         lost.ranks = wait.ranks;
         lost.waiting = wait.waiting();
+        // In the reduction, one of the ranks (exactly one when there are two ranks).
         const std::string whom =
-            !wait.ranks.empty() ? fmt::format("MPI rank{} {}", wait.ranks.size() > 1 ? "s" : "", rank_list(wait.ranks))
-                                : std::string("an MPI rank");
+            wait.ranks.empty() ? std::string("an MPI rank")
+            : wait.ranks.size() < 2
+                ? fmt::format("MPI rank {}", wait.ranks[0])
+                : fmt::format("{}MPI ranks {}", wait.reduction ? "one of " : "", rank_list(wait.ranks));
         if (silent) {
             lost.why =
                 fmt::format("{} did not answer for {:.0f} s (FACET_RANK_TIMEOUT); the job is lost", whom, wait.seconds);
         } else if (wait.waiting()) {
             lost.why = fmt::format(
-                "the job is ending (signal {} from mpirun) while rank 0 waits for {}{}: that rank died or was killed",
-                sig, whom, wait.ranks.empty() ? " in the films' reduction" : "");
+                "the job is ending (signal {} from mpirun) while rank 0 waits for {}{}: {} died or was killed", sig,
+                whom, wait.reduction ? " in the films' reduction" : "",
+                wait.ranks.size() > 1 ? (wait.reduction ? "one of them" : "they") : "that rank");
         } else {
             lost.why =
                 fmt::format("the job is ending (signal {} from mpirun: a rank died, or Ctrl-C) in mid-pass", sig);

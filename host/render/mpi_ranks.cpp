@@ -150,7 +150,11 @@ void Ranks::reduce_sum(const float* in, float* out, std::size_t n) const {
         check(
             MPI_Ireduce(in + at, leads() ? out + at : nullptr, count, MPI_FLOAT, MPI_SUM, 0, MPI_COMM_WORLD, &request),
             "MPI_Ireduce");
-        if (leads()) begin_wait({}, true);
+        if (leads()) {
+            std::vector<int> others;
+            for (int r = 1; r < size_; ++r) others.push_back(r);
+            begin_wait(std::move(others), true);
+        }
         poll(request, "MPI_Ireduce");
         if (leads()) end_wait();
     }

@@ -48,8 +48,8 @@ public:
 
     // What rank 0 is waiting for, as of now (safe from any thread).
     struct Wait {
-        std::vector<int> ranks;  // in a gather: the ranks not heard from yet
-        bool reduction = false;  // in the films' reduction (every rank takes part)
+        std::vector<int> ranks;  // the ranks not heard from yet (in the reduction: every other)
+        bool reduction = false;  // in the films' reduction, where any of them may be missing
         double seconds = 0.0;    // since the call began
         bool waiting() const { return reduction || !ranks.empty(); }
     };
