@@ -144,13 +144,14 @@ nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick) 
         std::vector<float> ref = render_for(ctx, scene, FC_STRATEGY_MIS, budget * 8, 16, &ref_spp);
         nlohmann::json row{{"map", name}, {"reference_spp", ref_spp}};
         std::string line = fmt::format("| {} |", name);
-        for (auto [label, strategy] : {std::pair{"bsdf", FC_STRATEGY_BSDF}, std::pair{"light", FC_STRATEGY_LIGHT},
-                                       std::pair{"mis", FC_STRATEGY_MIS}, std::pair{"mis_compensated", FC_STRATEGY_MIS}}) {
+        for (auto [label, strategy] :
+             {std::pair{"bsdf", FC_STRATEGY_BSDF}, std::pair{"light", FC_STRATEGY_LIGHT},
+              std::pair{"mis", FC_STRATEGY_MIS}, std::pair{"mis_compensated", FC_STRATEGY_MIS}}) {
             std::uint64_t spp = 0;
             Scene s = scene;
             // MIS compensation (environment_map.hpp) only in its own column
-            s.environment.sampling = std::string(label) == "mis_compensated" ? EnvironmentSampling::compensated
-                                                                              : EnvironmentSampling::plain;
+            s.environment.sampling =
+                std::string(label) == "mis_compensated" ? EnvironmentSampling::compensated : EnvironmentSampling::plain;
             s.settings.seed = 1234;  // independent of the reference's samples
             std::vector<float> img = render_for(ctx, s, strategy, budget, 4, &spp);
             double rmse = compare_images(img, ref).rmse;

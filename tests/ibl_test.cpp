@@ -149,7 +149,8 @@ TEST(Ibl, CompensationKeepsTheMean) {
             std::vector<float> img = r.image(&rejected);
             EXPECT_EQ(rejected, 0.0);
             double sum = 0.0;
-            for (std::size_t i = 0; i < img.size(); ++i) sum += double(img[i]) * (i % 3 == 0 ? 0.2126 : i % 3 == 1 ? 0.7152 : 0.0722);
+            for (std::size_t i = 0; i < img.size(); ++i)
+                sum += double(img[i]) * (i % 3 == 0 ? 0.2126 : i % 3 == 1 ? 0.7152 : 0.0722);
             means.push_back(sum / double(img.size() / 3));
         }
         return means;
@@ -164,8 +165,8 @@ TEST(Ibl, CompensationKeepsTheMean) {
     auto [mc, vc] = mean_var(image_means(EnvironmentSampling::compensated, 100));
     auto [mp, vp] = mean_var(image_means(EnvironmentSampling::plain, 200));
     const double z = (mc - mp) / std::sqrt(vc + vp);
-    std::printf("[ mis-comp ] image mean: compensated %.6f +- %.6f, plain %.6f +- %.6f, z = %.2f\n", mc,
-                std::sqrt(vc), mp, std::sqrt(vp), z);
+    std::printf("[ mis-comp ] image mean: compensated %.6f +- %.6f, plain %.6f +- %.6f, z = %.2f\n", mc, std::sqrt(vc),
+                mp, std::sqrt(vp), z);
     EXPECT_LT(std::fabs(z), 4.0);
 }
 

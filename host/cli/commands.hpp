@@ -16,9 +16,10 @@ struct RenderOptions {
     std::optional<std::uint32_t> seed;
     std::optional<int> strategy;  // FC_STRATEGY_*
     std::optional<int> sampler;   // FC_SAMPLER_*
-    std::optional<int> env_plain;  // --env-sampling: 1 for plain (no MIS compensation), 0 for compensated
     std::optional<int> filter;    // FC_FILTER_*
     std::optional<float> filter_radius;
+    // --env-sampling: 1 plain (no MIS compensation), 0 compensated
+    std::optional<int> env_plain;
     std::optional<float> clamp;  // the largest contribution of one sample (biased; off by default)
     // The camera: --eye, --target, --up (3 numbers each), --fov, --aperture, --focus-distance.
     std::vector<float> eye, target, up;
