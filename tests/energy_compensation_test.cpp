@@ -141,16 +141,17 @@ TEST(EnergyCompensation, FurnacePlasticBeckmann) {
 
 // Rough dielectrics: the energy albedo (reflection + transmission times etap^2), from
 // outside and from inside (total internal reflection), Turquin's albedo scaling. From
-// inside the 16 x 12 x 8 table's interpolation across the critical angle and the index
-// leaves up to 2.5% (docs/brdf.md): asserted at 3% there, 1% from outside.
+// inside, with Catmull-Rom across the index (energy_compensation.cl), the worst cell is
+// 1.1% off (Beckmann, alpha 0.05, 80 degrees: the table's 16 mu nodes at grazing; it was
+// 2.3% with linear interpolation across the index): asserted at 1.2% there, 1% from outside.
 TEST(EnergyCompensation, FurnaceDielectricGgx) {
     furnace("GGX rough dielectric, ior 1.5, from outside", clear_dielectric, FC_NDF_GGX);
-    furnace("GGX rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_GGX, true, 0.03);
+    furnace("GGX rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_GGX, true, 0.012);
 }
 
 TEST(EnergyCompensation, FurnaceDielectricBeckmann) {
     furnace("Beckmann rough dielectric, ior 1.5, from outside", clear_dielectric, FC_NDF_BECKMANN);
-    furnace("Beckmann rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_BECKMANN, true, 0.03);
+    furnace("Beckmann rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_BECKMANN, true, 0.012);
 }
 
 TEST(EnergyCompensation, FurnaceEon) {
