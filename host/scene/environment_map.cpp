@@ -100,10 +100,18 @@ EnvironmentMap constant_environment(const glm::vec3& radiance) {
 
 namespace {
 
+// MIS compensation keeps this share of each texel's luminance: a texel just above the
+// subtracted mean, or one that a sample rounds into from its neighbour (environment.cl),
+// would otherwise have a density so small that a light sample there, where BSDF sampling
+// is weak too, returns L / pdf unbounded (fireflies on the demo scenes); with the floor
+// L / pdf stays within 1 / kCompensationFloor of the plain distribution's, and every
+// texel that emits keeps a density.
+constexpr double kCompensationFloor = 0.1;
+
 // Fills `dist` (the layout of EnvironmentMap::distribution) with the cdfs of texel weights
-// max(0, luminance - subtract) * sin(theta) and returns their sum; `mean` gets the
-// integral of the luminance over the sphere.
-double build_cdfs(const EnvironmentMap& env, double subtract, std::vector<float>& dist, double* mean) {
+// max(luminance - subtract, floor * luminance) * sin(theta) and returns their sum; `mean`
+// gets the integral of the luminance over the sphere.
+double build_cdfs(const EnvironmentMap& env, double subtract, double floor, std::vector<float>& dist, double* mean) {
     const FcEnvironment& p = env.params;
     const double sr = double(p.scale[0]), sg = double(p.scale[1]), sb = double(p.scale[2]);
     const int w = p.width, h = p.height;
@@ -120,7 +128,7 @@ double build_cdfs(const EnvironmentMap& env, double subtract, std::vector<float>
             const float* t = &env.texels[4 * (std::size_t(y) * w + x)];
             const double lum = luminance(double(t[0]) * sr, double(t[1]) * sg, double(t[2]) * sb);
             *mean += lum * omega;
-            f[x] = std::max(0.0, lum - subtract) * sin_theta;
+            f[x] = std::max(lum - subtract, floor * lum) * sin_theta;
             sum += f[x];
         }
         // conditional cdf of the row (uniform when the row is black: never picked)
@@ -154,7 +162,7 @@ void build_environment_distribution(EnvironmentMap& env) {
         return;
     }
     double mean = 0.0;
-    const double total = build_cdfs(env, 0.0, env.distribution, &mean);
+    const double total = build_cdfs(env, 0.0, 1.0, env.distribution, &mean);
     p.total = float(total / (double(p.width) * p.height));
     env.mean_luminance = p.enabled ? mean / (4.0 * kPi) : 0.0;
 }
@@ -165,10 +173,13 @@ std::vector<float> compensated_environment_distribution(const EnvironmentMap& en
     std::vector<float> dist;
     double mean = 0.0;
     // the subtracted level sits a hair above the mean: a constant map's texels, whose
-    // luminance rounds around the mean, leave nothing, and it falls back to the plain one
+    // luminance rounds around the mean, keep only the floor, proportional to the plain
+    // weights, and the map falls back to the plain distribution itself
     const double level = fraction * env.mean_luminance * (1.0 + 1e-6);
-    const double total = build_cdfs(env, level, dist, &mean);
-    return total > 0.0 ? dist : env.distribution;
+    const double total = build_cdfs(env, level, 0.0, dist, &mean);
+    if (!(total > 0.0)) return env.distribution;
+    build_cdfs(env, level, kCompensationFloor, dist, &mean);
+    return dist;
 }
 
 std::vector<float> environment_sampling_distribution(const EnvironmentMap& env, int strategy) {

@@ -17,8 +17,8 @@
 //    integral of f over the (u, v) square: sum(f) / (W H); 0 for a black map, whose
 //    pdf is then 0 everywhere. A constant environment has a one-float distribution (an
 //    OpenCL buffer cannot be empty).
-//    With MIS compensation (the default under the MIS strategy) the renderer uploads
-//    instead the same layout built from max(0, luminance - mean luminance) * sin(theta)
+//    With MIS compensation (opt-in, under the MIS strategy) the renderer uploads
+//    instead the same layout built from max(luminance - mean, luminance / 10) * sin(theta)
 //    (environment_sampling_distribution; docs/sampling.md, "MIS compensation").
 #pragma once
 
@@ -45,7 +45,7 @@ struct EnvironmentMap {
     // (1 / 4pi) * integral of the luminance of the radiance (scale included) over the
     // sphere: the mean luminance, for light selection by power.
     double mean_luminance = 0.0;
-    EnvironmentSampling sampling = EnvironmentSampling::compensated;  // scene "sampling", --env-sampling
+    EnvironmentSampling sampling = EnvironmentSampling::plain;  // scene "sampling", --env-sampling
 };
 
 // Stores the world-to-map rotation in params.to_map (rows).
@@ -75,8 +75,9 @@ EnvironmentMap environment_from_pixels(int width, int height, std::vector<float>
 void build_environment_distribution(EnvironmentMap& env);
 
 // MIS compensation's distribution (Karlik et al. 2019), in the layout of `distribution`:
-// texel weights max(0, luminance - fraction * mean_luminance) * sin(theta), since BSDF
-// sampling already covers the smooth part. It is the density of light sampling on both
+// texel weights max(luminance - fraction * mean_luminance, luminance / 10) * sin(theta),
+// since BSDF sampling already covers the smooth part (the floor keeps L / pdf bounded:
+// environment_map.cpp). It is the density of light sampling on both
 // sides of MIS (env_sample and env_pdf read the cdfs only), so the estimator stays
 // unbiased as long as BSDF sampling also runs. Returns the plain distribution when
 // nothing remains (a constant map, where every texel is the mean) and for a constant or
