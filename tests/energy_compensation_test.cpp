@@ -7,6 +7,7 @@
 // print what docs/brdf.md shows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -90,9 +91,10 @@ FcMaterial white_eon(float r) {
 
 // Runs the furnace over the alpha x theta grid for `make(alpha)`, with and without the
 // compensation, prints the table (single scattering / compensated) and checks the
-// compensated albedo is 1 within 1% (and 4 standard errors).
-void furnace(const char* title, FcMaterial (*make)(int, float), int ndf, bool from_below = false,
-             double tolerance = 0.01) {
+// compensated albedo is 1 within 1% (and 4 standard errors). Returns the largest
+// deviation of a compensated cell from 1.
+double furnace(const char* title, FcMaterial (*make)(int, float), int ndf, bool from_below = false,
+               double tolerance = 0.01) {
     std::vector<FcMaterial> mats;
     std::vector<Vec3> wo;
     for (float a : kAlphas)
@@ -106,6 +108,7 @@ void furnace(const char* title, FcMaterial (*make)(int, float), int ndf, bool fr
                 wo.push_back(w);
             }
     std::vector<Albedo> r = albedos(mats, wo, kSamples);
+    double worst = 0.0;
     std::printf("\n%s: albedo, single scattering / compensated\n| alpha |", title);
     for (double t : kThetas) std::printf(" %g deg |", t);
     std::printf("\n|---|---|---|---|---|---|---|\n");
@@ -117,12 +120,14 @@ void furnace(const char* title, FcMaterial (*make)(int, float), int ndf, bool fr
             i += 2;
             std::printf(" %.3f / %.3f |", ss.mean[0], ec.mean[0]);
             EXPECT_EQ(ec.bad, 0);
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(ec.mean[c] - 1.0));
             for (int c = 0; c < 3; ++c)
                 EXPECT_NEAR(ec.mean[c], 1.0, tolerance + 4.0 * ec.error[c])
                     << title << " alpha " << a << " theta_o " << t << " channel " << c;
         }
         std::printf("\n");
     }
+    return worst;
 }
 
 TEST(EnergyCompensation, FurnaceConductorGgx) { furnace("GGX conductor, F = 1", white_conductor, FC_NDF_GGX); }
@@ -141,16 +146,21 @@ TEST(EnergyCompensation, FurnacePlasticBeckmann) {
 
 // Rough dielectrics: the energy albedo (reflection + transmission times etap^2), from
 // outside and from inside (total internal reflection), Turquin's albedo scaling. From
-// inside the 16 x 12 x 8 table's interpolation across the critical angle and the index
-// leaves up to 2.5% (docs/brdf.md): asserted at 3% there, 1% from outside.
+// inside, with Catmull-Rom across the index (energy_compensation.cl), the worst cell is
+// 1.1% off (Beckmann, alpha 0.05, 80 degrees: the table's 16 mu nodes at grazing; it was
+// 2.0% (GGX) and 2.3% (Beckmann) with linear interpolation across the index): asserted at 1.2% (plus 4
+// standard errors per cell, and the worst cell within 1.25%: the samples are seeded, so
+// the figures repeat), 1% from outside.
 TEST(EnergyCompensation, FurnaceDielectricGgx) {
     furnace("GGX rough dielectric, ior 1.5, from outside", clear_dielectric, FC_NDF_GGX);
-    furnace("GGX rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_GGX, true, 0.03);
+    EXPECT_LT(furnace("GGX rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_GGX, true, 0.012), 0.0125);
 }
 
 TEST(EnergyCompensation, FurnaceDielectricBeckmann) {
     furnace("Beckmann rough dielectric, ior 1.5, from outside", clear_dielectric, FC_NDF_BECKMANN);
-    furnace("Beckmann rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_BECKMANN, true, 0.03);
+    EXPECT_LT(
+        furnace("Beckmann rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_BECKMANN, true, 0.012),
+        0.0125);
 }
 
 TEST(EnergyCompensation, FurnaceEon) {

@@ -13,6 +13,7 @@
 #include "host/film/image_io.hpp"
 #include "host/readers/environment_file.hpp"
 #include "host/scene/sky.hpp"
+#include "kernels/shared/render_layout.h"
 #include "tests/temp_dir.hpp"
 
 namespace facet {
@@ -110,6 +111,83 @@ TEST(Environment, PdfIntegratesToOne) {
     EXPECT_NEAR(pdf_integral(smooth_env(64, 64, glm::mat3(1.0f))), 1.0, 1e-4);  // not 2:1
     // mean luminance: the solid-angle mean of the radiance's luminance
     EXPECT_NEAR(constant_environment(glm::vec3(1.0f, 2.0f, 3.0f)).mean_luminance, 0.2126 + 1.4304 + 0.2166, 1e-6);
+}
+
+// MIS compensation's distribution (environment_map.hpp): the map with its distribution
+// swapped for the compensated one, as the renderer uploads it.
+EnvironmentMap compensated(const EnvironmentMap& e) {
+    EnvironmentMap c = e;
+    c.distribution = compensated_environment_distribution(e);
+    return c;
+}
+
+// A w x h map of one radiance in every texel.
+EnvironmentMap constant_map(int w, int h, const glm::mat3& rot) {
+    std::vector<float> rgb(std::size_t(w) * h * 3);
+    for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = 0.3f + 0.2f * float(i % 3);
+    std::vector<std::string> warnings;
+    return environment_from_pixels(w, h, rgb, glm::vec3(1.0f), rot, "constant map", warnings);
+}
+
+// The compensated pdf integrates to 1; on the sun and sky (the sun > 50% of the power)
+// texels at or below the mean keep only the floor (a tenth of their luminance: the same
+// ratio to the plain pdf for all of them, below 1), and the sun's density grows; a
+// constant map falls back to the plain distribution (nothing is left after subtracting
+// the mean); a constant environment keeps its uniform density.
+TEST(Environment, CompensatedPdf) {
+    SunSkyParams p;
+    EnvironmentMap sky = sun_sky_environment(p, 1024);
+    set_environment_rotation(sky, test_rotation());
+    const EnvironmentMap csky = compensated(sky);
+    ASSERT_EQ(csky.distribution.size(), sky.distribution.size());
+    EXPECT_NE(csky.distribution, sky.distribution);
+    EXPECT_NEAR(pdf_integral(csky), 1.0, 1e-4);
+    std::vector<cl_float4> dirs;
+    std::vector<double> wts;
+    texel_centres(sky, dirs, wts);
+    const std::vector<cl_float4> plain = eval_batch(sky, dirs), comp = eval_batch(csky, dirs);
+    std::size_t kept = 0, below = 0;
+    double brightest = 0.0, brightest_plain = 0.0, brightest_comp = 0.0, ratio_lo = 1e30, ratio_hi = 0.0;
+    for (std::size_t i = 0; i < dirs.size(); ++i) {
+        const double lum =
+            0.2126 * double(plain[i].s[0]) + 0.7152 * double(plain[i].s[1]) + 0.0722 * double(plain[i].s[2]);
+        if (lum <= sky.mean_luminance && plain[i].s[3] > 0.0f) {
+            ++below;
+            const double ratio = double(comp[i].s[3]) / double(plain[i].s[3]);
+            ratio_lo = std::min(ratio_lo, ratio), ratio_hi = std::max(ratio_hi, ratio);
+        } else if (lum > sky.mean_luminance) ++kept;
+        if (lum > brightest) brightest = lum, brightest_plain = plain[i].s[3], brightest_comp = comp[i].s[3];
+    }
+    std::printf(
+        "[ mis-comp ] sun and sky 1024x512: %zu texels above the mean, %zu at or below it, their pdf "
+        "%.4g-%.4g x the plain one\n",
+        kept, below, ratio_lo, ratio_hi);
+    EXPECT_GT(kept, 0u);
+    EXPECT_GT(below, 5 * kept);
+    EXPECT_LT(ratio_hi, 1.0);
+    EXPECT_GT(ratio_lo, 0.0);
+    // (equal in exact arithmetic; the float cdf differences of the rows the sun dominates
+    // spread it: 0.144-0.181 measured)
+    EXPECT_NEAR(ratio_lo, ratio_hi, 0.3 * ratio_hi) << "below the mean the density is the floor, proportional";
+    // the sun's texel: (L - mean) / (P - mean 4 pi) against L / P, P the map's power
+    EXPECT_GT(brightest_comp, brightest_plain);
+    EXPECT_NEAR(pdf_integral(compensated(smooth_env(256, 128, test_rotation()))), 1.0, 1e-4);
+
+    const EnvironmentMap flat = constant_map(64, 32, test_rotation());
+    const EnvironmentMap cflat = compensated(flat);
+    EXPECT_EQ(cflat.distribution, flat.distribution) << "a constant map falls back to the plain distribution";
+    EXPECT_NEAR(pdf_integral(cflat), 1.0, 1e-4);
+    const EnvironmentMap con = constant_environment(glm::vec3(0.5f));
+    EXPECT_EQ(compensated(con).distribution, con.distribution);
+    EXPECT_EQ(check_consistency(compensated(con), 1u << 12, "constant environment, compensated"), 0.0);
+    EXPECT_LT(check_consistency(csky, 1u << 18, "sun-sky, compensated"), 1e-4);
+
+    // the renderer uploads it under MIS only, and only when asked (plain is the default)
+    EXPECT_EQ(environment_sampling_distribution(sky, FC_STRATEGY_MIS), sky.distribution);
+    EnvironmentMap asked = sky;
+    asked.sampling = EnvironmentSampling::compensated;
+    EXPECT_EQ(environment_sampling_distribution(asked, FC_STRATEGY_MIS), csky.distribution);
+    EXPECT_EQ(environment_sampling_distribution(asked, FC_STRATEGY_LIGHT), sky.distribution);
 }
 
 TEST(Environment, RotationAndConvention) {

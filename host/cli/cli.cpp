@@ -153,6 +153,11 @@ int run_cli(int argc, char** argv) {
         ->transform(CLI::CheckedTransformer(std::map<std::string, int>{
             {"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT}, {"bsdf", FC_STRATEGY_BSDF}}));
     render
+        ->add_option("--env-sampling", opt.env_plain,
+                     "Environment map sampling under MIS: plain (default; by luminance) or compensated (MIS "
+                     "compensation, Karlik et al. 2019)")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"compensated", 0}, {"plain", 1}}));
+    render
         ->add_option("--sampler", opt.sampler,
                      "Sample generator: sobol (default; Owen-scrambled Sobol', Burley 2020) or independent (PCG32)")
         ->transform(CLI::CheckedTransformer(

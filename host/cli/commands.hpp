@@ -18,6 +18,8 @@ struct RenderOptions {
     std::optional<int> sampler;   // FC_SAMPLER_*
     std::optional<int> filter;    // FC_FILTER_*
     std::optional<float> filter_radius;
+    // --env-sampling: 1 plain (no MIS compensation), 0 compensated
+    std::optional<int> env_plain;
     std::optional<float> clamp;  // the largest contribution of one sample (biased; off by default)
     // The camera: --eye, --target, --up (3 numbers each), --fov, --aperture, --focus-distance.
     std::vector<float> eye, target, up;

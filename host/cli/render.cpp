@@ -61,6 +61,9 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
     if (opt.seed) s.seed = *opt.seed;
     if (opt.strategy) s.strategy = *opt.strategy;
     if (opt.sampler) s.sampler = *opt.sampler;
+    if (opt.env_plain)
+        scene.environment.sampling =
+            *opt.env_plain != 0 ? EnvironmentSampling::plain : EnvironmentSampling::compensated;
     if (opt.filter) s.filter = *opt.filter;
     if (opt.filter_radius) s.filter_radius = *opt.filter_radius;
     if (opt.clamp) s.clamp = *opt.clamp;

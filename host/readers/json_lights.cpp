@@ -79,7 +79,7 @@ EnvironmentMap sun_sky(const JsonReader& r, const Json& sky, const std::string& 
 // The environment: a map file, a constant radiance or the generated sun and sky, with
 // a radiance scale and a rotation.
 void JsonLoader::environment(const Json& v, const std::string& path) {
-    r.object(v, path, {"file", "constant", "sky", "scale", "rotate"});
+    r.object(v, path, {"file", "constant", "sky", "scale", "rotate", "sampling"});
     auto k = [&](const char* key) { return JsonReader::key(path, key); };
     int sources = int(v.contains("file")) + int(v.contains("constant")) + int(v.contains("sky"));
     if (sources != 1) r.fail(path, "give exactly one of 'file', 'constant' or 'sky'");
@@ -107,6 +107,12 @@ void JsonLoader::environment(const Json& v, const std::string& path) {
         set_environment_scale(scene.environment, scale);
     }
     set_environment_rotation(scene.environment, world_to_map);
+    if (v.contains("sampling")) {
+        const std::string name = r.string(v["sampling"], k("sampling"));
+        if (name == "plain") scene.environment.sampling = EnvironmentSampling::plain;
+        else if (name != "compensated")
+            r.fail(k("sampling"), fmt::format("unknown sampling '{}' (expected compensated or plain)", name));
+    }
 }
 
 }  // namespace facet

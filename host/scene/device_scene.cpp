@@ -89,7 +89,7 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     d.lights = scene.lights;
     d.light_cdf = scene.light_cdf;
     d.environment_texels = scene.environment.texels;
-    d.environment_distribution = scene.environment.distribution;
+    d.environment_distribution = environment_sampling_distribution(scene.environment, scene.settings.strategy);
     d.materials.reserve(scene.materials.size());
     for (const Material& m : scene.materials) d.materials.push_back(device_material(m));
     return d;

@@ -2,6 +2,7 @@
 // (environment.hpp documents the buffers, docs/environment.md the reasons).
 #include "host/scene/environment_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <new>
 
@@ -10,6 +11,7 @@
 #include "host/error.hpp"
 #include "host/util/color.hpp"
 #include "host/util/math.hpp"
+#include "kernels/shared/render_layout.h"
 
 namespace facet {
 namespace {
@@ -96,20 +98,27 @@ EnvironmentMap constant_environment(const glm::vec3& radiance) {
     return env;
 }
 
-void build_environment_distribution(EnvironmentMap& env) {
-    FcEnvironment& p = env.params;
+namespace {
+
+// MIS compensation keeps this share of each texel's luminance: a texel just above the
+// subtracted mean, or one that a sample rounds into from its neighbour (environment.cl),
+// would otherwise have a density so small that a light sample there, where BSDF sampling
+// is weak too, returns L / pdf unbounded (fireflies on the demo scenes); with the floor
+// L / pdf stays within 1 / kCompensationFloor of the plain distribution's, and every
+// texel that emits keeps a density.
+constexpr double kCompensationFloor = 0.1;
+
+// Fills `dist` (the layout of EnvironmentMap::distribution) with the cdfs of texel weights
+// max(luminance - subtract, floor * luminance) * sin(theta) and returns their sum; `mean`
+// gets the integral of the luminance over the sphere.
+double build_cdfs(const EnvironmentMap& env, double subtract, double floor, std::vector<float>& dist, double* mean) {
+    const FcEnvironment& p = env.params;
     const double sr = double(p.scale[0]), sg = double(p.scale[1]), sb = double(p.scale[2]);
-    if (p.width == 0) {
-        env.distribution.assign(1, 0.0f);
-        p.total = 0.0f;
-        env.mean_luminance = p.enabled ? luminance(sr, sg, sb) : 0.0;
-        return;
-    }
     const int w = p.width, h = p.height;
-    env.distribution.assign(std::size_t(h + 1) + std::size_t(h) * (w + 1), 0.0f);
-    float* marginal = env.distribution.data();
+    dist.assign(std::size_t(h + 1) + std::size_t(h) * (w + 1), 0.0f);
+    float* marginal = dist.data();
     std::vector<double> row_sum(h, 0.0), f(w);
-    double mean = 0.0;
+    *mean = 0.0;
     for (int y = 0; y < h; ++y) {
         const double sin_theta = std::sin(kPi * (y + 0.5) / h);
         const double omega = texel_solid_angle(y, w, h);
@@ -118,8 +127,8 @@ void build_environment_distribution(EnvironmentMap& env) {
         for (int x = 0; x < w; ++x) {
             const float* t = &env.texels[4 * (std::size_t(y) * w + x)];
             const double lum = luminance(double(t[0]) * sr, double(t[1]) * sg, double(t[2]) * sb);
-            mean += lum * omega;
-            f[x] = lum * sin_theta;
+            *mean += lum * omega;
+            f[x] = std::max(lum - subtract, floor * lum) * sin_theta;
             sum += f[x];
         }
         // conditional cdf of the row (uniform when the row is black: never picked)
@@ -139,8 +148,44 @@ void build_environment_distribution(EnvironmentMap& env) {
         acc += row_sum[y];
     }
     marginal[h] = 1.0f;
-    p.total = float(total / (double(w) * h));
+    return total;
+}
+
+}  // namespace
+
+void build_environment_distribution(EnvironmentMap& env) {
+    FcEnvironment& p = env.params;
+    if (p.width == 0) {
+        env.distribution.assign(1, 0.0f);
+        p.total = 0.0f;
+        env.mean_luminance = p.enabled ? luminance(double(p.scale[0]), double(p.scale[1]), double(p.scale[2])) : 0.0;
+        return;
+    }
+    double mean = 0.0;
+    const double total = build_cdfs(env, 0.0, 1.0, env.distribution, &mean);
+    p.total = float(total / (double(p.width) * p.height));
     env.mean_luminance = p.enabled ? mean / (4.0 * kPi) : 0.0;
+}
+
+std::vector<float> compensated_environment_distribution(const EnvironmentMap& env, double fraction) {
+    if (env.params.width == 0 || !env.params.enabled || !(env.params.total > 0.0f) || !(fraction > 0.0))
+        return env.distribution;
+    std::vector<float> dist;
+    double mean = 0.0;
+    // the subtracted level sits a hair above the mean: a constant map's texels, whose
+    // luminance rounds around the mean, keep only the floor, proportional to the plain
+    // weights, and the map falls back to the plain distribution itself
+    const double level = fraction * env.mean_luminance * (1.0 + 1e-6);
+    const double total = build_cdfs(env, level, 0.0, dist, &mean);
+    if (!(total > 0.0)) return env.distribution;
+    build_cdfs(env, level, kCompensationFloor, dist, &mean);
+    return dist;
+}
+
+std::vector<float> environment_sampling_distribution(const EnvironmentMap& env, int strategy) {
+    if (env.sampling == EnvironmentSampling::compensated && strategy == FC_STRATEGY_MIS)
+        return compensated_environment_distribution(env);
+    return env.distribution;
 }
 
 EnvironmentMap environment_from_pixels(int width, int height, std::vector<float> rgb, const glm::vec3& scale,

@@ -17,6 +17,9 @@
 //    integral of f over the (u, v) square: sum(f) / (W H); 0 for a black map, whose
 //    pdf is then 0 everywhere. A constant environment has a one-float distribution (an
 //    OpenCL buffer cannot be empty).
+//    With MIS compensation (opt-in, under the MIS strategy) the renderer uploads
+//    instead the same layout built from max(luminance - mean, luminance / 10) * sin(theta)
+//    (environment_sampling_distribution; docs/sampling.md, "MIS compensation").
 #pragma once
 
 #include <string>
@@ -28,6 +31,13 @@
 
 namespace facet {
 
+// How next-event estimation samples a map: MIS compensation (Karlik, Sik, Vevoda,
+// Skrivan, Krivanek 2019) or the plain luminance distribution.
+enum class EnvironmentSampling { compensated, plain };
+
+// The fraction of the mean luminance that MIS compensation subtracts from each texel.
+constexpr double kEnvironmentCompensation = 1.0;
+
 struct EnvironmentMap {
     FcEnvironment params{};
     std::vector<float> texels = std::vector<float>(4, 0.0f);  // 4 floats a texel
@@ -35,6 +45,7 @@ struct EnvironmentMap {
     // (1 / 4pi) * integral of the luminance of the radiance (scale included) over the
     // sphere: the mean luminance, for light selection by power.
     double mean_luminance = 0.0;
+    EnvironmentSampling sampling = EnvironmentSampling::plain;  // scene "sampling", --env-sampling
 };
 
 // Stores the world-to-map rotation in params.to_map (rows).
@@ -62,5 +73,21 @@ EnvironmentMap environment_from_pixels(int width, int height, std::vector<float>
 
 // Builds params.total, the distribution and mean_luminance from the texels and scale.
 void build_environment_distribution(EnvironmentMap& env);
+
+// MIS compensation's distribution (Karlik et al. 2019), in the layout of `distribution`:
+// texel weights max(luminance - fraction * mean_luminance, luminance / 10) * sin(theta),
+// since BSDF sampling already covers the smooth part (the floor keeps L / pdf bounded:
+// environment_map.cpp). It is the density of light sampling on both
+// sides of MIS (env_sample and env_pdf read the cdfs only), so the estimator stays
+// unbiased as long as BSDF sampling also runs. Returns the plain distribution when
+// nothing remains (a constant map, where every texel is the mean) and for a constant or
+// black environment.
+std::vector<float> compensated_environment_distribution(const EnvironmentMap& env,
+                                                        double fraction = kEnvironmentCompensation);
+
+// The distribution the renderer uploads for render strategy `strategy` (FC_STRATEGY_*):
+// the compensated one when env.sampling asks for it and the strategy is MIS, else the
+// plain one (light sampling alone must reach every texel; BSDF sampling alone never reads it).
+std::vector<float> environment_sampling_distribution(const EnvironmentMap& env, int strategy);
 
 }  // namespace facet
