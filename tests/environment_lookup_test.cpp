@@ -68,11 +68,11 @@ TEST(EnvironmentLookup, DirToUvMaxError) {
         double u, v;
         reference_uv(dirs[i], u, v);
         ASSERT_TRUE(uv[i].s[0] >= 0.0f && uv[i].s[0] <= 1.0f && uv[i].s[1] >= 0.0f && uv[i].s[1] <= 1.0f) << i;
-        double du = std::fabs(uv[i].s[0] - u);
+        double du = std::fabs(double(uv[i].s[0]) - u);
         du = std::min(du, 1.0 - du); /* u wraps at the seam */
         const double sin_t = std::hypot(dirs[i].s[0], dirs[i].s[2]);
         if (sin_t > 0.0) err_u = std::max(err_u, du); /* u is undefined at the poles */
-        err_v = std::max(err_v, std::fabs(uv[i].s[1] - v));
+        err_v = std::max(err_v, std::fabs(double(uv[i].s[1]) - v));
         // The texel of a 1024 x 512 map, unless the exact (u, v) lies within float
         // rounding of a texel boundary.
         const double fu = u * w, fv = v * h;
@@ -100,15 +100,16 @@ TEST(EnvironmentLookup, UvToDirAndRoundTrip) {
         const double th = kPi * double(uv[i].s[1]), ph = 2.0 * kPi * double(uv[i].s[0]);
         const double ref[3] = {std::sin(th) * std::sin(ph), std::cos(th), -std::sin(th) * std::cos(ph)};
         double e2 = 0.0, l2 = 0.0;
-        for (int c = 0; c < 3; ++c) e2 += std::pow(dirs[i].s[c] - ref[c], 2), l2 += std::pow(double(dirs[i].s[c]), 2);
+        for (int c = 0; c < 3; ++c)
+            e2 += std::pow(double(dirs[i].s[c]) - ref[c], 2), l2 += std::pow(double(dirs[i].s[c]), 2);
         err_dir = std::max(err_dir, std::sqrt(e2));
         err_len = std::max(err_len, std::fabs(std::sqrt(l2) - 1.0));
         // Round trip: v everywhere; u where it is defined, its tolerance growing as
         // 1 / sin(theta) (a direction error e moves u by e / (2 pi sin theta)).
-        err_rt = std::max(err_rt, std::fabs(double(back[i].s[1]) - uv[i].s[1]));
+        err_rt = std::max(err_rt, std::fabs(double(back[i].s[1]) - double(uv[i].s[1])));
         const double st = std::sin(th);
         if (st > 1e-3) {
-            double du = std::fabs(double(back[i].s[0]) - uv[i].s[0]);
+            double du = std::fabs(double(back[i].s[0]) - double(uv[i].s[0]));
             du = std::min(du, 1.0 - du);
             err_rt = std::max(err_rt, du * st);
         }

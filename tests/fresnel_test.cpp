@@ -62,7 +62,7 @@ TEST(Fresnel, ConductorMatchesComplexFresnelEquations) {
             const double ref = conductor_reference(cos_i, {double(c[i].s[ch]), double(k[i].s[ch])});
             const float got = out[i].s[ch];
             ASSERT_TRUE(got >= 0.0f && got <= 1.0f) << i << " " << ch;
-            worst = std::max(worst, std::fabs(got - ref));
+            worst = std::max(worst, std::fabs(double(got) - ref));
         }
     std::printf("[ fresnel  ] conductor: max abs error %.3g against double complex arithmetic\n", worst);
     EXPECT_LE(worst, 2e-5);
