@@ -82,10 +82,11 @@ TEST(Trig, Atan2FastMaxError) {
         const double ref = std::atan2(double(yx[i].s[0]), double(yx[i].s[1]));
         const double e = std::fabs(double(r[i]) - ref);
         err_abs = std::max(err_abs, e);
-        if (ref != 0.0) err_rel = std::max(err_rel, e / std::fabs(ref));
+        // relative where the result is a normal float (atan2(1e-30, 1e30) = 1e-60 is not)
+        if (std::fabs(ref) >= 1e-37) err_rel = std::max(err_rel, e / std::fabs(ref));
     }
     std::printf("[ trig     ] atan2_fast max error: %.3g absolute, %.3g relative\n", err_abs, err_rel);
-    EXPECT_LE(err_abs, 3e-7);
+    EXPECT_LE(err_abs, 3.5e-7); /* near +-pi: 1.5 ulp of pi */
     EXPECT_LE(err_rel, 2.5e-7);
     // the axes and signed zeros give atan2's float values exactly
     for (std::size_t i = special; i < yx.size(); ++i)
