@@ -10,6 +10,7 @@
 #define FACET_BSDF_BECKMANN_CL
 
 #include "kernels/util/math.cl"
+#include "kernels/util/trig.cl"
 
 #define FC_INV_SQRT_PI 0.56418958354775628695f
 
@@ -104,8 +105,8 @@ inline float beckmann_projected_area(float ax, float ay, float3 w) {
  * r^2 = -log(1 - u) (Walter 2007, eqs. 28-29, stretched). */
 inline float3 beckmann_sample_all(float ax, float ay, float2 u) {
     float r = sqrt(-log(1.0f - u.x));
-    float phi = 2.0f * FC_PI * u.y;
-    float3 m = (float3)(-ax * r * cos(phi), -ay * r * sin(phi), 1.0f);
+    float2 sc = sincos_turns(u.y); /* phi = 2 pi u.y */
+    float3 m = (float3)(-ax * r * sc.y, -ay * r * sc.x, 1.0f);
     return normalize(m);
 }
 
@@ -165,7 +166,7 @@ inline float3 beckmann_sample_visible(float ax, float ay, float3 wo, float2 u) {
         tan_t = 1e30f;
         cot_t = 0.0f;
     }
-    float x = beckmann_visible_slope_x(tan_t, cot_t, atan2(s, z), u.x);
+    float x = beckmann_visible_slope_x(tan_t, cot_t, atan2_fast(s, z), u.x);
     float y = erfinv_giles(2.0f * u.y - 1.0f);
     /* 3. rotate, 4. unstretch */
     float mx = ax * (cos_phi * x - sin_phi * y);

@@ -20,6 +20,7 @@
 #include "kernels/shared/material_layout.h"
 #include "kernels/util/math.cl"
 #include "kernels/bsdf/bsdf_sample.cl"
+#include "kernels/util/trig.cl"
 
 /* A Phong-style exponent clamped to [0, FC_PHONG_EXPONENT_MAX]; NaN gives 0. */
 inline float fc_phong_exponent(float e) { return (e > 0.0f) ? fmin(e, FC_PHONG_EXPONENT_MAX) : 0.0f; }
@@ -57,8 +58,8 @@ inline bool blinn_phong_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSam
     float lg = log(u.x) / (e + 2.0f);
     float cos_h = exp(lg);
     float sin_h = safe_sqrt(-expm1(2.0f * lg));
-    float phi = 2.0f * FC_PI * u.y;
-    float3 h = (float3)(sin_h * cos(phi), sin_h * sin(phi), cos_h);
+    float2 sc = sincos_turns(u.y); /* phi = 2 pi u.y */
+    float3 h = (float3)(sin_h * sc.y, sin_h * sc.x, cos_h);
     if (!reflect_about(wo, h, &s->wi)) return false;
     return finish_sample(s, blinn_phong_eval(m, wo, s->wi), blinn_phong_pdf(m, wo, s->wi));
 }

@@ -15,6 +15,7 @@
 #define FACET_BSDF_BLINN_PHONG_NDF_CL
 
 #include "kernels/util/math.cl"
+#include "kernels/util/trig.cl"
 
 inline float bp_ndf_exponent(float e) { return fmax(e, 0.0f); }
 
@@ -35,8 +36,8 @@ inline float3 bp_ndf_sample(float e, float2 u) {
     float l = log(1.0f - u.x) / (e + 2.0f);
     float cos_t = exp(l);
     float sin_t = safe_sqrt(-expm1(2.0f * l));
-    float phi = 2.0f * FC_PI * u.y;
-    return (float3)(sin_t * cos(phi), sin_t * sin(phi), cos_t);
+    float2 sc = sincos_turns(u.y); /* phi = 2 pi u.y */
+    return (float3)(sin_t * sc.y, sin_t * sc.x, cos_t);
 }
 
 inline float bp_ndf_pdf(float e, float3 m) { return bp_ndf_D(e, m) * fmax(m.z, 0.0f); }

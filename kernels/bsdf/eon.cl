@@ -25,6 +25,7 @@
 
 #include "kernels/shared/material_layout.h"
 #include "kernels/util/math.cl"
+#include "kernels/util/trig.cl"
 
 #define FC_EON_C1 0.28779341f /* 1/2 - 2/(3 pi) */
 #define FC_EON_C2 0.07248821f /* 2/3 - 28/(15 pi) */
@@ -113,14 +114,15 @@ inline bool eon_sample(const FcMaterial* m, float3 wo, float2 u, float3* wi) {
         /* uniform on the hemisphere */
         float z = u.x / pu;
         float st = safe_sqrt(1.0f - z * z);
-        float phi = 2.0f * FC_PI * u.y;
-        *wi = (float3)(st * cos(phi), st * sin(phi), z);
+        float2 sc = sincos_turns(u.y); /* phi = 2 pi u.y */
+        *wi = (float3)(st * sc.y, st * sc.x, z);
     } else {
         /* a clipped cosine lobe (a disk warped as in Heitz 2018), then M */
         float ux = fmin((u.x - pu) / (1.0f - pu), FC_ONE_MINUS_EPSILON);
         float4 t = eon_ltc_terms(wo.z, r);
-        float rad = sqrt(ux), phi = 2.0f * FC_PI * u.y;
-        float x = rad * cos(phi), y = rad * sin(phi);
+        float rad = sqrt(ux);
+        float2 sc = sincos_turns(u.y); /* phi = 2 pi u.y */
+        float x = rad * sc.y, y = rad * sc.x;
         float s = 0.5f * (1.0f + rsqrt(t.w * t.w + 1.0f));
         x = -mix(safe_sqrt(1.0f - y * y), x, s);
         float3 h = (float3)(x, y, safe_sqrt(1.0f - (x * x + y * y)));

@@ -12,6 +12,7 @@
 #define FACET_BSDF_GGX_CL
 
 #include "kernels/util/math.cl"
+#include "kernels/util/trig.cl"
 
 /* D(m) = 1 / (pi ax ay (x^2/ax^2 + y^2/ay^2 + z^2)^2) for a unit m with m.z > 0
  * (Heitz 2014, eq. 85, multiplied through by cos^4). */
@@ -39,9 +40,9 @@ inline float ggx_lambda(float ax, float ay, float3 w) {
  * r^2 = u / (1 - u) the unnormalised normal (-ax r cos phi, -ay r sin phi, 1) scaled
  * by sqrt(1 - u) needs no division. */
 inline float3 ggx_sample_all(float ax, float ay, float2 u) {
-    float phi = 2.0f * FC_PI * u.y;
+    float2 sc = sincos_turns(u.y); /* phi = 2 pi u.y */
     float r = sqrt(u.x);
-    float3 m = (float3)(ax * r * cos(phi), ay * r * sin(phi), sqrt(1.0f - u.x));
+    float3 m = (float3)(ax * r * sc.y, ay * r * sc.x, sqrt(1.0f - u.x));
     return normalize_or(m, (float3)(0.0f, 0.0f, 1.0f));
 }
 
@@ -60,9 +61,9 @@ inline float3 ggx_sample_visible(float ax, float ay, float3 wo, float2 u) {
     float3 t2 = cross(vh, t1);
     /* Section 4.2: a point on the projected area (a disk warped toward vh). */
     float r = sqrt(u.x);
-    float phi = 2.0f * FC_PI * u.y;
-    float p1 = r * cos(phi);
-    float p2 = r * sin(phi);
+    float2 sc = sincos_turns(u.y); /* phi = 2 pi u.y */
+    float p1 = r * sc.y;
+    float p2 = r * sc.x;
     float s = 0.5f * (1.0f + vh.z);
     p2 = (1.0f - s) * safe_sqrt(1.0f - p1 * p1) + s * p2;
     /* Section 4.3: reprojection onto the hemisphere. */
@@ -109,8 +110,8 @@ inline float3 ggx_sample_cap(float ax, float ay, float3 wo, float2 u, float k) {
     float b = k * i.z;
     float z = (1.0f - u.x) * (1.0f + b) - b;
     float sin_t = safe_sqrt(1.0f - z * z);
-    float phi = 2.0f * FC_PI * u.y;
-    float3 h = i + (float3)(sin_t * cos(phi), sin_t * sin(phi), z);
+    float2 sc = sincos_turns(u.y); /* phi = 2 pi u.y */
+    float3 h = i + (float3)(sin_t * sc.y, sin_t * sc.x, z);
     return normalize_or((float3)(ax * h.x, ay * h.y, fmax(h.z, 0.0f)), (float3)(0.0f, 0.0f, 1.0f));
 }
 

@@ -24,6 +24,7 @@
 
 #include "kernels/shared/environment_layout.h"
 #include "kernels/util/math.cl"
+#include "kernels/util/trig.cl"
 
 #define FC_INV_2PI 0.15915494309189533577f
 #define FC_INV_4PI 0.07957747154594766788f
@@ -40,18 +41,21 @@ inline float3 env_map_to_dir(__constant const FcEnvironment* env, float3 m) {
 }
 
 /* Map-frame direction to (u, v) in [0, 1]^2:
- * d = (sin theta sin phi, cos theta, -sin theta cos phi), u = phi / 2pi, v = theta / pi. */
+ * d = (sin theta sin phi, cos theta, -sin theta cos phi), u = phi / 2pi, v = theta / pi.
+ * Both angles by atan2_fast (kernels/util/trig.cl; theta from the horizontal length,
+ * accurate near the poles where acos is not). */
 inline float2 env_map_dir_to_uv(float3 m) {
-    float phi = atan2(m.x, -m.z);
+    float phi = atan2_fast(m.x, -m.z);
     if (phi < 0.0f) phi += 2.0f * FC_PI;
-    return (float2)(phi * FC_INV_2PI, acos(clamp(m.y, -1.0f, 1.0f)) * FC_INV_PI);
+    float theta = atan2_fast(sqrt(m.x * m.x + m.z * m.z), m.y);
+    return (float2)(phi * FC_INV_2PI, theta * FC_INV_PI);
 }
 
+/* (u, v) to the map-frame direction: phi = 2 pi u and theta = pi v in turns. */
 inline float3 env_uv_to_map_dir(float2 uv) {
-    float phi = 2.0f * FC_PI * uv.x;
-    float theta = FC_PI * uv.y;
-    float st = sin(theta);
-    return (float3)(st * sin(phi), cos(theta), -st * cos(phi));
+    float2 sc_phi = sincos_turns(uv.x);
+    float2 sc_theta = sincos_turns(0.5f * uv.y);
+    return (float3)(sc_theta.x * sc_phi.x, sc_theta.y, -sc_theta.x * sc_phi.y);
 }
 
 /* The texel (x, y) holding (u, v), clamped into the map. */
@@ -131,8 +135,8 @@ inline float3 env_sample(__constant const FcEnvironment* env, __global const flo
         /* uniform sphere */
         float z = 1.0f - 2.0f * u.x;
         float r = safe_sqrt(1.0f - z * z);
-        float phi = 2.0f * FC_PI * u.y;
-        *dir = (float3)(r * cos(phi), r * sin(phi), z);
+        float2 sc = sincos_turns(u.y);
+        *dir = (float3)(r * sc.y, r * sc.x, z);
         *pdf = FC_INV_4PI;
         return load3c(env->scale);
     }

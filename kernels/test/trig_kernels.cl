@@ -1,0 +1,14 @@
+/* Test entry points for kernels/util/trig.cl (tests/trig_test.cpp): one value per work-item. */
+#include "kernels/util/trig.cl"
+
+/* (sin 2 pi t, cos 2 pi t) by sincos_turns. */
+__kernel void trig_sincos_turns(__global const float* t, __global float2* out) {
+    uint i = get_global_id(0);
+    out[i] = sincos_turns(t[i]);
+}
+
+/* atan2_fast(y, x) of each (y, x). */
+__kernel void trig_atan2(__global const float2* yx, __global float* out) {
+    uint i = get_global_id(0);
+    out[i] = atan2_fast(yx[i].x, yx[i].y);
+}

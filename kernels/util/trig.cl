@@ -1,0 +1,75 @@
+/* Trigonometry for the angles sampling and the environment map use, without the
+ * full-range argument reduction of the built-in sin, cos, atan2 and acos (on PoCL those
+ * were a fifth of the sky scenes' render-kernel instructions, docs/performance.md,
+ * "Shading costs").
+ *
+ * - sincos_turns(t): sin and cos of 2 pi t for an angle given in turns (every sampler
+ *   writes phi = 2 pi u). The reduction to the nearest quarter turn is exact in float,
+ *   then Taylor polynomials on |x| <= pi/4 (truncation below 2e-9). Max error over
+ *   t in [-1, 2]: 8.1e-8 absolute, sin near 0 within 1.4e-7 relative (Trig.SincosTurnsMaxError),
+ *   where sin(2 pi t) in float is already off by up to 2.4e-7 from rounding 2 pi t.
+ * - atan2_fast(y, x): a polynomial atan on [0, 1] (odd, degree 17, fitted for least
+ *   relative error) after folding the octants; max error 1.65e-7 relative, 2.9e-7
+ *   absolute near +-pi (1.2 ulp of pi) over the whole plane (Trig.Atan2FastMaxError),
+ *   with atan2's values on the axes and at signed zeros. */
+#ifndef FACET_UTIL_TRIG_CL
+#define FACET_UTIL_TRIG_CL
+
+#include "kernels/util/math.cl"
+
+#define FC_2PI 6.28318530717958647693f
+#define FC_PI_2 1.57079632679489661923f
+
+/* (sin 2 pi t, cos 2 pi t) for finite t with |t| < 2^21. */
+inline float2 sincos_turns(float t) {
+    /* t = q / 4 + f exactly, q an integer, |f| <= 1/8 */
+    float q = rint(4.0f * t);
+    float f = t - 0.25f * q;
+    float x = FC_2PI * f;
+    float x2 = x * x;
+    /* Taylor series of sin and cos on |x| <= pi/4 */
+    float s = 2.7557319e-06f;
+    s = -1.9841270e-04f + x2 * s;
+    s = 8.3333338e-03f + x2 * s;
+    s = -1.6666667e-01f + x2 * s;
+    s = x + x * x2 * s;
+    float c = -2.7557320e-07f;
+    c = 2.4801588e-05f + x2 * c;
+    c = -1.3888889e-03f + x2 * c;
+    c = 4.1666668e-02f + x2 * c;
+    c = -0.5f + x2 * c;
+    c = 1.0f + x2 * c;
+    /* turn by q quarter turns: (sin, cos)(x + k pi/2) */
+    int k = (int)q & 3;
+    float a = (k & 1) ? c : s;
+    float b = (k & 1) ? s : c;
+    return (float2)((k & 2) ? -a : a, ((k + 1) & 2) ? -b : b);
+}
+
+/* atan(t) for t in [0, 1]: t p(t^2), p fitted by iteratively reweighted least squares
+ * for the least maximum relative error (1.5e-8 in exact arithmetic). */
+inline float atan_unit(float t) {
+    float t2 = t * t;
+    float p = 2.8499854e-03f;
+    p = -1.6068989e-02f + t2 * p;
+    p = 4.2692069e-02f + t2 * p;
+    p = -7.5043380e-02f + t2 * p;
+    p = 1.0640953e-01f + t2 * p;
+    p = -1.4203648e-01f + t2 * p;
+    p = 1.9992620e-01f + t2 * p;
+    p = -3.3333072e-01f + t2 * p;
+    p = 1.0f + t2 * p;
+    return t * p;
+}
+
+/* atan2(y, x) in [-pi, pi], for finite y and x (atan2_fast(+-0, -0) = +-pi, as atan2). */
+inline float atan2_fast(float y, float x) {
+    float ax = fabs(x), ay = fabs(y);
+    float hi = fmax(ax, ay), lo = fmin(ax, ay);
+    float r = atan_unit(hi > 0.0f ? lo / hi : 0.0f);
+    if (ay > ax) r = FC_PI_2 - r;
+    if (signbit(x)) r = FC_PI - r;
+    return copysign(r, y);
+}
+
+#endif

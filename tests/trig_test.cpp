@@ -1,0 +1,97 @@
+// The polynomial trigonometry of kernels/util/trig.cl on the device, against double
+// precision over the whole domain the kernels use: sincos_turns on t in [-1, 2] and
+// atan2_fast on every direction of the plane at magnitudes from 1e-30 to 1e30, with
+// atan2's values on the axes and at signed zeros.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vector>
+
+#include "tests/cl_test_env.hpp"
+
+namespace facet {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// Runs `name` of kernels/test/trig_kernels.cl on `in`, one output per element.
+template <typename In, typename Out>
+std::vector<Out> run(const char* name, const std::vector<In>& in) {
+    ClContext& ctx = test::context();
+    cl::Buffer a(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(In),
+                 const_cast<In*>(in.data()));
+    cl::Buffer b(ctx.context(), CL_MEM_WRITE_ONLY, in.size() * sizeof(Out));
+    cl::Kernel k(test::program("kernels/test/trig_kernels.cl"), name);
+    k.setArg(0, a), k.setArg(1, b);
+    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(in.size()));
+    std::vector<Out> out(in.size());
+    ctx.queue().enqueueReadBuffer(b, CL_TRUE, 0, out.size() * sizeof(Out), out.data());
+    return out;
+}
+
+TEST(Trig, SincosTurnsMaxError) {
+    std::vector<float> t;
+    const int n = 1 << 22;
+    for (int i = 0; i <= n; ++i) t.push_back(float(-1.0 + 3.0 * i / n));
+    for (float s : {0.0f, -0.0f, 1e-30f, 1e-8f, 0.125f, 0.375f, 0.9999999f, 1.0f, 2.0f, -0.25f, -0.5f}) t.push_back(s);
+    std::vector<cl_float2> r = run<float, cl_float2>("trig_sincos_turns", t);
+    double err_s = 0.0, err_c = 0.0, rel_small = 0.0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const double a = kTwoPi * double(t[i]);
+        err_s = std::max(err_s, std::fabs(double(r[i].s[0]) - std::sin(a)));
+        err_c = std::max(err_c, std::fabs(double(r[i].s[1]) - std::cos(a)));
+        if (std::fabs(t[i]) < 0.01f && t[i] != 0.0f)
+            rel_small = std::max(rel_small, std::fabs(double(r[i].s[0]) / std::sin(a) - 1.0));
+        ASSERT_LE(std::fabs(r[i].s[0]), 1.0f) << t[i];
+        ASSERT_LE(std::fabs(r[i].s[1]), 1.0f) << t[i];
+    }
+    std::printf("[ trig     ] sincos_turns max abs error: sin %.3g, cos %.3g; sin near 0 relative %.3g\n", err_s, err_c,
+                rel_small);
+    EXPECT_LE(err_s, 1.5e-7);
+    EXPECT_LE(err_c, 1.5e-7);
+    EXPECT_LE(rel_small, 2.5e-7);
+    // quarter turns exactly
+    std::vector<cl_float2> q = run<float, cl_float2>("trig_sincos_turns", std::vector<float>{0.0f, 0.25f, 0.5f, 0.75f});
+    const float want[4][2] = {{0.0f, 1.0f}, {1.0f, 0.0f}, {0.0f, -1.0f}, {-1.0f, 0.0f}};
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_EQ(q[i].s[0], want[i][0]) << i;
+        EXPECT_EQ(q[i].s[1], want[i][1]) << i;
+    }
+}
+
+TEST(Trig, Atan2FastMaxError) {
+    std::vector<cl_float2> yx;
+    const int n = 1 << 20;
+    for (double r : {1e-30, 1e-3, 1.0, 7.5e4, 1e30})
+        for (int i = 0; i < n; ++i) {
+            const double a = kTwoPi * (i + 0.37) / n;
+            yx.push_back(cl_float2{{float(r * std::sin(a)), float(r * std::cos(a))}});
+        }
+    // tiny and huge ratios
+    for (float y : {1e-30f, 1e-12f, 3e-8f, -2e-7f})
+        for (float x : {1.0f, -1.0f, 1e30f}) yx.push_back(cl_float2{{y, x}}), yx.push_back(cl_float2{{x, y}});
+    const std::size_t special = yx.size();
+    for (float y : {0.0f, -0.0f, 1.0f, -1.0f})
+        for (float x : {0.0f, -0.0f, 1.0f, -1.0f})
+            if (x == 0.0f || y == 0.0f) yx.push_back(cl_float2{{y, x}});
+    std::vector<float> r = run<cl_float2, float>("trig_atan2", yx);
+    double err_abs = 0.0, err_rel = 0.0;
+    for (std::size_t i = 0; i < special; ++i) {
+        const double ref = std::atan2(double(yx[i].s[0]), double(yx[i].s[1]));
+        const double e = std::fabs(double(r[i]) - ref);
+        err_abs = std::max(err_abs, e);
+        // relative where the result is a normal float (atan2(1e-30, 1e30) = 1e-60 is not)
+        if (std::fabs(ref) >= 1e-37) err_rel = std::max(err_rel, e / std::fabs(ref));
+    }
+    std::printf("[ trig     ] atan2_fast max error: %.3g absolute, %.3g relative\n", err_abs, err_rel);
+    EXPECT_LE(err_abs, 3.5e-7); /* near +-pi: 1.5 ulp of pi */
+    EXPECT_LE(err_rel, 2.5e-7);
+    // the axes and signed zeros give atan2's float values exactly
+    for (std::size_t i = special; i < yx.size(); ++i)
+        EXPECT_EQ(r[i], std::atan2(yx[i].s[0], yx[i].s[1])) << yx[i].s[0] << ", " << yx[i].s[1];
+}
+
+}  // namespace
+}  // namespace facet
