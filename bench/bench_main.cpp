@@ -26,6 +26,7 @@
 #include "bench/embree_bench.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/bvh/bvh.hpp"
+#include "host/bvh/bvh_width.hpp"
 #include "host/cl/runtime.hpp"
 #include "host/error.hpp"
 #include "host/render/progressive.hpp"
@@ -370,7 +371,7 @@ int run(int argc, char** argv) {
     app.add_option("--bvh-block", bvh_options.block_size,
                    "BVH knob: triangles per leaf test in the SAH, 1, 2, 4 or 8 (default 4, the leaf blocks' lanes)");
     app.add_option("--bvh-width", bvh_options.width,
-                   "BVH node width, 4 or 8 (default: FACET_BVH_WIDTH when set, else 4)")
+                   "BVH node width, 4 or 8 (default: FACET_BVH_WIDTH when set, else the device's, as the CLI picks it)")
         ->check(CLI::IsMember({0, 4, 8}));
     app.add_option("--bvh-intersection-cost", bvh_options.intersection_cost,
                    "BVH knob: SAH cost of a triangle test against a node visit (default 1)");
@@ -388,6 +389,10 @@ int run(int argc, char** argv) {
     };
 
     ClContext ctx = ClContext::create(device);
+    if (bvh_options.width == 0)
+        bvh_options.width = bvh_width_for(ctx.desc().type == CL_DEVICE_TYPE_GPU,
+                                          ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
+    bench_print("BVH node width: {}\n", bvh_options.width);
     std::vector<BenchCase> cases = {
         {"cornell_box", (fs::path(FACET_SOURCE_DIR) / "scenes" / "cornell_box.json").string()}};
     if (wanted("trace")) {

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "host/bvh/bvh.hpp"
+#include "host/bvh/bvh_width.hpp"
 #include "tests/bvh_meshes.hpp"
 #include "tests/cl_test_env.hpp"
 #include "host/error.hpp"
@@ -718,7 +719,7 @@ TEST(Bvh, EightWideSmallScenes) {
 }
 
 // The width comes from BvhOptions::width, else FACET_BVH_WIDTH, else 4; anything else is
-// refused with a message that names it.
+// refused with a message that names it. bvh_width_for picks one by device.
 TEST(Bvh, WidthChoice) {
     const std::vector<glm::vec3> tri = {glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
     const char* saved = std::getenv("FACET_BVH_WIDTH");
@@ -738,6 +739,14 @@ TEST(Bvh, WidthChoice) {
         EXPECT_NE(std::string(e.what()).find("FACET_BVH_WIDTH is \"16\""), std::string::npos) << e.what();
     }
     EXPECT_THROW(build_bvh(tri, with_width({}, 2)), Error);
+    // By device, FACET_BVH_WIDTH unset: 8 on CPUs with 8-wide float vectors, 4 elsewhere.
+    unsetenv("FACET_BVH_WIDTH");
+    EXPECT_EQ(bvh_width_for(false, 8), 8);
+    EXPECT_EQ(bvh_width_for(false, 16), 8);
+    EXPECT_EQ(bvh_width_for(false, 4), 4);
+    EXPECT_EQ(bvh_width_for(true, 8), 4);
+    setenv("FACET_BVH_WIDTH", "4", 1);
+    EXPECT_EQ(bvh_width_for(false, 8), 4);
     if (saved) setenv("FACET_BVH_WIDTH", keep.c_str(), 1);
     else unsetenv("FACET_BVH_WIDTH");
 }

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <limits>
 
+#include "host/bvh/bvh_width.hpp"
 #include "host/bvh/sah_builder.hpp"
 #include "host/error.hpp"
 
@@ -212,6 +213,12 @@ int resolve_width(int width) {
     if (width != 4 && width != 8)
         throw Error("build_bvh: BvhOptions::width is " + std::to_string(width) + ": it must be 0 (auto), 4 or 8");
     return width;
+}
+
+int bvh_width_for(bool gpu, unsigned native_float_vector_width) {
+    const char* env = std::getenv("FACET_BVH_WIDTH");
+    if (env && *env) return resolve_width(0);
+    return !gpu && native_float_vector_width >= 8 ? 8 : 4;
 }
 
 FcBvhNode8 wide_node8(const Bvh& bvh, std::size_t i) {

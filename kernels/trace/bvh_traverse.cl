@@ -1,9 +1,12 @@
 /* BVH traversal over the 4- or 8-wide nodes of shared/bvh_layout.h (FC_BVH_WIDTH): one
- * node fetch tests all its child boxes with float4 or float8 arithmetic, leaves are intersected at once (four triangles
- * a block, kernels/trace/triangle.cl) and the nearest inner child is visited next, the others pushed farthest first on
- * a small private stack (Aila & Laine 2009, "Understanding the efficiency of ray traversal on GPUs"; Wald et al. 2008
- * for the wide node). The host keeps the tree shallow enough for FC_BVH_STACK_SIZE. An empty slot has an inverted box
- * (min = +inf, max = -inf), which the slab test never reports. */
+ * node fetch tests all its child boxes with float4 or float8 arithmetic, leaves are
+ * intersected four triangles a block (kernels/trace/triangle.cl) and the nearest inner
+ * child is visited next, the others pushed farthest first on a small private stack
+ * (Aila & Laine 2009, "Understanding the efficiency of ray traversal on GPUs"; Wald et
+ * al. 2008 for the wide node; Embree's BVH8 for the 8-wide one). The host keeps every
+ * path's pushes within FC_BVH_STACK_SIZE (4-wide) or FC_BVH8_STACK_SIZE (8-wide). An
+ * empty slot has an inverted box (min = +inf, max = -inf), which the slab test never
+ * reports. */
 #ifndef FACET_TRACE_BVH_CL
 #define FACET_TRACE_BVH_CL
 
@@ -127,13 +130,15 @@ inline uint lane_bits_w(int4 m) { return lane_bits(m); }
  * *tnear. */
 inline intW children_hit(__global const FcNode* n, float3 o, float3 inv_d, int3 near, int3 far, float tmax,
                          floatW* tnear) {
-    __global const float* v = (__global const float*)n;
-    floatW t0x = (FC_VLOADW(near.x, v) - o.x) * inv_d.x;
-    floatW t1x = (FC_VLOADW(far.x, v) - o.x) * inv_d.x;
-    floatW t0y = (FC_VLOADW(near.y, v) - o.y) * inv_d.y;
-    floatW t1y = (FC_VLOADW(far.y, v) - o.y) * inv_d.y;
-    floatW t0z = (FC_VLOADW(near.z, v) - o.z) * inv_d.z;
-    floatW t1z = (FC_VLOADW(far.z, v) - o.z) * inv_d.z;
+    /* Whole-vector loads (nodes are aligned to their size): vload8 became two 16-byte
+     * loads and an insert in PoCL's code. */
+    __global const floatW* v = (__global const floatW*)n;
+    floatW t0x = (v[near.x] - o.x) * inv_d.x;
+    floatW t1x = (v[far.x] - o.x) * inv_d.x;
+    floatW t0y = (v[near.y] - o.y) * inv_d.y;
+    floatW t1y = (v[far.y] - o.y) * inv_d.y;
+    floatW t0z = (v[near.z] - o.z) * inv_d.z;
+    floatW t1z = (v[far.z] - o.z) * inv_d.z;
     t1x *= FC_SLAB_SCALE;
     t1y *= FC_SLAB_SCALE;
     t1z *= FC_SLAB_SCALE;
