@@ -26,6 +26,7 @@
 #include "bench/embree_bench.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/bvh/bvh.hpp"
+#include "host/bvh/bvh_width.hpp"
 #include "host/cl/runtime.hpp"
 #include "host/error.hpp"
 #include "host/render/progressive.hpp"
@@ -67,7 +68,7 @@ RayBatch camera_rays(const Scene& scene, int width, int height) {
 class Tracer {
 public:
     Tracer(ClContext& ctx, const Bvh& bvh, std::size_t local = 64) : ctx_(ctx), local_(local) {
-        program_ = build_program(ctx, "kernels/bench/trace_bench.cl").program;
+        program_ = build_program(ctx, "kernels/bench/trace_bench.cl", {bvh_prelude(bvh)}).program;
         nodes_ = cl::Buffer(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
                             bvh.nodes.size() * sizeof(FcBvhNode), const_cast<FcBvhNode*>(bvh.nodes.data()));
         tris_ = cl::Buffer(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR,
@@ -369,6 +370,9 @@ int run(int argc, char** argv) {
     app.add_option("--bvh-leaf", bvh_options.max_leaf_size, "BVH knob: largest leaf (default 8)");
     app.add_option("--bvh-block", bvh_options.block_size,
                    "BVH knob: triangles per leaf test in the SAH, 1, 2, 4 or 8 (default 4, the leaf blocks' lanes)");
+    app.add_option("--bvh-width", bvh_options.width,
+                   "BVH node width, 4 or 8 (default: FACET_BVH_WIDTH when set, else the device's, as the CLI picks it)")
+        ->check(CLI::IsMember({0, 4, 8}));
     app.add_option("--bvh-intersection-cost", bvh_options.intersection_cost,
                    "BVH knob: SAH cost of a triangle test against a node visit (default 1)");
     std::string scene_filter;
@@ -385,6 +389,10 @@ int run(int argc, char** argv) {
     };
 
     ClContext ctx = ClContext::create(device);
+    if (bvh_options.width == 0)
+        bvh_options.width = bvh_width_for(ctx.desc().type == CL_DEVICE_TYPE_GPU,
+                                          ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
+    bench_print("BVH node width: {}\n", bvh_options.width);
     std::vector<BenchCase> cases = {
         {"cornell_box", (fs::path(FACET_SOURCE_DIR) / "scenes" / "cornell_box.json").string()}};
     if (wanted("trace")) {

@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <random>
 
 #include "host/bvh/bvh.hpp"
+#include "host/bvh/bvh_width.hpp"
 #include "tests/bvh_meshes.hpp"
 #include "tests/cl_test_env.hpp"
 #include "host/error.hpp"
@@ -25,6 +27,8 @@ struct Walk {
     std::vector<int> seen;  // leaf visits per triangle
     int max_depth = 0;
     std::size_t leaves = 0;
+    int pushes = 0;      // stack entries pushed on the path to the node being walked
+    int stack_need = 0;  // most over every path
 };
 
 bool encloses(const float* lo, const float* hi, const float* p) {
@@ -33,24 +37,67 @@ bool encloses(const float* lo, const float* hi, const float* p) {
     return true;
 }
 
+// Both node widths, for every test that builds a tree.
+constexpr int kWidths[] = {4, 8};
+
+BvhOptions with_width(BvhOptions o, int width) {
+    o.width = width;
+    return o;
+}
+
+// A wide node of either width, as plain arrays.
+struct NodeView {
+    int width = 4;
+    float lo[3][8], hi[3][8];
+    int index[8], count[8];
+};
+
+template <typename Node>
+NodeView view_of(const Node& n, int width) {
+    NodeView v;
+    v.width = width;
+    for (int k = 0; k < width; ++k) {
+        v.lo[0][k] = n.lo_x[k], v.lo[1][k] = n.lo_y[k], v.lo[2][k] = n.lo_z[k];
+        v.hi[0][k] = n.hi_x[k], v.hi[1][k] = n.hi_y[k], v.hi[2][k] = n.hi_z[k];
+        v.index[k] = n.index[k], v.count[k] = n.count[k];
+    }
+    return v;
+}
+
+NodeView node_view(const Bvh& bvh, std::size_t i) {
+    return bvh.stats.width == 8 ? view_of(wide_node8(bvh, i), 8) : view_of(wide_node4(bvh, i), 4);
+}
+
 void walk_child(const Bvh& bvh, const float* lo, const float* hi, int index, int count, int depth, Walk& w);
 
-void walk_node(const Bvh& bvh, int node, int depth, Walk& w) {
+// Pushes at most (width - 1) entries a node; the 4-wide tree's depth bounds its stack,
+// the 8-wide tree's stack_need (checked against the walk below).
+int stack_size(const Bvh& bvh) { return bvh.stats.width == 8 ? FC_BVH8_STACK_SIZE : FC_BVH_STACK_SIZE; }
+
+void walk_node(const Bvh& bvh, int node, int depth, int pushes, Walk& w) {
     ASSERT_GE(node, 0);
     ASSERT_LT(static_cast<std::size_t>(node), bvh.stats.nodes);
-    ASSERT_LE(3 * (depth + 1), FC_BVH_STACK_SIZE) << "deeper than the traversal stack allows";
-    const FcBvhNode& n = bvh.nodes[static_cast<std::size_t>(node)];
-    for (int k = 0; k < 4; ++k) {
-        const float lo[3] = {n.lo_x[k], n.lo_y[k], n.lo_z[k]}, hi[3] = {n.hi_x[k], n.hi_y[k], n.hi_z[k]};
+    if (bvh.stats.width == 4) {
+        ASSERT_LE(3 * (depth + 1), FC_BVH_STACK_SIZE) << "deeper than the traversal stack allows";
+    }
+    const NodeView n = node_view(bvh, static_cast<std::size_t>(node));
+    int inner = 0;
+    for (int k = 0; k < n.width; ++k) inner += n.count[k] == 0 && n.lo[0][k] <= n.hi[0][k];
+    pushes += std::max(0, inner - 1);
+    w.stack_need = std::max(w.stack_need, pushes);
+    ASSERT_LE(pushes, stack_size(bvh)) << "more stack entries than the traversal has";
+    for (int k = 0; k < n.width; ++k) {
+        const float lo[3] = {n.lo[0][k], n.lo[1][k], n.lo[2][k]}, hi[3] = {n.hi[0][k], n.hi[1][k], n.hi[2][k]};
+        w.pushes = pushes;
         walk_child(bvh, lo, hi, n.index[k], n.count[k], depth + 1, w);
     }
 }
 
-// Whether box [lo, hi] encloses all four child boxes of node `c` that are not empty.
-bool encloses_children(const float* lo, const float* hi, const FcBvhNode& c) {
-    for (int k = 0; k < 4; ++k) {
-        if (!(c.lo_x[k] <= c.hi_x[k])) continue;
-        const float clo[3] = {c.lo_x[k], c.lo_y[k], c.lo_z[k]}, chi[3] = {c.hi_x[k], c.hi_y[k], c.hi_z[k]};
+// Whether box [lo, hi] encloses all child boxes of node `c` that are not empty.
+bool encloses_children(const float* lo, const float* hi, const NodeView& c) {
+    for (int k = 0; k < c.width; ++k) {
+        if (!(c.lo[0][k] <= c.hi[0][k])) continue;
+        const float clo[3] = {c.lo[0][k], c.lo[1][k], c.lo[2][k]}, chi[3] = {c.hi[0][k], c.hi[1][k], c.hi[2][k]};
         if (!encloses(lo, hi, clo) || !encloses(lo, hi, chi)) return false;
     }
     return true;
@@ -66,8 +113,8 @@ void walk_child(const Bvh& bvh, const float* lo, const float* hi, int index, int
     if (count == 0) {
         ASSERT_GT(index, 0) << "an inner child never refers back to the root";
         ASSERT_LT(static_cast<std::size_t>(index), bvh.stats.nodes);
-        EXPECT_TRUE(encloses_children(lo, hi, bvh.nodes[static_cast<std::size_t>(index)]));
-        walk_node(bvh, index, depth, w);
+        EXPECT_TRUE(encloses_children(lo, hi, node_view(bvh, static_cast<std::size_t>(index))));
+        walk_node(bvh, index, depth, w.pushes, w);
         return;
     }
     ++w.leaves;
@@ -106,7 +153,7 @@ void check_structure(const Bvh& bvh, const std::vector<glm::vec3>& input, std::s
     EXPECT_EQ(bvh.triangles.size() + skipped, input.size() / 3);
     Walk w;
     w.seen.assign(bvh.triangles.size(), 0);
-    walk_node(bvh, 0, 0, w);
+    walk_node(bvh, 0, 0, 0, w);
     for (std::size_t i = 0; i < w.seen.size(); ++i) ASSERT_EQ(w.seen[i], 1) << "triangle " << i;
     std::vector<char> prim_seen(input.size() / 3, 0);
     for (const FcTriangle& t : bvh.triangles) {
@@ -116,45 +163,54 @@ void check_structure(const Bvh& bvh, const std::vector<glm::vec3>& input, std::s
         EXPECT_TRUE(v0.x == t.v0[0] && v0.y == t.v0[1] && v0.z == t.v0[2]);
     }
     EXPECT_EQ(w.max_depth, bvh.stats.max_depth);
-    EXPECT_LE(3 * bvh.stats.max_depth, FC_BVH_STACK_SIZE);
+    EXPECT_EQ(w.stack_need, bvh.stats.stack_need);
+    if (bvh.stats.width == 4) {
+        EXPECT_LE(3 * bvh.stats.max_depth, FC_BVH_STACK_SIZE);
+    }
+    EXPECT_LE(bvh.stats.stack_need, stack_size(bvh));
     EXPECT_EQ(w.leaves, bvh.stats.leaves);
-    EXPECT_EQ(bvh.nodes.size(), bvh.stats.nodes + (bvh.stats.leaf_blocks * 160 + 127) / 128);
+    const std::size_t node_units = bvh.stats.nodes * static_cast<std::size_t>(bvh.stats.width / 4);
+    EXPECT_EQ(bvh.nodes.size(), (node_units * 128 + bvh.stats.leaf_blocks * 160 + 127) / 128);
     EXPECT_EQ(bvh.stats.triangles, bvh.triangles.size());
     EXPECT_EQ(bvh.stats.device_bytes, bvh.nodes.size() * 128 + bvh.triangles.size() * 48);
 }
 
 TEST(Bvh, StructureValid) {
-    std::vector<glm::vec3> torus = test::make_torus(100, 100, 1.0f, 0.3f).soup();
-    std::size_t skipped = 99;
-    Bvh bvh = build_bvh(torus, {}, &skipped);
-    EXPECT_EQ(skipped, 0u);
-    check_structure(bvh, torus, skipped);
-    EXPECT_LE(bvh.stats.max_leaf_size, BvhOptions{}.max_leaf_size);
-    EXPECT_GT(bvh.stats.sah_cost, 1.0);
-    EXPECT_LT(bvh.stats.sah_cost, 200.0);
+    for (int width : kWidths) {
+        SCOPED_TRACE(testing::Message() << "width " << width);
+        std::vector<glm::vec3> torus = test::make_torus(100, 100, 1.0f, 0.3f).soup();
+        std::size_t skipped = 99;
+        Bvh bvh = build_bvh(torus, with_width({}, width), &skipped);
+        EXPECT_EQ(skipped, 0u);
+        check_structure(bvh, torus, skipped);
+        EXPECT_LE(bvh.stats.max_leaf_size, BvhOptions{}.max_leaf_size);
+        EXPECT_GT(bvh.stats.sah_cost, 1.0);
+        EXPECT_LT(bvh.stats.sah_cost, 200.0);
 
-    // Every centroid in one spot: no SAH split exists, yet leaves stay small and the
-    // tree within the stack bound.
-    std::vector<glm::vec3> stack;
-    for (int i = 0; i < 5000; ++i) {
-        float s = 1.0f + static_cast<float>(i) * 1e-3f;
-        stack.insert(stack.end(), {glm::vec3(-s, -s, 0.0f), glm::vec3(s, -s, 0.0f), glm::vec3(0.0f, 2.0f * s, 0.0f)});
-    }
-    Bvh same = build_bvh(stack, {}, &skipped);
-    check_structure(same, stack, skipped);
-    EXPECT_LE(same.stats.max_leaf_size, BvhOptions{}.max_leaf_size);
+        // Every centroid in one spot: no SAH split exists, yet leaves stay small and the
+        // tree within the stack bound.
+        std::vector<glm::vec3> stack;
+        for (int i = 0; i < 5000; ++i) {
+            float s = 1.0f + static_cast<float>(i) * 1e-3f;
+            stack.insert(stack.end(),
+                         {glm::vec3(-s, -s, 0.0f), glm::vec3(s, -s, 0.0f), glm::vec3(0.0f, 2.0f * s, 0.0f)});
+        }
+        Bvh same = build_bvh(stack, with_width({}, width), &skipped);
+        check_structure(same, stack, skipped);
+        EXPECT_LE(same.stats.max_leaf_size, BvhOptions{}.max_leaf_size);
 
-    // Geometric progression of sizes: the SAH alone would build a list.
-    std::vector<glm::vec3> nested;
-    for (int i = 0; i < 300; ++i) {
-        float s = std::ldexp(1.0f, -i / 3);
-        nested.insert(nested.end(), {glm::vec3(0.0f), glm::vec3(s, 0.0f, 0.0f), glm::vec3(0.0f, s, s)});
+        // Geometric progression of sizes: the SAH alone would build a list.
+        std::vector<glm::vec3> nested;
+        for (int i = 0; i < 300; ++i) {
+            float s = std::ldexp(1.0f, -i / 3);
+            nested.insert(nested.end(), {glm::vec3(0.0f), glm::vec3(s, 0.0f, 0.0f), glm::vec3(0.0f, s, s)});
+        }
+        BvhOptions one;
+        one.max_leaf_size = 1;
+        Bvh deep = build_bvh(nested, with_width(one, width), &skipped);
+        check_structure(deep, nested, skipped);
+        EXPECT_LE(3 * deep.stats.max_depth, FC_BVH_STACK_SIZE);
     }
-    BvhOptions one;
-    one.max_leaf_size = 1;
-    Bvh deep = build_bvh(nested, one, &skipped);
-    check_structure(deep, nested, skipped);
-    EXPECT_LE(3 * deep.stats.max_depth, FC_BVH_STACK_SIZE);
 }
 
 // The builder's paths on inputs that reach each of them below the root (the
@@ -162,56 +218,59 @@ TEST(Bvh, StructureValid) {
 // sweep of small ranges, the median fallback for coincident centroids under a binned
 // split, every option combination, zero-area triangles kept out.
 TEST(Bvh, StructureValidAcrossBuilderPaths) {
-    std::vector<glm::vec3> soup = test::make_torus(60, 40, 1.0f, 0.3f).soup();
-    const std::size_t torus_tris = soup.size() / 3;
-    // Two far clusters of triangles sharing one centroid each (odd counts), after the
-    // binned root split; zero-area triangles in between.
-    for (int c = 0; c < 2; ++c) {
-        const glm::vec3 at(c ? 40.0f : -40.0f, 3.0f, -2.0f);
-        for (int i = 0; i < 301 + 4 * c; ++i) {
-            float s = 0.01f + static_cast<float>(i) * 1e-3f;
-            soup.insert(soup.end(), {at + glm::vec3(-s, -s, 0.0f), at + glm::vec3(s, -s, 0.0f),
-                                     at + glm::vec3(0.0f, 2.0f * s, 0.0f)});
-        }
-    }
-    const glm::vec3 z(5.0f), x(6.0f, 5.0f, 5.0f);
-    for (int i = 0; i < 7; ++i) soup.insert(soup.end(), {z, z, x});
-    const std::size_t kept = soup.size() / 3 - 7;
-
-    BvhOptions plain;
-    plain.exact_max = 0;
-    double plain_sah = 0.0;
-    for (int bins : {2, 12, 32, 256})
-        for (int exact : {0, 4, 16})
-            for (int leaf : {1, 4, 8}) {
-                BvhOptions o;
-                o.bins = bins;
-                o.exact_max = exact;
-                o.max_leaf_size = leaf;
-                std::size_t skipped = 99;
-                Bvh bvh = build_bvh(soup, o, &skipped);
-                SCOPED_TRACE(testing::Message() << "bins " << bins << " exact " << exact << " leaf " << leaf);
-                EXPECT_EQ(skipped, 7u);
-                EXPECT_EQ(bvh.triangles.size(), kept);
-                check_structure(bvh, soup, skipped);
-                EXPECT_LE(bvh.stats.max_leaf_size, leaf);
-                EXPECT_GT(bvh.stats.sah_cost, 1.0);
-                if (bins == 12 && exact == 0 && leaf == 8) plain_sah = bvh.stats.sah_cost;
+    for (int width : kWidths) {
+        SCOPED_TRACE(testing::Message() << "width " << width);
+        std::vector<glm::vec3> soup = test::make_torus(60, 40, 1.0f, 0.3f).soup();
+        const std::size_t torus_tris = soup.size() / 3;
+        // Two far clusters of triangles sharing one centroid each (odd counts), after the
+        // binned root split; zero-area triangles in between.
+        for (int c = 0; c < 2; ++c) {
+            const glm::vec3 at(c ? 40.0f : -40.0f, 3.0f, -2.0f);
+            for (int i = 0; i < 301 + 4 * c; ++i) {
+                float s = 0.01f + static_cast<float>(i) * 1e-3f;
+                soup.insert(soup.end(), {at + glm::vec3(-s, -s, 0.0f), at + glm::vec3(s, -s, 0.0f),
+                                         at + glm::vec3(0.0f, 2.0f * s, 0.0f)});
             }
-    // The default build (exact sweep of small ranges) is no worse than plain binning.
-    EXPECT_GT(plain_sah, 0.0);
-    EXPECT_LE(build_bvh(soup).stats.sah_cost, plain_sah * (1.0 + 1e-6));
+        }
+        const glm::vec3 z(5.0f), x(6.0f, 5.0f, 5.0f);
+        for (int i = 0; i < 7; ++i) soup.insert(soup.end(), {z, z, x});
+        const std::size_t kept = soup.size() / 3 - 7;
 
-    // Small inputs: every count up to a few binned levels, and the torus alone.
-    for (std::size_t n : {1u, 2u, 3u, 5u, 8u, 9u, 16u, 17u, 33u, 129u, 130u}) {
-        std::vector<glm::vec3> part(soup.begin(), soup.begin() + static_cast<std::ptrdiff_t>(3 * n));
-        std::size_t skipped = 99;
-        Bvh bvh = build_bvh(part, {}, &skipped);
-        SCOPED_TRACE(testing::Message() << n << " triangles");
-        EXPECT_EQ(skipped, 0u);
-        check_structure(bvh, part, skipped);
+        BvhOptions plain;
+        plain.exact_max = 0;
+        double plain_sah = 0.0;
+        for (int bins : {2, 12, 32, 256})
+            for (int exact : {0, 4, 16})
+                for (int leaf : {1, 4, 8}) {
+                    BvhOptions o;
+                    o.bins = bins;
+                    o.exact_max = exact;
+                    o.max_leaf_size = leaf;
+                    std::size_t skipped = 99;
+                    Bvh bvh = build_bvh(soup, with_width(o, width), &skipped);
+                    SCOPED_TRACE(testing::Message() << "bins " << bins << " exact " << exact << " leaf " << leaf);
+                    EXPECT_EQ(skipped, 7u);
+                    EXPECT_EQ(bvh.triangles.size(), kept);
+                    check_structure(bvh, soup, skipped);
+                    EXPECT_LE(bvh.stats.max_leaf_size, leaf);
+                    EXPECT_GT(bvh.stats.sah_cost, 1.0);
+                    if (bins == 12 && exact == 0 && leaf == 8) plain_sah = bvh.stats.sah_cost;
+                }
+        // The default build (exact sweep of small ranges) is no worse than plain binning.
+        EXPECT_GT(plain_sah, 0.0);
+        EXPECT_LE(build_bvh(soup, with_width({}, width)).stats.sah_cost, plain_sah * (1.0 + 1e-6));
+
+        // Small inputs: every count up to a few binned levels, and the torus alone.
+        for (std::size_t n : {1u, 2u, 3u, 5u, 8u, 9u, 16u, 17u, 33u, 129u, 130u}) {
+            std::vector<glm::vec3> part(soup.begin(), soup.begin() + static_cast<std::ptrdiff_t>(3 * n));
+            std::size_t skipped = 99;
+            Bvh bvh = build_bvh(part, with_width({}, width), &skipped);
+            SCOPED_TRACE(testing::Message() << n << " triangles");
+            EXPECT_EQ(skipped, 0u);
+            check_structure(bvh, part, skipped);
+        }
+        EXPECT_GT(torus_tris, 1000u);
     }
-    EXPECT_GT(torus_tris, 1000u);
 }
 
 // ---- device: BVH against brute force -------------------------------------------------
@@ -244,9 +303,14 @@ cl::Buffer upload(const std::vector<T>& v) {
     return b;
 }
 
+// The test kernels built for the tree's node width.
+const char* trace_program(const Bvh& bvh) {
+    return bvh.stats.width == 8 ? "kernels/test/trace_kernels8.cl" : "kernels/test/trace_kernels.cl";
+}
+
 Result run(const char* kernel_name, const Bvh& bvh, const Rays& rays) {
     auto& ctx = test::context();
-    cl::Kernel k(test::program("kernels/test/trace_kernels.cl"), kernel_name);
+    cl::Kernel k(test::program(trace_program(bvh)), kernel_name);
     const std::size_t n = rays.o.size();
     cl::Buffer nodes = upload(bvh.nodes), tris = upload(bvh.triangles);
     cl::Buffer o = upload(rays.o), d = upload(rays.d);
@@ -332,180 +396,200 @@ Rays random_rays(const std::vector<glm::vec3>& soup, std::size_t count, float ex
 }
 
 TEST(Bvh, MatchesBruteForceOnMesh) {
-    std::vector<glm::vec3> torus = test::make_torus(50, 20, 1.0f, 0.35f).soup();
-    Bvh bvh = build_bvh(torus);
-    Result r = expect_agreement(bvh, torus, random_rays(torus, 100000, 1.6f, 1));
-    EXPECT_GT(std::count_if(r.any.begin(), r.any.end(), [](int a) { return a != 0; }), 30000);
+    for (int width : kWidths) {
+        SCOPED_TRACE(testing::Message() << "width " << width);
+        std::vector<glm::vec3> torus = test::make_torus(50, 20, 1.0f, 0.35f).soup();
+        Bvh bvh = build_bvh(torus, with_width({}, width));
+        Result r = expect_agreement(bvh, torus, random_rays(torus, 100000, 1.6f, 1));
+        EXPECT_GT(std::count_if(r.any.begin(), r.any.end(), [](int a) { return a != 0; }), 30000);
+    }
 }
 
 // The Stanford bunny from ../shared/assets, when present.
 TEST(Bvh, MatchesBruteForceOnBunny) {
-    const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
-    if (!std::filesystem::exists(bunny)) GTEST_SKIP() << bunny << " not found";
-    std::vector<glm::vec3> soup = test::load_obj_soup(bunny);
-    ASSERT_GT(soup.size(), 3000u);
-    Bvh bb = build_bvh(soup);
-    check_structure(bb, soup, soup.size() / 3 - bb.triangles.size());
-    glm::vec3 lo(INFINITY), hi(-INFINITY);
-    for (const glm::vec3& p : soup) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    Rays rays = random_rays(soup, 2000, 1.0f, 2);
-    for (auto& o : rays.o) o = glm::vec4(0.5f * (lo + hi) + 0.75f * glm::vec3(o) * (hi - lo), 0.0f);
-    expect_agreement(bb, soup, rays);
+    for (int width : kWidths) {
+        SCOPED_TRACE(testing::Message() << "width " << width);
+        const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
+        if (!std::filesystem::exists(bunny)) GTEST_SKIP() << bunny << " not found";
+        std::vector<glm::vec3> soup = test::load_obj_soup(bunny);
+        ASSERT_GT(soup.size(), 3000u);
+        Bvh bb = build_bvh(soup, with_width({}, width));
+        check_structure(bb, soup, soup.size() / 3 - bb.triangles.size());
+        glm::vec3 lo(INFINITY), hi(-INFINITY);
+        for (const glm::vec3& p : soup) lo = glm::min(lo, p), hi = glm::max(hi, p);
+        Rays rays = random_rays(soup, 2000, 1.0f, 2);
+        for (auto& o : rays.o) o = glm::vec4(0.5f * (lo + hi) + 0.75f * glm::vec3(o) * (hi - lo), 0.0f);
+        expect_agreement(bb, soup, rays);
+    }
 }
 
 TEST(Bvh, MatchesBruteForceDegenerateMesh) {
-    std::size_t unusable = 0, skipped = 0;
-    std::vector<glm::vec3> soup = test::make_degenerate_soup(1400, unusable);
-    Bvh bvh = build_bvh(soup, {}, &skipped);
-    EXPECT_EQ(skipped, unusable);
-    check_structure(bvh, soup, skipped);
-    expect_agreement(bvh, soup, random_rays(soup, 100000, 1.5f, 3));
+    for (int width : kWidths) {
+        SCOPED_TRACE(testing::Message() << "width " << width);
+        std::size_t unusable = 0, skipped = 0;
+        std::vector<glm::vec3> soup = test::make_degenerate_soup(1400, unusable);
+        Bvh bvh = build_bvh(soup, with_width({}, width), &skipped);
+        EXPECT_EQ(skipped, unusable);
+        check_structure(bvh, soup, skipped);
+        expect_agreement(bvh, soup, random_rays(soup, 100000, 1.5f, 3));
+    }
 }
 
 // Rays aimed exactly at shared edges and vertices of closed meshes, from outside and
 // from inside, must hit (Woop et al. 2013): on the integer grid cube the edge
 // functions come out exactly zero; on the torus the rays are oblique.
 TEST(Bvh, EdgesAndVerticesAreWatertight) {
-    Rays rays;
-    std::vector<float> expect_t;  // expected distance; ray directions are not normalised
-    const int n = 6;
-    IndexedMesh cube = test::make_grid_cube(n);
-    const glm::vec3 centre(0.5f * n);
-    for (int axis = 0; axis < 3; ++axis)
-        for (int side = 0; side < 2; ++side)
-            for (int i = 0; i <= 2 * n; ++i)
-                for (int j = 0; j <= 2 * n; ++j) {  // vertices, edge midpoints, diagonals
-                    glm::vec3 p, out(0.0f);
-                    p[axis] = static_cast<float>(side * n);
-                    p[(axis + 1) % 3] = 0.5f * static_cast<float>(i);
-                    p[(axis + 2) % 3] = 0.5f * static_cast<float>(j);
-                    out[axis] = side ? 1.0f : -1.0f;
-                    rays.add(p + 2.0f * out, -out), expect_t.push_back(2.0f);  // straight in
-                    rays.add(centre, p - centre), expect_t.push_back(1.0f);    // from inside
-                    glm::vec3 d = -out;
-                    d[(axis + 1) % 3] = 0.25f, d[(axis + 2) % 3] = -0.5f;  // oblique, exact
-                    rays.add(p - 2.0f * d, d), expect_t.push_back(-2.0f);  // any t <= 2
-                }
-    Bvh cube_bvh = build_bvh(cube.soup());
-    std::vector<glm::vec3> cube_soup = cube.soup();
-    Result r = expect_agreement(cube_bvh, cube_soup, rays);
-    for (std::size_t i = 0; i < rays.o.size(); ++i) {
-        ASSERT_GE(r.prim(i), 0) << "cube ray " << i << " slipped through";
-        float t = r.hit[i].x;
-        if (expect_t[i] > 0.0f) EXPECT_NEAR(t, expect_t[i], 1e-6f * expect_t[i]) << "cube ray " << i;
-        else EXPECT_LE(t, -expect_t[i] * (1.0f + 1e-6f)) << "cube ray " << i;
-    }
+    for (int width : kWidths) {
+        SCOPED_TRACE(testing::Message() << "width " << width);
+        Rays rays;
+        std::vector<float> expect_t;  // expected distance; ray directions are not normalised
+        const int n = 6;
+        IndexedMesh cube = test::make_grid_cube(n);
+        const glm::vec3 centre(0.5f * n);
+        for (int axis = 0; axis < 3; ++axis)
+            for (int side = 0; side < 2; ++side)
+                for (int i = 0; i <= 2 * n; ++i)
+                    for (int j = 0; j <= 2 * n; ++j) {  // vertices, edge midpoints, diagonals
+                        glm::vec3 p, out(0.0f);
+                        p[axis] = static_cast<float>(side * n);
+                        p[(axis + 1) % 3] = 0.5f * static_cast<float>(i);
+                        p[(axis + 2) % 3] = 0.5f * static_cast<float>(j);
+                        out[axis] = side ? 1.0f : -1.0f;
+                        rays.add(p + 2.0f * out, -out), expect_t.push_back(2.0f);  // straight in
+                        rays.add(centre, p - centre), expect_t.push_back(1.0f);    // from inside
+                        glm::vec3 d = -out;
+                        d[(axis + 1) % 3] = 0.25f, d[(axis + 2) % 3] = -0.5f;  // oblique, exact
+                        rays.add(p - 2.0f * d, d), expect_t.push_back(-2.0f);  // any t <= 2
+                    }
+        Bvh cube_bvh = build_bvh(cube.soup(), with_width({}, width));
+        std::vector<glm::vec3> cube_soup = cube.soup();
+        Result r = expect_agreement(cube_bvh, cube_soup, rays);
+        for (std::size_t i = 0; i < rays.o.size(); ++i) {
+            ASSERT_GE(r.prim(i), 0) << "cube ray " << i << " slipped through";
+            float t = r.hit[i].x;
+            if (expect_t[i] > 0.0f) EXPECT_NEAR(t, expect_t[i], 1e-6f * expect_t[i]) << "cube ray " << i;
+            else EXPECT_LE(t, -expect_t[i] * (1.0f + 1e-6f)) << "cube ray " << i;
+        }
 
-    // Torus: every vertex and every edge midpoint, along the tube's normal from outside
-    // and from the tube's centre circle inside.
-    const float R = 1.0f, tube = 0.35f;
-    IndexedMesh torus = test::make_torus(40, 16, R, tube);
-    std::vector<glm::vec3> targets = torus.positions;
-    for (const glm::ivec3& f : torus.faces)
-        for (int k = 0; k < 3; ++k) targets.push_back(0.5f * (torus.positions[f[k]] + torus.positions[f[(k + 1) % 3]]));
-    Rays trays;
-    for (const glm::vec3& p : targets) {
-        glm::vec3 ring = R * glm::normalize(glm::vec3(p.x, p.y, 0.0f));
-        glm::vec3 o = p + 0.5f * (p - ring);
-        trays.add(o, p - o);
-        trays.add(ring, p - ring);
-    }
-    std::vector<glm::vec3> torus_soup = torus.soup();
-    Result tr = expect_agreement(build_bvh(torus_soup), torus_soup, trays);
-    for (std::size_t i = 0; i < trays.o.size(); ++i) {
-        ASSERT_GE(tr.prim(i), 0) << "torus ray " << i << " slipped through";
-        EXPECT_NEAR(tr.hit[i].x, 1.0f, 1e-4f) << "torus ray " << i;
+        // Torus: every vertex and every edge midpoint, along the tube's normal from outside
+        // and from the tube's centre circle inside.
+        const float R = 1.0f, tube = 0.35f;
+        IndexedMesh torus = test::make_torus(40, 16, R, tube);
+        std::vector<glm::vec3> targets = torus.positions;
+        for (const glm::ivec3& f : torus.faces)
+            for (int k = 0; k < 3; ++k)
+                targets.push_back(0.5f * (torus.positions[f[k]] + torus.positions[f[(k + 1) % 3]]));
+        Rays trays;
+        for (const glm::vec3& p : targets) {
+            glm::vec3 ring = R * glm::normalize(glm::vec3(p.x, p.y, 0.0f));
+            glm::vec3 o = p + 0.5f * (p - ring);
+            trays.add(o, p - o);
+            trays.add(ring, p - ring);
+        }
+        std::vector<glm::vec3> torus_soup = torus.soup();
+        Result tr = expect_agreement(build_bvh(torus_soup, with_width({}, width)), torus_soup, trays);
+        for (std::size_t i = 0; i < trays.o.size(); ++i) {
+            ASSERT_GE(tr.prim(i), 0) << "torus ray " << i << " slipped through";
+            EXPECT_NEAR(tr.hit[i].x, 1.0f, 1e-4f) << "torus ray " << i;
+        }
     }
 }
 
 TEST(Bvh, EmptyAndSingleTriangle) {
-    auto expect_empty_slot = [](const FcBvhNode& n, int k) {
-        EXPECT_EQ(n.count[k], 0);
-        EXPECT_EQ(n.index[k], 0);
-        const float lo[3] = {n.lo_x[k], n.lo_y[k], n.lo_z[k]}, hi[3] = {n.hi_x[k], n.hi_y[k], n.hi_z[k]};
-        for (int a = 0; a < 3; ++a) EXPECT_TRUE(std::isinf(lo[a]) && lo[a] > 0.0f && std::isinf(hi[a]) && hi[a] < 0.0f);
-    };
-    Rays rays = random_rays({}, 200, 2.0f, 4);
-    rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f));        // hits at t = 1
-    rays.add(glm::vec3(0.25f, 0.5f, -2.0f), glm::vec3(0.0f, 0.0f, 2.0f));        // from behind
-    rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f), 0.5f);  // tmax short
-    rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, 1.0f));         // away
+    for (int width : kWidths) {
+        SCOPED_TRACE(testing::Message() << "width " << width);
+        auto expect_empty_slot = [](const NodeView& n, int k) {
+            EXPECT_EQ(n.count[k], 0);
+            EXPECT_EQ(n.index[k], 0);
+            for (int a = 0; a < 3; ++a)
+                EXPECT_TRUE(std::isinf(n.lo[a][k]) && n.lo[a][k] > 0.0f && std::isinf(n.hi[a][k]) && n.hi[a][k] < 0.0f);
+        };
+        Rays rays = random_rays({}, 200, 2.0f, 4);
+        rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f));        // hits at t = 1
+        rays.add(glm::vec3(0.25f, 0.5f, -2.0f), glm::vec3(0.0f, 0.0f, 2.0f));        // from behind
+        rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, -1.0f), 0.5f);  // tmax short
+        rays.add(glm::vec3(0.25f, 0.5f, 1.0f), glm::vec3(0.0f, 0.0f, 1.0f));         // away
 
-    // Empty, and only unusable triangles: a root with two empty children, all rays miss.
-    const glm::vec3 z(0.0f), x(1.0f, 0.0f, 0.0f);
-    for (const std::vector<glm::vec3>& input :
-         {std::vector<glm::vec3>{}, std::vector<glm::vec3>{z, z, x, z, x, 2.0f * x}}) {
-        std::size_t skipped = 99;
-        Bvh bvh = build_bvh(input, {}, &skipped);
-        EXPECT_EQ(skipped, input.size() / 3);
-        ASSERT_EQ(bvh.nodes.size(), 1u);
-        EXPECT_EQ(bvh.stats.leaf_blocks, 0u);
-        EXPECT_TRUE(bvh.triangles.empty());
-        for (int k = 0; k < 4; ++k) expect_empty_slot(bvh.nodes[0], k);
-        Result r = expect_agreement(bvh, input, rays);
-        for (std::size_t i = 0; i < rays.o.size(); ++i) EXPECT_EQ(r.prim(i), -1);
+        // Empty, and only unusable triangles: a root with two empty children, all rays miss.
+        const glm::vec3 z(0.0f), x(1.0f, 0.0f, 0.0f);
+        for (const std::vector<glm::vec3>& input :
+             {std::vector<glm::vec3>{}, std::vector<glm::vec3>{z, z, x, z, x, 2.0f * x}}) {
+            std::size_t skipped = 99;
+            Bvh bvh = build_bvh(input, with_width({}, width), &skipped);
+            EXPECT_EQ(skipped, input.size() / 3);
+            ASSERT_EQ(bvh.stats.nodes, 1u);
+            ASSERT_EQ(bvh.nodes.size(), static_cast<std::size_t>(width / 4));
+            EXPECT_EQ(bvh.stats.leaf_blocks, 0u);
+            EXPECT_TRUE(bvh.triangles.empty());
+            for (int k = 0; k < width; ++k) expect_empty_slot(node_view(bvh, 0), k);
+            Result r = expect_agreement(bvh, input, rays);
+            for (std::size_t i = 0; i < rays.o.size(); ++i) EXPECT_EQ(r.prim(i), -1);
+        }
+
+        // One triangle: root = {leaf, empty}.
+        std::vector<glm::vec3> one = {z, x, glm::vec3(0.0f, 1.0f, 0.0f)};
+        Bvh bvh = build_bvh(one, with_width({}, width));
+        ASSERT_EQ(bvh.stats.nodes, 1u);
+        EXPECT_EQ(bvh.stats.leaf_blocks, 1u);
+        EXPECT_EQ(node_view(bvh, 0).count[0], 1);
+        for (int k = 1; k < width; ++k) expect_empty_slot(node_view(bvh, 0), k);
+        check_structure(bvh, one, 0);
+        Result r = expect_agreement(bvh, one, rays);
+        const std::size_t k = rays.o.size() - 4;
+        EXPECT_EQ(r.prim(k), 0);
+        EXPECT_FLOAT_EQ(r.hit[k].x, 1.0f);
+        EXPECT_FLOAT_EQ(r.hit[k].y, 0.25f);  // weight of v1 = x
+        EXPECT_FLOAT_EQ(r.hit[k].z, 0.5f);   // weight of v2 = y
+        EXPECT_EQ(r.prim(k + 1), 0);
+        EXPECT_FLOAT_EQ(r.hit[k + 1].x, 1.0f);
+        EXPECT_EQ(r.prim(k + 2), -1);
+        EXPECT_EQ(r.prim(k + 3), -1);
+
+        EXPECT_THROW(build_bvh(std::vector<glm::vec3>(4), with_width({}, width)), Error);
     }
-
-    // One triangle: root = {leaf, empty}.
-    std::vector<glm::vec3> one = {z, x, glm::vec3(0.0f, 1.0f, 0.0f)};
-    Bvh bvh = build_bvh(one);
-    ASSERT_EQ(bvh.stats.nodes, 1u);
-    EXPECT_EQ(bvh.stats.leaf_blocks, 1u);
-    EXPECT_EQ(bvh.nodes[0].count[0], 1);
-    for (int k = 1; k < 4; ++k) expect_empty_slot(bvh.nodes[0], k);
-    check_structure(bvh, one, 0);
-    Result r = expect_agreement(bvh, one, rays);
-    const std::size_t k = rays.o.size() - 4;
-    EXPECT_EQ(r.prim(k), 0);
-    EXPECT_FLOAT_EQ(r.hit[k].x, 1.0f);
-    EXPECT_FLOAT_EQ(r.hit[k].y, 0.25f);  // weight of v1 = x
-    EXPECT_FLOAT_EQ(r.hit[k].z, 0.5f);   // weight of v2 = y
-    EXPECT_EQ(r.prim(k + 1), 0);
-    EXPECT_FLOAT_EQ(r.hit[k + 1].x, 1.0f);
-    EXPECT_EQ(r.prim(k + 2), -1);
-    EXPECT_EQ(r.prim(k + 3), -1);
-
-    EXPECT_THROW(build_bvh(std::vector<glm::vec3>(4)), Error);
 }
 
 // Secondary rays leaving a surface from offset_ray_origin (Wächter & Binder 2019)
 // never hit the triangle they start on, near the origin and far from it.
 TEST(Bvh, OffsetOriginAvoidsSelfHits) {
-    for (float shift : {0.0f, 3000.0f}) {
-        std::vector<glm::vec3> soup = test::make_torus(40, 16, 1.0f, 0.35f).soup();
-        for (glm::vec3& p : soup) p += glm::vec3(shift, -shift, 0.5f * shift);
-        Bvh bvh = build_bvh(soup);
-        std::mt19937 rng(5);
-        std::uniform_real_distribution<float> u01(0.0f, 1.0f), u(-1.0f, 1.0f);
-        std::vector<glm::vec4> points, normals;
-        std::vector<glm::vec3> dirs;
-        std::vector<int> from;
-        for (int i = 0; i < 20000; ++i) {
-            int t = static_cast<int>(u01(rng) * static_cast<float>(soup.size() / 3 - 1));
-            glm::vec3 a = soup[3 * t], b = soup[3 * t + 1], c = soup[3 * t + 2];
-            float s = u01(rng), w = u01(rng) * (1.0f - s);
-            glm::vec3 ng = glm::normalize(glm::cross(b - a, c - a));
-            glm::vec3 d(u(rng), u(rng), u(rng));
-            if (glm::dot(d, ng) < 0.0f) ng = -ng;  // the side the ray leaves from
-            points.emplace_back(a + s * (b - a) + w * (c - a), 0.0f);
-            normals.emplace_back(ng, 0.0f);
-            dirs.push_back(d);
-            from.push_back(t);
+    for (int width : kWidths) {
+        SCOPED_TRACE(testing::Message() << "width " << width);
+        for (float shift : {0.0f, 3000.0f}) {
+            std::vector<glm::vec3> soup = test::make_torus(40, 16, 1.0f, 0.35f).soup();
+            for (glm::vec3& p : soup) p += glm::vec3(shift, -shift, 0.5f * shift);
+            Bvh bvh = build_bvh(soup, with_width({}, width));
+            std::mt19937 rng(5);
+            std::uniform_real_distribution<float> u01(0.0f, 1.0f), u(-1.0f, 1.0f);
+            std::vector<glm::vec4> points, normals;
+            std::vector<glm::vec3> dirs;
+            std::vector<int> from;
+            for (int i = 0; i < 20000; ++i) {
+                int t = static_cast<int>(u01(rng) * static_cast<float>(soup.size() / 3 - 1));
+                glm::vec3 a = soup[3 * t], b = soup[3 * t + 1], c = soup[3 * t + 2];
+                float s = u01(rng), w = u01(rng) * (1.0f - s);
+                glm::vec3 ng = glm::normalize(glm::cross(b - a, c - a));
+                glm::vec3 d(u(rng), u(rng), u(rng));
+                if (glm::dot(d, ng) < 0.0f) ng = -ng;  // the side the ray leaves from
+                points.emplace_back(a + s * (b - a) + w * (c - a), 0.0f);
+                normals.emplace_back(ng, 0.0f);
+                dirs.push_back(d);
+                from.push_back(t);
+            }
+            auto& ctx = test::context();
+            cl::Kernel k(test::program("kernels/test/trace_kernels.cl"), "offset_origins");
+            cl::Buffer pb = upload(points), nb = upload(normals);
+            cl::Buffer ob(ctx.context(), CL_MEM_WRITE_ONLY, points.size() * sizeof(glm::vec4));
+            k.setArg(0, pb), k.setArg(1, nb), k.setArg(2, ob);
+            ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(points.size()));
+            std::vector<glm::vec4> origins(points.size());
+            ctx.queue().enqueueReadBuffer(ob, CL_TRUE, 0, origins.size() * sizeof(glm::vec4), origins.data());
+            Rays rays;
+            for (std::size_t i = 0; i < origins.size(); ++i) rays.add(glm::vec3(origins[i]), dirs[i]);
+            Result r = run("trace_rays_bvh", bvh, rays);
+            int self = 0;
+            for (std::size_t i = 0; i < origins.size(); ++i) self += r.prim(i) == from[i];
+            EXPECT_EQ(self, 0) << "shift " << shift;
         }
-        auto& ctx = test::context();
-        cl::Kernel k(test::program("kernels/test/trace_kernels.cl"), "offset_origins");
-        cl::Buffer pb = upload(points), nb = upload(normals);
-        cl::Buffer ob(ctx.context(), CL_MEM_WRITE_ONLY, points.size() * sizeof(glm::vec4));
-        k.setArg(0, pb), k.setArg(1, nb), k.setArg(2, ob);
-        ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(points.size()));
-        std::vector<glm::vec4> origins(points.size());
-        ctx.queue().enqueueReadBuffer(ob, CL_TRUE, 0, origins.size() * sizeof(glm::vec4), origins.data());
-        Rays rays;
-        for (std::size_t i = 0; i < origins.size(); ++i) rays.add(glm::vec3(origins[i]), dirs[i]);
-        Result r = run("trace_rays_bvh", bvh, rays);
-        int self = 0;
-        for (std::size_t i = 0; i < origins.size(); ++i) self += r.prim(i) == from[i];
-        EXPECT_EQ(self, 0) << "shift " << shift;
     }
 }
 
@@ -515,38 +599,156 @@ TEST(Bvh, OffsetOriginAvoidsSelfHits) {
 // surface it leaves. The wall and a second quad share one leaf block (LargeScene's lit
 // wall, where half the shadow rays were blocked by the wall at 1e5 and up).
 TEST(Bvh, NoSelfHitsOnAPlaneThroughZeroAtLargeScale) {
-    for (float scale : {1.0f, 1e5f, 1e10f}) {
-        const glm::vec3 w0 = scale * glm::vec3(0.0f, -1.0f, -1.0f), wy = scale * glm::vec3(0.0f, 2.0f, 0.0f),
-                        wz = scale * glm::vec3(0.0f, 0.0f, 2.0f);
-        const glm::vec3 l0 = scale * glm::vec3(0.0f, 2.0f, -1.0f), lx = scale * glm::vec3(2.0f, 0.0f, 0.0f);
-        std::vector<glm::vec3> soup = {w0, w0 + wy, w0 + wy + wz, w0, w0 + wy + wz, w0 + wz,
-                                       l0, l0 + lx, l0 + lx + wz, l0, l0 + lx + wz, l0 + wz};
-        Bvh bvh = build_bvh(soup);
-        ASSERT_EQ(bvh.stats.leaves, 1u);
-        std::mt19937 rng(6);
-        std::uniform_real_distribution<float> u01(0.0f, 1.0f), u(-1.0f, 1.0f);
-        std::vector<glm::vec4> points, normals;
-        std::vector<glm::vec3> dirs;
-        for (int i = 0; i < 4096; ++i) {
-            points.emplace_back(w0 + u01(rng) * wy + u01(rng) * wz, 0.0f);
-            normals.emplace_back(1.0f, 0.0f, 0.0f, 0.0f);
-            dirs.emplace_back(0.05f + u01(rng), u(rng), u(rng));  // leaving on the +x side
+    for (int width : kWidths) {
+        SCOPED_TRACE(testing::Message() << "width " << width);
+        for (float scale : {1.0f, 1e5f, 1e10f}) {
+            const glm::vec3 w0 = scale * glm::vec3(0.0f, -1.0f, -1.0f), wy = scale * glm::vec3(0.0f, 2.0f, 0.0f),
+                            wz = scale * glm::vec3(0.0f, 0.0f, 2.0f);
+            const glm::vec3 l0 = scale * glm::vec3(0.0f, 2.0f, -1.0f), lx = scale * glm::vec3(2.0f, 0.0f, 0.0f);
+            std::vector<glm::vec3> soup = {w0, w0 + wy, w0 + wy + wz, w0, w0 + wy + wz, w0 + wz,
+                                           l0, l0 + lx, l0 + lx + wz, l0, l0 + lx + wz, l0 + wz};
+            Bvh bvh = build_bvh(soup, with_width({}, width));
+            ASSERT_EQ(bvh.stats.leaves, 1u);
+            std::mt19937 rng(6);
+            std::uniform_real_distribution<float> u01(0.0f, 1.0f), u(-1.0f, 1.0f);
+            std::vector<glm::vec4> points, normals;
+            std::vector<glm::vec3> dirs;
+            for (int i = 0; i < 4096; ++i) {
+                points.emplace_back(w0 + u01(rng) * wy + u01(rng) * wz, 0.0f);
+                normals.emplace_back(1.0f, 0.0f, 0.0f, 0.0f);
+                dirs.emplace_back(0.05f + u01(rng), u(rng), u(rng));  // leaving on the +x side
+            }
+            auto& ctx = test::context();
+            cl::Kernel k(test::program("kernels/test/trace_kernels.cl"), "offset_origins");
+            cl::Buffer pb = upload(points), nb = upload(normals);
+            cl::Buffer ob(ctx.context(), CL_MEM_WRITE_ONLY, points.size() * sizeof(glm::vec4));
+            k.setArg(0, pb), k.setArg(1, nb), k.setArg(2, ob);
+            ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(points.size()));
+            std::vector<glm::vec4> origins(points.size());
+            ctx.queue().enqueueReadBuffer(ob, CL_TRUE, 0, origins.size() * sizeof(glm::vec4), origins.data());
+            Rays rays;
+            for (std::size_t i = 0; i < origins.size(); ++i) rays.add(glm::vec3(origins[i]), dirs[i]);
+            Result r = expect_agreement(bvh, soup, rays);
+            int self = 0;
+            for (std::size_t i = 0; i < origins.size(); ++i) self += r.prim(i) == 0 || r.prim(i) == 1;
+            EXPECT_EQ(self, 0) << "scale " << scale;
         }
-        auto& ctx = test::context();
-        cl::Kernel k(test::program("kernels/test/trace_kernels.cl"), "offset_origins");
-        cl::Buffer pb = upload(points), nb = upload(normals);
-        cl::Buffer ob(ctx.context(), CL_MEM_WRITE_ONLY, points.size() * sizeof(glm::vec4));
-        k.setArg(0, pb), k.setArg(1, nb), k.setArg(2, ob);
-        ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(points.size()));
-        std::vector<glm::vec4> origins(points.size());
-        ctx.queue().enqueueReadBuffer(ob, CL_TRUE, 0, origins.size() * sizeof(glm::vec4), origins.data());
-        Rays rays;
-        for (std::size_t i = 0; i < origins.size(); ++i) rays.add(glm::vec3(origins[i]), dirs[i]);
-        Result r = expect_agreement(bvh, soup, rays);
-        int self = 0;
-        for (std::size_t i = 0; i < origins.size(); ++i) self += r.prim(i) == 0 || r.prim(i) == 1;
-        EXPECT_EQ(self, 0) << "scale " << scale;
     }
+}
+
+// ---- 8-wide against 4-wide ------------------------------------------------------------
+
+// The two widths' traversals over trees collapsed from the same binary tree (the same
+// leaves, the same blocks) return the same nearest hit: the same triangle at the same t
+// with the same barycentrics, bit for bit, and the same any-hit answer. With `ties`
+// (soups of overlapping coplanar slivers, whose computed distances differ by more than
+// the box tests' rounding, so the order of the visits decides), a different triangle
+// is allowed where the two planes' exact distances tie, as in expect_agreement.
+// Returns the number of rays that hit.
+std::size_t expect_same_hits(const std::vector<glm::vec3>& soup, const BvhOptions& options, const Rays& rays,
+                             bool ties = false) {
+    const Bvh b4 = build_bvh(soup, with_width(options, 4)), b8 = build_bvh(soup, with_width(options, 8));
+    EXPECT_EQ(b4.stats.leaves, b8.stats.leaves);
+    EXPECT_EQ(b4.stats.leaf_blocks, b8.stats.leaf_blocks);
+    const Result r4 = run("trace_rays_bvh", b4, rays), r8 = run("trace_rays_bvh", b8, rays);
+    int failures = 0;
+    std::size_t hits = 0;
+    for (std::size_t i = 0; i < rays.o.size() && failures < 10; ++i) {
+        hits += r4.prim(i) >= 0;
+        if (std::memcmp(&r4.hit[i], &r8.hit[i], sizeof r4.hit[i]) == 0 && r4.any[i] == r8.any[i]) continue;
+        if (ties && r4.any[i] == r8.any[i] && r4.prim(i) >= 0 && r8.prim(i) >= 0) {
+            const glm::vec3 o(rays.o[i]), d(rays.d[i]);
+            const double p4 = plane_t(soup, r4.prim(i), o, d), p8 = plane_t(soup, r8.prim(i), o, d);
+            if (std::fabs(p4 - p8) <= 1e-5 * std::fabs(p4)) continue;
+        }
+        ++failures;
+        ADD_FAILURE() << "ray " << i << ": 4-wide prim " << r4.prim(i) << " t " << r4.hit[i].x << " any " << r4.any[i]
+                      << ", 8-wide prim " << r8.prim(i) << " t " << r8.hit[i].x << " any " << r8.any[i];
+    }
+    return hits;
+}
+
+TEST(Bvh, EightWideHitsEqualFourWideOnMeshes) {
+    std::vector<glm::vec3> torus = test::make_torus(120, 60, 1.0f, 0.35f).soup();
+    EXPECT_GT(expect_same_hits(torus, {}, random_rays(torus, 100000, 1.6f, 11)), 30000u);
+    BvhOptions small;
+    small.max_leaf_size = 1;  // many more inner nodes: every 8-wide node full
+    expect_same_hits(torus, small, random_rays(torus, 20000, 1.6f, 12));
+    std::size_t unusable = 0;
+    std::vector<glm::vec3> soup = test::make_degenerate_soup(1400, unusable);
+    expect_same_hits(soup, {}, random_rays(soup, 20000, 1.5f, 13), true);
+
+    const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
+    if (!std::filesystem::exists(bunny)) GTEST_SKIP() << bunny << " not found";
+    std::vector<glm::vec3> mesh = test::load_obj_soup(bunny);
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : mesh) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    Rays rays = random_rays(mesh, 50000, 1.0f, 14);
+    for (auto& o : rays.o) o = glm::vec4(0.5f * (lo + hi) + 0.75f * glm::vec3(o) * (hi - lo), 0.0f);
+    EXPECT_GT(expect_same_hits(mesh, {}, rays), 10000u);
+}
+
+// Scenes of 1, 7, 8 and 9 triangles, one triangle a leaf or all in one leaf: the 8-wide
+// root holds up to eight leaves, the ninth needs a second node; both widths against
+// brute force and against each other.
+TEST(Bvh, EightWideSmallScenes) {
+    std::vector<glm::vec3> all;
+    for (int i = 0; i < 9; ++i) {
+        const glm::vec3 at(static_cast<float>(i % 3) * 1.5f, static_cast<float>(i / 3) * 1.5f,
+                           0.2f * static_cast<float>(i));
+        all.insert(all.end(), {at, at + glm::vec3(1.0f, 0.0f, 0.1f), at + glm::vec3(0.0f, 1.0f, -0.1f)});
+    }
+    for (std::size_t n : {1u, 7u, 8u, 9u})
+        for (int leaf : {1, 8}) {
+            SCOPED_TRACE(testing::Message() << n << " triangles, leaves of up to " << leaf);
+            std::vector<glm::vec3> soup(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(3 * n));
+            BvhOptions o;
+            o.max_leaf_size = leaf;
+            Rays rays = random_rays(soup, 4000, 3.0f, static_cast<unsigned>(20 + n));
+            for (int width : kWidths) {
+                SCOPED_TRACE(testing::Message() << "width " << width);
+                Bvh bvh = build_bvh(soup, with_width(o, width));
+                check_structure(bvh, soup, 0);
+                expect_agreement(bvh, soup, rays);
+                if (width == 8 && leaf == 1) {
+                    EXPECT_EQ(bvh.stats.nodes, n <= 8 ? 1u : 2u);
+                }
+            }
+            expect_same_hits(soup, o, rays);
+        }
+}
+
+// The width comes from BvhOptions::width, else FACET_BVH_WIDTH, else 4; anything else is
+// refused with a message that names it. bvh_width_for picks one by device.
+TEST(Bvh, WidthChoice) {
+    const std::vector<glm::vec3> tri = {glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
+    const char* saved = std::getenv("FACET_BVH_WIDTH");
+    const std::string keep = saved ? saved : "";
+    unsetenv("FACET_BVH_WIDTH");
+    EXPECT_EQ(build_bvh(tri).stats.width, 4);
+    EXPECT_EQ(build_bvh(tri, with_width({}, 8)).stats.width, 8);
+    EXPECT_EQ(bvh_prelude(build_bvh(tri, with_width({}, 8))), "#define FC_BVH_WIDTH 8");
+    setenv("FACET_BVH_WIDTH", "8", 1);
+    EXPECT_EQ(build_bvh(tri).stats.width, 8);
+    EXPECT_EQ(build_bvh(tri, with_width({}, 4)).stats.width, 4);
+    setenv("FACET_BVH_WIDTH", "16", 1);
+    try {
+        build_bvh(tri);
+        ADD_FAILURE() << "FACET_BVH_WIDTH=16 accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("FACET_BVH_WIDTH is \"16\""), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(build_bvh(tri, with_width({}, 2)), Error);
+    // By device, FACET_BVH_WIDTH unset: 8 on CPUs with 8-wide float vectors, 4 elsewhere.
+    unsetenv("FACET_BVH_WIDTH");
+    EXPECT_EQ(bvh_width_for(false, 8), 8);
+    EXPECT_EQ(bvh_width_for(false, 16), 8);
+    EXPECT_EQ(bvh_width_for(false, 4), 4);
+    EXPECT_EQ(bvh_width_for(true, 8), 4);
+    setenv("FACET_BVH_WIDTH", "4", 1);
+    EXPECT_EQ(bvh_width_for(false, 8), 4);
+    if (saved) setenv("FACET_BVH_WIDTH", keep.c_str(), 1);
+    else unsetenv("FACET_BVH_WIDTH");
 }
 
 }  // namespace

@@ -1,14 +1,16 @@
 // build_bvh: filters the triangle soup, runs the binned SAH builder
-// (bvh/sah_builder.cpp), collapses its binary tree into 4-wide nodes, lays the
+// (bvh/sah_builder.cpp), collapses its binary tree into 4- or 8-wide nodes, lays the
 // triangles out in leaf order and appends the leaves' four-triangle blocks to the nodes.
 #include "host/bvh/bvh.hpp"
 
 #include <chrono>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 
+#include "host/bvh/bvh_width.hpp"
 #include "host/bvh/sah_builder.hpp"
 #include "host/error.hpp"
 
@@ -42,74 +44,133 @@ ChildRef child(const bvh_detail::BinaryNode& n, int side) {
                      : ChildRef{n.b_min, n.b_max, n.b_index, n.b_count};
 }
 
-void set_slot(FcBvhNode& node, int k, const float* lo, const float* hi, std::int32_t index, std::int32_t count) {
+template <typename Node>
+void set_slot(Node& node, int k, const float* lo, const float* hi, std::int32_t index, std::int32_t count) {
     node.lo_x[k] = lo[0], node.lo_y[k] = lo[1], node.lo_z[k] = lo[2];
     node.hi_x[k] = hi[0], node.hi_y[k] = hi[1], node.hi_z[k] = hi[2];
     node.index[k] = index;
     node.count[k] = count;
 }
 
-// Collapses the binary tree: each 4-wide node holds a binary node's children, with
-// every inner child replaced by its own two children, so every root-to-leaf path
-// halves. Empty slots get the inverted box. Returns the 4-wide depth (nodes on the
-// longest root-to-leaf path).
-int collapse(const std::vector<bvh_detail::BinaryNode>& bin, std::vector<FcBvhNode>& out) {
+template <typename Node>
+constexpr int kWidth = static_cast<int>(sizeof(Node::index) / sizeof(Node::index[0]));
+
+float half_area(const ChildRef& c) {
+    const float dx = c.hi[0] - c.lo[0], dy = c.hi[1] - c.lo[1], dz = c.hi[2] - c.lo[2];
+    return dx * dy + dy * dz + dz * dx;
+}
+
+// The children of one wide node, from binary node `binary`. 4-wide: its children,
+// every inner one replaced by its own two children (every path halves). 8-wide: the
+// same, then, while a slot is free, the inner child of largest surface area opened
+// (Embree's BVH8 collapse); or, with `by_level`, every inner child of the 4-wide set
+// opened once more (every path a third as long).
+template <int W>
+int gather_children(const std::vector<bvh_detail::BinaryNode>& bin, std::int32_t binary, bool by_level,
+                    ChildRef (&slots)[W]) {
+    const bvh_detail::BinaryNode& b = bin[static_cast<std::size_t>(binary)];
+    ChildRef cur[8] = {child(b, 0), child(b, 1)};
+    int k = 2;
+    const int levels = W == 4 || by_level ? (W == 4 ? 1 : 2) : 0;
+    for (int l = 0; l < levels; ++l) {  // open every inner child: k at most doubles
+        ChildRef next[8];
+        int m = 0;
+        for (int s = 0; s < k; ++s)
+            if (cur[s].inner()) {
+                const bvh_detail::BinaryNode& g = bin[static_cast<std::size_t>(cur[s].index)];
+                next[m++] = child(g, 0);
+                next[m++] = child(g, 1);
+            } else {
+                next[m++] = cur[s];
+            }
+        std::copy(next, next + m, cur);
+        k = m;
+    }
+    if (W == 8 && !by_level)
+        while (k < 8) {  // open the largest inner child in place
+            int best = -1;
+            float best_area = -1.0f;
+            for (int s = 0; s < k; ++s)
+                if (cur[s].inner() && half_area(cur[s]) > best_area) best = s, best_area = half_area(cur[s]);
+            if (best < 0) break;
+            const bvh_detail::BinaryNode& g = bin[static_cast<std::size_t>(cur[best].index)];
+            cur[best] = child(g, 0);
+            cur[k++] = child(g, 1);
+        }
+    std::copy(cur, cur + k, slots);
+    return k;
+}
+
+struct CollapseOut {
+    int depth = 0;       // wide nodes on the longest root-to-leaf path
+    int stack_need = 0;  // most stack entries a root-to-leaf path pushes (inner children less one a node)
+};
+
+// Collapses the binary tree into W-wide nodes (gather_children). Empty slots get the
+// inverted box.
+template <typename Node>
+CollapseOut collapse(const std::vector<bvh_detail::BinaryNode>& bin, bool by_level, std::vector<Node>& out) {
+    constexpr int W = kWidth<Node>;
     constexpr float inf = std::numeric_limits<float>::infinity();
     const float empty_lo[3] = {inf, inf, inf}, empty_hi[3] = {-inf, -inf, -inf};
     out.clear();
-    out.reserve(bin.size() / 2 + 1);
+    out.reserve(bin.size() / (W - 1) + 1);
     out.emplace_back();
     struct Item {
-        std::int32_t binary, wide, depth;
+        std::int32_t binary, wide, depth, pushes;
     };
-    std::vector<Item> stack{{0, 0, 1}};
-    int max_depth = 0;
+    std::vector<Item> stack{{0, 0, 1, 0}};
+    CollapseOut res;
     while (!stack.empty()) {
         Item it = stack.back();
         stack.pop_back();
-        ChildRef slots[4];
-        int k = 0;
-        for (int side = 0; side < 2; ++side) {
-            ChildRef c = child(bin[static_cast<std::size_t>(it.binary)], side);
-            if (c.inner()) {
-                const bvh_detail::BinaryNode& g = bin[static_cast<std::size_t>(c.index)];
-                slots[k++] = child(g, 0);
-                slots[k++] = child(g, 1);
-            } else {
-                slots[k++] = c;
-            }
-        }
-        for (int s = 0; s < 4; ++s) {
+        ChildRef slots[W];
+        const int k = gather_children<W>(bin, it.binary, by_level, slots);
+        int inner = 0;
+        for (int s = 0; s < k; ++s) inner += slots[s].inner() ? 1 : 0;
+        const int pushes = it.pushes + std::max(0, inner - 1);
+        for (int s = 0; s < W; ++s) {
             if (s >= k || slots[s].empty()) {
                 set_slot(out[static_cast<std::size_t>(it.wide)], s, empty_lo, empty_hi, 0, 0);
             } else if (slots[s].inner()) {
                 const auto j = static_cast<std::int32_t>(out.size());
                 out.emplace_back();
                 set_slot(out[static_cast<std::size_t>(it.wide)], s, slots[s].lo, slots[s].hi, j, 0);
-                stack.push_back({slots[s].index, j, it.depth + 1});
+                stack.push_back({slots[s].index, j, it.depth + 1, pushes});
             } else {
                 set_slot(out[static_cast<std::size_t>(it.wide)], s, slots[s].lo, slots[s].hi, slots[s].index,
                          slots[s].count);
             }
         }
-        max_depth = std::max(max_depth, static_cast<int>(it.depth));
+        res.depth = std::max(res.depth, static_cast<int>(it.depth));
+        res.stack_need = std::max(res.stack_need, pushes);
     }
-    return max_depth;
+    return res;
 }
 
-constexpr std::int64_t kRowsPerNode = sizeof(FcBvhNode) / 16, kRowsPerBlock = sizeof(FcTriBlock) / 16;
-static_assert(sizeof(FcBvhNode) % 16 == 0 && sizeof(FcTriBlock) % 16 == 0, "the node buffer is addressed in rows");
+constexpr std::int64_t kRowsPerBlock = sizeof(FcTriBlock) / 16;
+static_assert(sizeof(FcBvhNode) % 16 == 0 && sizeof(FcBvhNode8) % sizeof(FcBvhNode) == 0 &&
+                  sizeof(FcTriBlock) % 16 == 0,
+              "the node buffer is addressed in rows");
 
-// Appends the leaves' triangles to the node buffer as FcTriBlock, in node order, and
-// points every leaf slot at its first block (a row index).
-std::size_t pack_leaf_blocks(std::vector<FcBvhNode>& nodes, const std::vector<FcTriangle>& tris) {
+std::int64_t rows_per_node(int width) {
+    return static_cast<std::int64_t>(width == 8 ? sizeof(FcBvhNode8) : sizeof(FcBvhNode)) / 16;
+}
+
+// Copies the wide nodes into the node buffer (128-byte units), appends the leaves'
+// triangles as FcTriBlock, in node order, and points every leaf slot at its first
+// block (a row index). Returns the block count.
+template <typename Node>
+std::size_t pack_node_buffer(std::vector<Node>& nodes, const std::vector<FcTriangle>& tris,
+                             std::vector<FcBvhNode>& buffer) {
+    constexpr int W = kWidth<Node>;
     const std::size_t tree_nodes = nodes.size();
     std::vector<FcTriBlock> blocks;
     blocks.reserve(tris.size() / 2 + 1);
-    const std::int64_t base = static_cast<std::int64_t>(tree_nodes) * kRowsPerNode;
+    const std::int64_t base = static_cast<std::int64_t>(tree_nodes * sizeof(Node) / 16);
     for (std::size_t n = 0; n < tree_nodes; ++n)
-        for (int k = 0; k < 4; ++k) {
-            FcBvhNode& node = nodes[n];
+        for (int k = 0; k < W; ++k) {
+            Node& node = nodes[n];
             if (node.count[k] <= 0) continue;
             const std::int64_t row = base + static_cast<std::int64_t>(blocks.size()) * kRowsPerBlock;
             if (row + ((node.count[k] + 3) / 4) * kRowsPerBlock > INT32_MAX)
@@ -131,17 +192,56 @@ std::size_t pack_leaf_blocks(std::vector<FcBvhNode>& nodes, const std::vector<Fc
             }
             node.index[k] = static_cast<std::int32_t>(row);
         }
-    const std::size_t bytes = blocks.size() * sizeof(FcTriBlock);
-    nodes.resize(tree_nodes + (bytes + sizeof(FcBvhNode) - 1) / sizeof(FcBvhNode));
-    if (bytes) std::memcpy(reinterpret_cast<unsigned char*>(nodes.data() + tree_nodes), blocks.data(), bytes);
+    const std::size_t node_bytes = tree_nodes * sizeof(Node), bytes = blocks.size() * sizeof(FcTriBlock);
+    buffer.resize((node_bytes + bytes + sizeof(FcBvhNode) - 1) / sizeof(FcBvhNode));
+    auto* out = reinterpret_cast<unsigned char*>(buffer.data());
+    std::memcpy(out, nodes.data(), node_bytes);
+    if (bytes) std::memcpy(out + node_bytes, blocks.data(), bytes);
     return blocks.size();
 }
 
 }  // namespace
 
+int resolve_width(int width) {
+    if (width == 0) {
+        const char* env = std::getenv("FACET_BVH_WIDTH");
+        if (!env || !*env) return 4;
+        const std::string v(env);
+        if (v == "4" || v == "8") return v == "8" ? 8 : 4;
+        throw Error("FACET_BVH_WIDTH is \"" + v + "\": it must be 4 or 8");
+    }
+    if (width != 4 && width != 8)
+        throw Error("build_bvh: BvhOptions::width is " + std::to_string(width) + ": it must be 0 (auto), 4 or 8");
+    return width;
+}
+
+int bvh_width_for(bool gpu, unsigned native_float_vector_width) {
+    const char* env = std::getenv("FACET_BVH_WIDTH");
+    if (env && *env) return resolve_width(0);
+    return !gpu && native_float_vector_width >= 8 ? 8 : 4;
+}
+
+FcBvhNode8 wide_node8(const Bvh& bvh, std::size_t i) {
+    if (bvh.stats.width != 8 || i >= bvh.stats.nodes)
+        throw Error("wide_node8: node " + std::to_string(i) + " is not a node of an 8-wide tree of " +
+                    std::to_string(bvh.stats.nodes) + " (width " + std::to_string(bvh.stats.width) + ")");
+    FcBvhNode8 n;
+    std::memcpy(&n, reinterpret_cast<const unsigned char*>(bvh.nodes.data()) + i * sizeof n, sizeof n);
+    return n;
+}
+
+const FcBvhNode& wide_node4(const Bvh& bvh, std::size_t i) {
+    if (bvh.stats.width != 4 || i >= bvh.stats.nodes)
+        throw Error("wide_node4: node " + std::to_string(i) + " is not a node of a 4-wide tree of " +
+                    std::to_string(bvh.stats.nodes) + " (width " + std::to_string(bvh.stats.width) + ")");
+    return bvh.nodes[i];
+}
+
+std::string bvh_prelude(const Bvh& bvh) { return "#define FC_BVH_WIDTH " + std::to_string(bvh.stats.width); }
+
 FcTriBlock leaf_block(const Bvh& bvh, std::int64_t row) {
-    const auto rows = static_cast<std::int64_t>(bvh.nodes.size()) * kRowsPerNode;
-    if (row < static_cast<std::int64_t>(bvh.stats.nodes) * kRowsPerNode || row + kRowsPerBlock > rows)
+    const auto rows = static_cast<std::int64_t>(bvh.nodes.size() * sizeof(FcBvhNode) / 16);
+    if (row < static_cast<std::int64_t>(bvh.stats.nodes) * rows_per_node(bvh.stats.width) || row + kRowsPerBlock > rows)
         throw Error("leaf_block: row " + std::to_string(row) + " is outside the leaf blocks of the node buffer");
     FcTriBlock b;
     std::memcpy(&b, reinterpret_cast<const unsigned char*>(bvh.nodes.data()) + row * 16, sizeof b);
@@ -180,7 +280,19 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
 
         bvh_detail::BuildOutput built = bvh_detail::build_sah(refs, options);
 
-        const int depth = collapse(built.nodes, bvh.nodes);
+        const int width = resolve_width(options.width);
+        CollapseOut wide;
+        std::vector<FcBvhNode> nodes4;
+        std::vector<FcBvhNode8> nodes8;
+        if (width == 8) {
+            wide = collapse(built.nodes, false, nodes8);
+            if (wide.stack_need > FC_BVH8_STACK_SIZE) wide = collapse(built.nodes, true, nodes8);
+            if (wide.stack_need > FC_BVH8_STACK_SIZE)
+                throw Error("build_bvh: the 8-wide tree needs " + std::to_string(wide.stack_need) +
+                            " stack entries, more than FC_BVH8_STACK_SIZE");
+        } else {
+            wide = collapse(built.nodes, false, nodes4);
+        }
         static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "vertices are packed float triples");
         bvh.triangles.reserve(refs.size());  // filled in order, without zeroing first
         for (std::size_t k = 0; k < refs.size(); ++k) {
@@ -193,11 +305,14 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
             t.pad0 = t.pad1 = 0;
         }
 
-        st.nodes = bvh.nodes.size();
-        st.leaf_blocks = pack_leaf_blocks(bvh.nodes, bvh.triangles);
+        st.width = width;
+        st.nodes = width == 8 ? nodes8.size() : nodes4.size();
+        st.leaf_blocks = width == 8 ? pack_node_buffer(nodes8, bvh.triangles, bvh.nodes)
+                                    : pack_node_buffer(nodes4, bvh.triangles, bvh.nodes);
         st.triangles = bvh.triangles.size();
         st.leaves = built.leaves;
-        st.max_depth = depth;
+        st.max_depth = wide.depth;
+        st.stack_need = wide.stack_need;
         st.binary_nodes = built.nodes.size();
         st.max_leaf_size = built.max_leaf_size;
         st.sah_cost = built.sah_cost;

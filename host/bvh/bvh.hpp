@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -19,15 +20,19 @@ struct BvhOptions {
     float intersection_cost = 1.0f;  // ...the cost of one ray/triangle block test
     int block_size = 4;              // triangles tested at once (FcTriBlock lanes): a leaf of n costs
                                      // ceil(n / block_size) tests (Embree's blocked SAH); 1, 2, 4 or 8
+    int width = 0;                   // node width, 4 (FcBvhNode) or 8 (FcBvhNode8); 0: FACET_BVH_WIDTH
+                                     // when set, else 4 (bvh_width_for picks one for a device)
 };
 
 struct BvhStats {
     std::size_t triangles = 0;
-    std::size_t nodes = 0;         // FcBvhNode count (each holds up to four children)
+    int width = 4;                 // node width: 4 (FcBvhNode) or 8 (FcBvhNode8)
+    std::size_t nodes = 0;         // wide node count (FcBvhNode or FcBvhNode8, by width)
     std::size_t leaf_blocks = 0;   // FcTriBlock count (four triangle lanes each)
     std::size_t binary_nodes = 0;  // nodes of the binary SAH tree it was collapsed from
     std::size_t leaves = 0;
-    int max_depth = 0;  // 4-wide nodes on the longest root-to-leaf path
+    int max_depth = 0;   // wide nodes on the longest root-to-leaf path
+    int stack_need = 0;  // most traversal stack entries a root-to-leaf path can push
     int max_leaf_size = 0;
     double sah_cost = 0.0;         // of the binary SAH tree (leaves counted in blocks of
                                    // BvhOptions::block_size), normalised by the root's surface area
@@ -38,13 +43,27 @@ struct BvhStats {
 };
 
 struct Bvh {
-    // The node buffer as uploaded: nodes[0, stats.nodes) are the tree (nodes[0] the root),
-    // the rest holds the leaves' FcTriBlock, addressed in 16-byte rows from the start
-    // (kernels/shared/bvh_layout.h); read them with leaf_block().
+    // The node buffer as uploaded, in 128-byte units: the stats.nodes wide nodes of the
+    // tree first (the root first; an FcBvhNode8 takes two units), then the leaves'
+    // FcTriBlock, addressed in 16-byte rows from the start (kernels/shared/bvh_layout.h);
+    // read them with wide_node() and leaf_block(). Programs that trace it are built with
+    // bvh_prelude(*this).
     std::vector<FcBvhNode> nodes;
     std::vector<FcTriangle> triangles;  // reordered; FcTriangle::prim is the input index
     BvhStats stats;
 };
+
+// The node width that `options.width` asks for (0: FACET_BVH_WIDTH when set, else 4);
+// throws an Error naming the bad value.
+int resolve_width(int width);
+
+// The i-th wide node of an 8-wide (FcBvhNode8) or 4-wide (FcBvhNode) tree.
+FcBvhNode8 wide_node8(const Bvh& bvh, std::size_t i);
+const FcBvhNode& wide_node4(const Bvh& bvh, std::size_t i);
+
+// The line a program that traces `bvh` is assembled after ("#define FC_BVH_WIDTH 8"
+// or 4), so that kernels/trace/bvh_traverse.cl reads its node layout.
+std::string bvh_prelude(const Bvh& bvh);
 
 // The leaf block at 16-byte row `row` of the node buffer (a leaf's FcBvhNode::index,
 // plus 10 rows per further block); throws an Error naming the row when it is outside.

@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include "host/bvh/bvh.hpp"
+#include "host/bvh/bvh_width.hpp"
 #include "host/cli/adaptive_tiles.hpp"
 #include "host/cli/commands.hpp"
 #include "host/cli/console.hpp"
@@ -355,7 +356,10 @@ int run_render(const RenderOptions& opt) {
         if (!rank.empty()) throw Error(fmt::format("{}: {}", rank, e.what()));
         throw;
     }
-    Bvh bvh = build_bvh(scene.vertices);
+    BvhOptions bvh_options;  // the node width of the first device (every program reads the tree's own)
+    bvh_options.width = bvh_width_for(contexts.front().desc().type == CL_DEVICE_TYPE_GPU,
+                                      contexts.front().device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
+    Bvh bvh = build_bvh(scene.vertices, bvh_options);
     // The AOVs first (rank 0's first device), their buffers released before the path
     // tracer uploads the scene.
     std::vector<ImageLayer> layers;

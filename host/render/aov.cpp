@@ -32,7 +32,9 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::u
     const std::uint32_t width = dev.params.width, height = dev.params.height;
     const std::size_t pixels = std::size_t(width) * height;
     std::vector<cl_float4> sums(2 * pixels);
-    const ProgramBuild build = build_program(ctx, "kernels/aov/aov.cl", feature_prelude(scene_features(scene)));
+    std::vector<std::string> prelude = feature_prelude(scene_features(scene));
+    if (bvh.stats.width != 4) prelude.push_back(bvh_prelude(bvh));  // 4-wide: the kernels' default
+    const ProgramBuild build = build_program(ctx, "kernels/aov/aov.cl", prelude);
     cl_call("rendering the AOVs", [&] {
         const cl::Context& c = ctx.context();
         cl::Kernel kernel(build.program, "aov_pass");

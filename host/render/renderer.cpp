@@ -66,6 +66,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
     stats_.features = generic ? all_features() : scene_features(scene);
     std::vector<std::string> prelude = generic ? std::vector<std::string>{} : feature_prelude(stats_.features);
     prelude.insert(prelude.end(), extra_prelude.begin(), extra_prelude.end());
+    if (bvh.stats.width != 4) prelude.push_back(bvh_prelude(bvh));  // 4-wide: the kernels' default, no line
     build_ = build_program(ctx, "kernels/integrator/path.cl", prelude);
     stats_.compile_seconds = build_.seconds;
     program_ = build_.program;

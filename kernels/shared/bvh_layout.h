@@ -31,6 +31,25 @@ typedef struct FcBvhNode {
     fc_int count[4];
 } FcBvhNode;
 
+/* The 8-wide node (Embree's BVH8 idea, for devices with 256-bit vectors: the traversal
+ * tests all eight boxes with float8 arithmetic): the same fields as FcBvhNode, eight
+ * lanes each. The host collapses the binary tree by opening, while a slot is free, the
+ * inner child of largest surface area (host/bvh/bvh.cpp); child references, leaves and
+ * empty slots are as in FcBvhNode. An 8-wide tree's node buffer holds FcBvhNode8, then
+ * the leaf blocks (still FcTriBlock, rows counted from the start of the buffer); node
+ * indices count FcBvhNode8. Which layout a program reads is FC_BVH_WIDTH (4 when not
+ * defined), set by the host from the Bvh it uploads. */
+typedef struct FcBvhNode8 {
+    float lo_x[8];
+    float lo_y[8];
+    float lo_z[8];
+    float hi_x[8];
+    float hi_y[8];
+    float hi_z[8];
+    fc_int index[8];
+    fc_int count[8];
+} FcBvhNode8;
+
 /* Four triangles of a leaf, each coordinate a row of four lanes (one per triangle):
  * vertex 0 in x0 y0 z0, 1 in x1 y1 z1, 2 in x2 y2 z2, and the triangles' indices in
  * the FcTriangle array (BVH order). Unused lanes have all vertices at 0 (they never
@@ -60,12 +79,18 @@ typedef struct FcTriangle {
     fc_int pad1;
 } FcTriangle;
 
-/* Entries of the traversal stack. A node pushes at most three children, and the host
- * keeps the 4-wide tree at most FC_BVH_STACK_SIZE / 3 nodes deep. */
+/* Entries of the traversal stack. A 4-wide node pushes at most three children, and the
+ * host keeps the 4-wide tree at most FC_BVH_STACK_SIZE / 3 nodes deep. An 8-wide node
+ * pushes at most seven; the host checks that no root-to-leaf path of an 8-wide tree
+ * pushes more than FC_BVH8_STACK_SIZE entries (the sum of its nodes' inner children
+ * less one) and collapses level by level (3 binary levels a node) when one would. */
 #define FC_BVH_STACK_SIZE 64
+#define FC_BVH8_STACK_SIZE 100
 
 FC_STATIC_ASSERT(sizeof(FcBvhNode) == 128, "FcBvhNode is 128 bytes");
 FC_STATIC_ASSERT(offsetof(FcBvhNode, hi_x) == 48 && offsetof(FcBvhNode, index) == 96, "FcBvhNode offsets");
+FC_STATIC_ASSERT(sizeof(FcBvhNode8) == 256, "FcBvhNode8 is 256 bytes");
+FC_STATIC_ASSERT(offsetof(FcBvhNode8, hi_x) == 96 && offsetof(FcBvhNode8, index) == 192, "FcBvhNode8 offsets");
 FC_STATIC_ASSERT(sizeof(FcTriBlock) == 160 && offsetof(FcTriBlock, tri) == 144, "FcTriBlock is 10 rows of 16 bytes");
 FC_STATIC_ASSERT(sizeof(FcTriangle) == 48, "FcTriangle is 48 bytes");
 FC_STATIC_ASSERT(offsetof(FcTriangle, v1) == 16 && offsetof(FcTriangle, v2) == 32, "FcTriangle offsets");

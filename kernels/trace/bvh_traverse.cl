@@ -1,11 +1,12 @@
-/* BVH traversal over the 4-wide nodes of shared/bvh_layout.h: one node fetch tests all four
- * child boxes with float4 arithmetic, leaves are intersected at once (four triangles a
- * block, kernels/trace/triangle.cl) and the nearest
- * inner child is visited next, the others pushed farthest first on a small private
- * stack (Aila & Laine 2009, "Understanding the efficiency of ray traversal on GPUs";
- * Wald et al. 2008 for the wide node). The host keeps the tree shallow enough for
- * FC_BVH_STACK_SIZE. An empty slot has an inverted box (min = +inf, max = -inf), which
- * the slab test never reports. */
+/* BVH traversal over the 4- or 8-wide nodes of shared/bvh_layout.h (FC_BVH_WIDTH): one
+ * node fetch tests all its child boxes with float4 or float8 arithmetic, leaves are
+ * intersected four triangles a block (kernels/trace/triangle.cl) and the nearest inner
+ * child is visited next, the others pushed farthest first on a small private stack
+ * (Aila & Laine 2009, "Understanding the efficiency of ray traversal on GPUs"; Wald et
+ * al. 2008 for the wide node; Embree's BVH8 for the 8-wide one). The host keeps every
+ * path's pushes within FC_BVH_STACK_SIZE (4-wide) or FC_BVH8_STACK_SIZE (8-wide). An
+ * empty slot has an inverted box (min = +inf, max = -inf), which the slab test never
+ * reports. */
 #ifndef FACET_TRACE_BVH_CL
 #define FACET_TRACE_BVH_CL
 
@@ -90,28 +91,58 @@ inline bool leaf_hit(__global const float4* rows, int row, int count, const TriR
     return found;
 }
 
-/* The four children of a node at once: the node's boxes are structure-of-arrays, so
- * each slab is one float4 operation over the children. The near and far planes are
+/* The node width the program reads (FcBvhNode or FcBvhNode8), set by the host from the
+ * tree it uploads; the children's masks and distances are FC_W-lane vectors. */
+#ifndef FC_BVH_WIDTH
+#define FC_BVH_WIDTH 4
+#endif
+#if FC_BVH_WIDTH == 8
+#define FC_W 8
+#define FC_STACK FC_BVH8_STACK_SIZE
+typedef FcBvhNode8 FcNode;
+typedef float8 floatW;
+typedef int8 intW;
+#define FC_VLOADW vload8
+#define FC_VSTOREW vstore8
+/* An 8-bit mask from an int8 of 0 / -1 lanes: bit c set where lane c is. */
+inline uint lane_bits_w(int8 m) { return lane_bits(m.lo) | (lane_bits(m.hi) << 4); }
+#elif FC_BVH_WIDTH == 4
+#define FC_W 4
+#define FC_STACK FC_BVH_STACK_SIZE
+typedef FcBvhNode FcNode;
+typedef float4 floatW;
+typedef int4 intW;
+#define FC_VLOADW vload4
+#define FC_VSTOREW vstore4
+inline uint lane_bits_w(int4 m) { return lane_bits(m); }
+#else
+#error "FC_BVH_WIDTH must be 4 or 8"
+#endif
+
+/* All children of a node at once: the node's boxes are structure-of-arrays, so each
+ * slab is one FC_W-lane operation over the children. The near and far planes are
  * picked by the direction's signs through row indices set up once per ray (near[a],
- * far[a]: which float4 of the node holds axis a's entry and exit planes), so the
+ * far[a]: which vector of the node holds axis a's entry and exit planes), so the
  * choice costs no branch per node; the arithmetic is box_hit()'s, operation for
  * operation: (plane - o) * inv_d, the exit scaled by FC_SLAB_SCALE, NaN entries and
  * exits ignored by the comparisons (select keeps the running value where the
  * comparison is false). Returns a mask (-1 where hit) and the entry distances in
  * *tnear. */
-inline int4 children_hit(__global const FcBvhNode* n, float3 o, float3 inv_d, int3 near, int3 far, float tmax,
-                         float4* tnear) {
-    __global const float4* v = (__global const float4*)n;
-    float4 t0x = (v[near.x] - o.x) * inv_d.x;
-    float4 t1x = (v[far.x] - o.x) * inv_d.x;
-    float4 t0y = (v[near.y] - o.y) * inv_d.y;
-    float4 t1y = (v[far.y] - o.y) * inv_d.y;
-    float4 t0z = (v[near.z] - o.z) * inv_d.z;
-    float4 t1z = (v[far.z] - o.z) * inv_d.z;
+inline intW children_hit(__global const FcNode* n, float3 o, float3 inv_d, int3 near, int3 far, float tmax,
+                         floatW* tnear) {
+    /* Whole-vector loads (nodes are aligned to their size): vload8 became two 16-byte
+     * loads and an insert in PoCL's code. */
+    __global const floatW* v = (__global const floatW*)n;
+    floatW t0x = (v[near.x] - o.x) * inv_d.x;
+    floatW t1x = (v[far.x] - o.x) * inv_d.x;
+    floatW t0y = (v[near.y] - o.y) * inv_d.y;
+    floatW t1y = (v[far.y] - o.y) * inv_d.y;
+    floatW t0z = (v[near.z] - o.z) * inv_d.z;
+    floatW t1z = (v[far.z] - o.z) * inv_d.z;
     t1x *= FC_SLAB_SCALE;
     t1y *= FC_SLAB_SCALE;
     t1z *= FC_SLAB_SCALE;
-    float4 tn = (float4)(0.0f), tf = (float4)(tmax);
+    floatW tn = (floatW)(0.0f), tf = (floatW)(tmax);
     tn = select(tn, t0x, t0x > tn);
     tf = select(tf, t1x, t1x < tf);
     tn = select(tn, t0y, t0y > tn);
@@ -122,35 +153,38 @@ inline int4 children_hit(__global const FcBvhNode* n, float3 o, float3 inv_d, in
     return tn <= tf;
 }
 
-/* The traversal shared by trace_closest and trace_any. Per node: the four boxes in one
- * go, then the hit leaves (their hits shorten the ray before any inner child is
- * entered), then the hit inner children, nearest first: with one there is nothing to
- * sort, with two one comparison, with three or four an insertion sort. The others go on
- * the stack with their entry distance, and an entry farther than the nearest hit found
- * since is dropped when popped, without fetching its node. */
-inline bool trace_bvh(__global const FcBvhNode* nodes, float3 o, float3 d, Hit* hit, bool any) {
+/* The traversal shared by trace_closest and trace_any. Per node: all boxes in one go,
+ * then the hit leaves (their hits shorten the ray before any inner child is entered),
+ * then the hit inner children, nearest first: with one there is nothing to sort, with
+ * two one comparison, with more an insertion sort. The others go on the stack with
+ * their entry distance, and an entry farther than the nearest hit found since is
+ * dropped when popped, without fetching its node. */
+inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit* hit, bool any) {
     const BoxRay br = box_ray_setup(o, d);
     const TriRay tr = tri_ray_setup(o, d);
-    __global const float4* rows = (__global const float4*)nodes;
-    /* Rows of FcBvhNode: lo_x lo_y lo_z hi_x hi_y hi_z. */
+    __global const FcNode* nodes = (__global const FcNode*)buffer;
+    __global const float4* rows = (__global const float4*)buffer;
+    /* Vectors of the node: lo_x lo_y lo_z hi_x hi_y hi_z. */
     const int3 near_row = (int3)(0, 1, 2) + 3 * br.neg;
     const int3 far_row = (int3)(3, 4, 5) - 3 * br.neg;
-    int stack_node[FC_BVH_STACK_SIZE];
-    float stack_t[FC_BVH_STACK_SIZE];
+    int stack_node[FC_STACK];
+    float stack_t[FC_STACK];
     int sp = 0;
     int node = 0;
     bool found = false;
     for (;;) {
-        __global const FcBvhNode* n = &nodes[node];
-        float4 tn4;
-        const int4 mask = children_hit(n, o, br.inv_d, near_row, far_row, hit->t, &tn4);
-        const int4 count = vload4(0, n->count);
-        const int4 index = vload4(0, n->index);
-        uint leaves = lane_bits(mask & (count > 0));
-        uint inner = lane_bits(mask & (count <= 0)); /* empty slots are never hit */
+        __global const FcNode* n = &nodes[node];
+        floatW tnw;
+        const intW mask = children_hit(n, o, br.inv_d, near_row, far_row, hit->t, &tnw);
+        const intW count = FC_VLOADW(0, n->count);
+        const intW index = FC_VLOADW(0, n->index);
+        uint leaves = lane_bits_w(mask & (count > 0));
+        uint inner = lane_bits_w(mask & (count <= 0)); /* empty slots are never hit */
+        int idx[FC_W];
+        FC_VSTOREW(index, 0, idx);
         if (leaves) {
-            const int idx[4] = {index.x, index.y, index.z, index.w};
-            const int cnt[4] = {count.x, count.y, count.z, count.w};
+            int cnt[FC_W];
+            FC_VSTOREW(count, 0, cnt);
             do {
                 const uint c = lowest_bit(leaves);
                 leaves &= leaves - 1u;
@@ -170,20 +204,20 @@ inline bool trace_bvh(__global const FcBvhNode* nodes, float3 o, float3 d, Hit* 
             node = stack_node[sp];
             continue;
         }
-        const float tn[4] = {tn4.x, tn4.y, tn4.z, tn4.w};
-        const int idx[4] = {index.x, index.y, index.z, index.w};
         const uint c0 = lowest_bit(inner);
         inner &= inner - 1u;
         if (!inner) {
             node = idx[c0];
             continue;
         }
+        float tn[FC_W];
+        FC_VSTOREW(tnw, 0, tn);
         const uint c1 = lowest_bit(inner);
         inner &= inner - 1u;
         if (!inner) {
             const bool swap = tn[c1] < tn[c0];
             const uint nearer = swap ? c1 : c0, farther = swap ? c0 : c1;
-            if (sp < FC_BVH_STACK_SIZE) { /* always, by the builder */
+            if (sp < FC_STACK) { /* always, by the builder */
                 stack_node[sp] = idx[farther];
                 stack_t[sp] = tn[farther];
                 ++sp;
@@ -191,9 +225,9 @@ inline bool trace_bvh(__global const FcBvhNode* nodes, float3 o, float3 d, Hit* 
             node = idx[nearer];
             continue;
         }
-        /* Three or four: insertion by entry distance, farthest at 0. */
-        int order[4];
-        float dist[4];
+        /* Three or more: insertion by entry distance, farthest at 0. */
+        int order[FC_W];
+        float dist[FC_W];
         order[0] = (int)c0;
         dist[0] = tn[c0];
         int k = 1;
@@ -210,7 +244,7 @@ inline bool trace_bvh(__global const FcBvhNode* nodes, float3 o, float3 d, Hit* 
             order[j] = (int)c;
         } while (inner);
         for (int j = 0; j + 1 < k; ++j)
-            if (sp < FC_BVH_STACK_SIZE) { /* always, by the builder */
+            if (sp < FC_STACK) { /* always, by the builder */
                 stack_node[sp] = idx[order[j]];
                 stack_t[sp] = dist[j];
                 ++sp;
