@@ -6,6 +6,7 @@
 
 #define FC_LAYOUT_STRUCTS(S) \
     S(FcBvhNode)             \
+    S(FcBvhNode8)            \
     S(FcTriBlock)            \
     S(FcTriangle)            \
     S(FcTriShading)          \
@@ -19,6 +20,8 @@
 #define FC_LAYOUT_FIELDS(F)                                                                                                 \
     F(FcBvhNode, lo_x) F(FcBvhNode, lo_y) F(FcBvhNode, lo_z) F(FcBvhNode, hi_x)                                             \
     F(FcBvhNode, hi_y) F(FcBvhNode, hi_z) F(FcBvhNode, index) F(FcBvhNode, count)                                           \
+    F(FcBvhNode8, lo_x) F(FcBvhNode8, lo_y) F(FcBvhNode8, lo_z) F(FcBvhNode8, hi_x) F(FcBvhNode8, hi_y)                     \
+    F(FcBvhNode8, hi_z) F(FcBvhNode8, index) F(FcBvhNode8, count)                                                           \
     F(FcTriBlock, x0) F(FcTriBlock, y0) F(FcTriBlock, z0) F(FcTriBlock, x1) F(FcTriBlock, y1)                              \
     F(FcTriBlock, z1) F(FcTriBlock, x2) F(FcTriBlock, y2) F(FcTriBlock, z2) F(FcTriBlock, tri)                              \
     F(FcTriangle, v0) F(FcTriangle, prim) F(FcTriangle, v1) F(FcTriangle, v2)                                               \
