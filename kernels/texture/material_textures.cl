@@ -57,6 +57,9 @@ inline float2 tex_transform(__global const FcMaterialTextures* mt, float2 uv) {
                     mt->uv_transform[1][0] * uv.x + mt->uv_transform[1][1] * uv.y + mt->uv_transform[1][2]);
 }
 
+/* Channel i (0: R ... 3: A) of a texel; OpenCL C has no run-time subscript of vectors. */
+inline float tex_channel(float4 v, int i) { return i == 0 ? v.x : i == 1 ? v.y : i == 2 ? v.z : v.w; }
+
 /* Texture `index` at the point, filtered for a cone of width `cone` meeting the surface
  * at cosine `cos_hit`. */
 inline float4 tex_lookup(const SceneView* sc, int index, float2 uv, const TexPoint* p, float cone, float cos_hit) {
@@ -103,7 +106,8 @@ inline void apply_textures(const SceneView* sc, const Hit* hit, int material, fl
     }
     if (mt->flags & FC_TEX_METALLIC_WORKFLOW) {
         float metal = mt->metallic_factor;
-        if (mt->metalness >= 0) metal *= tex_lookup(sc, mt->metalness, uv, &p, cone, cos_hit)[mt->metal_channel & 3];
+        if (mt->metalness >= 0)
+            metal *= tex_channel(tex_lookup(sc, mt->metalness, uv, &p, cone, cos_hit), mt->metal_channel);
         tex_store3(mat->diffuse, base * (1.0f - metal));
         tex_store3(mat->specular, mix((float3)(mt->dielectric_f0), base, metal));
     }
@@ -112,7 +116,7 @@ inline void apply_textures(const SceneView* sc, const Hit* hit, int material, fl
 
     /* Roughness: perceptual (alpha scaled by r^2) or a Phong exponent map. */
     if (mt->roughness >= 0) {
-        float r = tex_lookup(sc, mt->roughness, uv, &p, cone, cos_hit)[mt->roughness_channel & 3];
+        float r = tex_channel(tex_lookup(sc, mt->roughness, uv, &p, cone, cos_hit), mt->roughness_channel);
         if (mt->roughness_mode == FC_ROUGHNESS_SHININESS) {
             float e = clamp(mat->exponent_x * r, 0.0f, FC_PHONG_EXPONENT_MAX);
             mat->exponent_x = mat->exponent_y = e;
