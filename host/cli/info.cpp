@@ -51,8 +51,8 @@ int run_info(const InfoOptions& opt) {
                scene.settings.spp, scene.settings.max_depth);
     fmt::print("device mem  {:.2f} MiB (bvh {:.2f}, shading {:.2f}, textures {:.2f}, film {:.2f})\n",
                double(b.device_bytes + shading_bytes + texture_bytes + film_bytes) / (1 << 20),
-               double(b.device_bytes) / (1 << 20), double(shading_bytes) / (1 << 20),
-               double(texture_bytes) / (1 << 20), double(film_bytes) / (1 << 20));
+               double(b.device_bytes) / (1 << 20), double(shading_bytes) / (1 << 20), double(texture_bytes) / (1 << 20),
+               double(film_bytes) / (1 << 20));
     return kExitOk;
 }
 
