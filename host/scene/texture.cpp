@@ -139,10 +139,13 @@ FcMaterialTextures device_material_textures(const MaterialTextures& t) {
 
 DeviceTextures compile_textures(const Scene& scene) {
     DeviceTextures d;
+    // One binding a material even without textures: the generic program reads them.
+    for (const Material& m : scene.materials) d.materials.push_back(device_material_textures(m.textures));
+    if (d.materials.empty()) d.materials.push_back(device_material_textures(MaterialTextures{}));
     if (!scene_uses_textures(scene)) {
+        for (FcMaterialTextures& m : d.materials) m = device_material_textures(MaterialTextures{});
         d.table.push_back(FcTexture{});
         d.texels.assign(4, 0.0f);
-        d.materials.push_back(device_material_textures(MaterialTextures{}));
         d.texcoords.push_back(FcTriTexcoords{});
         return d;
     }
@@ -159,7 +162,6 @@ DeviceTextures compile_textures(const Scene& scene) {
         d.table.push_back(e);
         d.texels.insert(d.texels.end(), t.texels.begin(), t.texels.end());
     }
-    for (const Material& m : scene.materials) d.materials.push_back(device_material_textures(m.textures));
     d.texcoords = scene.texcoords;
     d.texcoords.resize(scene.shading.size(), FcTriTexcoords{});
     for (const FcLight& l : scene.lights) {

@@ -59,7 +59,8 @@ void set_triangle_texcoords(Scene& scene, std::size_t tri, glm::vec2 uv0, glm::v
 bool scene_uses_textures(const Scene& scene);
 
 // The device's texture arrays: one-element placeholders when the scene has no
-// textures, so the kernels' arguments are always bound.
+// textures, so the kernels' arguments are always bound; one (empty) binding per
+// material always, since the generic program reads them.
 struct DeviceTextures {
     std::vector<FcTexture> table;
     std::vector<float> texels;  // 4 floats a texel (the kernels read float4)
