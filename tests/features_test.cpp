@@ -152,6 +152,10 @@ TEST(Features, EveryFlagIsExercised) {
     rough_glass.alpha_x = rough_glass.alpha_y = 0.2f;
     with_material("rough dielectric (beckmann)", rough_glass);
     with_material("conductor", make_material("conductor"));
+    Material textured = make_material("ggx");
+    textured.textures.base_color = textured.textures.roughness = textured.textures.normal = 0;
+    with_material("textured", textured);
+    cases.back().second.textures.push_back(make_texture(2, 1, {0.2f, 0.4f, 0.6f, 1.0f, 0.9f, 0.5f, 0.7f, 1.0f}));
     FeatureMask seen_on = 0, seen_off = 0;
     for (auto& [label, scene] : cases) {
         FeatureMask mask = scene_features(scene);

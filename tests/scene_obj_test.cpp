@@ -211,10 +211,13 @@ TEST(SceneObj, MissingMtlIsWarning) {
     EXPECT_FLOAT_EQ(s.materials[static_cast<std::size_t>(s.shading[0].material)].diffuse[0], 0.8f);
 }
 
-TEST(SceneObj, MissingTextureIsWarning) {
+// A texture facet reads must exist (docs/textures.md); one it does not read is a warning.
+TEST(SceneObj, MissingTextureIsError) {
     TempDir d;
     d.write("t.mtl", "newmtl a\nKd 1 1 1\nmap_Kd -bm 1 textures/wood.png\n");
     const auto p = d.write("t.obj", "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
+    expect_error([&] { load(p); }, {"t.mtl:3", "wood.png", "material 'a'"});
+    d.write("t.mtl", "newmtl a\nKd 1 1 1\ndecal textures/wood.png\n");
     const Scene s = load(p);
     ASSERT_EQ(s.triangle_count(), 1u);
     EXPECT_TRUE(test::contains(s.warnings, "t.mtl:3:"));

@@ -40,14 +40,19 @@ int run_info(const InfoOptions& opt) {
                : scene.environment.params.width == 0
                    ? "constant"
                    : fmt::format("{}x{} map", scene.environment.params.width, scene.environment.params.height));
+    const std::size_t texture_bytes = compile_textures(scene).bytes();
+    if (scene_uses_textures(scene))
+        fmt::print("textures    {} images, {:.2f} MiB with mip-maps and uvs\n", scene.textures.size(),
+                   double(texture_bytes) / (1 << 20));
     fmt::print("features    {}\n", describe_features(scene_features(scene)));
     fmt::print("bvh         {} nodes, {} leaves, depth {}, max leaf {}, SAH cost {:.2f}, built in {:.3f} s\n", b.nodes,
                b.leaves, b.max_depth, b.max_leaf_size, b.sah_cost, b.build_seconds);
     fmt::print("image       {}x{}, {} spp, max depth {}\n", scene.settings.width, scene.settings.height,
                scene.settings.spp, scene.settings.max_depth);
-    fmt::print("device mem  {:.2f} MiB (bvh {:.2f}, shading {:.2f}, film {:.2f})\n",
-               double(b.device_bytes + shading_bytes + film_bytes) / (1 << 20), double(b.device_bytes) / (1 << 20),
-               double(shading_bytes) / (1 << 20), double(film_bytes) / (1 << 20));
+    fmt::print("device mem  {:.2f} MiB (bvh {:.2f}, shading {:.2f}, textures {:.2f}, film {:.2f})\n",
+               double(b.device_bytes + shading_bytes + texture_bytes + film_bytes) / (1 << 20),
+               double(b.device_bytes) / (1 << 20), double(shading_bytes) / (1 << 20), double(texture_bytes) / (1 << 20),
+               double(film_bytes) / (1 << 20));
     return kExitOk;
 }
 

@@ -4,11 +4,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
 #include <glm/common.hpp>
 
 #include "host/error.hpp"
+#include "host/readers/text_parse.hpp"
 #include "kernels/shared/render_layout.h"
 
 namespace facet::gltf {
@@ -28,8 +34,163 @@ float in_range(double v, double lo, double hi, const std::string& file, const st
     return static_cast<float>(v);
 }
 
-void note_texture(const tinygltf::TextureInfo& t, const char* name, const std::string& where, Ignored& ignored) {
-    if (t.index >= 0) ignored.add(fmt::format("{} (textures are not read yet; the factor alone is used)", name), where);
+// --- textures ----------------------------------------------------------------------------
+
+int wrap_mode(int gl) {
+    if (gl == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return FC_WRAP_CLAMP;
+    if (gl == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return FC_WRAP_MIRROR;
+    return FC_WRAP_REPEAT;
+}
+
+// "%20" and friends of a relative URI decoded.
+std::string uri_decode(const std::string& uri) {
+    std::string out;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(uri[i + 1]) && std::isxdigit(uri[i + 2])) {
+            out += char(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else out += uri[i];
+    }
+    return out;
+}
+
+// An image held in the file (a data URI or a buffer view), decoded through a temporary
+// file: host/film's reader reads files.
+TextureImage embedded_texture(const tinygltf::Image& image, TextureSpace space, const std::string& owner) {
+    if (image.image.empty()) throw Error(fmt::format("texture of {}: the image has no data", owner));
+    const std::string ext = image.mimeType == "image/jpeg" ? ".jpg" : ".png";
+    std::string name = (std::filesystem::temp_directory_path() / ("facet-gltf-XXXXXX" + ext)).string();
+    const int fd = mkstemps(name.data(), int(ext.size()));
+    if (fd < 0) throw Error(fmt::format("texture of {}: cannot create a temporary file for the image", owner));
+    close(fd);
+    {
+        std::ofstream out(name, std::ios::binary);
+        out.write(reinterpret_cast<const char*>(image.image.data()), std::streamsize(image.image.size()));
+    }
+    try {
+        TextureImage t = load_texture(name, space, owner);
+        std::remove(name.c_str());
+        return t;
+    } catch (...) {
+        std::remove(name.c_str());
+        throw;
+    }
+}
+
+// What the glTF texture `index` of a material slot is bound from.
+struct TextureSlot {
+    int index;
+    int tex_coord;
+    const tinygltf::ExtensionMap* extensions;
+    const char* name;
+    TextureSpace space;
+};
+
+// Loads the slot's texture into scene.textures (once per image, space and wrap modes)
+// and returns its index, or -1 without one.
+int bind_texture(const TextureSlot& slot, const tinygltf::Model& model, const std::string& file,
+                 const std::string& where, Ignored& ignored, Scene& scene) {
+    if (slot.index < 0) return -1;
+    if (std::size_t(slot.index) >= model.textures.size())
+        throw Error(fmt::format("{}: {}: {} names texture {}, which does not exist ({} textures)", file, where,
+                                slot.name, slot.index, model.textures.size()));
+    if (slot.tex_coord != 0)
+        ignored.add(fmt::format("{} on TEXCOORD_{} (TEXCOORD_0 is used)", slot.name, slot.tex_coord), where);
+    const tinygltf::Texture& tex = model.textures[std::size_t(slot.index)];
+    if (tex.source < 0 || std::size_t(tex.source) >= model.images.size())
+        throw Error(fmt::format("{}: textures[{}]: no image (source {}; {} images)", file, slot.index, tex.source,
+                                model.images.size()));
+    int wrap_u = FC_WRAP_REPEAT, wrap_v = FC_WRAP_REPEAT;
+    if (tex.sampler >= 0 && std::size_t(tex.sampler) < model.samplers.size()) {
+        wrap_u = wrap_mode(model.samplers[std::size_t(tex.sampler)].wrapS);
+        wrap_v = wrap_mode(model.samplers[std::size_t(tex.sampler)].wrapT);
+    }
+    const tinygltf::Image& image = model.images[std::size_t(tex.source)];
+    const std::string owner = fmt::format("{} of {} in {} (images[{}])", slot.name, where, file, tex.source);
+    if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0)
+        return add_texture(scene, text::join_path(text::directory_of(file), uri_decode(image.uri)), slot.space, owner,
+                           wrap_u, wrap_v);
+    // Embedded images: one key per image of this file.
+    const std::string key = fmt::format("{}#images[{}]", file, tex.source);
+    for (std::size_t i = 0; i < scene.textures.size(); ++i) {
+        const TextureImage& t = scene.textures[i];
+        if (t.path == key && t.space == slot.space && t.wrap_u == wrap_u && t.wrap_v == wrap_v) return int(i);
+    }
+    TextureImage t = embedded_texture(image, slot.space, owner);
+    t.path = key;
+    t.wrap_u = wrap_u;
+    t.wrap_v = wrap_v;
+    scene.textures.push_back(std::move(t));
+    return int(scene.textures.size() - 1);
+}
+
+// KHR_texture_transform of a texture slot as two rows of an affine map (identity without it).
+std::array<float, 6> texture_transform(const tinygltf::ExtensionMap& ext, Ignored& ignored, const std::string& where) {
+    std::array<float, 6> m{1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f};
+    const auto it = ext.find("KHR_texture_transform");
+    if (it == ext.end() || !it->second.IsObject()) return m;
+    const tinygltf::Value& v = it->second;
+    auto number = [&](const char* key, int i, double fallback) {
+        if (!v.Has(key)) return fallback;
+        const tinygltf::Value& x = v.Get(key);
+        if (i >= 0) {
+            if (!x.IsArray() || x.ArrayLen() <= std::size_t(i) || !x.Get(i).IsNumber()) return fallback;
+            return x.Get(i).GetNumberAsDouble();
+        }
+        return x.IsNumber() ? x.GetNumberAsDouble() : fallback;
+    };
+    const double ox = number("offset", 0, 0), oy = number("offset", 1, 0), r = number("rotation", -1, 0);
+    const double sx = number("scale", 0, 1), sy = number("scale", 1, 1);
+    if (v.Has("texCoord")) ignored.add("KHR_texture_transform.texCoord (TEXCOORD_0 is used)", where);
+    // translation x rotation x scale (the extension's own definition)
+    m = {float(std::cos(r) * sx),  float(std::sin(r) * sy), float(ox),
+         float(-std::sin(r) * sx), float(std::cos(r) * sy), float(oy)};
+    return m;
+}
+
+// Binds the material's textures (base colour, metallic-roughness, normal, emission).
+void bind_textures(const tinygltf::Material& g, Material& m, glm::vec3 base, float metallic, float f0,
+                   const std::string& file, const std::string& where, Ignored& ignored, const tinygltf::Model& model,
+                   Scene& scene) {
+    const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+    const TextureSlot slots[] = {
+        {pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, &pbr.baseColorTexture.extensions,
+         "baseColorTexture", TextureSpace::Color},
+        {pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+         &pbr.metallicRoughnessTexture.extensions, "metallicRoughnessTexture", TextureSpace::Data},
+        {g.normalTexture.index, g.normalTexture.texCoord, &g.normalTexture.extensions, "normalTexture",
+         TextureSpace::Data},
+        {g.emissiveTexture.index, g.emissiveTexture.texCoord, &g.emissiveTexture.extensions, "emissiveTexture",
+         TextureSpace::Color}};
+    int bound[4];
+    bool have_transform = false;
+    for (int i = 0; i < 4; ++i) {
+        bound[i] = bind_texture(slots[i], model, file, where, ignored, scene);
+        if (bound[i] < 0) continue;
+        const std::array<float, 6> t = texture_transform(*slots[i].extensions, ignored, where);
+        if (!have_transform) m.textures.uv_transform = t;
+        else if (t != m.textures.uv_transform)
+            ignored.add("different KHR_texture_transforms in one material (the first is used)", where);
+        have_transform = true;
+    }
+    MaterialTextures& t = m.textures;
+    if (m.specular_model == FC_SPECULAR_DIELECTRIC) {
+        t.specular = bound[0];  // the base colour tints the glass
+    } else if (bound[0] >= 0 || bound[1] >= 0) {
+        t.metallic_workflow = true;
+        t.base_color = bound[0];
+        t.base_factor = base;
+        t.metallic_factor = metallic;
+        t.dielectric_f0 = f0;
+        t.metalness = bound[1];
+        t.metal_channel = 2;
+        if (bound[1] >= 0 && m.diffuse_model == FC_DIFFUSE_NONE) m.diffuse_model = FC_DIFFUSE_LAMBERT_1MF0;
+    }
+    t.roughness = bound[1];
+    t.roughness_channel = 1;
+    t.normal = bound[2];
+    t.normal_scale = float(g.normalTexture.scale);
+    t.emission = bound[3];
 }
 
 }  // namespace
@@ -45,7 +206,7 @@ void Ignored::warn(const std::string& file, std::vector<std::string>& warnings) 
 
 bool supported_extension(const std::string& name) {
     return name == "KHR_lights_punctual" || name == "KHR_materials_ior" || name == "KHR_materials_transmission" ||
-           name == "KHR_materials_emissive_strength";
+           name == "KHR_materials_emissive_strength" || name == "KHR_texture_transform";
 }
 
 Material default_gltf_material() {
@@ -58,7 +219,7 @@ Material default_gltf_material() {
 }
 
 Material convert_material(const tinygltf::Material& g, const std::string& file, const std::string& place,
-                          Ignored& ignored) {
+                          Ignored& ignored, const tinygltf::Model& model, Scene& scene) {
     const std::string where = g.name.empty() ? place : fmt::format("{} '{}'", place, g.name);
     const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
     if (pbr.baseColorFactor.size() != 4)
@@ -107,10 +268,8 @@ Material convert_material(const tinygltf::Material& g, const std::string& file, 
     if (transmission > 0.0f && transmission < 1.0f)
         ignored.add(fmt::format("a partial transmissionFactor (rounded to {})", transmission >= 0.5f ? 1 : 0), where);
 
-    note_texture(pbr.baseColorTexture, "baseColorTexture", where, ignored);
-    note_texture(pbr.metallicRoughnessTexture, "metallicRoughnessTexture", where, ignored);
-    note_texture(g.emissiveTexture, "emissiveTexture", where, ignored);
-    if (g.normalTexture.index >= 0) ignored.add("normalTexture (no normal maps yet)", where);
+    bind_textures(g, m, base, metallic, ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f)), file, where,
+                  ignored, model, scene);
     if (g.occlusionTexture.index >= 0) ignored.add("occlusionTexture (a path tracer computes occlusion itself)", where);
     if (g.alphaMode != "OPAQUE") ignored.add(fmt::format("alphaMode {} (rendered opaque)", g.alphaMode), where);
     for (const auto& [name, value] : g.extensions) {

@@ -9,6 +9,7 @@
 #include <tiny_gltf.h>
 
 #include "host/scene/material.hpp"
+#include "host/scene/scene.hpp"
 
 namespace facet::gltf {
 
@@ -33,11 +34,14 @@ bool supported_extension(const std::string& name);
 // base x (1 - metallic), F0 = mix(((ior - 1)/(ior + 1))^2, base, metallic), so metallic 1
 // is a conductor with the base colour as F0 and metallic 0 a dielectric coating on a
 // diffuse base; transmission >= 0.5 (non-metal) is rough glass of the IOR tinted by the
-// base colour; emission = emissiveFactor x emissiveStrength. Textures, alphaMode
-// MASK/BLEND and other extensions go to `ignored`. Throws facet::Error naming `place`
-// for values outside the specification's ranges.
+// base colour; emission = emissiveFactor x emissiveStrength. baseColorTexture,
+// metallicRoughnessTexture, normalTexture and emissiveTexture (with
+// KHR_texture_transform, texCoord 0) are loaded into scene.textures and bound
+// (docs/textures.md). alphaMode MASK/BLEND and other extensions go to `ignored`.
+// Throws facet::Error naming `place` for values outside the specification's ranges
+// and for images that cannot be read.
 Material convert_material(const tinygltf::Material& g, const std::string& file, const std::string& place,
-                          Ignored& ignored);
+                          Ignored& ignored, const tinygltf::Model& model, Scene& scene);
 
 // glTF's default material (a white rough metal: metallic 1, roughness 1).
 Material default_gltf_material();

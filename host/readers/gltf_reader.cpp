@@ -29,9 +29,12 @@ namespace {
 
 using gltf::Ignored;
 
-// Images are left undecoded (their bytes are not needed until facet has textures).
-bool keep_image_undecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-                          void*) {
+// Images are kept undecoded, their bytes in Image::image: gltf_material.cpp decodes
+// those a material uses (gltf::texture_index).
+bool keep_image_undecoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                          const unsigned char* bytes, int size, void*) {
+    if (bytes && size > 0) image->image.assign(bytes, bytes + size);
+    image->width = image->height = -1;
     return true;
 }
 
@@ -192,7 +195,7 @@ private:
         if (slot < 0) {
             const tinygltf::Material& g = model_.materials[std::size_t(index)];
             const std::string mplace = fmt::format("materials[{}]", index);
-            slot = add_material(scene_, gltf::convert_material(g, path_, mplace, ignored_),
+            slot = add_material(scene_, gltf::convert_material(g, path_, mplace, ignored_, model_, scene_),
                                 g.name.empty() ? mplace : g.name);
         }
         return slot;
@@ -229,10 +232,11 @@ private:
                                             m.normals.size(), m.positions.size()));
             }
             if (auto uv = prim.attributes.find("TEXCOORD_0"); uv != prim.attributes.end()) {
-                // Checked now; kept for textures, which facet does not have yet.
-                if (gltf::read_vec2(model_, uv->second, path_, place + ".attributes.TEXCOORD_0").size() !=
-                    m.positions.size())
+                const std::vector<glm::vec2> uvs =
+                    gltf::read_vec2(model_, uv->second, path_, place + ".attributes.TEXCOORD_0");
+                if (uvs.size() != m.positions.size())
                     throw Error(fmt::format("{}: {}: TEXCOORD_0 and POSITION have different counts", path_, place));
+                m.texcoords = uvs;
             }
             std::vector<std::uint32_t> order;
             if (prim.indices >= 0) {

@@ -7,7 +7,9 @@
 
 #include <fmt/format.h>
 
+#include "host/error.hpp"
 #include "host/readers/json_loader.hpp"
+#include "host/readers/text_parse.hpp"
 #include "host/scene/material.hpp"
 #include "host/util/strings.hpp"
 
@@ -126,6 +128,92 @@ void lobe_choices(const MaterialKeys& k, Material& m) {
     choice("sampling", MaterialEnum::Sampling, m.sampling);
 }
 
+// One entry of "textures": a file name, or {"file", "wrap", "channel"}; paths are
+// relative to the scene file. Returns the index in scene.textures.
+int texture_entry(const MaterialKeys& k, const Json& e, const std::string& path, TextureSpace space,
+                  const std::string& owner, Scene& scene, int* channel) {
+    const JsonReader& r = k.r;
+    std::string file;
+    int wrap = FC_WRAP_REPEAT;
+    if (e.is_string()) {
+        file = r.string(e, path);
+    } else {
+        r.object(e, path, {"file", "wrap", "channel"});
+        if (!e.contains("file")) r.fail(path, "a texture needs \"file\"");
+        file = r.string(e["file"], JsonReader::key(path, "file"));
+        if (e.contains("wrap")) {
+            const std::string w = r.string(e["wrap"], JsonReader::key(path, "wrap"));
+            if (w == "repeat") wrap = FC_WRAP_REPEAT;
+            else if (w == "clamp") wrap = FC_WRAP_CLAMP;
+            else if (w == "mirror") wrap = FC_WRAP_MIRROR;
+            else r.fail(JsonReader::key(path, "wrap"), unknown_name("wrap mode", w, "repeat, clamp or mirror"));
+        }
+        if (e.contains("channel")) {
+            const std::string c = r.string(e["channel"], JsonReader::key(path, "channel"));
+            const std::string_view names = "rgba";
+            if (c.size() != 1 || names.find(c[0]) == std::string_view::npos || !channel)
+                r.fail(JsonReader::key(path, "channel"),
+                       fmt::format("'{}' is not a channel of this texture (r, g, b or a)", c));
+            *channel = int(names.find(c[0]));
+        }
+    }
+    const std::string resolved = text::join_path(text::directory_of(r.file()), file);
+    try {
+        return add_texture(scene, resolved, space, owner, wrap, wrap);
+    } catch (const Error& err) {
+        r.fail(path, err.what());
+    }
+}
+
+// "textures": {"diffuse", "specular", "roughness", "shininess", "metalness", "emission",
+// "normal", "normal_scale", "metallic", "uv_scale", "uv_offset"} (docs/textures.md).
+void textures(const MaterialKeys& k, Material& m, const std::string& name, Scene& scene) {
+    const std::string path = k.key("textures");
+    const Json& t = k.v["textures"];
+    const JsonReader& r = k.r;
+    r.object(t, path,
+             {"diffuse", "specular", "roughness", "shininess", "metalness", "emission", "normal", "normal_scale",
+              "metallic", "uv_scale", "uv_offset"});
+    MaterialTextures& b = m.textures;
+    auto slot = [&](const char* key, TextureSpace space, int* channel = nullptr) {
+        if (!t.contains(key)) return -1;
+        return texture_entry(k, t[key], JsonReader::key(path, key), space, fmt::format("material '{}' ({})", name, key),
+                             scene, channel);
+    };
+    b.base_color = slot("diffuse", TextureSpace::Color);
+    b.specular = slot("specular", TextureSpace::Color);
+    b.roughness = slot("roughness", TextureSpace::Data, &b.roughness_channel);
+    if (t.contains("shininess")) {
+        if (b.roughness >= 0) r.fail(path, "give \"roughness\" or \"shininess\", not both");
+        b.roughness = slot("shininess", TextureSpace::Data, &b.roughness_channel);
+        b.roughness_mode = FC_ROUGHNESS_SHININESS;
+    }
+    b.metalness = slot("metalness", TextureSpace::Data, &b.metal_channel);
+    b.emission = slot("emission", TextureSpace::Color);
+    b.normal = slot("normal", TextureSpace::Data);
+    if (t.contains("normal_scale"))
+        b.normal_scale = r.number_in(t["normal_scale"], JsonReader::key(path, "normal_scale"), 0, 100);
+    if (b.metalness >= 0 || t.contains("metallic")) {
+        // The metallic workflow: "diffuse" is the base colour, F0 of the non-metal from the ior.
+        b.metallic_workflow = true;
+        b.base_factor = m.diffuse;
+        b.metallic_factor =
+            t.contains("metallic") ? r.number_in(t["metallic"], JsonReader::key(path, "metallic"), 0, 1) : 1.0f;
+        b.dielectric_f0 = ((m.ior - 1.0f) / (m.ior + 1.0f)) * ((m.ior - 1.0f) / (m.ior + 1.0f));
+    }
+    auto pair = [&](const char* key, float lo, float hi, float fallback) {
+        glm::vec2 v(fallback);
+        if (!t.contains(key)) return v;
+        const Json& a = t[key];
+        if (!a.is_array() || a.size() != 2) r.fail(JsonReader::key(path, key), "expected two numbers [u, v]");
+        for (std::size_t i = 0; i < 2; ++i)
+            v[int(i)] = r.number_in(a[i], fmt::format("{}[{}]", JsonReader::key(path, key), i), lo, hi);
+        return v;
+    };
+    const glm::vec2 scale = pair("uv_scale", -1e6f, 1e6f, 1.0f), offset = pair("uv_offset", -1e6f, 1e6f, 0.0f);
+    b.uv_transform = {scale.x, 0.0f, offset.x, 0.0f, scale.y, offset.y};
+}
+
 }  // namespace
 
 void JsonLoader::material(const std::string& name, const Json& v, const std::string& path) {
@@ -154,7 +242,8 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
               "sampling",
               "conductor",
               "transmittance",
-              "energy_compensation"});
+              "energy_compensation",
+              "textures"});
     const MaterialKeys k{r, v, path};
     Material m = preset(k);
     SpecularColour specular;
@@ -174,6 +263,7 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
     if (std::string warning = clamp_reflectance(m); !warning.empty())
         scene.warnings.push_back(fmt::format("{}: {}: {}", r.file(), path, warning));
     if (std::string problem = validate_material(m); !problem.empty()) r.fail(path, problem);
+    if (k.has("textures")) textures(k, m, name, scene);
     materials[name] = add_material(scene, m, name);
 }
 

@@ -59,10 +59,44 @@ bool is_texture_statement(std::string_view kw) {
     return kw.substr(0, 4) == "map_" || kw == "bump" || kw == "disp" || kw == "decal" || kw == "refl" || kw == "norm";
 }
 
+bool is_read_texture(std::string_view kw) {
+    return kw == "map_Kd" || kw == "map_Ks" || kw == "map_Ns" || kw == "map_Pr" || kw == "map_Pm" || kw == "map_Ke" ||
+           kw == "norm" || kw == "map_Bump" || kw == "map_bump" || kw == "bump";
+}
+
+// A texture statement's options (-bm, -s, -o, -clamp; others skipped with their
+// numbers) and its file, the last field.
+MtlTexture texture_statement(const MtlLine& l, const std::string& dir) {
+    MtlTexture t;
+    t.statement = std::string(l.f[0]);
+    t.where = fmt::format("{}:{}", l.path, l.line);
+    const std::size_t last = l.f.size() - 1;
+    for (std::size_t i = 1; i < last; ++i) {
+        const std::string_view o = l.f[i];
+        if (o.empty() || o[0] != '-') continue;
+        // The numbers after an option (at most 3, never the file name).
+        std::size_t n = 0;
+        float v[3] = {0.0f, 0.0f, 0.0f};
+        while (n < 3 && i + 1 + n < last && text::parse_float(l.f[i + 1 + n], v[n])) ++n;
+        if (o == "-bm" && n >= 1) t.bump_multiplier = v[0];
+        else if (o == "-s" && n >= 1) t.scale[0] = v[0], t.scale[1] = n >= 2 ? v[1] : v[0];
+        else if (o == "-o" && n >= 1) t.offset[0] = v[0], t.offset[1] = n >= 2 ? v[1] : 0.0f;
+        else if (o == "-clamp" && i + 1 < last) {
+            t.clamp = l.f[i + 1] == "on";
+            ++i;
+        }
+        i += n;
+    }
+    t.file = text::join_path(dir, std::string(l.f[last]));
+    return t;
+}
+
 struct Pending {
     MtlMaterial m;
     bool has_pr = false;
     bool has_pm = false;
+    bool has_pbr_map = false;  // map_Pr or map_Pm
+    bool pm_given = false;
     bool has_ks = false;
     float pr = 0.0f;
     bool has_ns = false;
@@ -89,9 +123,17 @@ MtlMaterial finish(Pending& p) {
     MtlMaterial m = p.m;
     Material& mat = m.material;
     const float shininess = p.has_ns ? p.ns : 10.0f;
-    const bool pbr = p.has_pr || p.has_pm;
+    const bool pbr = p.has_pr || p.has_pm || p.has_pbr_map;
+    // A roughness or metalness map without its number: the map alone gives it (factor 1).
+    auto has_map = [&](const char* s) {
+        return std::any_of(p.m.textures.begin(), p.m.textures.end(),
+                           [&](const MtlTexture& t) { return t.statement == s; });
+    };
+    if (has_map("map_Pr") && !p.has_pr) p.pr = 1.0f, p.has_pr = true;
+    if (has_map("map_Pm") && !p.pm_given) m.metallic = 1.0f;
     const bool has_ks = p.has_ks && (mat.ks[0] > 0.0f || mat.ks[1] > 0.0f || mat.ks[2] > 0.0f);
     Material base = mat;
+    m.base_color = base.diffuse;
     if (m.illum == 5 && !pbr) {
         mat = make_material("conductor");
         mat.fresnel = FC_FRESNEL_SCHLICK;
@@ -175,11 +217,17 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
         else if (kw == "Pr") {
             p.pr = l.scalar(0.0f, 1.0f);
             p.has_pr = true;
-        } else if (kw == "Pm") p.m.metallic = l.scalar(0.0f, 1.0f);
-        else if (kw == "illum") {
+        } else if (kw == "Pm") {
+            p.m.metallic = l.scalar(0.0f, 1.0f);
+            p.pm_given = true;
+        } else if (kw == "illum") {
             const float v = l.scalar(0.0f, 10.0f);
             if (v != std::floor(v)) l.fail(fmt::format("'illum' must be an integer, got {}", v));
             p.m.illum = static_cast<int>(v);
+        } else if (is_read_texture(kw)) {
+            if (f.size() < 2) l.fail(fmt::format("'{}' without a file name", kw));
+            p.m.textures.push_back(texture_statement(l, dir));
+            if (kw == "map_Pr" || kw == "map_Pm") p.has_pbr_map = true;
         } else {
             // Texture: the file name is the last field (options such as -bm 1 come first).
             if (f.size() < 2) l.fail(fmt::format("'{}' without a file name", kw));
@@ -187,14 +235,55 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             std::error_code ec;
             const bool exists = std::filesystem::exists(text::join_path(dir, file), ec);
             warnings.push_back(
-                fmt::format("{}:{}: texture '{}' ({}) of material '{}' ignored: textures are not supported "
-                            "yet{}",
-                            path, l.line, file, kw, p.m.name, exists ? "" : " (and the file is missing)"));
+                fmt::format("{}:{}: texture '{}' ({}) of material '{}' ignored: facet does not read '{}'{}", path,
+                            l.line, file, kw, p.m.name, kw, exists ? "" : " (and the file is missing)"));
         }
     }
     out.reserve(list.size());
     for (Pending& p : list) out.push_back(finish(p));
     return out;
+}
+
+void bind_mtl_textures(const MtlMaterial& mtl, Material& m, Scene& scene) {
+    MaterialTextures& b = m.textures;
+    const bool pbr = m.specular_model == FC_SPECULAR_MICROFACET && m.diffuse_model == FC_DIFFUSE_LAMBERT;
+    for (const MtlTexture& t : mtl.textures) {
+        const std::string& s = t.statement;
+        const bool normal = s == "norm" || s == "map_Bump" || s == "map_bump" || s == "bump";
+        const bool data = normal || s == "map_Ns" || s == "map_Pr" || s == "map_Pm";
+        const int wrap = t.clamp ? FC_WRAP_CLAMP : FC_WRAP_REPEAT;
+        const int index = add_texture(scene, t.file, data ? TextureSpace::Data : TextureSpace::Color,
+                                      fmt::format("material '{}' ({} at {})", mtl.name, s, t.where), wrap, wrap);
+        if (s == "map_Kd") b.base_color = index;
+        else if (s == "map_Ks") b.specular = index;
+        else if (s == "map_Ke") b.emission = index;
+        else if (s == "map_Pr") b.roughness = index, b.roughness_mode = FC_ROUGHNESS_PERCEPTUAL;
+        else if (s == "map_Pm") b.metalness = index;
+        else if (s == "map_Ns") {
+            if (pbr)
+                scene.warnings.push_back(fmt::format(
+                    "{}: map_Ns of the PBR material '{}' ignored (map_Pr gives its roughness)", t.where, mtl.name));
+            else b.roughness = index, b.roughness_mode = FC_ROUGHNESS_SHININESS;
+        } else if (normal) {
+            // A grey image is a bump (height) map, which facet does not read; colours are a normal map.
+            const TextureImage& img = scene.textures[std::size_t(index)];
+            bool grey = true;
+            for (std::size_t i = 0; grey && i < std::size_t(img.width) * std::size_t(img.height); ++i)
+                grey = img.texels[4 * i] == img.texels[4 * i + 1] && img.texels[4 * i] == img.texels[4 * i + 2];
+            if (grey)
+                scene.warnings.push_back(fmt::format(
+                    "{}: {} '{}' of material '{}' is a grey (height) bump map, which facet does not read; ignored",
+                    t.where, s, t.file, mtl.name));
+            else b.normal = index, b.normal_scale = t.bump_multiplier;
+        }
+        b.uv_transform = {t.scale[0], 0.0f, t.offset[0], 0.0f, t.scale[1], t.offset[1]};
+    }
+    if (pbr && (b.base_color >= 0 || b.metalness >= 0)) {
+        b.metallic_workflow = true;
+        b.base_factor = mtl.base_color;
+        b.metallic_factor = mtl.metallic;
+        b.dielectric_f0 = ((m.ior - 1.0f) / (m.ior + 1.0f)) * ((m.ior - 1.0f) / (m.ior + 1.0f));
+    }
 }
 
 }  // namespace facet

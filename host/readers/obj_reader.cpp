@@ -132,13 +132,16 @@ public:
 private:
     Material converted(const std::string& name) {
         Material m = default_material();
+        const MtlMaterial* mtl = nullptr;
         for (const MtlMaterial& candidate : obj_.mtl)
-            if (candidate.name == name) m = candidate.material;  // the last definition wins
+            if (candidate.name == name) mtl = &candidate;  // the last definition wins
+        if (mtl) m = mtl->material;
         // As for JSON materials: a reflectance (Kd, Ks) above 1 is clamped, with a warning.
         if (std::string warning = clamp_reflectance(m, "(Kd, Ks)"); !warning.empty())
             scene_.warnings.push_back(fmt::format("{}: material '{}': {}", path_, name, warning));
         if (std::string problem = validate_material(m); !problem.empty())
             throw Error(fmt::format("{}: material '{}': {}", path_, name, problem));
+        if (mtl) bind_mtl_textures(*mtl, m, scene_);
         return m;
     }
 
@@ -241,6 +244,19 @@ struct WorldMesh {
     }
 };
 
+// The face's OBJ uvs (v flipped: OBJ's v runs up the image, facet's down) on the
+// triangle just added; none when a corner has no 'vt'.
+void add_texcoords(const tinyobj::attrib_t& attrib, const tinyobj::index_t* corner, bool mirrored, Scene& scene) {
+    glm::vec2 uv[3];
+    for (int c = 0; c < 3; ++c) {
+        const int k = corner[c].texcoord_index;
+        if (k < 0 || 2 * std::size_t(k) + 1 >= attrib.texcoords.size()) return;
+        uv[c] = glm::vec2(attrib.texcoords[2 * std::size_t(k)], 1.0f - attrib.texcoords[2 * std::size_t(k) + 1]);
+    }
+    if (mirrored) std::swap(uv[1], uv[2]);
+    set_triangle_texcoords(scene, scene.shading.size() - 1, uv[0], uv[1], uv[2]);
+}
+
 // Triangles of zero area (repeated or collinear corners, also from triangulating a
 // degenerate polygon) are never hit and carry no light: dropped, with a warning.
 void add_faces(const std::string& path, const tinyobj::ObjReader& reader, const WorldMesh& mesh,
@@ -266,6 +282,7 @@ void add_faces(const std::string& path, const tinyobj::ObjReader& reader, const 
             }
             const int tiny_id = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
             add_triangle(scene, p[0], p[1], p[2], n[0], n[1], n[2], materials.index(tiny_id));
+            add_texcoords(reader.GetAttrib(), &idx[3 * f], mesh.mirrored, scene);
         }
     }
     if (kept == 0)

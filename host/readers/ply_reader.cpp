@@ -26,6 +26,11 @@ std::size_t convert(const std::string& path, const aiMesh& m, IndexedMesh& out) 
         for (unsigned i = 0; i < m.mNumVertices; ++i)
             out.normals[i] = glm::vec3(m.mNormals[i].x, m.mNormals[i].y, m.mNormals[i].z);
     }
+    if (m.mTextureCoords[0]) {  // (u, v) or (s, t), v up the image as in OBJ: flipped
+        out.texcoords.resize(m.mNumVertices);
+        for (unsigned i = 0; i < m.mNumVertices; ++i)
+            out.texcoords[i] = glm::vec2(m.mTextureCoords[0][i].x, 1.0f - m.mTextureCoords[0][i].y);
+    }
     std::size_t skipped = 0;
     out.indices.reserve(std::size_t(m.mNumFaces) * 3);
     for (unsigned f = 0; f < m.mNumFaces; ++f) {

@@ -13,8 +13,8 @@ namespace facet {
 // Appends the faces of the PLY at `path` (polygons of any size, triangulated) with the
 // default material, or options.material_override. Normals: the file's (nx ny nz), else
 // area-weighted vertex normals (a PLY's faces share vertices; scans are smooth
-// surfaces), unless options.normals forces a rule. Texture coordinates are read by
-// Assimp and not used (facet has no textures yet).
+// surfaces), unless options.normals forces a rule. Texture coordinates (u v or s t) are
+// kept for textures (v flipped, as OBJ's).
 void load_ply(const std::string& path, Scene& scene, const MeshOptions& options = {});
 
 }  // namespace facet

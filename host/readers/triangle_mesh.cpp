@@ -66,6 +66,11 @@ void add_indexed_mesh(const IndexedMesh& mesh, const glm::mat4& transform, int m
             std::swap(n[1], n[2]);
         }
         add_triangle(scene, p[0], p[1], p[2], n[0], n[1], n[2], material);
+        if (mesh.texcoords.size() == mesh.positions.size()) {
+            const std::uint32_t b = mirrored ? idx[2] : idx[1], c = mirrored ? idx[1] : idx[2];
+            set_triangle_texcoords(scene, scene.shading.size() - 1, mesh.texcoords[idx[0]], mesh.texcoords[b],
+                                   mesh.texcoords[c]);
+        }
     }
 }
 

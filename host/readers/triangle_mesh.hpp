@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "host/readers/mesh_normals.hpp"
@@ -25,6 +26,7 @@ struct MeshOptions {
 struct IndexedMesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;      // one per position, or empty
+    std::vector<glm::vec2> texcoords;    // one per position (v = 0 at the image's top), or empty
     std::vector<std::uint32_t> indices;  // three per triangle, each < positions.size()
 };
 

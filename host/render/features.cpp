@@ -65,6 +65,7 @@ FeatureMask scene_features(const Scene& scene) {
             mask |= kDIELECTRIC;
             if (m.ndf == FC_NDF_BECKMANN) mask |= kBECKMANN;
         }
+        if (m.textures.any()) mask |= kTEXTURES;
     }
     return mask;
 }

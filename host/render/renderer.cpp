@@ -61,7 +61,9 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
                                      {"lights", dev.lights.size_bytes()},
                                      {"environment map", dev.environment_texels.size_bytes()},
                                      {"environment distribution", dev.environment_distribution.size_bytes()},
-                                     {"image", 2 * pixel_count() * sizeof(cl_float4)}});
+                                     {"image", 2 * pixel_count() * sizeof(cl_float4)},
+                                     {"textures", dev.textures.texels.size() * sizeof(float)},
+                                     {"texture uvs", dev.textures.texcoords.size() * sizeof(FcTriTexcoords)}});
 
     stats_.features = generic ? all_features() : scene_features(scene);
     std::vector<std::string> prelude = generic ? std::vector<std::string>{} : feature_prelude(stats_.features);
@@ -97,6 +99,14 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
         kernel_.setArg(7, env_texels_);
         kernel_.setArg(8, env_dist_);
         kernel_.setArg(9, accum_);
+        textures_ = upload(c, std::span<const FcTexture>(dev.textures.table));
+        texels_ = upload(c, std::span<const float>(dev.textures.texels));
+        material_textures_ = upload(c, std::span<const FcMaterialTextures>(dev.textures.materials));
+        texcoords_ = upload(c, std::span<const FcTriTexcoords>(dev.textures.texcoords));
+        kernel_.setArg(10, textures_);
+        kernel_.setArg(11, texels_);
+        kernel_.setArg(12, material_textures_);
+        kernel_.setArg(13, texcoords_);
     });
     reset();
     stats_.upload_seconds = seconds_since(start);

@@ -92,6 +92,7 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     d.environment_distribution = environment_sampling_distribution(scene.environment, scene.settings.strategy);
     d.materials.reserve(scene.materials.size());
     for (const Material& m : scene.materials) d.materials.push_back(device_material(m));
+    d.textures = compile_textures(scene);
     return d;
 }
 

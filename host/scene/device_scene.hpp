@@ -31,6 +31,8 @@ struct DeviceScene {
     std::span<const float> environment_distribution;
     // Arrays converted from the host's types.
     std::vector<FcMaterial> materials;
+    // Texture pool, material bindings and uvs (host/scene/texture.hpp).
+    DeviceTextures textures;
 };
 
 // The kernels' struct of a host material, and back (for tests and tools that hold

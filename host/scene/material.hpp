@@ -14,6 +14,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "host/scene/texture_binding.hpp"
 #include "kernels/shared/material_layout.h"
 
 namespace facet {
@@ -53,6 +54,8 @@ struct Material {
     // microfacet and conductor, off for the classic named models and for the dielectric
     // (whose albedo scaling is not reciprocal: opt-in).
     bool energy_compensation = false;
+    // Image textures bound to the parameters above (docs/textures.md).
+    MaterialTextures textures;
 };
 
 // The colour field the material's specular lobe reads: ks for the Blinn-Phong lobes,

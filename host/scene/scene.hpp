@@ -12,6 +12,7 @@
 
 #include "host/scene/environment_map.hpp"
 #include "host/scene/material.hpp"
+#include "host/scene/texture.hpp"
 #include "kernels/shared/scene_layout.h"
 #include "kernels/shared/render_layout.h"
 
@@ -68,6 +69,10 @@ struct Scene {
     std::vector<std::string> warnings;  // non-fatal problems met while loading
     // One line per mesh file: how its shading normals were obtained (`facet info` prints them).
     std::vector<std::string> normal_sources;
+    // Image textures (host/scene/texture.hpp) and per-triangle uvs: empty, or filled
+    // up to some triangle (compile_textures pads them with zeros).
+    std::vector<TextureImage> textures;
+    std::vector<FcTriTexcoords> texcoords;
 
     std::size_t triangle_count() const { return shading.size(); }
 };

@@ -74,6 +74,10 @@ void add_quad(Scene& scene, glm::vec3 corner, glm::vec3 e1, glm::vec3 e2, int ma
     const glm::vec3 n = unit_or(wide_cross(e1, e2), glm::vec3(0.0f, 0.0f, 1.0f));
     add_triangle(scene, corner, corner + e1, corner + e1 + e2, n, n, n, material);
     add_triangle(scene, corner, corner + e1 + e2, corner + e2, n, n, n, material);
+    // uv: e1 along u, e2 up the image (v = 0 at its top row)
+    const std::size_t t = scene.shading.size() - 2;
+    set_triangle_texcoords(scene, t, {0.0f, 1.0f}, {1.0f, 1.0f}, {1.0f, 0.0f});
+    set_triangle_texcoords(scene, t + 1, {0.0f, 1.0f}, {1.0f, 0.0f}, {0.0f, 0.0f});
 }
 
 void add_sphere(Scene& scene, glm::vec3 center, float radius, int subdivisions, int material, bool inward) {

@@ -28,6 +28,9 @@
 #include "kernels/lights/light.cl"
 #include "kernels/bsdf/bsdf.cl"
 #include "kernels/util/sampler.cl"
+#if FC_HAS_TEXTURES
+#include "kernels/texture/material_textures.cl"
+#endif
 
 /* Next-event estimation at surface `s` seen from direction wo: one light sample,
  * weighted against the BSDF's density by the power heuristic (delta lights: weight 1).
@@ -85,6 +88,9 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
     float3 throughput = (float3)(1.0f);
     float eta_scale = 1.0f;         /* product of etap^2 over the refractions (roulette only) */
     float prev_bsdf_pdf = INFINITY; /* density of the sampled direction; camera rays: a delta */
+#if FC_HAS_TEXTURES
+    float path_length = 0.0f; /* from the camera, for the ray cone of texture filtering */
+#endif
     for (uint depth = 0;; ++depth) {
         Hit hit;
         if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) {
@@ -101,6 +107,10 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         }
         Surface s = surface_at(sc->tris, sc->shading, &hit);
         FcMaterial mat = sc->materials[s.material];
+#if FC_HAS_TEXTURES
+        path_length += hit.t;
+        apply_textures(sc, &hit, s.material, d, ray_cone_width(P, path_length), &s.ns, &mat);
+#endif
         const FcMaterial* m = &mat;
         float3 wo = -d;
 
@@ -172,12 +182,15 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
                           __global const FcTriangle* tris, __global const FcTriShading* shading,
                           __global const FcMaterial* materials, __global const FcLight* lights,
                           __global const float* light_cdf, __global const float4* env_texels,
-                          __global const float* env_dist, __global float4* accum) {
+                          __global const float* env_dist, __global float4* accum, __global const FcTexture* textures,
+                          __global const float4* texels, __global const FcMaterialTextures* material_textures,
+                          __global const FcTriTexcoords* texcoords) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
-    SceneView sc = {params, nodes, tris, shading, materials, lights, light_cdf, env_texels, env_dist};
+    SceneView sc = {params,     nodes,    tris,     shading, materials,         lights,   light_cdf,
+                    env_texels, env_dist, textures, texels,  material_textures, texcoords};
     uint pixel = y * params->width + x;
     float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
     for (uint i = 0; i < params->sample_count; ++i) {

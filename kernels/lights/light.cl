@@ -9,6 +9,9 @@
 #include "kernels/lights/area.cl"
 #include "kernels/lights/environment.cl"
 #include "kernels/lights/punctual.cl"
+#if FC_HAS_TEXTURES
+#include "kernels/texture/material_textures.cl"
+#endif
 
 typedef struct {
     float3 wi;    /* unit direction from the shading point to the light */
@@ -51,6 +54,9 @@ inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, 
         ls->pdf = area_light_pdf_solid_angle(l, ls->dist, dot(ls->normal, ls->wi));
         __global const FcMaterial* m = &sc->materials[sc->shading[l->prim].material];
         ls->li = area_light_radiance(load3(m->emission), m->flags, ls->normal, -ls->wi);
+#if FC_HAS_TEXTURES
+        ls->li *= emission_texture_at(sc, l->prim, sc->shading[l->prim].material, square_to_triangle(u));
+#endif
 #endif
 #if FC_HAS_ENVIRONMENT
     } else if (l->type == FC_LIGHT_ENVIRONMENT) {

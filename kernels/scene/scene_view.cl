@@ -15,6 +15,11 @@ typedef struct {
     __global const float* light_cdf;
     __global const float4* env_texels;
     __global const float* env_dist;
+    /* Textures (kernels/shared/texture_layout.h); one-element placeholders without them. */
+    __global const FcTexture* textures;
+    __global const float4* texels;
+    __global const FcMaterialTextures* material_textures;
+    __global const FcTriTexcoords* texcoords;
 } SceneView;
 
 #endif

@@ -6,5 +6,6 @@
 #include "kernels/shared/scene_layout.h"
 #include "kernels/shared/render_layout.h"
 #include "kernels/shared/environment_layout.h"
+#include "kernels/shared/texture_layout.h"
 #include "kernels/shared/feature_flags.h"
 #endif

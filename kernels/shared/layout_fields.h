@@ -14,7 +14,10 @@
     S(FcLight)               \
     S(FcCamera)              \
     S(FcRenderParams)        \
-    S(FcEnvironment)
+    S(FcEnvironment)         \
+    S(FcTexture)             \
+    S(FcMaterialTextures)    \
+    S(FcTriTexcoords)
 
 // clang-format off
 #define FC_LAYOUT_FIELDS(F)                                                                                                 \
@@ -43,7 +46,11 @@
     F(FcRenderParams, environment_light) F(FcRenderParams, strategy) F(FcRenderParams, sampler)                             \
     F(FcRenderParams, filter) F(FcRenderParams, filter_radius) F(FcRenderParams, clamp)                                     \
     F(FcEnvironment, width) F(FcEnvironment, height) F(FcEnvironment, enabled) F(FcEnvironment, scale)                      \
-    F(FcEnvironment, total) F(FcEnvironment, to_map)
+    F(FcEnvironment, total) F(FcEnvironment, to_map)                                                                        \
+    F(FcTexture, offset) F(FcTexture, width) F(FcTexture, height) F(FcTexture, levels) F(FcTexture, wrap_u)                 \
+    F(FcTexture, wrap_v) F(FcMaterialTextures, base_color) F(FcMaterialTextures, normal)                                    \
+    F(FcMaterialTextures, base_factor) F(FcMaterialTextures, flags) F(FcMaterialTextures, uv_transform)                     \
+    F(FcTriTexcoords, uv)
 // clang-format on
 
 #endif

@@ -1,0 +1,154 @@
+/* Textured materials: the textures bound to a material (FcMaterialTextures) read at a
+ * hit and written into the material's parameters and the shading normal, before the
+ * BSDF sees them. The BSDF code is unchanged: a texture is one more input to the same
+ * FcMaterial (docs/textures.md). Compiled only when the scene has textures
+ * (FC_HAS_TEXTURES). */
+#ifndef FACET_TEXTURE_MATERIAL_TEXTURES_CL
+#define FACET_TEXTURE_MATERIAL_TEXTURES_CL
+
+#include "kernels/scene/scene_view.cl"
+#include "kernels/texture/texture.cl"
+#include "kernels/trace/bvh_traverse.cl"
+
+/* A hit point's texture coordinates and what filtering and normal maps need. */
+typedef struct {
+    float2 uv;
+    float3 dpdu, dpdv; /* surface derivatives along u and v (zero where the uvs are degenerate) */
+    float uv_area;     /* the triangle's area in the (u, v) square */
+    float world_area;  /* and in world units */
+} TexPoint;
+
+/* The width of the ray cone at distance `dist` along the path from the camera: the
+ * pixel's footprint (Akenine-Möller et al. 2019). A perspective camera's cone spreads
+ * by one pixel's angle 2 tan(fov_y / 2) / height; an orthographic one keeps its pixel's
+ * width. Bounces keep the camera's spread (surface curvature is not followed). */
+inline float ray_cone_width(__constant const FcRenderParams* P, float dist) {
+    float pixel = 2.0f * length(load3c(P->camera.up)) / (float)P->height;
+    return P->camera.projection == FC_PROJECTION_PERSPECTIVE ? pixel * dist : pixel;
+}
+
+/* The texture point of scene triangle `prim` at barycentrics (b1, b2) of v1 and v2,
+ * with edges e1 = v1 - v0, e2 = v2 - v0. */
+inline TexPoint tex_point(__global const FcTriTexcoords* tc, int prim, float b1, float b2, float3 e1, float3 e2) {
+    __global const FcTriTexcoords* t = &tc[prim];
+    float2 uv0 = (float2)(t->uv[0][0], t->uv[0][1]);
+    float2 d1 = (float2)(t->uv[1][0], t->uv[1][1]) - uv0;
+    float2 d2 = (float2)(t->uv[2][0], t->uv[2][1]) - uv0;
+    TexPoint p;
+    p.uv = uv0 + b1 * d1 + b2 * d2;
+    float det = d1.x * d2.y - d1.y * d2.x;
+    p.uv_area = 0.5f * fabs(det);
+    p.world_area = 0.5f * length(cross(e1, e2));
+    float inv = det != 0.0f ? 1.0f / det : 0.0f;
+    p.dpdu = (d2.y * e1 - d1.y * e2) * inv;
+    p.dpdv = (d1.x * e2 - d2.x * e1) * inv;
+    return p;
+}
+
+inline void tex_store3(float* p, float3 v) {
+    p[0] = v.x;
+    p[1] = v.y;
+    p[2] = v.z;
+}
+
+/* uv' = the material's KHR_texture_transform of uv. */
+inline float2 tex_transform(__global const FcMaterialTextures* mt, float2 uv) {
+    return (float2)(mt->uv_transform[0][0] * uv.x + mt->uv_transform[0][1] * uv.y + mt->uv_transform[0][2],
+                    mt->uv_transform[1][0] * uv.x + mt->uv_transform[1][1] * uv.y + mt->uv_transform[1][2]);
+}
+
+/* Channel i (0: R ... 3: A) of a texel; OpenCL C has no run-time subscript of vectors. */
+inline float tex_channel(float4 v, int i) { return i == 0 ? v.x : i == 1 ? v.y : i == 2 ? v.z : v.w; }
+
+/* Texture `index` at the point, filtered for a cone of width `cone` meeting the surface
+ * at cosine `cos_hit`. */
+inline float4 tex_lookup(const SceneView* sc, int index, float2 uv, const TexPoint* p, float cone, float cos_hit) {
+    __global const FcTexture* t = &sc->textures[index];
+    float lod = texture_lod(t->width * t->height, p->uv_area, p->world_area, cone, cos_hit);
+    return texture_sample(sc->textures, sc->texels, index, uv, lod);
+}
+
+/* The tangent-space normal map's normal: x along dp/du, y along -dp/dv (toward the
+ * image's top, the OpenGL / glTF / MikkTSpace convention), z along ns; the tangent is
+ * dp/du made orthogonal to ns per hit (Gram-Schmidt), the bitangent's handedness from
+ * the uv winding. */
+inline float3 normal_mapped(float3 ns, const TexPoint* p, float3 texel, float scale) {
+    float3 m = 2.0f * texel - 1.0f;
+    m.xy *= scale;
+    float3 t = p->dpdu - ns * dot(ns, p->dpdu);
+    if (!(dot(t, t) > 0.0f)) return ns;
+    t = normalize(t);
+    float3 b = cross(ns, t);
+    if (dot(b, p->dpdv) > 0.0f) b = -b;
+    return normalize_or(m.x * t + m.y * b + m.z * ns, ns);
+}
+
+/* Writes the textures of material `material` at hit `hit` into `mat` and the shading
+ * normal `ns`. `cone` is the ray cone's width at the hit, `d` the ray's direction. */
+inline void apply_textures(const SceneView* sc, const Hit* hit, int material, float3 d, float cone, float3* ns,
+                           FcMaterial* mat) {
+    __global const FcMaterialTextures* mt = &sc->material_textures[material];
+    if (mt->base_color < 0 && mt->specular < 0 && mt->roughness < 0 && mt->metalness < 0 && mt->emission < 0 &&
+        mt->normal < 0)
+        return;
+    __global const FcTriangle* tri = &sc->tris[hit->tri];
+    float3 v0 = load3(tri->v0);
+    TexPoint p = tex_point(sc->texcoords, hit->prim, hit->u, hit->v, load3(tri->v1) - v0, load3(tri->v2) - v0);
+    float2 uv = tex_transform(mt, p.uv);
+    float cos_hit = dot(*ns, d);
+
+    /* Base colour and specular colour (or the metallic workflow's pair). */
+    float3 base = load3(mt->base_factor);
+    if (mt->base_color >= 0) {
+        float3 c = tex_lookup(sc, mt->base_color, uv, &p, cone, cos_hit).xyz;
+        if (mt->flags & FC_TEX_METALLIC_WORKFLOW) base *= c;
+        else tex_store3(mat->diffuse, load3p(mat->diffuse) * c);
+    }
+    if (mt->flags & FC_TEX_METALLIC_WORKFLOW) {
+        float metal = mt->metallic_factor;
+        if (mt->metalness >= 0)
+            metal *= tex_channel(tex_lookup(sc, mt->metalness, uv, &p, cone, cos_hit), mt->metal_channel);
+        tex_store3(mat->diffuse, base * (1.0f - metal));
+        tex_store3(mat->specular, mix((float3)(mt->dielectric_f0), base, metal));
+    }
+    if (mt->specular >= 0)
+        tex_store3(mat->specular, load3p(mat->specular) * tex_lookup(sc, mt->specular, uv, &p, cone, cos_hit).xyz);
+
+    /* Roughness: perceptual (alpha scaled by r^2) or a Phong exponent map. */
+    if (mt->roughness >= 0) {
+        float r = tex_channel(tex_lookup(sc, mt->roughness, uv, &p, cone, cos_hit), mt->roughness_channel);
+        if (mt->roughness_mode == FC_ROUGHNESS_SHININESS) {
+            float e = clamp(mat->exponent_x * r, 0.0f, FC_PHONG_EXPONENT_MAX);
+            mat->exponent_x = mat->exponent_y = e;
+            mat->alpha_x = mat->alpha_y = sqrt(2.0f / (e + 2.0f));
+        } else {
+            float s = r * r;
+            mat->alpha_x *= s;
+            mat->alpha_y *= s;
+            mat->exponent_x =
+                clamp(2.0f / fmax(mat->alpha_x * mat->alpha_x, 1e-12f) - 2.0f, 0.0f, FC_PHONG_EXPONENT_MAX);
+            mat->exponent_y =
+                clamp(2.0f / fmax(mat->alpha_y * mat->alpha_y, 1e-12f) - 2.0f, 0.0f, FC_PHONG_EXPONENT_MAX);
+        }
+    }
+    if (mt->emission >= 0)
+        tex_store3(mat->emission, load3p(mat->emission) * tex_lookup(sc, mt->emission, uv, &p, cone, cos_hit).xyz);
+    if (mt->normal >= 0)
+        *ns = normal_mapped(*ns, &p, tex_lookup(sc, mt->normal, uv, &p, cone, cos_hit).xyz, mt->normal_scale);
+}
+
+/* The emission of scene triangle `prim` (material `material`) at a light sample's
+ * barycentrics b along the light's edges (FcLight e1, e2): the emission texture at full
+ * resolution, or 1 when the material has none. */
+inline float3 emission_texture_at(const SceneView* sc, int prim, int material, float2 b) {
+    __global const FcMaterialTextures* mt = &sc->material_textures[material];
+    if (mt->emission < 0) return (float3)(1.0f);
+    __global const FcTriTexcoords* t = &sc->texcoords[prim];
+    if (t->light_swapped) b = b.yx;
+    float2 uv0 = (float2)(t->uv[0][0], t->uv[0][1]);
+    float2 uv =
+        uv0 + b.x * ((float2)(t->uv[1][0], t->uv[1][1]) - uv0) + b.y * ((float2)(t->uv[2][0], t->uv[2][1]) - uv0);
+    return texture_sample(sc->textures, sc->texels, mt->emission, tex_transform(mt, uv), 0.0f).xyz;
+}
+
+#endif
