@@ -58,18 +58,8 @@ __kernel void aov_pass(__constant const FcRenderParams* params, __global const F
             FcMaterial mat = materials[s.material];
             const FcMaterial* m = &mat;
             float3 wo = -d;
-            if (dot(s.ng, wo) < 0.0f) { /* the side the ray arrived from (as path.cl) */
-                s.ng = -s.ng;
-                s.ns = -s.ns;
-                if (bsdf_is_dielectric(m)) mat.ior = 1.0f / mat.ior;
-            }
-            Frame frame = frame_from_normal(s.ns);
-            float3 wo_local = frame_to_local(&frame, wo);
-            if (wo_local.z <= 0.0f) {
-                s.ns = s.ng;
-                frame = frame_from_normal(s.ng);
-                wo_local = frame_to_local(&frame, wo);
-            }
+            float3 wo_local; /* the side the ray arrived from (as path.cl) */
+            Frame frame = surface_orient(&s, &mat, wo, &wo_local);
             if (!bsdf_is_delta(m)) {
                 /* Albedo and normal filtered as the image is; the depth averaged with |weight| */
                 albedo_sum += (float4)(weight * throughput * aov_albedo(m, wo_local), fabs(weight));

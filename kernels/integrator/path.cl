@@ -118,21 +118,9 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
 #endif
         if (depth >= P->max_depth) break;
 
-        /* Two-sided shading: work on the side the ray arrived from. A ray arriving from
-         * behind the normals (the inside of a closed dielectric) sees the relative
-         * index n_outside / n_inside = 1 / ior (docs/conventions.md). */
-        if (dot(s.ng, wo) < 0.0f) {
-            s.ng = -s.ng;
-            s.ns = -s.ns;
-            if (bsdf_is_dielectric(m)) mat.ior = 1.0f / mat.ior;
-        }
-        Frame frame = frame_from_normal(s.ns);
-        float3 wo_local = frame_to_local(&frame, wo);
-        /* A shading normal facing away from the viewer: shade with the geometric one. */
-        if (wo_local.z <= 0.0f) {
-            frame = frame_from_normal(s.ng);
-            wo_local = frame_to_local(&frame, wo);
-        }
+        /* Two-sided shading: work on the side the ray arrived from. */
+        float3 wo_local;
+        Frame frame = surface_orient(&s, &mat, wo, &wo_local);
 
         if (!bsdf_is_delta(m)) {
             float4 ul = sampler_get4(sampler, sampler_set_light(depth));

@@ -4,6 +4,7 @@
 #define FACET_INTEGRATOR_SURFACE_CL
 
 #include "kernels/shared/all.h"
+#include "kernels/bsdf/bsdf.cl"
 #include "kernels/trace/bvh_traverse.cl"
 #include "kernels/util/frame.cl"
 
@@ -32,6 +33,27 @@ inline Surface surface_at(__global const FcTriangle* tris, __global const FcTriS
     s.material = sh->material;
     s.light = sh->light;
     return s;
+}
+
+/* Two-sided shading: turns surface `s` to the side the ray arrived from (wo points back
+ * along it) and returns the shading frame there, with wo in it in *wo_local. A ray arriving
+ * from behind the normals (the inside of a closed dielectric) flips ng and ns and sees the
+ * relative index n_outside / n_inside = 1 / ior (docs/conventions.md). A shading normal
+ * facing away from the viewer is replaced by the geometric one. */
+inline Frame surface_orient(Surface* s, FcMaterial* mat, float3 wo, float3* wo_local) {
+    if (dot(s->ng, wo) < 0.0f) {
+        s->ng = -s->ng;
+        s->ns = -s->ns;
+        if (bsdf_is_dielectric(mat)) mat->ior = 1.0f / mat->ior;
+    }
+    Frame frame = frame_from_normal(s->ns);
+    *wo_local = frame_to_local(&frame, wo);
+    if (wo_local->z <= 0.0f) {
+        s->ns = s->ng;
+        frame = frame_from_normal(s->ng);
+        *wo_local = frame_to_local(&frame, wo);
+    }
+    return frame;
 }
 
 #endif
