@@ -61,6 +61,8 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
                                      {"lights", dev.lights.size_bytes()},
                                      {"environment map", dev.environment_texels.size_bytes()},
                                      {"environment distribution", dev.environment_distribution.size_bytes()},
+                                     {"spheres", dev.spheres.spheres.size() * sizeof(FcSphere)},
+                                     {"sphere BVH", dev.spheres.nodes.size() * sizeof(FcSphereNode)},
                                      {"image", 2 * pixel_count() * sizeof(cl_float4)}});
 
     stats_.features = generic ? all_features() : scene_features(scene);
@@ -96,6 +98,10 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
         kernel_.setArg(7, env_texels_);
         kernel_.setArg(8, env_dist_);
         kernel_.setArg(9, accum_);
+        spheres_ = upload(c, std::span<const FcSphere>(dev.spheres.spheres));
+        sphere_nodes_ = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
+        kernel_.setArg(10, spheres_);
+        kernel_.setArg(11, sphere_nodes_);
     });
     reset();
     stats_.upload_seconds = seconds_since(start);

@@ -89,6 +89,7 @@ private:
     cl::Program program_;
     cl::Kernel kernel_;
     cl::Buffer params_buf_, nodes_, tris_, shading_, materials_, lights_, light_cdf_, env_texels_, env_dist_, accum_;
+    cl::Buffer spheres_, sphere_nodes_;
     RenderStats stats_;
 };
 

@@ -92,6 +92,7 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     d.environment_distribution = scene.environment.distribution;
     d.materials.reserve(scene.materials.size());
     for (const Material& m : scene.materials) d.materials.push_back(device_material(m));
+    d.spheres = build_sphere_bvh(scene.spheres);
     return d;
 }
 

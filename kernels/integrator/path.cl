@@ -50,7 +50,7 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
 
     /* Shadow ray from the side of wi: to the offset point on an area light, else to
      * the light's distance. */
-    float3 o = offset_ray_origin(s->p, side > 0.0f ? s->ng : -s->ng);
+    float3 o = surface_offset(s, side > 0.0f ? s->ng : -s->ng);
     float3 dir = ls.wi;
     float tmax = ls.dist;
     if (isfinite(ls.dist) && !ls.delta) {
@@ -62,7 +62,7 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
     } else if (isfinite(ls.dist)) {
         tmax = ls.dist * (1.0f - 1e-5f); /* stop short of a point light */
     }
-    if (trace_any(sc->nodes, sc->tris, o, dir, tmax)) return (float3)(0.0f);
+    if (scene_trace_any(sc, o, dir, tmax)) return (float3)(0.0f);
 
     if (ls.delta) return f * ls.li * (cos_i / ls.pdf);
     uint strategy = sc->params->strategy;
@@ -87,7 +87,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
     float prev_bsdf_pdf = INFINITY; /* density of the sampled direction; camera rays: a delta */
     for (uint depth = 0;; ++depth) {
         Hit hit;
-        if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) {
+        if (!scene_trace_closest(sc, o, d, INFINITY, &hit)) {
 #if FC_HAS_ENVIRONMENT
             /* The ray escapes: the environment, MIS-weighted against light sampling. */
             float3 le = env_radiance(&P->environment, sc->env_texels, d);
@@ -99,7 +99,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
 #endif
             break;
         }
-        Surface s = surface_at(sc->tris, sc->shading, &hit);
+        Surface s = scene_surface_at(sc, &hit, o, d);
         FcMaterial mat = sc->materials[s.material];
         const FcMaterial* m = &mat;
         float3 wo = -d;
@@ -110,7 +110,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         if (!is_black(le) && s.light >= 0) {
             float w = 1.0f;
             if (depth > 0u) {
-                float light_pdf = area_light_pdf_solid_angle(&sc->lights[s.light], hit.t, dot(s.ng, wo));
+                float light_pdf = light_pdf_hit(sc, s.light, o, hit.t, dot(s.ng, wo));
                 w = bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, light_pdf);
             }
             radiance += throughput * le * w;
@@ -146,7 +146,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
             if (ub.w >= survive) break;
             throughput /= survive;
         }
-        o = offset_ray_origin(s.p, side > 0.0f ? s.ng : -s.ng);
+        o = surface_offset(&s, side > 0.0f ? s.ng : -s.ng);
         d = wi;
     }
     return radiance;
@@ -160,12 +160,14 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
                           __global const FcTriangle* tris, __global const FcTriShading* shading,
                           __global const FcMaterial* materials, __global const FcLight* lights,
                           __global const float* light_cdf, __global const float4* env_texels,
-                          __global const float* env_dist, __global float4* accum) {
+                          __global const float* env_dist, __global float4* accum, __global const FcSphere* spheres,
+                          __global const FcSphereNode* sphere_nodes) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
-    SceneView sc = {params, nodes, tris, shading, materials, lights, light_cdf, env_texels, env_dist};
+    SceneView sc = {params,    nodes,      tris,     shading, materials,   lights,
+                    light_cdf, env_texels, env_dist, spheres, sphere_nodes};
     uint pixel = y * params->width + x;
     float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
     for (uint i = 0; i < params->sample_count; ++i) {

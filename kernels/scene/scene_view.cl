@@ -15,6 +15,8 @@ typedef struct {
     __global const float* light_cdf;
     __global const float4* env_texels;
     __global const float* env_dist;
+    __global const FcSphere* spheres;
+    __global const FcSphereNode* sphere_nodes;
 } SceneView;
 
 #endif

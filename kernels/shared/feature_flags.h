@@ -17,7 +17,8 @@
     X(BLINN_PHONG, 5)       \
     X(MICROFACET, 6)        \
     X(BECKMANN, 7)          \
-    X(DIELECTRIC, 8)
+    X(DIELECTRIC, 8)        \
+    X(SPHERES, 9)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -45,6 +46,9 @@
 #endif
 #ifndef FC_HAS_DIELECTRIC
 #define FC_HAS_DIELECTRIC 1
+#endif
+#ifndef FC_HAS_SPHERES
+#define FC_HAS_SPHERES 1
 #endif
 
 #endif

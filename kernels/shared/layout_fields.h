@@ -13,7 +13,9 @@
     S(FcLight)               \
     S(FcCamera)              \
     S(FcRenderParams)        \
-    S(FcEnvironment)
+    S(FcEnvironment)         \
+    S(FcSphere)              \
+    S(FcSphereNode)
 
 // clang-format off
 #define FC_LAYOUT_FIELDS(F)                                                                                                 \
@@ -40,7 +42,10 @@
     F(FcRenderParams, environment_light) F(FcRenderParams, strategy) F(FcRenderParams, sampler)                             \
     F(FcRenderParams, filter) F(FcRenderParams, filter_radius) F(FcRenderParams, clamp)                                     \
     F(FcEnvironment, width) F(FcEnvironment, height) F(FcEnvironment, enabled) F(FcEnvironment, scale)                      \
-    F(FcEnvironment, total) F(FcEnvironment, to_map)
+    F(FcEnvironment, total) F(FcEnvironment, to_map)                                                                    \
+    F(FcSphere, center) F(FcSphere, radius) F(FcSphere, material) F(FcSphere, light) F(FcSphere, flags)                     \
+    F(FcSphere, prim) F(FcSphereNode, a_lo) F(FcSphereNode, a_index) F(FcSphereNode, a_hi) F(FcSphereNode, a_count)         \
+    F(FcSphereNode, b_lo) F(FcSphereNode, b_index) F(FcSphereNode, b_hi) F(FcSphereNode, b_count)
 // clang-format on
 
 #endif
