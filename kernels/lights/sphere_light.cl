@@ -4,8 +4,8 @@
  * section 6.2.4): a direction in the cone, then the point where it meets the sphere,
  * found from the angle alpha at the centre rather than by intersecting (which loses
  * precision at the silhouette). For cones narrower than 1.5 degrees, 1 - cos(theta_max) is
- * taken as sin^2(theta_max) / 2 (it would round to 0). From inside, the whole sphere is
- * visible and it is sampled uniformly by area. */
+ * taken as sin^2(theta_max) / 2 (it would round to 0). From inside (and on the surface), the
+ * whole sphere is visible and it is sampled uniformly by area. */
 #ifndef FACET_LIGHTS_SPHERE_LIGHT_CL
 #define FACET_LIGHTS_SPHERE_LIGHT_CL
 
@@ -15,6 +15,12 @@
 
 /* sin^2 of 1.5 degrees: below it, the cone's 1 - cos is taken from the sine. */
 #define FC_SPHERE_SMALL_CONE_SIN2 0.00068523f
+
+/* Whether a point at squared distance dc2 from the centre is sampled by area, as from inside:
+ * within r^2 (1 + 1e-3), so that a point on the sphere itself (a shading point of an inward
+ * enclosure), which rounding puts on either side, never gets the degenerate cone of a point
+ * on the surface. Area sampling stays unbiased just outside: the back it samples is hidden. */
+inline bool sphere_light_by_area(float dc2, float r) { return dc2 <= r * r * (1.0f + 1e-3f); }
 
 /* 1 - cos(theta_max) of the cone subtending radius r at squared distance dc2 > r^2. */
 inline float sphere_cone_one_minus_cos(float r, float dc2) {
@@ -39,7 +45,7 @@ inline bool sphere_light_sample(__global const FcLight* l, float3 p, float2 u, f
     const float3 pc = c - p;
     const float dc2 = dot(pc, pc);
     float3 n;
-    if (dc2 <= r * r) {
+    if (sphere_light_by_area(dc2, r)) {
         /* Inside: uniform by area, converted to solid angle. */
         n = square_to_sphere(u);
         *point = c + r * n;
@@ -78,7 +84,7 @@ inline bool sphere_light_sample(__global const FcLight* l, float3 p, float2 u, f
 inline float sphere_light_pdf(__global const FcLight* l, float3 o, float t, float cos_light) {
     const float3 pc = load3(l->p0) - o;
     const float dc2 = dot(pc, pc), r = l->e1[0];
-    if (dc2 <= r * r) {
+    if (sphere_light_by_area(dc2, r)) {
         const float c = fabs(cos_light);
         return c > 0.0f ? t * t / (c * l->area) : 0.0f;
     }
