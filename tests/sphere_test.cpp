@@ -580,7 +580,8 @@ glm::dvec3 smooth_sky(glm::dvec3 w) { return glm::dvec3(0.5) + 0.4 * w; }
 TEST(Sphere, MirrorShowsNoFaceting) {
     // A mirror sphere under a smooth environment, seen by an orthographic camera: each pixel
     // is the environment along the reflection of the view ray about the exact normal,
-    // averaged over the pixel. An icosphere's flat facets tilt the normals by degrees.
+    // averaged over the pixel. An icosphere's flat facets tilt the normals by degrees (at 5
+    // subdivisions, as the demo scenes had, the worst pixel is off by several times the bound).
     const int w = 512, hgt = 256;
     std::vector<float> texels;
     for (int j = 0; j < hgt; ++j)
@@ -598,7 +599,7 @@ TEST(Sphere, MirrorShowsNoFaceting) {
     add_analytic_sphere(scene, glm::vec3(0.0f), 1.0f, 0, false);
     std::vector<std::string> warnings;
     scene.environment = environment_from_pixels(w, hgt, texels, glm::vec3(1.0f), glm::mat3(1.0f), "sky", warnings);
-    const int n = 32;
+    const int n = 96;
     const double half = 1.2;
     scene.camera.projection = FC_PROJECTION_ORTHOGRAPHIC;
     scene.camera.eye = glm::vec3(0, 0, 5);
@@ -627,7 +628,7 @@ TEST(Sphere, MirrorShowsNoFaceting) {
                 worst = std::max(worst, std::abs(double(img[3 * std::size_t(j * n + i) + c]) - expected[c]));
         }
     std::printf("[ sphere   ] mirror sphere: worst pixel error %.4f against the exact normals\n", worst);
-    EXPECT_LT(worst, 0.01);
+    EXPECT_LT(worst, 0.0015);
 }
 
 }  // namespace
