@@ -47,7 +47,6 @@ typedef struct FcSphereNode {
 FC_STATIC_ASSERT(sizeof(FcSphere) == 32, "FcSphere is 32 bytes");
 FC_STATIC_ASSERT(offsetof(FcSphere, material) == 16 && offsetof(FcSphere, prim) == 28, "FcSphere offsets");
 FC_STATIC_ASSERT(sizeof(FcSphereNode) == 64, "FcSphereNode is 64 bytes");
-FC_STATIC_ASSERT(offsetof(FcSphereNode, b_lo) == 32 && offsetof(FcSphereNode, b_count) == 60,
-                 "FcSphereNode offsets");
+FC_STATIC_ASSERT(offsetof(FcSphereNode, b_lo) == 32 && offsetof(FcSphereNode, b_count) == 60, "FcSphereNode offsets");
 
 #endif
