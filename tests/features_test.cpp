@@ -156,6 +156,18 @@ TEST(Features, EveryFlagIsExercised) {
     textured.textures.base_color = textured.textures.roughness = textured.textures.normal = 0;
     with_material("textured", textured);
     cases.back().second.textures.push_back(make_texture(2, 1, {0.2f, 0.4f, 0.6f, 1.0f, 0.9f, 0.5f, 0.7f, 1.0f}));
+    {
+        Scene s = base();  // analytic spheres, one of them a sphere light
+        add_material(s, make_material("lambert"), "white");
+        Material e = make_material("lambert");
+        e.emission = glm::vec3(2.0f);
+        add_material(s, e, "emitter");
+        add_analytic_sphere(s, glm::vec3(0.0f), 1.0f, 0, false);
+        add_analytic_sphere(s, glm::vec3(0.0f, 2.5f, 0.0f), 0.5f, 1, false);
+        add_quad(s, glm::vec3(-3, -1, 3), glm::vec3(6, 0, 0), glm::vec3(0, 0, -6), 0);
+        build_lights(s);
+        cases.push_back({"analytic spheres", s});
+    }
     FeatureMask seen_on = 0, seen_off = 0;
     for (auto& [label, scene] : cases) {
         FeatureMask mask = scene_features(scene);

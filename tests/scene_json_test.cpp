@@ -30,7 +30,7 @@ TEST(SceneJson, JsonFullSceneLoads) {
   "meshes": [{"file": "mesh.obj", "transform": {"scale": 2, "rotate": [90, 0, 0, 1],
                                                "translate": [10, 0, 0]}},
              {"file": "mesh.obj", "materials": {"red": "blue"}}],
-  "shapes": [{"type": "sphere", "center": [0, 5, 0], "radius": 0.5, "subdivisions": 1,
+  "shapes": [{"type": "sphere", "center": [0, 5, 0], "radius": 0.5, "subdivisions": 1, "tessellate": true,
               "material": "lamp"},
              {"type": "quad", "corner": [0, 0, -1], "edge1": [1, 0, 0], "edge2": [0, 1, 0]}])");
     const Scene s = load_scene(p);

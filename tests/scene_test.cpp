@@ -74,12 +74,12 @@ TEST(Scene, CornellObjHasItsOwnLight) {
 
 TEST(Scene, FurnaceSphereFacesInward) {
     const Scene s = load_scene(kScenes + "/furnace_sphere.json");
-    ASSERT_EQ(s.triangle_count(), 20u * 64u);
-    EXPECT_EQ(s.lights.size(), s.triangle_count());
-    for (std::size_t t = 0; t < s.triangle_count(); ++t) {
-        EXPECT_LT(glm::dot(face_normal(s, t), centroid(s, t)), 0.0f);
-        EXPECT_LT(glm::dot(vec(s.shading[t].n1), centroid(s, t)), 0.0f);
-    }
+    ASSERT_EQ(s.spheres.size(), 1u);  // analytic
+    EXPECT_EQ(s.triangle_count(), 0u);
+    EXPECT_EQ(s.spheres[0].flags, FC_SPHERE_INWARD);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, FC_LIGHT_SPHERE);
+    EXPECT_EQ(s.lights[0].e1[1], -1.0f) << "emits inward";
 }
 
 TEST(Scene, SphereShape) {

@@ -20,6 +20,7 @@ int run_info(const InfoOptions& opt) {
     std::size_t film_bytes = std::size_t(scene.settings.width) * scene.settings.height * 16;
     fmt::print("scene       {}\n", scene.source_path);
     fmt::print("triangles   {}\n", scene.triangle_count());
+    if (!scene.spheres.empty()) fmt::print("spheres     {} (analytic)\n", scene.spheres.size());
     fmt::print("materials   {}\n", scene.materials.size());
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& m = scene.materials[i];

@@ -383,8 +383,9 @@ int run_render(const RenderOptions& opt) {
     if (!opt.quiet) {
         for (const DeviceShare& d : renderer.devices())
             if (!d.dropped) say(stdout, "device   [{}] {} / {}\n", d.desc.index, d.desc.platform, d.desc.name);
-        say(stdout, "scene    {}: {} triangles, {} lights; BVH {} nodes in {:.3f} s\n", scene.source_path,
-            scene.triangle_count(), scene.lights.size(), bvh.stats.nodes, bvh.stats.build_seconds);
+        say(stdout, "scene    {}: {} triangles, {}{} lights; BVH {} nodes in {:.3f} s\n", scene.source_path,
+            scene.triangle_count(), scene.spheres.empty() ? "" : fmt::format("{} spheres, ", scene.spheres.size()),
+            scene.lights.size(), bvh.stats.nodes, bvh.stats.build_seconds);
         say(stdout, "kernels  {} program ({}), built in {:.2f} s\n", opt.generic ? "generic" : "specialised",
             describe_features(renderer.stats().features), compile_s);
         if (resumed) say(stdout, "resumed  {} spp from {}\n", resumed->spp, opt.resume);

@@ -107,7 +107,7 @@ namespace {
 void sphere(JsonLoader& l, const Json& v, const std::string& path) {
     const JsonReader& r = l.r;
     auto k = [&](const char* key) { return JsonReader::key(path, key); };
-    r.object(v, path, {"type", "center", "radius", "subdivisions", "material", "inward"});
+    r.object(v, path, {"type", "center", "radius", "subdivisions", "material", "inward", "tessellate"});
     r.require(v, path, "center");
     r.require(v, path, "radius");
     const glm::vec3 center = r.vec3(v["center"], k("center"));
@@ -116,7 +116,10 @@ void sphere(JsonLoader& l, const Json& v, const std::string& path) {
     if (v.contains("subdivisions"))
         subdivisions = static_cast<int>(r.integer(v["subdivisions"], k("subdivisions"), 0, 8));
     const bool inward = v.contains("inward") && r.boolean(v["inward"], k("inward"));
-    add_sphere(l.scene, center, radius, subdivisions, l.optional_material(v, path), inward);
+    // Analytic unless a mesh is asked for ("subdivisions" alone only says how fine it would be).
+    const bool tessellate = v.contains("tessellate") && r.boolean(v["tessellate"], k("tessellate"));
+    if (tessellate) add_sphere(l.scene, center, radius, subdivisions, l.optional_material(v, path), inward);
+    else add_analytic_sphere(l.scene, center, radius, l.optional_material(v, path), inward);
 }
 
 void quad(JsonLoader& l, const Json& v, const std::string& path) {

@@ -140,7 +140,7 @@ bool load_json_scene(const std::string& path, Scene& scene) {
     for_each_in(l, root, "shapes", [&](const Json& v, const std::string& p) { l.shape(v, p); });
     for_each_in(l, root, "lights", [&](const Json& v, const std::string& p) { l.light(v, p); });
     if (root.contains("environment")) l.environment(root["environment"], "environment");
-    if (scene.triangle_count() == 0)
+    if (scene.triangle_count() == 0 && scene.spheres.empty())
         throw Error(fmt::format("{}: the scene has no geometry (no 'meshes' or 'shapes')", path));
     const bool has_camera = root.contains("camera");
     if (has_camera) l.camera(root["camera"], "camera");

@@ -70,6 +70,17 @@ void check_geometry(const Scene& scene, const std::string& path) {
                             path, i / 3, v.x, v.y, v.z, kMaxCoordinate));
         }
     }
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const FcSphere& s = scene.spheres[i];
+        bool ok = std::isfinite(s.radius) && s.radius <= kMaxCoordinate;
+        for (int c = 0; c < 3; ++c)
+            ok = ok && std::isfinite(s.center[c]) && std::fabs(s.center[c]) + s.radius <= kMaxCoordinate;
+        if (!ok)
+            throw Error(
+                fmt::format("{}: sphere {} at ({:g}, {:g}, {:g}) of radius {:g}: it must lie within +-{:g} "
+                            "(check the transforms and the shapes' sizes)",
+                            path, i, s.center[0], s.center[1], s.center[2], s.radius, kMaxCoordinate));
+    }
 }
 
 // The first bytes of a file ("" when it cannot be read: the caller's error names it).

@@ -51,6 +51,10 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::u
         kernel.setArg(3, shading);
         kernel.setArg(4, materials);
         kernel.setArg(5, accum);
+        cl::Buffer spheres = upload(c, std::span<const FcSphere>(dev.spheres.spheres));
+        cl::Buffer sphere_nodes = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
+        kernel.setArg(6, spheres);
+        kernel.setArg(7, sphere_nodes);
         const std::uint32_t rows = rows_per_launch(width, spp);
         for (std::uint32_t row = 0; row < height; row += rows) {
             FcRenderParams p = dev.params;

@@ -40,7 +40,7 @@ FeatureMask all_features() {
 FeatureMask scene_features(const Scene& scene) {
     FeatureMask mask = 0;
     for (const FcLight& l : scene.lights) {
-        if (l.type == FC_LIGHT_AREA_TRIANGLE) mask |= kAREA_LIGHTS;
+        if (l.type == FC_LIGHT_AREA_TRIANGLE || l.type == FC_LIGHT_SPHERE) mask |= kAREA_LIGHTS;
         else if (l.type == FC_LIGHT_ENVIRONMENT) mask |= kENVIRONMENT;
         else mask |= kPUNCTUAL_LIGHTS;
     }
@@ -48,6 +48,9 @@ FeatureMask scene_features(const Scene& scene) {
     if (scene.environment.params.enabled) mask |= kENVIRONMENT;
     std::vector<bool> used(scene.materials.size(), false);
     for (const FcTriShading& s : scene.shading)
+        if (s.material >= 0 && std::size_t(s.material) < used.size()) used[std::size_t(s.material)] = true;
+    if (!scene.spheres.empty()) mask |= kSPHERES;
+    for (const FcSphere& s : scene.spheres)
         if (s.material >= 0 && std::size_t(s.material) < used.size()) used[std::size_t(s.material)] = true;
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         if (!used[i]) continue;

@@ -61,6 +61,8 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
                                      {"lights", dev.lights.size_bytes()},
                                      {"environment map", dev.environment_texels.size_bytes()},
                                      {"environment distribution", dev.environment_distribution.size_bytes()},
+                                     {"spheres", dev.spheres.spheres.size() * sizeof(FcSphere)},
+                                     {"sphere BVH", dev.spheres.nodes.size() * sizeof(FcSphereNode)},
                                      {"image", 2 * pixel_count() * sizeof(cl_float4)},
                                      {"textures", dev.textures.texels.size() * sizeof(float)},
                                      {"texture uvs", dev.textures.texcoords.size() * sizeof(FcTriTexcoords)}});
@@ -107,6 +109,10 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
         kernel_.setArg(11, texels_);
         kernel_.setArg(12, material_textures_);
         kernel_.setArg(13, texcoords_);
+        spheres_ = upload(c, std::span<const FcSphere>(dev.spheres.spheres));
+        sphere_nodes_ = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
+        kernel_.setArg(14, spheres_);
+        kernel_.setArg(15, sphere_nodes_);
     });
     reset();
     stats_.upload_seconds = seconds_since(start);

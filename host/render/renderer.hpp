@@ -90,6 +90,7 @@ private:
     cl::Kernel kernel_;
     cl::Buffer params_buf_, nodes_, tris_, shading_, materials_, lights_, light_cdf_, env_texels_, env_dist_, accum_;
     cl::Buffer textures_, texels_, material_textures_, texcoords_;
+    cl::Buffer spheres_, sphere_nodes_;
     RenderStats stats_;
 };
 

@@ -93,6 +93,7 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     d.materials.reserve(scene.materials.size());
     for (const Material& m : scene.materials) d.materials.push_back(device_material(m));
     d.textures = compile_textures(scene);
+    d.spheres = build_sphere_bvh(scene.spheres);
     return d;
 }
 

@@ -11,6 +11,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "host/scene/scene.hpp"
+#include "host/scene/sphere_bvh.hpp"
 #include "kernels/shared/material_layout.h"
 #include "kernels/shared/render_layout.h"
 
@@ -33,6 +34,7 @@ struct DeviceScene {
     std::vector<FcMaterial> materials;
     // Texture pool, material bindings and uvs (host/scene/texture.hpp).
     DeviceTextures textures;
+    SphereBvh spheres;  // the analytic spheres and their tree (a root only when there are none)
 };
 
 // The kernels' struct of a host material, and back (for tests and tools that hold

@@ -1,6 +1,7 @@
 // The scene's light table: every light, with the probability that next-event
 // estimation picks it, in proportion to an estimate of its emitted power:
 //   area light       pi * area * luminance(Le) (x 2 when two-sided)
+//   sphere light     pi * 4 pi r^2 * luminance(Le) (x 2 when two-sided)
 //   point light      4 pi * I, with intensity I = pi * luminance(c)
 //   spot light       2 pi (1 - (cos_inner + cos_outer) / 2) * I
 //   directional      pi * luminance(c) * pi R^2 (R: the scene's bounding radius)
@@ -40,6 +41,20 @@ FcLight triangle_light(const Scene& scene, std::size_t t, float area) {
     return light;
 }
 
+// The light of analytic sphere `s` (scene_layout.h says what its fields hold).
+FcLight sphere_light(const FcSphere& s, const Material& m) {
+    FcLight light{};
+    light.type = FC_LIGHT_SPHERE;
+    light.prim = s.prim;
+    store(light.p0, glm::vec3(s.center[0], s.center[1], s.center[2]));
+    light.e1[0] = s.radius;
+    light.e1[1] = (s.flags & FC_SPHERE_INWARD) ? -1.0f : 1.0f;
+    light.e1[2] = m.two_sided_emission ? 1.0f : 0.0f;
+    store(light.color, m.emission);
+    light.area = float(4.0 * kPi * double(s.radius) * double(s.radius));
+    return light;
+}
+
 FcLight punctual_light(const PunctualLight& p, double* power, double radius) {
     FcLight l{};
     l.type = p.type;
@@ -59,7 +74,7 @@ FcLight punctual_light(const PunctualLight& p, double* power, double radius) {
 }
 
 double bounding_radius(const Scene& scene) {
-    if (scene.vertices.empty()) return 1.0;
+    if (scene.vertices.empty() && scene.spheres.empty()) return 1.0;
     const double r = double(scene_bounds(scene).radius());
     return r > 0.0 && std::isfinite(r) ? r : 1.0;
 }
@@ -84,6 +99,18 @@ void build_lights(Scene& scene) {
         sh.light = static_cast<fc_int>(scene.lights.size());
         scene.lights.push_back(triangle_light(scene, t, area));
         power.push_back(kPi * double(area) * lum * sides);
+    }
+    for (FcSphere& s : scene.spheres) {
+        s.light = -1;
+        if (s.material < 0 || static_cast<std::size_t>(s.material) >= scene.materials.size()) continue;
+        const Material& m = scene.materials[static_cast<std::size_t>(s.material)];
+        const double lum = luminance(m.emission);
+        if (!(lum > 0.0)) continue;
+        FcLight l = sphere_light(s, m);
+        if (!(l.area > 0.0f) || !std::isfinite(l.area)) continue;
+        s.light = static_cast<fc_int>(scene.lights.size());
+        scene.lights.push_back(l);
+        power.push_back(kPi * double(l.area) * lum * (m.two_sided_emission ? 2.0 : 1.0));
     }
     const double radius = bounding_radius(scene);
     for (const PunctualLight& p : scene.punctual_lights) {

@@ -52,6 +52,11 @@ Bounds scene_bounds(const Scene& scene) {
         b.lo = glm::min(b.lo, v);
         b.hi = glm::max(b.hi, v);
     }
+    for (const FcSphere& sp : scene.spheres) {
+        const glm::vec3 c(sp.center[0], sp.center[1], sp.center[2]);
+        b.lo = glm::min(b.lo, c - glm::vec3(sp.radius));
+        b.hi = glm::max(b.hi, c + glm::vec3(sp.radius));
+    }
     return b;
 }
 
@@ -59,7 +64,7 @@ CameraDesc frame_camera(const Scene& scene) {
     constexpr float fov = 40.0f;
     CameraDesc cam;
     cam.fov_y_degrees = fov;
-    if (scene.vertices.empty()) return cam;
+    if (scene.vertices.empty() && scene.spheres.empty()) return cam;
     const Bounds bounds = scene_bounds(scene);
     const glm::vec3 center = bounds.center();
     float radius = bounds.radius();

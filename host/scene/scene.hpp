@@ -14,6 +14,7 @@
 #include "host/scene/material.hpp"
 #include "host/scene/texture.hpp"
 #include "kernels/shared/scene_layout.h"
+#include "kernels/shared/sphere_layout.h"
 #include "kernels/shared/render_layout.h"
 
 namespace facet {
@@ -56,6 +57,7 @@ struct PunctualLight {
 struct Scene {
     std::vector<glm::vec3> vertices;    // 3 per triangle
     std::vector<FcTriShading> shading;  // 1 per triangle
+    std::vector<FcSphere> spheres;      // analytic spheres (host/scene/sphere_bvh.hpp)
     std::vector<Material> materials;
     std::vector<std::string> material_names;  // parallel to materials
     std::vector<PunctualLight> punctual_lights;
@@ -94,6 +96,9 @@ void build_lights(Scene& scene);
 // triangles), vertices on the sphere. Faces point outward, or inward (winding and
 // normals flipped) when `inward` is set, e.g. for an emitting furnace enclosure.
 void add_sphere(Scene& scene, glm::vec3 center, float radius, int subdivisions, int material, bool inward);
+// An analytic sphere: intersected exactly on the device (kernels/trace/sphere.cl); faces
+// outward, or inward when `inward` is set.
+void add_analytic_sphere(Scene& scene, glm::vec3 center, float radius, int material, bool inward);
 // A parallelogram corner, corner + e1, corner + e1 + e2, corner + e2 as two
 // triangles facing normalize(cross(e1, e2)).
 void add_quad(Scene& scene, glm::vec3 corner, glm::vec3 e1, glm::vec3 e2, int material);
@@ -102,7 +107,7 @@ void add_quad(Scene& scene, glm::vec3 corner, glm::vec3 e1, glm::vec3 e2, int ma
 void add_triangle(Scene& scene, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 n0, glm::vec3 n1, glm::vec3 n2,
                   int material);
 
-// The axis-aligned box around every vertex (lo > hi when there are none).
+// The axis-aligned box around every vertex and sphere (lo > hi when there are none).
 struct Bounds {
     glm::vec3 lo, hi;
     bool empty() const { return !(lo.x <= hi.x); }

@@ -1,4 +1,4 @@
-// Shapes built on the host: triangles, parallelograms and icospheres.
+// Shapes built on the host: triangles, parallelograms, icospheres and analytic spheres.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -93,6 +93,17 @@ void add_sphere(Scene& scene, glm::vec3 center, float radius, int subdivisions, 
         const glm::vec3 n = triangle_normal(p0, p1, p2);
         add_triangle(scene, p0, p1, p2, n, n, n, material);
     }
+}
+
+void add_analytic_sphere(Scene& scene, glm::vec3 center, float radius, int material, bool inward) {
+    FcSphere s{};
+    store(s.center, center);
+    s.radius = radius;
+    s.material = material;
+    s.light = -1;
+    s.flags = inward ? FC_SPHERE_INWARD : 0;
+    s.prim = static_cast<fc_int>(scene.spheres.size());
+    scene.spheres.push_back(s);
 }
 
 }  // namespace facet

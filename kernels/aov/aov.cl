@@ -36,12 +36,14 @@ inline float3 aov_albedo(const FcMaterial* m, float3 wo_local) {
 
 __kernel void aov_pass(__constant const FcRenderParams* params, __global const FcBvhNode* nodes,
                        __global const FcTriangle* tris, __global const FcTriShading* shading,
-                       __global const FcMaterial* materials, __global float4* accum) {
+                       __global const FcMaterial* materials, __global float4* accum, __global const FcSphere* spheres,
+                       __global const FcSphereNode* sphere_nodes) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
     uint pixel = y * params->width + x;
+    SceneView sc = {params, nodes, tris, shading, materials, 0, 0, 0, 0, 0, 0, 0, 0, spheres, sphere_nodes};
     float4 albedo_sum = (float4)(0.0f), normal_sum = (float4)(0.0f);
     for (uint i = 0; i < params->sample_count; ++i) {
         uint index = params->sample_begin + i;
@@ -52,24 +54,14 @@ __kernel void aov_pass(__constant const FcRenderParams* params, __global const F
         float distance = 0.0f;
         for (uint bounce = 0; bounce <= FC_AOV_MAX_DELTA_BOUNCES; ++bounce) {
             Hit hit;
-            if (!trace_closest(nodes, tris, o, d, INFINITY, &hit)) break;
+            if (!scene_trace_closest(&sc, o, d, INFINITY, &hit)) break;
             distance += hit.t;
-            Surface s = surface_at(tris, shading, &hit);
+            Surface s = scene_surface_at(&sc, &hit, o, d);
             FcMaterial mat = materials[s.material];
             const FcMaterial* m = &mat;
             float3 wo = -d;
-            if (dot(s.ng, wo) < 0.0f) { /* the side the ray arrived from (as path.cl) */
-                s.ng = -s.ng;
-                s.ns = -s.ns;
-                if (bsdf_is_dielectric(m)) mat.ior = 1.0f / mat.ior;
-            }
-            Frame frame = frame_from_normal(s.ns);
-            float3 wo_local = frame_to_local(&frame, wo);
-            if (wo_local.z <= 0.0f) {
-                s.ns = s.ng;
-                frame = frame_from_normal(s.ng);
-                wo_local = frame_to_local(&frame, wo);
-            }
+            float3 wo_local; /* the side the ray arrived from (as path.cl) */
+            Frame frame = surface_orient(&s, &mat, wo, &wo_local);
             if (!bsdf_is_delta(m)) {
                 /* Albedo and normal filtered as the image is; the depth averaged with |weight| */
                 albedo_sum += (float4)(weight * throughput * aov_albedo(m, wo_local), fabs(weight));
@@ -82,7 +74,7 @@ __kernel void aov_pass(__constant const FcRenderParams* params, __global const F
             float side = dot(s.ng, wi);
             if (!(side * bs.wi.z > 0.0f)) break;
             throughput = fmin(throughput * bs.weight, (float3)(1.0f));
-            o = offset_ray_origin(s.p, side > 0.0f ? s.ng : -s.ng);
+            o = surface_offset(&s, side > 0.0f ? s.ng : -s.ng);
             d = wi;
         }
     }

@@ -53,7 +53,7 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
 
     /* Shadow ray from the side of wi: to the offset point on an area light, else to
      * the light's distance. */
-    float3 o = offset_ray_origin(s->p, side > 0.0f ? s->ng : -s->ng);
+    float3 o = surface_offset(s, side > 0.0f ? s->ng : -s->ng);
     float3 dir = ls.wi;
     float tmax = ls.dist;
     if (isfinite(ls.dist) && !ls.delta) {
@@ -65,7 +65,7 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
     } else if (isfinite(ls.dist)) {
         tmax = ls.dist * (1.0f - 1e-5f); /* stop short of a point light */
     }
-    if (trace_any(sc->nodes, sc->tris, o, dir, tmax)) return (float3)(0.0f);
+    if (scene_trace_any(sc, o, dir, tmax)) return (float3)(0.0f);
 
     if (ls.delta) return f * ls.li * (cos_i / ls.pdf);
     uint strategy = sc->params->strategy;
@@ -93,7 +93,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
 #endif
     for (uint depth = 0;; ++depth) {
         Hit hit;
-        if (!trace_closest(sc->nodes, sc->tris, o, d, INFINITY, &hit)) {
+        if (!scene_trace_closest(sc, o, d, INFINITY, &hit)) {
 #if FC_HAS_ENVIRONMENT
             /* The ray escapes: the environment, MIS-weighted against light sampling. */
             float3 le = env_radiance(&P->environment, sc->env_texels, d);
@@ -105,7 +105,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
 #endif
             break;
         }
-        Surface s = surface_at(sc->tris, sc->shading, &hit);
+        Surface s = scene_surface_at(sc, &hit, o, d);
         FcMaterial mat = sc->materials[s.material];
 #if FC_HAS_TEXTURES
         path_length += hit.t;
@@ -120,7 +120,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         if (!is_black(le) && s.light >= 0) {
             float w = 1.0f;
             if (depth > 0u) {
-                float light_pdf = area_light_pdf_solid_angle(&sc->lights[s.light], hit.t, dot(s.ng, wo));
+                float light_pdf = light_pdf_hit(sc, s.light, o, hit.t, dot(s.ng, wo));
                 w = bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, light_pdf);
             }
             radiance += throughput * le * w;
@@ -128,21 +128,9 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
 #endif
         if (depth >= P->max_depth) break;
 
-        /* Two-sided shading: work on the side the ray arrived from. A ray arriving from
-         * behind the normals (the inside of a closed dielectric) sees the relative
-         * index n_outside / n_inside = 1 / ior (docs/conventions.md). */
-        if (dot(s.ng, wo) < 0.0f) {
-            s.ng = -s.ng;
-            s.ns = -s.ns;
-            if (bsdf_is_dielectric(m)) mat.ior = 1.0f / mat.ior;
-        }
-        Frame frame = frame_from_normal(s.ns);
-        float3 wo_local = frame_to_local(&frame, wo);
-        /* A shading normal facing away from the viewer: shade with the geometric one. */
-        if (wo_local.z <= 0.0f) {
-            frame = frame_from_normal(s.ng);
-            wo_local = frame_to_local(&frame, wo);
-        }
+        /* Two-sided shading: work on the side the ray arrived from. */
+        float3 wo_local;
+        Frame frame = surface_orient(&s, &mat, wo, &wo_local);
 
         if (!bsdf_is_delta(m)) {
             float4 ul = sampler_get4(sampler, sampler_set_light(depth));
@@ -168,7 +156,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
             if (ub.w >= survive) break;
             throughput /= survive;
         }
-        o = offset_ray_origin(s.p, side > 0.0f ? s.ng : -s.ng);
+        o = surface_offset(&s, side > 0.0f ? s.ng : -s.ng);
         d = wi;
     }
     return radiance;
@@ -184,13 +172,14 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
                           __global const float* light_cdf, __global const float4* env_texels,
                           __global const float* env_dist, __global float4* accum, __global const FcTexture* textures,
                           __global const float4* texels, __global const FcMaterialTextures* material_textures,
-                          __global const FcTriTexcoords* texcoords) {
+                          __global const FcTriTexcoords* texcoords, __global const FcSphere* spheres,
+                          __global const FcSphereNode* sphere_nodes) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
-    SceneView sc = {params,     nodes,    tris,     shading, materials,         lights,   light_cdf,
-                    env_texels, env_dist, textures, texels,  material_textures, texcoords};
+    SceneView sc = {params,     nodes,    tris,     shading, materials,         lights,    light_cdf,
+                    env_texels, env_dist, textures, texels,  material_textures, texcoords, spheres, sphere_nodes};
     uint pixel = y * params->width + x;
     float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
     for (uint i = 0; i < params->sample_count; ++i) {

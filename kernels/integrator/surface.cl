@@ -1,10 +1,13 @@
 /* The surface at a ray hit: position from the triangle's barycentrics (more precise
- * than o + t d), geometric and shading normals, and the material. */
+ * than o + t d) or re-projected onto the sphere, geometric and shading normals, and the
+ * material. */
 #ifndef FACET_INTEGRATOR_SURFACE_CL
 #define FACET_INTEGRATOR_SURFACE_CL
 
 #include "kernels/shared/all.h"
+#include "kernels/bsdf/bsdf.cl"
 #include "kernels/trace/bvh_traverse.cl"
+#include "kernels/trace/scene_trace.cl"
 #include "kernels/util/frame.cl"
 
 typedef struct {
@@ -13,7 +16,8 @@ typedef struct {
     float3 ns; /* interpolated shading normal */
     int prim;  /* scene triangle index */
     int material;
-    int light; /* light index, or -1 */
+    int light;      /* light index, or -1 */
+    float3 p_error; /* spheres: bound on p's rounding error per axis; 0 for triangles */
 } Surface;
 
 inline Surface surface_at(__global const FcTriangle* tris, __global const FcTriShading* shading, const Hit* hit) {
@@ -31,7 +35,63 @@ inline Surface surface_at(__global const FcTriangle* tris, __global const FcTriS
     s.prim = hit->prim;
     s.material = sh->material;
     s.light = sh->light;
+    s.p_error = (float3)(0.0f);
     return s;
+}
+
+#if FC_HAS_SPHERES
+/* The surface where the ray o + t d met sphere hit->prim: the exact normal (facing inward
+ * for FC_SPHERE_INWARD spheres) as both geometric and shading normal. */
+inline Surface sphere_surface_at(__global const FcSphere* spheres, const Hit* hit, float3 o, float3 d) {
+    __global const FcSphere* sp = &spheres[hit->prim];
+    Surface s;
+    float3 n;
+    s.p = sphere_hit_point(load3(sp->center), sp->radius, o, d, hit->t, &n, &s.p_error);
+    s.ng = s.ns = (sp->flags & FC_SPHERE_INWARD) ? -n : n;
+    s.prim = sp->prim;
+    s.material = sp->material;
+    s.light = sp->light;
+    return s;
+}
+#endif
+
+/* The surface at a hit of scene_trace_closest along o + t d. */
+inline Surface scene_surface_at(const SceneView* sc, const Hit* hit, float3 o, float3 d) {
+#if FC_HAS_SPHERES
+    if (hit->tri == FC_HIT_SPHERE) return sphere_surface_at(sc->spheres, hit, o, d);
+#else
+    (void)o, (void)d;
+#endif
+    return surface_at(sc->tris, sc->shading, hit);
+}
+
+/* The origin of a ray leaving surface s on the side of its (oriented) geometric normal n. */
+inline float3 surface_offset(const Surface* s, float3 n) {
+#if FC_HAS_SPHERES
+    if (s->p_error.x > 0.0f) return sphere_offset_origin(s->p, s->p_error, n);
+#endif
+    return offset_ray_origin(s->p, n);
+}
+
+/* Two-sided shading: turns surface `s` to the side the ray arrived from (wo points back
+ * along it) and returns the shading frame there, with wo in it in *wo_local. A ray arriving
+ * from behind the normals (the inside of a closed dielectric) flips ng and ns and sees the
+ * relative index n_outside / n_inside = 1 / ior (docs/conventions.md). A shading normal
+ * facing away from the viewer is replaced by the geometric one. */
+inline Frame surface_orient(Surface* s, FcMaterial* mat, float3 wo, float3* wo_local) {
+    if (dot(s->ng, wo) < 0.0f) {
+        s->ng = -s->ng;
+        s->ns = -s->ns;
+        if (bsdf_is_dielectric(mat)) mat->ior = 1.0f / mat->ior;
+    }
+    Frame frame = frame_from_normal(s->ns);
+    *wo_local = frame_to_local(&frame, wo);
+    if (wo_local->z <= 0.0f) {
+        s->ns = s->ng;
+        frame = frame_from_normal(s->ng);
+        *wo_local = frame_to_local(&frame, wo);
+    }
+    return frame;
 }
 
 #endif

@@ -1,5 +1,5 @@
 /* Light selection and sampling for next-event estimation, over every light type:
- * area (area.cl), point, spot and directional (punctual.cl) and the environment
+ * area (area.cl), sphere (sphere_light.cl), point, spot and directional (punctual.cl) and the environment
  * (environment.cl). A light is picked with probability pick_pdf (in proportion to an
  * estimate of its power), then sampled. */
 #ifndef FACET_LIGHTS_LIGHT_CL
@@ -12,6 +12,7 @@
 #if FC_HAS_TEXTURES
 #include "kernels/texture/material_textures.cl"
 #endif
+#include "kernels/lights/sphere_light.cl"
 
 typedef struct {
     float3 wi;    /* unit direction from the shading point to the light */
@@ -58,6 +59,22 @@ inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, 
         ls->li *= emission_texture_at(sc, l->prim, sc->shading[l->prim].material, square_to_triangle(u));
 #endif
 #endif
+#if FC_HAS_AREA_LIGHTS && FC_HAS_SPHERES
+    } else if (l->type == FC_LIGHT_SPHERE) {
+        float3 point;
+        float pdf;
+        if (!sphere_light_sample(l, p, u, &point, &ls->normal, &pdf)) return false;
+        float3 to = point - p;
+        ls->dist = length(to);
+        if (!(ls->dist > 0.0f)) return false;
+        ls->wi = to / ls->dist;
+        ls->pdf = pdf * l->pick_pdf;
+        ls->li =
+            area_light_radiance(load3(l->color), l->e1[2] > 0.0f ? FC_MAT_TWO_SIDED_EMISSION : 0u, ls->normal, -ls->wi);
+        /* The shadow ray's end, pulled back by 1e-4 of the distance (pbrt's ShadowEpsilon):
+         * the point's rounding error grows with the sphere's distance from the origin. */
+        ls->point = point - 1e-4f * to;
+#endif
 #if FC_HAS_ENVIRONMENT
     } else if (l->type == FC_LIGHT_ENVIRONMENT) {
         float pdf;
@@ -66,7 +83,7 @@ inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, 
         ls->pdf = pdf * l->pick_pdf;
 #endif
 #if FC_HAS_PUNCTUAL_LIGHTS
-    } else if (l->type != FC_LIGHT_AREA_TRIANGLE && l->type != FC_LIGHT_ENVIRONMENT) {
+    } else if (l->type == FC_LIGHT_POINT || l->type == FC_LIGHT_SPOT || l->type == FC_LIGHT_DIRECTIONAL) {
         ls->li = punctual_light_irradiance(l, p, &ls->wi, &ls->dist);
         ls->pdf = l->pick_pdf;
         ls->delta = 1;
@@ -75,6 +92,18 @@ inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, 
         return false;
     }
     return ls->pdf > 0.0f && isfinite(ls->pdf) && !is_black(ls->li) && all_finite(ls->li);
+}
+
+/* Density with which sample_light reaches the point of light `index` that a ray from o met
+ * at distance t with cosine cos_light there (for MIS; pick included). */
+inline float light_pdf_hit(const SceneView* sc, int index, float3 o, float t, float cos_light) {
+    __global const FcLight* l = &sc->lights[index];
+#if FC_HAS_SPHERES
+    if (l->type == FC_LIGHT_SPHERE) return l->pick_pdf * sphere_light_pdf(l, o, t, cos_light);
+#else
+    (void)o;
+#endif
+    return area_light_pdf_solid_angle(l, t, cos_light);
 }
 
 /* Density with which sample_light reaches the environment along wi (for MIS). */

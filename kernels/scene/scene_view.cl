@@ -20,6 +20,8 @@ typedef struct {
     __global const float4* texels;
     __global const FcMaterialTextures* material_textures;
     __global const FcTriTexcoords* texcoords;
+    __global const FcSphere* spheres;
+    __global const FcSphereNode* sphere_nodes;
 } SceneView;
 
 #endif

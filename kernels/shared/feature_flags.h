@@ -18,7 +18,8 @@
     X(MICROFACET, 6)        \
     X(BECKMANN, 7)          \
     X(DIELECTRIC, 8)        \
-    X(TEXTURES, 9)
+    X(TEXTURES, 9)          \
+    X(SPHERES, 10)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -49,6 +50,9 @@
 #endif
 #ifndef FC_HAS_TEXTURES
 #define FC_HAS_TEXTURES 1
+#endif
+#ifndef FC_HAS_SPHERES
+#define FC_HAS_SPHERES 1
 #endif
 
 #endif

@@ -17,7 +17,9 @@
     S(FcEnvironment)         \
     S(FcTexture)             \
     S(FcMaterialTextures)    \
-    S(FcTriTexcoords)
+    S(FcTriTexcoords)        \
+    S(FcSphere)              \
+    S(FcSphereNode)
 
 // clang-format off
 #define FC_LAYOUT_FIELDS(F)                                                                                                 \
@@ -50,7 +52,10 @@
     F(FcTexture, offset) F(FcTexture, width) F(FcTexture, height) F(FcTexture, levels) F(FcTexture, wrap_u)                 \
     F(FcTexture, wrap_v) F(FcMaterialTextures, base_color) F(FcMaterialTextures, normal)                                    \
     F(FcMaterialTextures, base_factor) F(FcMaterialTextures, flags) F(FcMaterialTextures, uv_transform)                     \
-    F(FcTriTexcoords, uv)
+    F(FcTriTexcoords, uv)                                                                                                   \
+    F(FcSphere, center) F(FcSphere, radius) F(FcSphere, material) F(FcSphere, light) F(FcSphere, flags)                     \
+    F(FcSphere, prim) F(FcSphereNode, a_lo) F(FcSphereNode, a_index) F(FcSphereNode, a_hi) F(FcSphereNode, a_count)         \
+    F(FcSphereNode, b_lo) F(FcSphereNode, b_index) F(FcSphereNode, b_hi) F(FcSphereNode, b_count)
 // clang-format on
 
 #endif

@@ -24,6 +24,7 @@ typedef struct FcTriShading {
 #define FC_LIGHT_SPOT 2
 #define FC_LIGHT_DIRECTIONAL 3
 #define FC_LIGHT_ENVIRONMENT 4
+#define FC_LIGHT_SPHERE 5
 
 /* A light (docs/lights.md gives the units).
  * - Area light: one emitting triangle: `p0` a vertex, `e1`, `e2` its edges, ordered so
@@ -36,6 +37,9 @@ typedef struct FcTriShading {
  *   there, so the irradiance is pi * color / d^2.
  * - Directional light: `e1` is the unit direction the light travels; `color` is
  *   c_light (irradiance pi * color at normal incidence).
+ * - Sphere light: an emitting analytic sphere (kernels/lights/sphere_light.cl): centre `p0`,
+ *   radius e1[0], e1[1] = +1 (emits outward) or -1 (FC_SPHERE_INWARD), e1[2] = 1 when
+ *   two-sided; `color` its radiance, `area` 4 pi r^2, `prim` its scene sphere index.
  * - Environment: the one FcEnvironment of the scene (kernels/shared/environment_layout.h).
  * `pick_pdf` is the probability that light selection picks this light, in proportion to
  * an estimate of its power (host/scene/lights.cpp). */

@@ -9,6 +9,7 @@
 #include "kernels/scene/scene_view.cl"
 #include "kernels/texture/texture.cl"
 #include "kernels/trace/bvh_traverse.cl"
+#include "kernels/trace/sphere.cl"
 
 /* A hit point's texture coordinates and what filtering and normal maps need. */
 typedef struct {
@@ -42,6 +43,25 @@ inline TexPoint tex_point(__global const FcTriTexcoords* tc, int prim, float b1,
     float inv = det != 0.0f ? 1.0f / det : 0.0f;
     p.dpdu = (d2.y * e1 - d1.y * e2) * inv;
     p.dpdv = (d1.x * e2 - d2.x * e1) * inv;
+    return p;
+}
+
+/* The texture point of analytic sphere `sp` whose outward normal at the hit is n, by
+ * sphere_uv's parametrisation: u = phi / 2pi, v = theta / pi with n = (sin theta cos phi,
+ * cos theta, sin theta sin phi); dp/du = 2 pi r (-sin theta sin phi, 0, sin theta cos phi),
+ * dp/dv = pi r (cos theta cos phi, -sin theta, cos theta sin phi), and the world area per
+ * unit uv area |dp/du x dp/dv| = 2 pi^2 r^2 sin theta (kept above 1e-4 of its equator
+ * value at the poles). */
+inline TexPoint tex_point_sphere(__global const FcSphere* sp, float3 n) {
+    TexPoint p;
+    p.uv = sphere_uv(n);
+    const float r = sp->radius;
+    const float sin_theta = sqrt(fmax(0.0f, 1.0f - n.y * n.y));
+    const float3 radial = sin_theta > 0.0f ? (float3)(n.x, 0.0f, n.z) / sin_theta : (float3)(1.0f, 0.0f, 0.0f);
+    p.dpdu = 2.0f * FC_PI * r * sin_theta * (float3)(-radial.z, 0.0f, radial.x);
+    p.dpdv = FC_PI * r * (float3)(n.y * radial.x, -sin_theta, n.y * radial.z);
+    p.uv_area = 1.0f;
+    p.world_area = 2.0f * FC_PI * FC_PI * r * r * fmax(sin_theta, 1e-4f);
     return p;
 }
 
@@ -91,9 +111,15 @@ inline void apply_textures(const SceneView* sc, const Hit* hit, int material, fl
     if (mt->base_color < 0 && mt->specular < 0 && mt->roughness < 0 && mt->metalness < 0 && mt->emission < 0 &&
         mt->normal < 0)
         return;
-    __global const FcTriangle* tri = &sc->tris[hit->tri];
-    float3 v0 = load3(tri->v0);
-    TexPoint p = tex_point(sc->texcoords, hit->prim, hit->u, hit->v, load3(tri->v1) - v0, load3(tri->v2) - v0);
+    TexPoint p;
+    if (hit->tri == FC_HIT_SPHERE) { /* ns is the exact normal, inward for an inward sphere */
+        __global const FcSphere* sp = &sc->spheres[hit->prim];
+        p = tex_point_sphere(sp, (sp->flags & FC_SPHERE_INWARD) ? -*ns : *ns);
+    } else {
+        __global const FcTriangle* tri = &sc->tris[hit->tri];
+        float3 v0 = load3(tri->v0);
+        p = tex_point(sc->texcoords, hit->prim, hit->u, hit->v, load3(tri->v1) - v0, load3(tri->v2) - v0);
+    }
     float2 uv = tex_transform(mt, p.uv);
     float cos_hit = dot(*ns, d);
 
@@ -131,7 +157,9 @@ inline void apply_textures(const SceneView* sc, const Hit* hit, int material, fl
                 clamp(2.0f / fmax(mat->alpha_y * mat->alpha_y, 1e-12f) - 2.0f, 0.0f, FC_PHONG_EXPONENT_MAX);
         }
     }
-    if (mt->emission >= 0)
+    /* Sphere lights are sampled with their untextured emission (sphere_light.cl): an
+     * emission texture on a sphere is left out on both sides, so the two estimates agree. */
+    if (mt->emission >= 0 && hit->tri != FC_HIT_SPHERE)
         tex_store3(mat->emission, load3p(mat->emission) * tex_lookup(sc, mt->emission, uv, &p, cone, cos_hit).xyz);
     if (mt->normal >= 0)
         *ns = normal_mapped(*ns, &p, tex_lookup(sc, mt->normal, uv, &p, cone, cos_hit).xyz, mt->normal_scale);

@@ -1,0 +1,22 @@
+// The analytic spheres of a scene as the kernels read them (kernels/shared/sphere_layout.h):
+// a binary BVH built by host/bvh's SAH builder over the spheres' boxes, and the spheres in
+// the order its leaves reference them.
+#pragma once
+
+#include <vector>
+
+#include "kernels/shared/sphere_layout.h"
+
+namespace facet {
+
+struct SphereBvh {
+    std::vector<FcSphereNode> nodes;  // nodes[0] is the root
+    std::vector<FcSphere> spheres;    // in leaf order; FcSphere::prim is the input index
+};
+
+// Builds the tree over `spheres` (FcSphere::prim set here to each sphere's input index).
+// Spheres without a positive finite radius or with a non-finite centre are left out (they
+// can never be hit). No spheres give a root with two empty children.
+SphereBvh build_sphere_bvh(const std::vector<FcSphere>& spheres);
+
+}  // namespace facet

@@ -1,0 +1,35 @@
+/* Rays against everything in the scene: the triangles' BVH (bvh_traverse.cl), then, in
+ * programs built with FC_HAS_SPHERES, the analytic spheres' own tree (sphere.cl), which
+ * only has to beat the nearest triangle. Programs without spheres trace triangles alone. */
+#ifndef FACET_TRACE_SCENE_TRACE_CL
+#define FACET_TRACE_SCENE_TRACE_CL
+
+#include "kernels/scene/scene_view.cl"
+#include "kernels/trace/bvh_traverse.cl"
+#if FC_HAS_SPHERES
+#include "kernels/trace/sphere.cl"
+#endif
+
+/* Nearest hit with 0 < t < tmax: a triangle (hit->tri >= 0) or a sphere (FC_HIT_SPHERE). */
+inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float tmax, Hit* hit) {
+    bool found = trace_closest(sc->nodes, sc->tris, o, d, tmax, hit);
+#if FC_HAS_SPHERES
+    if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, hit, false)) found = true;
+#endif
+    return found;
+}
+
+/* Whether anything is hit with 0 < t < tmax (shadow rays). */
+inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax) {
+    if (trace_any(sc->nodes, sc->tris, o, d, tmax)) return true;
+#if FC_HAS_SPHERES
+    Hit hit;
+    hit.t = tmax;
+    hit.prim = -1;
+    hit.tri = -1;
+    if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, &hit, true)) return true;
+#endif
+    return false;
+}
+
+#endif

@@ -1,0 +1,164 @@
+/* Analytic spheres: the ray/sphere intersection, the traversal of the spheres' own binary
+ * BVH (kernels/shared/sphere_layout.h), and the surface at a hit.
+ *
+ * The intersection is the numerically careful quadratic of Haines et al. 2019 ("Precision
+ * Improvements for Ray/Sphere Intersection", Ray Tracing Gems ch. 7) as pbrt-v4 (section
+ * 6.2) uses it: the discriminant r^2 - |l|^2 comes from l, the vector from the centre to the
+ * line's closest point, as (r - |l|)(r + |l|), not from b^2 - 4ac (which cancels
+ * catastrophically when the ray starts far away); the near root is c / q and the far one
+ * q / a, with q = -(b + sign(b) sqrt(disc)), so neither subtracts nearly equal numbers.
+ * The hit point is re-projected onto the sphere, and the next ray leaves from a point
+ * offset along the normal by the point's error bound (pbrt-v4 section 6.8.6), so a ray
+ * leaving either side never meets the sphere it starts on: the sign of |o - c| - r, which
+ * decides which roots are ahead, is then beyond rounding. */
+#ifndef FACET_TRACE_SPHERE_CL
+#define FACET_TRACE_SPHERE_CL
+
+#include "kernels/shared/sphere_layout.h"
+#include "kernels/trace/bvh_traverse.cl"
+#include "kernels/util/math.cl"
+
+/* Hit.tri of a sphere hit; Hit.prim is then the sphere's index in the FcSphere array. */
+#define FC_HIT_SPHERE (-2)
+
+/* gamma(n) = n eps / (1 - n eps), eps = 2^-24: the relative bound of n rounded operations. */
+inline float fc_gamma(int n) {
+    const float e = (float)n * 0x1p-24f;
+    return e / (1.0f - e);
+}
+
+/* The two roots t0 <= t1 of |o + t d - c| = r (d need not be unit); false when the line
+ * misses the sphere. */
+inline bool sphere_roots(float3 c, float r, float3 o, float3 d, float* t0, float* t1) {
+    const float3 f = o - c;
+    const float a = dot(d, d);
+    const float b = dot(f, d); /* half the quadratic's b */
+    /* The centre to the line's closest point, and the discriminant from it. */
+    const float3 l = f - (b / a) * d;
+    const float ll = length(l);
+    const float disc = (r - ll) * (r + ll);
+    if (!(disc >= 0.0f)) return false;
+    /* c = |f|^2 - r^2, its sign exact once |f| - r is beyond rounding. */
+    const float lf = length(f);
+    const float cc = (lf - r) * (lf + r);
+    const float q = -(b + copysign(sqrt(a * disc), b));
+    float n0 = cc / q, n1 = q / a;
+    *t0 = fmin(n0, n1);
+    *t1 = fmax(n0, n1);
+    return true;
+}
+
+/* The nearest intersection with 0 < t < tmax, in *t. */
+inline bool sphere_hit(float3 c, float r, float3 o, float3 d, float tmax, float* t) {
+    float t0, t1;
+    if (!sphere_roots(c, r, o, d, &t0, &t1)) return false;
+    if (t0 > 0.0f && t0 < tmax) *t = t0;
+    else if (t1 > 0.0f && t1 < tmax) *t = t1;
+    else return false;
+    return true;
+}
+
+/* Tests the leaf's spheres [first, first + count), shortening hit->t. */
+inline bool sphere_leaf_hit(__global const FcSphere* spheres, int first, int count, float3 o, float3 d, Hit* hit,
+                            bool any_hit) {
+    bool found = false;
+    for (int i = first; i < first + count; ++i) {
+        float t;
+        if (!sphere_hit(load3(spheres[i].center), spheres[i].radius, o, d, hit->t, &t)) continue;
+        if (any_hit) return true;
+        hit->t = t;
+        hit->u = 0.0f;
+        hit->v = 0.0f;
+        hit->prim = i;
+        hit->tri = FC_HIT_SPHERE;
+        found = true;
+    }
+    return found;
+}
+
+/* Nearest sphere hit with 0 < t < hit->t (or, with `any_hit`, whether there is one): the
+ * binary tree, leaves first, then the nearer inner child with the farther on the stack. */
+inline bool trace_spheres(__global const FcSphereNode* nodes, __global const FcSphere* spheres, float3 o, float3 d,
+                          Hit* hit, bool any_hit) {
+    const BoxRay br = box_ray_setup(o, d);
+    int stack_node[FC_SPHERE_STACK_SIZE];
+    float stack_t[FC_SPHERE_STACK_SIZE];
+    int sp = 0, node = 0;
+    bool found = false;
+    for (;;) {
+        __global const FcSphereNode* n = &nodes[node];
+        float ta, tb;
+        bool ha = box_hit(&br, n->a_lo, n->a_hi, hit->t, &ta);
+        bool hb = box_hit(&br, n->b_lo, n->b_hi, hit->t, &tb);
+        if (ha && n->a_count > 0) {
+            ha = false;
+            if (sphere_leaf_hit(spheres, n->a_index, n->a_count, o, d, hit, any_hit)) {
+                if (any_hit) return true;
+                found = true;
+            }
+        }
+        if (hb && n->b_count > 0) {
+            hb = false;
+            if (sphere_leaf_hit(spheres, n->b_index, n->b_count, o, d, hit, any_hit)) {
+                if (any_hit) return true;
+                found = true;
+            }
+        }
+        if (ha && hb) {
+            const bool b_first = tb < ta;
+            if (sp < FC_SPHERE_STACK_SIZE) { /* always, by the builder's depth limit */
+                stack_node[sp] = b_first ? n->a_index : n->b_index;
+                stack_t[sp] = b_first ? ta : tb;
+                ++sp;
+            }
+            node = b_first ? n->b_index : n->a_index;
+        } else if (ha) {
+            node = n->a_index;
+        } else if (hb) {
+            node = n->b_index;
+        } else {
+            /* Pop the next entry still nearer than the nearest hit. */
+            for (;;) {
+                if (sp == 0) return found;
+                --sp;
+                if (stack_t[sp] <= hit->t) break;
+            }
+            node = stack_node[sp];
+        }
+    }
+}
+
+/* The hit point o + t d re-projected onto the sphere, its outward unit normal in *n and a
+ * bound on each coordinate's rounding error in *err (pbrt-v4 eq. 6.8 with the centre's
+ * translation added). */
+inline float3 sphere_hit_point(float3 c, float r, float3 o, float3 d, float t, float3* n, float3* err) {
+    const float3 v = o + t * d - c;
+    *n = normalize_or(v, (float3)(0.0f, 0.0f, 1.0f));
+    *err = fc_gamma(6) * (fabs(c) + r);
+    return c + r * *n;
+}
+
+/* A ray origin off the sphere point p on the side of unit normal `n`: moved along n by
+ * twice the error bound's projection, then rounded away from the surface. */
+inline float3 sphere_offset_origin(float3 p, float3 err, float3 n) {
+    const float dist = 2.0f * dot(fabs(n), err);
+    float3 po = p + dist * n;
+    po.x = n.x > 0.0f ? nextafter(po.x, INFINITY) : (n.x < 0.0f ? nextafter(po.x, -INFINITY) : po.x);
+    po.y = n.y > 0.0f ? nextafter(po.y, INFINITY) : (n.y < 0.0f ? nextafter(po.y, -INFINITY) : po.y);
+    po.z = n.z > 0.0f ? nextafter(po.z, INFINITY) : (n.z < 0.0f ? nextafter(po.z, -INFINITY) : po.z);
+    return po;
+}
+
+/* The parametrisation at outward unit normal n, about the +y axis (facet's up): u = phi /
+ * (2 pi) with phi = atan2(n.z, n.x) in [0, 2 pi), v = theta / pi with theta = acos(n.y) from
+ * the +y pole. */
+inline float2 sphere_uv(float3 n) {
+    float phi = atan2(n.z, n.x);
+    if (phi < 0.0f) phi += 2.0f * FC_PI;
+    return (float2)(phi * (0.5f * FC_INV_PI), acos(clamp(n.y, -1.0f, 1.0f)) * FC_INV_PI);
+}
+
+/* The unit tangent dp/du at outward unit normal n (along increasing phi), +x at the poles. */
+inline float3 sphere_tangent(float3 n) { return normalize_or((float3)(-n.z, 0.0f, n.x), (float3)(1.0f, 0.0f, 0.0f)); }
+
+#endif
