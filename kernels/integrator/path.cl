@@ -178,8 +178,8 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
-    SceneView sc = {params,     nodes,    tris,     shading, materials,         lights,    light_cdf,
-                    env_texels, env_dist, textures, texels,  material_textures, texcoords, spheres, sphere_nodes};
+    SceneView sc = {params,   nodes,    tris,   shading,           materials, lights,  light_cdf,   env_texels,
+                    env_dist, textures, texels, material_textures, texcoords, spheres, sphere_nodes};
     uint pixel = y * params->width + x;
     float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
     for (uint i = 0; i < params->sample_count; ++i) {
