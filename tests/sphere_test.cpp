@@ -411,12 +411,12 @@ TEST(Sphere, JsonSpheresAreAnalytic) {
     EXPECT_EQ(a.triangle_count(), 0u);
     EXPECT_EQ(a.spheres[0].radius, 0.5f);
     EXPECT_EQ(a.spheres[0].flags, 0);
-    EXPECT_NE(scene_features(a) & (1u << 9), 0u) << "FC_HAS_SPHERES";
+    EXPECT_NE(scene_features(a) & (1u << 10), 0u) << "FC_HAS_SPHERES";
     const Scene t = load_scene(test::scene(d, "t.json", R"("shapes": [{"type": "sphere", "center": [0, 1, 0],
         "radius": 0.5, "subdivisions": 1, "tessellate": true, "inward": true}])"));
     EXPECT_TRUE(t.spheres.empty());
     EXPECT_EQ(t.triangle_count(), 80u);
-    EXPECT_EQ(scene_features(t) & (1u << 9), 0u) << "a scene without spheres builds no sphere code";
+    EXPECT_EQ(scene_features(t) & (1u << 10), 0u) << "a scene without spheres builds no sphere code";
     const Bounds b = scene_bounds(a);
     EXPECT_EQ(b.lo.y, 0.5f);
     EXPECT_EQ(b.hi.y, 1.5f);

@@ -89,7 +89,12 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     d.lights = scene.lights;
     d.light_cdf = scene.light_cdf;
     d.environment_texels = scene.environment.texels;
-    d.environment_distribution = environment_sampling_distribution(scene.environment, scene.settings.strategy);
+    if (scene.environment.sampling == EnvironmentSampling::plain) {
+        d.environment_distribution = scene.environment.distribution;
+    } else {
+        d.environment_distribution_owned = environment_sampling_distribution(scene.environment, scene.settings.strategy);
+        d.environment_distribution = d.environment_distribution_owned;
+    }
     d.materials.reserve(scene.materials.size());
     for (const Material& m : scene.materials) d.materials.push_back(device_material(m));
     d.textures = compile_textures(scene);

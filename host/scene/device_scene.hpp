@@ -30,6 +30,9 @@ struct DeviceScene {
     std::span<const float> light_cdf;
     std::span<const float> environment_texels;
     std::span<const float> environment_distribution;
+    // The distribution when it is not the scene's own (MIS compensation builds its own):
+    // environment_distribution points into it, so it lives as long as this DeviceScene.
+    std::vector<float> environment_distribution_owned;
     // Arrays converted from the host's types.
     std::vector<FcMaterial> materials;
     // Texture pool, material bindings and uvs (host/scene/texture.hpp).

@@ -6,9 +6,10 @@
 
 #include "kernels/scene/scene_view.cl"
 #include "kernels/trace/bvh_traverse.cl"
-#if FC_HAS_SPHERES
+/* Included whatever FC_HAS_SPHERES says: the host assembles a program's sources once
+ * each, so a file first included inside a disabled #if would be missing for the later
+ * includes (material_textures.cl needs sphere_uv); unused inline functions cost nothing. */
 #include "kernels/trace/sphere.cl"
-#endif
 
 /* Nearest hit with 0 < t < tmax: a triangle (hit->tri >= 0) or a sphere (FC_HIT_SPHERE). */
 inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float tmax, Hit* hit) {
