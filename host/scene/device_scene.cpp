@@ -92,7 +92,8 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     if (scene.environment.sampling == EnvironmentSampling::plain) {
         d.environment_distribution = scene.environment.distribution;
     } else {
-        d.environment_distribution_owned = environment_sampling_distribution(scene.environment, scene.settings.strategy);
+        d.environment_distribution_owned =
+            environment_sampling_distribution(scene.environment, scene.settings.strategy);
         d.environment_distribution = d.environment_distribution_owned;
     }
     d.materials.reserve(scene.materials.size());
