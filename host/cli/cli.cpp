@@ -154,8 +154,8 @@ int run_cli(int argc, char** argv) {
             {"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT}, {"bsdf", FC_STRATEGY_BSDF}}));
     render
         ->add_option("--env-sampling", opt.env_plain,
-                     "Environment map sampling under MIS: plain (default; by luminance) or compensated (MIS "
-                     "compensation, Karlik et al. 2019)")
+                     "Environment map sampling under MIS: compensated (default; MIS compensation, Karlik et al. "
+                     "2019) or plain (by luminance)")
         ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"compensated", 0}, {"plain", 1}}));
     render
         ->add_option("--sampler", opt.sampler,

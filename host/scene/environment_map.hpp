@@ -45,7 +45,7 @@ struct EnvironmentMap {
     // (1 / 4pi) * integral of the luminance of the radiance (scale included) over the
     // sphere: the mean luminance, for light selection by power.
     double mean_luminance = 0.0;
-    EnvironmentSampling sampling = EnvironmentSampling::plain;  // scene "sampling", --env-sampling
+    EnvironmentSampling sampling = EnvironmentSampling::compensated;  // scene "sampling", --env-sampling
 };
 
 // Stores the world-to-map rotation in params.to_map (rows).
