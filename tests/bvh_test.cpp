@@ -303,6 +303,20 @@ cl::Buffer upload(const std::vector<T>& v) {
     return b;
 }
 
+// The next rays' origins from surface points leaving along their normals, by the
+// kernels' own offset (kernels/test/trace_kernels.cl, offset_origins).
+std::vector<glm::vec4> offset_origins(const std::vector<glm::vec4>& points, const std::vector<glm::vec4>& normals) {
+    auto& ctx = test::context();
+    cl::Kernel k(test::program("kernels/test/trace_kernels.cl"), "offset_origins");
+    cl::Buffer pb = upload(points), nb = upload(normals);
+    cl::Buffer ob(ctx.context(), CL_MEM_WRITE_ONLY, points.size() * sizeof(glm::vec4));
+    k.setArg(0, pb), k.setArg(1, nb), k.setArg(2, ob);
+    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(points.size()));
+    std::vector<glm::vec4> origins(points.size());
+    ctx.queue().enqueueReadBuffer(ob, CL_TRUE, 0, origins.size() * sizeof(glm::vec4), origins.data());
+    return origins;
+}
+
 // The test kernels built for the tree's node width.
 const char* trace_program(const Bvh& bvh) {
     return bvh.stats.width == 8 ? "kernels/test/trace_kernels8.cl" : "kernels/test/trace_kernels.cl";
@@ -575,14 +589,7 @@ TEST(Bvh, OffsetOriginAvoidsSelfHits) {
                 dirs.push_back(d);
                 from.push_back(t);
             }
-            auto& ctx = test::context();
-            cl::Kernel k(test::program("kernels/test/trace_kernels.cl"), "offset_origins");
-            cl::Buffer pb = upload(points), nb = upload(normals);
-            cl::Buffer ob(ctx.context(), CL_MEM_WRITE_ONLY, points.size() * sizeof(glm::vec4));
-            k.setArg(0, pb), k.setArg(1, nb), k.setArg(2, ob);
-            ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(points.size()));
-            std::vector<glm::vec4> origins(points.size());
-            ctx.queue().enqueueReadBuffer(ob, CL_TRUE, 0, origins.size() * sizeof(glm::vec4), origins.data());
+            const std::vector<glm::vec4> origins = offset_origins(points, normals);
             Rays rays;
             for (std::size_t i = 0; i < origins.size(); ++i) rays.add(glm::vec3(origins[i]), dirs[i]);
             Result r = run("trace_rays_bvh", bvh, rays);
@@ -618,14 +625,7 @@ TEST(Bvh, NoSelfHitsOnAPlaneThroughZeroAtLargeScale) {
                 normals.emplace_back(1.0f, 0.0f, 0.0f, 0.0f);
                 dirs.emplace_back(0.05f + u01(rng), u(rng), u(rng));  // leaving on the +x side
             }
-            auto& ctx = test::context();
-            cl::Kernel k(test::program("kernels/test/trace_kernels.cl"), "offset_origins");
-            cl::Buffer pb = upload(points), nb = upload(normals);
-            cl::Buffer ob(ctx.context(), CL_MEM_WRITE_ONLY, points.size() * sizeof(glm::vec4));
-            k.setArg(0, pb), k.setArg(1, nb), k.setArg(2, ob);
-            ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(points.size()));
-            std::vector<glm::vec4> origins(points.size());
-            ctx.queue().enqueueReadBuffer(ob, CL_TRUE, 0, origins.size() * sizeof(glm::vec4), origins.data());
+            const std::vector<glm::vec4> origins = offset_origins(points, normals);
             Rays rays;
             for (std::size_t i = 0; i < origins.size(); ++i) rays.add(glm::vec3(origins[i]), dirs[i]);
             Result r = expect_agreement(bvh, soup, rays);

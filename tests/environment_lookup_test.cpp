@@ -20,16 +20,7 @@ constexpr double kPi = std::numbers::pi;
 
 template <typename In, typename Out>
 std::vector<Out> run(const char* name, const std::vector<In>& in) {
-    ClContext& ctx = test::context();
-    cl::Buffer a(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(In),
-                 const_cast<In*>(in.data()));
-    cl::Buffer b(ctx.context(), CL_MEM_WRITE_ONLY, in.size() * sizeof(Out));
-    cl::Kernel k(test::program("kernels/test/environment_lookup_kernels.cl"), name);
-    k.setArg(0, a), k.setArg(1, b);
-    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(in.size()));
-    std::vector<Out> out(in.size());
-    ctx.queue().enqueueReadBuffer(b, CL_TRUE, 0, out.size() * sizeof(Out), out.data());
-    return out;
+    return test::run_elementwise<In, Out>("kernels/test/environment_lookup_kernels.cl", name, in);
 }
 
 // The exact (u, v) of a float map-frame direction (unit or not), in double.

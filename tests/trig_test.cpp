@@ -19,16 +19,7 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 // Runs `name` of kernels/test/trig_kernels.cl on `in`, one output per element.
 template <typename In, typename Out>
 std::vector<Out> run(const char* name, const std::vector<In>& in) {
-    ClContext& ctx = test::context();
-    cl::Buffer a(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, in.size() * sizeof(In),
-                 const_cast<In*>(in.data()));
-    cl::Buffer b(ctx.context(), CL_MEM_WRITE_ONLY, in.size() * sizeof(Out));
-    cl::Kernel k(test::program("kernels/test/trig_kernels.cl"), name);
-    k.setArg(0, a), k.setArg(1, b);
-    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(in.size()));
-    std::vector<Out> out(in.size());
-    ctx.queue().enqueueReadBuffer(b, CL_TRUE, 0, out.size() * sizeof(Out), out.data());
-    return out;
+    return test::run_elementwise<In, Out>("kernels/test/trig_kernels.cl", name, in);
 }
 
 TEST(Trig, SincosTurnsMaxError) {

@@ -111,8 +111,7 @@ void JsonLoader::environment(const Json& v, const std::string& path) {
         const std::string name = r.string(v["sampling"], k("sampling"));
         if (name == "plain") scene.environment.sampling = EnvironmentSampling::plain;
         else if (name == "compensated") scene.environment.sampling = EnvironmentSampling::compensated;
-        else
-            r.fail(k("sampling"), fmt::format("unknown sampling '{}' (expected compensated or plain)", name));
+        else r.fail(k("sampling"), fmt::format("unknown sampling '{}' (expected compensated or plain)", name));
     }
 }
 
