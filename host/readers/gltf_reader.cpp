@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -31,9 +32,27 @@ using gltf::Ignored;
 
 // Images are kept undecoded, their bytes in Image::image: gltf_material.cpp decodes
 // those a material uses (gltf::texture_index).
-bool keep_image_undecoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
-                          const unsigned char* bytes, int size, void*) {
-    if (bytes && size > 0) image->image.assign(bytes, bytes + size);
+// `model` (the user data) is the model being loaded: tinygltf 2.5 hands an image of a
+// .glb bufferView over without checking that the view lies inside its buffer (found by
+// tests/fuzz/fuzz_gltf), so the bytes are copied only when they lie inside one buffer.
+bool keep_image_undecoded(tinygltf::Image* image, const int, std::string* err, std::string*, int, int,
+                          const unsigned char* bytes, int size, void* model) {
+    if (bytes && size > 0) {
+        const auto at = reinterpret_cast<std::uintptr_t>(bytes);
+        bool inside = false;
+        for (const tinygltf::Buffer& b : static_cast<const tinygltf::Model*>(model)->buffers) {
+            const auto lo = reinterpret_cast<std::uintptr_t>(b.data.data());
+            if (!b.data.empty() && at >= lo && at - lo <= b.data.size() &&
+                std::size_t(size) <= b.data.size() - (at - lo))
+                inside = true;
+        }
+        // a file or data URI image comes in tinygltf's own bytes; a bufferView's must lie in a buffer
+        if (!inside && image->bufferView >= 0) {
+            if (err) *err += "an image's bufferView lies outside its buffer\n";
+            return false;
+        }
+        image->image.assign(bytes, bytes + size);
+    }
     image->width = image->height = -1;
     return true;
 }
@@ -54,7 +73,7 @@ std::string_view trim(std::string_view s) {
 void parse(const std::string& path, tinygltf::Model& model, Scene& scene) {
     check_input_file(path, "glTF file");
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(keep_image_undecoded, nullptr);
+    loader.SetImageLoader(keep_image_undecoded, &model);
     std::string err, warn;
     const bool binary = lower(std::filesystem::path(path).extension().string()) == ".glb";
     bool ok = false;

@@ -201,7 +201,7 @@ void textures(const MaterialKeys& k, Material& m, const std::string& name, Scene
             t.contains("metallic") ? r.number_in(t["metallic"], JsonReader::key(path, "metallic"), 0, 1) : 1.0f;
         b.dielectric_f0 = ((m.ior - 1.0f) / (m.ior + 1.0f)) * ((m.ior - 1.0f) / (m.ior + 1.0f));
     }
-    auto pair = [&](const char* key, float lo, float hi, float fallback) {
+    auto pair = [&](const char* key, double lo, double hi, float fallback) {
         glm::vec2 v(fallback);
         if (!t.contains(key)) return v;
         const Json& a = t[key];
@@ -210,7 +210,7 @@ void textures(const MaterialKeys& k, Material& m, const std::string& name, Scene
             v[int(i)] = r.number_in(a[i], fmt::format("{}[{}]", JsonReader::key(path, key), i), lo, hi);
         return v;
     };
-    const glm::vec2 scale = pair("uv_scale", -1e6f, 1e6f, 1.0f), offset = pair("uv_offset", -1e6f, 1e6f, 0.0f);
+    const glm::vec2 scale = pair("uv_scale", -1e6, 1e6, 1.0f), offset = pair("uv_offset", -1e6, 1e6, 0.0f);
     b.uv_transform = {scale.x, 0.0f, offset.x, 0.0f, scale.y, offset.y};
 }
 

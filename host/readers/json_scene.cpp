@@ -80,7 +80,7 @@ void JsonLoader::render(const Json& v, const std::string& path) {
         else r.fail(key, fmt::format("unknown sampler '{}' (expected sobol or independent)", name));
     }
     if (v.contains("filter")) filter(v["filter"], k("filter"));
-    if (v.contains("clamp")) s.clamp = r.number_in(v["clamp"], k("clamp"), 0, FC_MAX_RADIANCE, true);
+    if (v.contains("clamp")) s.clamp = r.number_in(v["clamp"], k("clamp"), 0, double(FC_MAX_RADIANCE), true);
 }
 
 // "filter": "tent" or {"type": "tent", "radius": 1.5} (scene/pixel_filter.hpp).
@@ -97,7 +97,7 @@ void JsonLoader::filter(const Json& v, const std::string& path) {
     if (!code) r.fail(type_path, fmt::format("unknown filter '{}' (expected {})", name, pixel_filter_names()));
     s.filter = *code;
     if (is_object && v.contains("radius"))
-        s.filter_radius = r.number_in(v["radius"], JsonReader::key(path, "radius"), 0, kMaxFilterRadius, true);
+        s.filter_radius = r.number_in(v["radius"], JsonReader::key(path, "radius"), 0, double(kMaxFilterRadius), true);
 }
 
 std::string JsonLoader::existing_file(const Json& v, const std::string& path, const char* what) {

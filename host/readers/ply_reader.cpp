@@ -1,10 +1,12 @@
 // PLY through Assimp: the file is read (and inflated when gzip'd) here, checked to be a
-// PLY, then handed to Assimp's PLY importer from memory with triangulation and
-// validation of its data structure; every index it returns is checked again here.
+// PLY, then handed to Assimp's PLY importer from memory without post-processing: Assimp
+// 5.2's triangulation aborts the process (an ai_assert) and another post-process step
+// crashes on some malformed files (found by tests/fuzz/fuzz_ply). So every array and
+// index it returns is checked here, points and lines are skipped here, and polygons are
+// split into fans here.
 #include "host/readers/ply_reader.hpp"
 
 #include <assimp/Importer.hpp>
-#include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <fmt/format.h>
 
@@ -18,6 +20,8 @@ namespace {
 // The mesh's triangles, its positions and (when it has them) normals; points and lines
 // (which Assimp sorts out) are skipped.
 std::size_t convert(const std::string& path, const aiMesh& m, IndexedMesh& out) {
+    if (m.mNumVertices > 0 && !m.mVertices) throw Error(fmt::format("{}: the PLY file has no vertex positions", path));
+    if (m.mNumFaces > 0 && !m.mFaces) throw Error(fmt::format("{}: the PLY file's faces could not be read", path));
     out.positions.resize(m.mNumVertices);
     for (unsigned i = 0; i < m.mNumVertices; ++i)
         out.positions[i] = glm::vec3(m.mVertices[i].x, m.mVertices[i].y, m.mVertices[i].z);
@@ -35,15 +39,18 @@ std::size_t convert(const std::string& path, const aiMesh& m, IndexedMesh& out) 
     out.indices.reserve(std::size_t(m.mNumFaces) * 3);
     for (unsigned f = 0; f < m.mNumFaces; ++f) {
         const aiFace& face = m.mFaces[f];
-        if (face.mNumIndices != 3) {
+        if (face.mNumIndices < 3 || !face.mIndices) {
             ++skipped;
             continue;
         }
-        for (unsigned c = 0; c < 3; ++c) {
+        for (unsigned c = 0; c < face.mNumIndices; ++c)
             if (face.mIndices[c] >= m.mNumVertices)
                 throw Error(fmt::format("{}: face {} names vertex {}, but there are {} vertices", path, f,
                                         face.mIndices[c], m.mNumVertices));
+        for (unsigned c = 1; c + 1 < face.mNumIndices; ++c) {  // a fan: faces of any size, convex as PLY's are
+            out.indices.push_back(face.mIndices[0]);
             out.indices.push_back(face.mIndices[c]);
+            out.indices.push_back(face.mIndices[c + 1]);
         }
     }
     return skipped;
@@ -55,13 +62,9 @@ void load_ply(const std::string& path, Scene& scene, const MeshOptions& options)
     const std::string bytes = read_maybe_gzipped(path, "PLY file");
     check_ply_header(path, bytes);
     Assimp::Importer importer;
-    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     const aiScene* ai = nullptr;
     try {
-        ai = importer.ReadFileFromMemory(bytes.data(), bytes.size(),
-                                         aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                             aiProcess_SortByPType | aiProcess_ValidateDataStructure,
-                                         "ply");
+        ai = importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, "ply");
     } catch (const std::exception& e) {  // Assimp catches its own; this is for allocation failures
         throw Error(fmt::format("{}: cannot read the PLY file: {}", path, e.what()));
     }
@@ -73,6 +76,7 @@ void load_ply(const std::string& path, Scene& scene, const MeshOptions& options)
     MeshTally tally;
     std::size_t skipped = 0;
     for (unsigned i = 0; i < ai->mNumMeshes; ++i) {
+        if (!ai->mMeshes || !ai->mMeshes[i]) throw Error(fmt::format("{}: cannot read the PLY file's mesh", path));
         IndexedMesh mesh;
         skipped += convert(path, *ai->mMeshes[i], mesh);
         add_indexed_mesh(mesh, options.transform, material, options.normals, true, scene, tally);

@@ -21,7 +21,7 @@ bool usable(const FcSphere& s) {
 bvh_detail::PrimRef sphere_ref(const FcSphere& s, std::uint32_t id) {
     bvh_detail::PrimRef r{};
     for (int a = 0; a < 3; ++a) {
-        const double c = s.center[a], rad = double(s.radius) * (1.0 + 1e-5);
+        const double c = double(s.center[a]), rad = double(s.radius) * (1.0 + 1e-5);
         r.lo[a] = std::nextafter(float(c - rad), -INFINITY);
         r.hi[a] = std::nextafter(float(c + rad), INFINITY);
     }

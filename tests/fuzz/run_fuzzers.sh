@@ -22,6 +22,8 @@ timeout=${FUZZ_TIMEOUT:-10}
 # UBSan reports abort (the build uses -fno-sanitize-recover); leaks are findings.
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}
+# Leaks inside Assimp and OpenImageIO (tests/fuzz/lsan_suppressions.txt) are theirs.
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$(cd "$(dirname "$0")" && pwd)/lsan_suppressions.txt}
 
 # Small seeds from ../shared/assets (optional): the first 150 lines of each OBJ with its
 # MTL appended after the harness's separator, and 16x8 copies of the environment maps.
