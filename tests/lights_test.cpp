@@ -7,6 +7,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "tests/cl_test_env.hpp"
+#include "tests/scene_test_util.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/material.hpp"
@@ -24,14 +25,7 @@ Scene plane_scene(int n) {
     Material m = make_material("lambert");
     for (int c = 0; c < 3; ++c) m.diffuse[c] = kAlbedo;
     add_material(scene, m, "plane");
-    add_quad(scene, glm::vec3(-10, 0, 10), glm::vec3(20, 0, 0), glm::vec3(0, 0, -20), 0);
-    scene.camera.projection = FC_PROJECTION_ORTHOGRAPHIC;
-    scene.camera.eye = glm::vec3(0, 5, 0);
-    scene.camera.target = glm::vec3(0, 0, 0);
-    scene.camera.up = glm::vec3(0, 0, -1);
-    scene.camera.ortho_height = 4.0f;
-    scene.settings.width = scene.settings.height = n;
-    scene.settings.max_depth = 1;
+    test::add_plane_seen_from_above(scene, 0, n);
     return scene;
 }
 

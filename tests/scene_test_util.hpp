@@ -24,6 +24,20 @@ inline std::string scene(const TempDir& d, const std::string& name, const std::s
     return d.write(name, "{\n" + body + "\n}\n");
 }
 
+// A 20 x 20 quad of `material` at y = 0 seen from above by an orthographic camera
+// covering [-2, 2]^2 at n x n pixels, direct light only (max_depth 1): pixel (i, j) sees
+// the point x = -2 + 4 (i + 0.5) / n, z likewise.
+inline void add_plane_seen_from_above(Scene& scene, int material, int n) {
+    add_quad(scene, glm::vec3(-10, 0, 10), glm::vec3(20, 0, 0), glm::vec3(0, 0, -20), material);
+    scene.camera.projection = FC_PROJECTION_ORTHOGRAPHIC;
+    scene.camera.eye = glm::vec3(0, 5, 0);
+    scene.camera.target = glm::vec3(0, 0, 0);
+    scene.camera.up = glm::vec3(0, 0, -1);
+    scene.camera.ortho_height = 4.0f;
+    scene.settings.width = scene.settings.height = n;
+    scene.settings.max_depth = 1;
+}
+
 // Runs `f`, expecting a facet::Error whose message contains every one of `parts`.
 template <typename F>
 void expect_error(F f, std::initializer_list<std::string> parts) {

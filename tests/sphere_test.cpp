@@ -526,15 +526,8 @@ TEST(Sphere, LightAbovePlaneMatchesClosedForm) {
         light.diffuse = glm::vec3(0.0f);
         light.emission = glm::vec3(le);
         add_material(scene, light, "light");
-        add_quad(scene, glm::vec3(-10, 0, 10), glm::vec3(20, 0, 0), glm::vec3(0, 0, -20), 0);
+        test::add_plane_seen_from_above(scene, 0, n);
         add_analytic_sphere(scene, glm::vec3(0.0f, h, 0.0f), r, 1, false);
-        scene.camera.projection = FC_PROJECTION_ORTHOGRAPHIC;
-        scene.camera.eye = glm::vec3(0, 5, 0);
-        scene.camera.target = glm::vec3(0, 0, 0);
-        scene.camera.up = glm::vec3(0, 0, -1);
-        scene.camera.ortho_height = 4.0f;
-        scene.settings.width = scene.settings.height = n;
-        scene.settings.max_depth = 1;
         scene.settings.strategy = strategy;
         Renderer::Halves halves;
         render(scene, 64, nullptr, &halves);

@@ -91,28 +91,18 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
         env_texels_ = upload(c, dev.environment_texels);
         env_dist_ = upload(c, dev.environment_distribution);
         accum_ = cl::Buffer(c, CL_MEM_READ_WRITE, 2 * pixel_count() * sizeof(cl_float4));
-        kernel_.setArg(0, params_buf_);
-        kernel_.setArg(1, nodes_);
-        kernel_.setArg(2, tris_);
-        kernel_.setArg(3, shading_);
-        kernel_.setArg(4, materials_);
-        kernel_.setArg(5, lights_);
-        kernel_.setArg(6, light_cdf_);
-        kernel_.setArg(7, env_texels_);
-        kernel_.setArg(8, env_dist_);
-        kernel_.setArg(9, accum_);
         textures_ = upload(c, std::span<const FcTexture>(dev.textures.table));
         texels_ = upload(c, std::span<const float>(dev.textures.texels));
         material_textures_ = upload(c, std::span<const FcMaterialTextures>(dev.textures.materials));
         texcoords_ = upload(c, std::span<const FcTriTexcoords>(dev.textures.texcoords));
-        kernel_.setArg(10, textures_);
-        kernel_.setArg(11, texels_);
-        kernel_.setArg(12, material_textures_);
-        kernel_.setArg(13, texcoords_);
         spheres_ = upload(c, std::span<const FcSphere>(dev.spheres.spheres));
         sphere_nodes_ = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
-        kernel_.setArg(14, spheres_);
-        kernel_.setArg(15, sphere_nodes_);
+        // render_pass's arguments, in the order kernels/integrator/path.cl declares them
+        cl_uint arg = 0;
+        for (const cl::Buffer* b :
+             {&params_buf_, &nodes_, &tris_, &shading_, &materials_, &lights_, &light_cdf_, &env_texels_, &env_dist_,
+              &accum_, &textures_, &texels_, &material_textures_, &texcoords_, &spheres_, &sphere_nodes_})
+            kernel_.setArg(arg++, *b);
     });
     reset();
     stats_.upload_seconds = seconds_since(start);
