@@ -84,13 +84,15 @@ fuzz: fuzz-build
 
 # The bench (bench/README.md): every speed and memory figure of facet, against Embree,
 # in one run; writes out/bench/bench.json and out/bench/bench.md.
-# Then the Mitsuba 3 baseline (bench/README.md): equal-time RMSE on the demo scenes against
+# Then the parallel efficiency of two devices and two MPI ranks against one process
+# (bench/parallel_efficiency.py, out/bench/parallel_efficiency.md), and the Mitsuba 3 baseline (bench/README.md): equal-time RMSE on the demo scenes against
 # Mitsuba 3, skipped when its Python package is absent. MITSUBA_BENCH_FLAGS=--quick: a short run.
 PYTHON ?= python3
 MITSUBA_BENCH_FLAGS ?=
 bench: build
 	mkdir -p out/bench
 	$(BUILD)/facet_bench --json out/bench/bench.json --markdown out/bench/bench.md
+	$(PYTHON) bench/parallel_efficiency.py --facet $(BUILD)/facet
 	$(MAKE) --no-print-directory bench-mitsuba
 
 bench-mitsuba:
