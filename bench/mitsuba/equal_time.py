@@ -117,11 +117,12 @@ class Scene:
         self.width = max(8, int(round(r["width"] * scale)))
         self.height = max(8, int(round(r["height"] * scale)))
         self.pixels = self.width * self.height
-        h = hashlib.sha256()
-        for p in (self.facet_json, self.xml):
+        # A reference depends on the scene file its own renderer reads, not on the other's.
+        self.keys = {}
+        for renderer, p in (("facet", self.facet_json), ("mitsuba", self.xml)):
             with open(os.path.join(ROOT, p), "rb") as f:
-                h.update(f.read())
-        self.key = f"{name}_{self.width}x{self.height}_{h.hexdigest()[:10]}"
+                digest = hashlib.sha256(f.read()).hexdigest()[:10]
+            self.keys[renderer] = f"{name}_{self.width}x{self.height}_{digest}"
 
 
 # --------------------------------------------------------------------------------------
@@ -247,7 +248,7 @@ class Mitsuba:
 
 def reference(prog, scene, seconds, refs_dir):
     """(half A, half B, samples per pixel of both): two halves of independent seeds."""
-    path = os.path.join(refs_dir, f"{scene.key}_{prog.renderer}_{seconds:g}s.npz")
+    path = os.path.join(refs_dir, f"{scene.keys[prog.renderer]}_{prog.renderer}_{seconds:g}s.npz")
     if os.path.exists(path):
         z = np.load(path)
         return z["a"], z["b"], float(z["spp"])

@@ -9,8 +9,9 @@ Two jobs:
                            materials Mitsuba lacks, <scene>.json (the facet scene both
                            renderers then draw: the demo scene with those materials
                            replaced by the nearest model both renderers share).
-  translate.py assets DIR  writes the geometry the XML files load (one PLY per shape:
-                           facet's own triangles, icospheres included) and the
+  translate.py assets DIR  writes the geometry the XML files load (one PLY per mesh
+                           shape, facet's own triangles; analytic spheres are Mitsuba
+                           `sphere` shapes in the XML) and the
                            environment map, under DIR; run by equal_time.py before
                            rendering (deterministic, a second or two).
 
@@ -333,7 +334,8 @@ def load_json(path):
 
 
 def scene_shapes(name, scene):
-    """[(ply_name, vertices, faces, facet material)] of a facet JSON scene."""
+    """[(ply_name, vertices, faces, facet material)] of a facet JSON scene; an analytic
+    sphere is (None, (center, radius, inward), None, material)."""
     out = []
     if name == "cornell_box":
         groups = read_obj_by_material(os.path.join(ROOT, "scenes", "cornell_box.obj"))
@@ -341,6 +343,10 @@ def scene_shapes(name, scene):
             out.append((f"{mat}.ply", v, f, mat))
         return out
     for i, s in enumerate(scene["shapes"]):
+        if s["type"] == "sphere" and not s.get("tessellate", False):
+            # facet's spheres are analytic (docs/spheres.md): Mitsuba's `sphere` shape.
+            out.append((None, (s["center"], s["radius"], s.get("inward", False)), None, s["material"]))
+            continue
         if s["type"] == "sphere":
             v, f = icosphere(s["center"], s["radius"], s.get("subdivisions", 3), s.get("inward", False))
         else:
@@ -397,10 +403,18 @@ def mitsuba_xml(name, scene, materials, shapes):
             lines.append(f'    <!-- {mname}: {t.note} -->')
         bsdf = t.bsdf_xml.replace("<bsdf type=", f'<bsdf id="{mname}" type=', 1)
         lines += ["    " + l for l in bsdf.split("\n")]
-    for ply, _, _, mname in shapes:
-        lines.append('    <shape type="ply">')
-        lines.append(f'        <string name="filename" value="$assets/{name}/{ply}"/>')
-        lines.append('        <boolean name="face_normals" value="true"/>')
+    for ply, geometry, _, mname in shapes:
+        if ply is None:
+            center, radius, inward = geometry
+            lines.append('    <shape type="sphere">')
+            lines.append('        <point name="center" x="{:.9g}" y="{:.9g}" z="{:.9g}"/>'.format(*center))
+            lines.append(f'        <float name="radius" value="{radius:.9g}"/>')
+            if inward:
+                lines.append('        <boolean name="flip_normals" value="true"/>')
+        else:
+            lines.append('    <shape type="ply">')
+            lines.append(f'        <string name="filename" value="$assets/{name}/{ply}"/>')
+            lines.append('        <boolean name="face_normals" value="true"/>')
         lines.append(f'        <ref id="{mname}"/>')
         if materials[mname].emission:
             lines.append(f'        <emitter type="area">{rgb("radiance", materials[mname].emission)}</emitter>')
@@ -484,6 +498,8 @@ def write_assets(out_dir, facet):
         d = os.path.join(out_dir, name)
         os.makedirs(d, exist_ok=True)
         for ply, v, f, _ in scene_shapes(name, scene):
+            if ply is None:
+                continue  # an analytic sphere: in the XML itself
             p = os.path.join(d, ply)
             if not os.path.exists(p):
                 write_ply(p, v, f)
