@@ -2,9 +2,9 @@
 // white furnaces (the directional albedo of a white lobe, F = 1, is 1 within 1%) at
 // alpha in {0.05, 0.1, 0.25, 0.5, 0.75, 1} and theta_o up to 80 degrees for conductors
 // (GGX, Beckmann), rough plastic (Lambert under a compensated Schlick layer), rough
-// dielectrics (reflection + transmission, from both sides) and EON; reciprocity of every
-// reciprocal compensated lobe (the dielectric's albedo scaling is not). The furnace tables
-// print what docs/brdf.md shows.
+// dielectrics (reflection + transmission, from both sides, also off the table's grid) and
+// EON; reciprocity of every reciprocal compensated lobe (the dielectric's albedo scaling
+// is not). The furnace tables print what docs/brdf.md shows.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -90,11 +90,10 @@ FcMaterial white_eon(float r) {
 }
 
 // Runs the furnace over the alpha x theta grid for `make(alpha)`, with and without the
-// compensation, prints the table (single scattering / compensated) and checks the
-// compensated albedo is 1 within 1% (and 4 standard errors). Returns the largest
-// deviation of a compensated cell from 1.
-double furnace(const char* title, FcMaterial (*make)(int, float), int ndf, bool from_below = false,
-               double tolerance = 0.01) {
+// compensation, prints the table (single scattering / compensated) and its largest
+// deviation of a compensated cell from 1, and checks the compensated albedo is 1 within 1%
+// (and 4 standard errors).
+void furnace(const char* title, FcMaterial (*make)(int, float), int ndf, bool from_below = false) {
     std::vector<FcMaterial> mats;
     std::vector<Vec3> wo;
     for (float a : kAlphas)
@@ -122,12 +121,12 @@ double furnace(const char* title, FcMaterial (*make)(int, float), int ndf, bool 
             EXPECT_EQ(ec.bad, 0);
             for (int c = 0; c < 3; ++c) worst = std::max(worst, std::fabs(ec.mean[c] - 1.0));
             for (int c = 0; c < 3; ++c)
-                EXPECT_NEAR(ec.mean[c], 1.0, tolerance + 4.0 * ec.error[c])
+                EXPECT_NEAR(ec.mean[c], 1.0, 0.01 + 4.0 * ec.error[c])
                     << title << " alpha " << a << " theta_o " << t << " channel " << c;
         }
         std::printf("\n");
     }
-    return worst;
+    std::printf("worst |albedo - 1| of a compensated cell: %.4f\n", worst);
 }
 
 TEST(EnergyCompensation, FurnaceConductorGgx) { furnace("GGX conductor, F = 1", white_conductor, FC_NDF_GGX); }
@@ -145,22 +144,47 @@ TEST(EnergyCompensation, FurnacePlasticBeckmann) {
 }
 
 // Rough dielectrics: the energy albedo (reflection + transmission times etap^2), from
-// outside and from inside (total internal reflection), Turquin's albedo scaling. From
-// inside, with Catmull-Rom across the index (energy_compensation.cl), the worst cell is
-// 1.1% off (Beckmann, alpha 0.05, 80 degrees: the table's 16 mu nodes at grazing; it was
-// 2.0% (GGX) and 2.3% (Beckmann) with linear interpolation across the index): asserted at 1.2% (plus 4
-// standard errors per cell, and the worst cell within 1.25%: the samples are seeded, so
-// the figures repeat), 1% from outside.
+// outside and from inside (total internal reflection), Turquin's albedo scaling, within 1%
+// (plus 4 standard errors per cell) both ways. From inside the table holds E / E_c
+// (energy_compensation.cl): with E alone on its 16 x 12 nodes the worst cell was 1.1% off
+// (Beckmann, alpha 0.05, 80 degrees, where E_c falls steeply).
 TEST(EnergyCompensation, FurnaceDielectricGgx) {
     furnace("GGX rough dielectric, ior 1.5, from outside", clear_dielectric, FC_NDF_GGX);
-    EXPECT_LT(furnace("GGX rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_GGX, true, 0.012), 0.0125);
+    furnace("GGX rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_GGX, true);
 }
 
 TEST(EnergyCompensation, FurnaceDielectricBeckmann) {
     furnace("Beckmann rough dielectric, ior 1.5, from outside", clear_dielectric, FC_NDF_BECKMANN);
-    EXPECT_LT(
-        furnace("Beckmann rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_BECKMANN, true, 0.012),
-        0.0125);
+    furnace("Beckmann rough dielectric, ior 1.5, from inside", clear_dielectric, FC_NDF_BECKMANN, true);
+}
+
+// The dielectric's albedo scaling between the table's nodes and index slices: random
+// alpha in [0.05, 1], theta_o in [0, 80] degrees and ior in [1.2, 2.5], both NDFs and
+// both sides, compensated albedo 1 within 1% (plus 4 standard errors).
+TEST(EnergyCompensation, FurnaceDielectricOffGrid) {
+    std::mt19937 rng(18);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<FcMaterial> mats;
+    std::vector<Vec3> wo;
+    for (int i = 0; i < 128; ++i) {
+        const int ndf = i % 2 ? FC_NDF_GGX : FC_NDF_BECKMANN;
+        FcMaterial m = clear_dielectric(ndf, float(0.05 + 0.95 * u(rng)));
+        m.ior = float(1.2 + 1.3 * u(rng));
+        Vec3 w = direction(80.0 * u(rng), 6.283185307179586 * u(rng));
+        if (i % 4 >= 2) w.z = -w.z;
+        mats.push_back(m);
+        wo.push_back(w);
+    }
+    std::vector<Albedo> r = albedos(mats, wo, kSamples);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        EXPECT_EQ(r[i].bad, 0);
+        worst = std::max(worst, std::fabs(r[i].mean[0] - 1.0));
+        EXPECT_NEAR(r[i].mean[0], 1.0, 0.01 + 4.0 * r[i].error[0])
+            << (mats[i].ndf == FC_NDF_GGX ? "GGX" : "Beckmann") << " alpha " << mats[i].alpha_x << " ior "
+            << mats[i].ior << " wo.z " << wo[i].z;
+    }
+    std::printf("[ furnace ] rough dielectric off the grid: 128 cells, worst |albedo - 1| = %.4f\n", worst);
 }
 
 TEST(EnergyCompensation, FurnaceEon) {

@@ -100,18 +100,10 @@ EnvironmentMap constant_environment(const glm::vec3& radiance) {
 
 namespace {
 
-// MIS compensation keeps this share of each texel's luminance: a texel just above the
-// subtracted mean, or one that a sample rounds into from its neighbour (environment.cl),
-// would otherwise have a density so small that a light sample there, where BSDF sampling
-// is weak too, returns L / pdf unbounded (fireflies on the demo scenes); with the floor
-// L / pdf stays within 1 / kCompensationFloor of the plain distribution's, and every
-// texel that emits keeps a density.
-constexpr double kCompensationFloor = 0.1;
-
 // Fills `dist` (the layout of EnvironmentMap::distribution) with the cdfs of texel weights
-// max(luminance - subtract, floor * luminance) * sin(theta) and returns their sum; `mean`
-// gets the integral of the luminance over the sphere.
-double build_cdfs(const EnvironmentMap& env, double subtract, double floor, std::vector<float>& dist, double* mean) {
+// max(luminance - subtract, 0) * sin(theta) and returns their sum; `mean` gets the
+// integral of the luminance over the sphere.
+double build_cdfs(const EnvironmentMap& env, double subtract, std::vector<float>& dist, double* mean) {
     const FcEnvironment& p = env.params;
     const double sr = double(p.scale[0]), sg = double(p.scale[1]), sb = double(p.scale[2]);
     const int w = p.width, h = p.height;
@@ -128,7 +120,7 @@ double build_cdfs(const EnvironmentMap& env, double subtract, double floor, std:
             const float* t = &env.texels[4 * (std::size_t(y) * w + x)];
             const double lum = luminance(double(t[0]) * sr, double(t[1]) * sg, double(t[2]) * sb);
             *mean += lum * omega;
-            f[x] = std::max(lum - subtract, floor * lum) * sin_theta;
+            f[x] = std::max(lum - subtract, 0.0) * sin_theta;
             sum += f[x];
         }
         // conditional cdf of the row (uniform when the row is black: never picked)
@@ -162,7 +154,7 @@ void build_environment_distribution(EnvironmentMap& env) {
         return;
     }
     double mean = 0.0;
-    const double total = build_cdfs(env, 0.0, 1.0, env.distribution, &mean);
+    const double total = build_cdfs(env, 0.0, env.distribution, &mean);
     p.total = float(total / (double(p.width) * p.height));
     env.mean_luminance = p.enabled ? mean / (4.0 * kPi) : 0.0;
 }
@@ -172,13 +164,15 @@ std::vector<float> compensated_environment_distribution(const EnvironmentMap& en
         return env.distribution;
     std::vector<float> dist;
     double mean = 0.0;
-    // the subtracted level sits a hair above the mean: a constant map's texels, whose
-    // luminance rounds around the mean, keep only the floor, proportional to the plain
-    // weights, and the map falls back to the plain distribution itself
+    // Karlik et al.'s max(0, L - mean): texels at or below the mean get probability 0 and
+    // are left to BSDF sampling (env_pdf 0 there: the MIS weight of an escaped ray is 1,
+    // and a light sample that rounds into one is dropped). A floor of L / 10, L / 20 or
+    // L / 4 kept on them measured worse (docs/sampling.md). The subtracted level sits a hair
+    // above the mean so that a constant map, whose texels round around the mean, leaves
+    // nothing and falls back to the plain distribution.
     const double level = fraction * env.mean_luminance * (1.0 + 1e-6);
-    const double total = build_cdfs(env, level, 0.0, dist, &mean);
+    const double total = build_cdfs(env, level, dist, &mean);
     if (!(total > 0.0)) return env.distribution;
-    build_cdfs(env, level, kCompensationFloor, dist, &mean);
     return dist;
 }
 

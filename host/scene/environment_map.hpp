@@ -18,7 +18,7 @@
 //    pdf is then 0 everywhere. A constant environment has a one-float distribution (an
 //    OpenCL buffer cannot be empty).
 //    With MIS compensation (opt-in, under the MIS strategy) the renderer uploads
-//    instead the same layout built from max(luminance - mean, luminance / 10) * sin(theta)
+//    instead the same layout built from max(luminance - mean, 0) * sin(theta)
 //    (environment_sampling_distribution; docs/sampling.md, "MIS compensation").
 #pragma once
 
@@ -75,8 +75,8 @@ EnvironmentMap environment_from_pixels(int width, int height, std::vector<float>
 void build_environment_distribution(EnvironmentMap& env);
 
 // MIS compensation's distribution (Karlik et al. 2019), in the layout of `distribution`:
-// texel weights max(luminance - fraction * mean_luminance, luminance / 10) * sin(theta),
-// since BSDF sampling already covers the smooth part (the floor keeps L / pdf bounded:
+// texel weights max(luminance - fraction * mean_luminance, 0) * sin(theta), since BSDF
+// sampling already covers the smooth part (texels at or below the mean get probability 0:
 // environment_map.cpp). It is the density of light sampling on both
 // sides of MIS (env_sample and env_pdf read the cdfs only), so the estimator stays
 // unbiased as long as BSDF sampling also runs. Returns the plain distribution when

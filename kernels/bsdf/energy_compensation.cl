@@ -23,15 +23,18 @@
  * E5 the albedo with F = (1 - wo.h)^5 (exact for Schlick, an approximation for the
  * exact dielectric Fresnel).
  *
- * E, E5 and their averages are tables of albedo_tables.cl (32 x 32 in mu and in
- * r = sqrt(alpha), bilinear), integrated on these kernels by tests/tools/albedo_tables.cpp.
+ * E, E5 and their averages are tables of albedo_tables_conductor.cl and
+ * albedo_tables_schlick.cl (32 x 32 in mu and in r = sqrt(alpha), bilinear), integrated on
+ * these kernels by tests/tools/albedo_tables.cpp.
  * They hold for height-correlated Smith G, the only G compensated; an anisotropic
  * lobe reads them at alpha = sqrt(alpha_x alpha_y), alpha above 1 at 1. */
 #ifndef FACET_BSDF_ENERGY_COMPENSATION_CL
 #define FACET_BSDF_ENERGY_COMPENSATION_CL
 
 #include "kernels/shared/material_layout.h"
-#include "kernels/bsdf/albedo_tables.cl"
+#include "kernels/bsdf/albedo_tables_conductor.cl"
+#include "kernels/bsdf/albedo_tables_dielectric.cl"
+#include "kernels/bsdf/albedo_tables_schlick.cl"
 #include "kernels/bsdf/fresnel.cl"
 #include "kernels/util/math.cl"
 
@@ -130,7 +133,7 @@ inline float3 ec_diffuse_coupling(const FcMaterial* m, float3 wo, float3 wi) {
 
 /* Rough dielectrics (Turquin 2019, "Practical multiple scattering compensation for
  * microfacet models", albedo scaling): f = f_ss / E(mu_o), E = E_R + E_T the energy albedo
- * of the single-scattering dielectric seen from wo (table fc_albedo_dielectric, by the
+ * of the single-scattering dielectric seen from wo (albedo_tables_dielectric.cl, by the
  * relative index seen from wo's side). The missing energy is returned in proportion to
  * the single-scattering lobes, reflection and transmission alike. Unlike f_ms above this is
  * not reciprocal (a known limit of albedo scaling; docs/brdf.md). */
@@ -144,10 +147,11 @@ inline float ec_dielectric_albedo(const FcMaterial* m, float3 wo) {
     float e = wo.z > 0.0f ? m->ior : 1.0f / m->ior;
     int side = e >= 1.0f ? 0 : 1;
     float ee = side == 0 ? e : 1.0f / e;
+    float mu = clamp(fabs(wo.z), 0.0f, 1.0f);
     float x =
         clamp((ee - 1.0f) / (ee + 1.0f), 0.0f, FC_ALBEDO_D_X_MAX) * ((float)(FC_ALBEDO_D_N_X - 1) / FC_ALBEDO_D_X_MAX);
     float y = ec_r(m) * (float)(FC_ALBEDO_D_N_R - 1);
-    float z = clamp(fabs(wo.z), 0.0f, 1.0f) * (float)(FC_ALBEDO_D_N_MU - 1);
+    float z = mu * (float)(FC_ALBEDO_D_N_MU - 1);
     int k = min((int)x, FC_ALBEDO_D_N_X - 2), j = min((int)y, FC_ALBEDO_D_N_R - 2),
         i = min((int)z, FC_ALBEDO_D_N_MU - 2);
     float tx = x - (float)k, ty = y - (float)j, tz = z - (float)i;
@@ -169,6 +173,12 @@ inline float ec_dielectric_albedo(const FcMaterial* m, float3 wo) {
         v = p1 + 0.5f * tx *
                      ((p2 - p0) + tx * ((2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) + tx * (3.0f * (p1 - p2) + p3 - p0)));
     }
+    /* From inside the table holds E / E_c, E_c the F = 1 conductor's albedo (32 x 32 nodes):
+     * beyond the critical angle every microfacet reflects totally, so near grazing, where
+     * E_c falls steeply at small alpha (masking), E follows it, and the 16 x 12 nodes of E
+     * alone missed that fall by 1.1% (Beckmann, alpha 0.05, 80 degrees); the quotient is
+     * smooth there. From outside the transmission dominates and E does not follow E_c. */
+    if (side == 1) v *= ec_E(m, mu);
     return clamp(v, 0.05f, 1.0f);
 }
 

@@ -58,11 +58,13 @@ __kernel void albedo_table(int ndf, int n_mu, int n_r, uint samples, __global fl
 /* albedo_dielectric_table: one work-item per (x, r, mu) node of one NDF and side. The
  * energy albedo E = E_R + E_T of the rough dielectric seen from wo (above the surface),
  * transmission weighted by etap^2 (the importance, not the radiance, that crosses),
- * exact Fresnel, height-correlated Smith, no compensation. The relative index of node k
- * is e = (1 + x) / (1 - x), x = x_max k / (n_x - 1); side 0 enters a denser medium
- * (ior = e), side 1 leaves it (ior = 1 / e). */
+ * exact Fresnel, height-correlated Smith, no compensation, in out[id].x; in out[id].y the
+ * F = 1 albedo E_c that ec_lookup reads from e_table (an [ndf][r][mu] table of the
+ * fc_albedo_E layout) at the node's (mu, r), which the inside table divides out. The
+ * relative index of node k is e = (1 + x) / (1 - x), x = x_max k / (n_x - 1); side 0
+ * enters a denser medium (ior = e), side 1 leaves it (ior = 1 / e). */
 __kernel void albedo_dielectric_table(int ndf, int side, int n_mu, int n_r, int n_x, float x_max, uint samples,
-                                      __global float* out) {
+                                      __constant const float* e_table, __global float2* out) {
     int id = (int)get_global_id(0);
     if (id >= n_mu * n_r * n_x) return;
     int i = id % n_mu, j = (id / n_mu) % n_r, k = id / (n_mu * n_r);
@@ -94,7 +96,8 @@ __kernel void albedo_dielectric_table(int ndf, int side, int n_mu, int n_r, int 
         float etap = s.wi.z > 0.0f ? 1.0f : relative_eta(m.ior, wo.z);
         kahan_add(&sum, (float3)(s.weight.x * etap * etap, 0.0f, 0.0f));
     }
-    out[id] = sum.sum.x / (float)samples;
+    float e_c = ec_lookup(e_table, ec_ndf(&m), (float)i / (float)(n_mu - 1), r);
+    out[id] = (float2)(sum.sum.x / (float)samples, e_c);
 }
 
 /* out[2i] = the mean of bsdf_sample's weight (rgb) from wos[i] over `samples` random

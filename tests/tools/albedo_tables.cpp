@@ -1,17 +1,22 @@
-// Writes kernels/bsdf/albedo_tables.cl: the directional albedos E(mu) (F = 1) and
-// E5(mu) (F = (1 - wo.h)^5) of the single-scattering GGX and Beckmann lobes with
-// height-correlated Smith G, and their cosine-weighted averages, which the energy
-// compensation of kernels/bsdf/energy_compensation.cl reads. The albedos are integrated
-// on the kernels themselves (kernels/test/albedo_kernels.cl, albedo_table) with 2^16
-// visible-normal samples per node; the averages 2 int E(mu) mu dmu are the exact
-// integrals of the piecewise-linear interpolant the kernels use, so the compensated
-// lobes' albedo integrates to exactly 1 at F = 1 whatever the table's resolution. It also
-// writes the rough dielectric's energy albedo E_R + E_T for Turquin 2019's albedo scaling.
+// Writes the albedo tables of kernels/bsdf/ that the energy compensation of
+// kernels/bsdf/energy_compensation.cl reads, one file per family:
+// - albedo_tables_conductor.cl: the directional albedo E(mu) (F = 1) of the
+//   single-scattering GGX and Beckmann lobes with height-correlated Smith G and its
+//   cosine-weighted average (Kulla-Conty's compensation lobe);
+// - albedo_tables_schlick.cl: E5(mu) (F = (1 - wo.h)^5) and its average, for the Schlick
+//   form of the specular layer's albedo (the diffuse coupling);
+// - albedo_tables_dielectric.cl: the rough dielectric's energy albedo E_R + E_T for
+//   Turquin 2019's albedo scaling (from inside divided by E: energy_compensation.cl).
+// The albedos are integrated on the kernels themselves (kernels/test/albedo_kernels.cl)
+// with 2^16 visible-normal samples per node; the averages 2 int E(mu) mu dmu are the
+// exact integrals of the piecewise-linear interpolant the kernels use, so the compensated
+// lobes' albedo integrates to exactly 1 at F = 1 whatever the table's resolution.
 //
 // Usage (from the repository root, after building the target facet_albedo_tables):
-//   ./build/tests/facet_albedo_tables > kernels/bsdf/albedo_tables.cl && make format
+//   ./build/tests/facet_albedo_tables kernels/bsdf && make format
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -41,17 +46,21 @@ std::vector<cl_float2> integrate(int ndf) {
     return v;
 }
 
-// The rough dielectric's energy albedo E_R + E_T of one NDF and side, [x][r][mu].
+// The rough dielectric's energy albedo E_R + E_T of one NDF and side, [x][r][mu]; from
+// inside (side 1) divided by the F = 1 albedo E_c that the kernels read from `e` (the
+// fc_albedo_E table) at the same (mu, r).
 constexpr int kDMu = 16;
 constexpr int kDR = 12;
 constexpr int kDX = 8;
 constexpr float kDXMax = 0.5f;  // x = (eta - 1) / (eta + 1): eta up to 3
-constexpr unsigned kDSamples = 1u << 14;
+constexpr unsigned kDSamples = 1u << 16;
 
-std::vector<float> integrate_dielectric(int ndf, int side) {
+std::vector<float> integrate_dielectric(int ndf, int side, const std::vector<float>& e) {
     using namespace facet::test;
     const std::size_t n = std::size_t(kDMu) * kDR * kDX;
-    cl::Buffer out(context().context(), CL_MEM_WRITE_ONLY, n * sizeof(float));
+    cl::Buffer table(context().context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, e.size() * sizeof(float),
+                     const_cast<float*>(e.data()));
+    cl::Buffer out(context().context(), CL_MEM_WRITE_ONLY, n * sizeof(cl_float2));
     cl::Kernel k(program("kernels/test/albedo_kernels.cl"), "albedo_dielectric_table");
     k.setArg(0, ndf);
     k.setArg(1, side);
@@ -60,15 +69,20 @@ std::vector<float> integrate_dielectric(int ndf, int side) {
     k.setArg(4, kDX);
     k.setArg(5, kDXMax);
     k.setArg(6, kDSamples);
-    k.setArg(7, out);
+    k.setArg(7, table);
+    k.setArg(8, out);
     context().queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    std::vector<cl_float2> t(n);
+    context().queue().enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(cl_float2), t.data());
     std::vector<float> v(n);
-    context().queue().enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float), v.data());
-    // alpha = 0 and eta = 1 do not scatter: E = 1 exactly
     for (int x = 0; x < kDX; ++x)
         for (int j = 0; j < kDR; ++j)
-            for (int i = 0; i < kDMu; ++i)
-                if (x == 0 || j == 0) v[(std::size_t(x) * kDR + j) * kDMu + i] = 1.0f;
+            for (int i = 0; i < kDMu; ++i) {
+                const std::size_t id = (std::size_t(x) * kDR + j) * kDMu + i;
+                // alpha = 0 and eta = 1 do not scatter: E = 1 exactly
+                const float ed = x == 0 || j == 0 ? 1.0f : t[id].s[0];
+                v[id] = side == 1 ? ed / t[id].s[1] : ed;
+            }
     return v;
 }
 
@@ -92,17 +106,36 @@ std::string literal(double x) {
     return s + "f";
 }
 
-void print_array(const char* name, const std::vector<double>& v, int per_line) {
-    std::printf("__constant float %s[%zu] = {\n", name, v.size());
+void print_array(std::FILE* f, const char* name, const std::vector<double>& v, int per_line) {
+    std::fprintf(f, "__constant float %s[%zu] = {\n", name, v.size());
     for (std::size_t i = 0; i < v.size(); ++i)
-        std::printf("%s%s,%s", i % per_line == 0 ? "    " : " ", literal(v[i]).c_str(),
-                    (i + 1) % per_line == 0 ? "\n" : "");
-    std::printf("};\n");
+        std::fprintf(f, "%s%s,%s", i % per_line == 0 ? "    " : " ", literal(v[i]).c_str(),
+                     (i + 1) % per_line == 0 ? "\n" : "");
+    std::fprintf(f, "};\n");
+}
+
+// One generated kernel file: opens dir/name (throws naming it), writes the common
+// header line, then `body`, then closes it (throws on a write error).
+template <class Body>
+void write_file(const std::string& dir, const char* name, Body body) {
+    const std::string path = dir + "/" + name;
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    if (!f) throw std::runtime_error("cannot write " + path);
+    std::fprintf(f, "/* Generated by tests/tools/albedo_tables.cpp (facet_albedo_tables): do not edit.\n");
+    body(f);
+    const bool ok = std::ferror(f) == 0;
+    if (std::fclose(f) != 0 || !ok) throw std::runtime_error("write error on " + path);
+    std::fprintf(stderr, "wrote %s\n", path.c_str());
 }
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: facet_albedo_tables OUT_DIR  (from the repository root: kernels/bsdf)\n");
+        return 2;
+    }
+    const std::string dir = argv[1];
     try {
         // [ndf][r][mu] in FC_NDF order: Beckmann (0), GGX (1).
         static_assert(FC_NDF_BECKMANN == 0 && FC_NDF_GGX == 1, "albedo tables are indexed by ndf");
@@ -124,35 +157,60 @@ int main() {
                 e5_avg.push_back(average(row5));
             }
         }
+        // the dielectric divides by E as the kernels will read it: the float literals
+        std::vector<float> e_float;
+        for (double v : e) e_float.push_back(std::stof(literal(v)));
         std::vector<double> d;
         for (int ndf : {FC_NDF_BECKMANN, FC_NDF_GGX})
             for (int side : {0, 1})
-                for (float v : integrate_dielectric(ndf, side)) d.push_back(double(v));
-        std::printf(
-            "/* Generated by tests/tools/albedo_tables.cpp (facet_albedo_tables): do not edit.\n"
-            " * Directional albedos of the single-scattering microfacet lobes with height-correlated\n"
-            " * Smith G, integrated on the kernels with %u visible-normal samples per node:\n"
-            " * fc_albedo_E[ndf][r][mu] with F = 1, fc_albedo_E5 with F = (1 - wo.h)^5, at\n"
-            " * mu = i / %d and r = sqrt(alpha) = j / %d (ndf: 0 Beckmann, 1 GGX), and their\n"
-            " * averages 2 int E(mu) mu dmu over the linear interpolant, [ndf][r]. */\n",
-            kSamples, kNMu - 1, kNR - 1);
-        std::printf("#ifndef FACET_BSDF_ALBEDO_TABLES_CL\n#define FACET_BSDF_ALBEDO_TABLES_CL\n\n");
-        std::printf("#define FC_ALBEDO_N_MU %d\n#define FC_ALBEDO_N_R %d\n\n", kNMu, kNR);
-        print_array("fc_albedo_E", e, 8);
-        print_array("fc_albedo_E5", e5, 8);
-        print_array("fc_albedo_E_avg", e_avg, 8);
-        print_array("fc_albedo_E5_avg", e5_avg, 8);
-        std::printf(
-            "\n/* The rough dielectric's energy albedo E_R + E_T (transmission times etap^2, exact\n"
-            " * Fresnel) seen from wo, %u samples per node: fc_albedo_dielectric[ndf][side][x][r][mu]\n"
-            " * at mu = i / %d, r = j / %d and x = (eta - 1) / (eta + 1) = %g k / %d, eta the relative\n"
-            " * index n_far / n_near (side 0) or its inverse (side 1, leaving the denser medium). */\n",
-            kDSamples, kDMu - 1, kDR - 1, double(kDXMax), kDX - 1);
-        std::printf("#define FC_ALBEDO_D_N_MU %d\n#define FC_ALBEDO_D_N_R %d\n#define FC_ALBEDO_D_N_X %d\n", kDMu, kDR,
-                    kDX);
-        std::printf("#define FC_ALBEDO_D_X_MAX %s\n\n", literal(kDXMax).c_str());
-        print_array("fc_albedo_dielectric", d, 8);
-        std::printf("\n#endif\n");
+                for (float v : integrate_dielectric(ndf, side, e_float)) d.push_back(double(v));
+
+        write_file(dir, "albedo_tables_conductor.cl", [&](std::FILE* f) {
+            std::fprintf(f,
+                         " * The directional albedo of the single-scattering GGX and Beckmann lobes with F = 1 and\n"
+                         " * height-correlated Smith G, integrated on the kernels with %u visible-normal samples per\n"
+                         " * node: fc_albedo_E[ndf][r][mu] at mu = i / %d and r = sqrt(alpha) = j / %d (ndf: 0\n"
+                         " * Beckmann, 1 GGX), and its average 2 int E(mu) mu dmu over the linear interpolant,\n"
+                         " * fc_albedo_E_avg[ndf][r]. */\n",
+                         kSamples, kNMu - 1, kNR - 1);
+            std::fprintf(
+                f, "#ifndef FACET_BSDF_ALBEDO_TABLES_CONDUCTOR_CL\n#define FACET_BSDF_ALBEDO_TABLES_CONDUCTOR_CL\n\n");
+            std::fprintf(f, "#define FC_ALBEDO_N_MU %d\n#define FC_ALBEDO_N_R %d\n\n", kNMu, kNR);
+            print_array(f, "fc_albedo_E", e, 8);
+            print_array(f, "fc_albedo_E_avg", e_avg, 8);
+            std::fprintf(f, "\n#endif\n");
+        });
+        write_file(dir, "albedo_tables_schlick.cl", [&](std::FILE* f) {
+            std::fprintf(f,
+                         " * The directional albedo of the same lobes with F = (1 - wo.h)^5 (Schlick's F is F0 E +\n"
+                         " * (1 - F0) E5), on the grid of albedo_tables_conductor.cl, %u samples per node:\n"
+                         " * fc_albedo_E5[ndf][r][mu] and its average fc_albedo_E5_avg[ndf][r]. */\n",
+                         kSamples);
+            std::fprintf(
+                f, "#ifndef FACET_BSDF_ALBEDO_TABLES_SCHLICK_CL\n#define FACET_BSDF_ALBEDO_TABLES_SCHLICK_CL\n\n");
+            std::fprintf(f, "#include \"kernels/bsdf/albedo_tables_conductor.cl\"\n\n");
+            print_array(f, "fc_albedo_E5", e5, 8);
+            print_array(f, "fc_albedo_E5_avg", e5_avg, 8);
+            std::fprintf(f, "\n#endif\n");
+        });
+        write_file(dir, "albedo_tables_dielectric.cl", [&](std::FILE* f) {
+            std::fprintf(f,
+                         " * The rough dielectric's energy albedo E_R + E_T (transmission times etap^2, exact\n"
+                         " * Fresnel) seen from wo, %u samples per node: fc_albedo_dielectric[ndf][side][x][r][mu]\n"
+                         " * at mu = i / %d, r = j / %d and x = (eta - 1) / (eta + 1) = %g k / %d, eta the relative\n"
+                         " * index n_far / n_near (side 0) or its inverse (side 1, leaving the denser medium). Side\n"
+                         " * 1 holds E / E_c, E_c = fc_albedo_E (albedo_tables_conductor.cl) interpolated at the\n"
+                         " * node. */\n",
+                         kDSamples, kDMu - 1, kDR - 1, double(kDXMax), kDX - 1);
+            std::fprintf(
+                f,
+                "#ifndef FACET_BSDF_ALBEDO_TABLES_DIELECTRIC_CL\n#define FACET_BSDF_ALBEDO_TABLES_DIELECTRIC_CL\n\n");
+            std::fprintf(f, "#define FC_ALBEDO_D_N_MU %d\n#define FC_ALBEDO_D_N_R %d\n#define FC_ALBEDO_D_N_X %d\n",
+                         kDMu, kDR, kDX);
+            std::fprintf(f, "#define FC_ALBEDO_D_X_MAX %s\n\n", literal(kDXMax).c_str());
+            print_array(f, "fc_albedo_dielectric", d, 8);
+            std::fprintf(f, "\n#endif\n");
+        });
         return 0;
     } catch (const std::exception& ex) {
         std::fprintf(stderr, "facet_albedo_tables: %s\n", ex.what());
