@@ -70,6 +70,9 @@ nlohmann::json bench_bsdfs(ClContext& ctx, bool quick);
 // Equal-time error of BSDF sampling, environment sampling and MIS under stiff maps.
 nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick);
 
+// Load time, device memory and samples/s with and without textures of users' assets.
+nlohmann::json bench_assets(ClContext& ctx, const std::string& assets, bool quick);
+
 // Specialised against generic programs: build time cold and warm, binary size, speed.
 nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, bool quick);
 

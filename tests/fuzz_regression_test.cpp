@@ -41,6 +41,41 @@ TEST(FuzzRegression, EnvMap) { replay("env_map", fuzz::env_map); }
 TEST(FuzzRegression, Gltf) { replay("gltf", fuzz::gltf); }
 TEST(FuzzRegression, Ply) { replay("ply", fuzz::ply); }
 
+// The glTF and PLY findings loaded as a user's file (load_scene): a clear error that names
+// the file and the problem, or a scene (a face of 1000 vertices is a valid PLY).
+TEST(FuzzRegression, GltfAndPlyFindingsFailCleanly) {
+    struct Case {
+        const char* file;
+        const char* error;      // a part of the message, or nullptr: the file loads
+        std::size_t triangles;  // when it loads: its triangles and the default light's two
+    };
+    const Case cases[] = {
+        {"gltf/image_bufferview_outside_buffer.glb", "bufferView lies outside its buffer", 0},
+        {"ply/face_index_out_of_range.ply", "face 0 names vertex 7, but there are 3 vertices", 0},
+        {"ply/face_negative_index.ply", "face 0 names vertex", 0},
+        {"ply/face_of_two_vertices.ply", "no triangle with a non-zero area", 0},
+        {"ply/face_of_no_vertices.ply", nullptr, 1 + 2},
+        {"ply/face_of_1000_vertices.ply", nullptr, 998 + 2},  // a fan
+        {"ply/binary_truncated_mid_face.ply", "names vertex", 0},
+        {"ply/binary_face_count_beyond_file.ply", "names vertex", 0},
+    };
+    for (const Case& c : cases) {
+        const std::string path = (std::filesystem::path(FACET_FUZZ_DIR) / "regressions" / c.file).string();
+        SCOPED_TRACE(path);
+        ASSERT_TRUE(std::filesystem::exists(path));
+        try {
+            const Scene scene = load_scene(path);
+            EXPECT_EQ(c.error, nullptr) << "loaded, but an error was expected";
+            EXPECT_EQ(scene.triangle_count(), c.triangles);
+        } catch (const Error& e) {
+            const std::string what = e.what();
+            ASSERT_NE(c.error, nullptr) << "unexpected error: " << what;
+            EXPECT_NE(what.find(path), std::string::npos) << what;
+            EXPECT_NE(what.find(c.error), std::string::npos) << what;
+        }
+    }
+}
+
 // The stored seed corpus loads (or fails cleanly) too: the harnesses' conventions hold.
 TEST(FuzzRegression, SeedCorpus) {
     for (const char* h : {"scene_json", "obj_mtl", "env_map", "gltf", "ply"}) {

@@ -14,6 +14,7 @@
 #include "host/film/image_io.hpp"
 #include "host/readers/load_scene.hpp"
 #include "host/readers/obj_reader.hpp"
+#include "host/render/aov.hpp"
 #include "host/render/features.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
@@ -180,6 +181,76 @@ TEST(Texture, SrgbDecodedForColourNotForData) {
     fs::remove_all(dir);
 }
 
+// A binary PPM (P6) of w x h pixels with 8-bit (maxval 255) or 16-bit (maxval 65535,
+// big-endian) codes, which OpenImageIO reads as an sRGB integer image.
+void write_ppm(const fs::path& path, int w, int h, int maxval, const std::vector<int>& codes) {
+    std::ofstream out(path, std::ios::binary);
+    out << "P6\n" << w << " " << h << "\n" << maxval << "\n";
+    for (int c : codes) {
+        if (maxval > 255) out.put(char(c >> 8));
+        out.put(char(c & 0xff));
+    }
+}
+
+// 8-bit images are stored in 4 bytes a texel (sRGB colours decoded on the device through
+// the table, data as unorm), 16-bit ones as half floats: at texel centres the kernels
+// read what the host decoded (exactly for 8 bits, to half precision for 16).
+TEST(Texture, CompactFormatsAtTexelCentres) {
+    const fs::path dir = temp_dir("formats");
+    const int w = 5, h = 3;
+    std::mt19937 rng(3);
+    std::vector<int> c8, c16;
+    for (int i = 0; i < w * h * 3; ++i) {
+        c8.push_back(int(rng() % 256));
+        c16.push_back(int(rng() % 65536));
+    }
+    c8[0] = 0;  // the ends of both ranges
+    c8[1] = 255;
+    c16[0] = 0;
+    c16[1] = 65535;
+    write_ppm(dir / "b8.ppm", w, h, 255, c8);
+    write_ppm(dir / "b16.ppm", w, h, 65535, c16);
+    struct Case {
+        std::string file;
+        TextureSpace space;
+        int format;
+        std::uint32_t words;  // per texel
+        float tolerance;      // relative
+    };
+    const Case cases[] = {{"b8.ppm", TextureSpace::Color, FC_TEXEL_RGBA8_SRGB, 1, 2e-6f},
+                          {"b8.ppm", TextureSpace::Data, FC_TEXEL_RGBA8, 1, 2e-6f},
+                          {"b16.ppm", TextureSpace::Color, FC_TEXEL_RGBA16F, 2, 1e-3f},
+                          {"b16.ppm", TextureSpace::Data, FC_TEXEL_RGBA16F, 2, 1e-3f}};
+    for (const Case& k : cases) {
+        SCOPED_TRACE(k.file + (k.space == TextureSpace::Color ? " colour" : " data"));
+        TextureImage t;
+        try {
+            t = load_texture((dir / k.file).string(), k.space, "test");
+        } catch (const Error& e) {
+            GTEST_SKIP() << "this build does not read PPM: " << e.what();
+        }
+        EXPECT_EQ(t.format, k.format);
+        std::vector<cl_float4> uvl;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) uvl.push_back({{(x + 0.5f) / w, (y + 0.5f) / h, 0.0f, 0.0f}});
+        const std::vector<cl_float4> got = lookup(t, uvl);
+        for (std::size_t i = 0; i < uvl.size(); ++i)
+            for (int c = 0; c < 3; ++c) {
+                const float want = t.texels[4 * i + std::size_t(c)];
+                ASSERT_NEAR(got[i].s[c], want, k.tolerance * want + 1e-7f) << "texel " << i << " channel " << c;
+            }
+        // The device's bytes: the 256-word sRGB table, then the pyramid in the format.
+        Scene scene;
+        scene.textures.push_back(t);
+        Material m = default_material();
+        m.textures.base_color = 0;
+        scene.materials.push_back(m);
+        scene.shading.push_back(FcTriShading{});
+        EXPECT_EQ(compile_textures(scene).texels.size(), FC_SRGB_TABLE_WORDS + t.texels.size() / 4u * k.words);
+    }
+    fs::remove_all(dir);
+}
+
 TEST(Texture, NormalMapFrames) {
     ClContext& ctx = test::context();
     const float s = std::sin(0.3f), c = std::cos(0.3f);
@@ -265,6 +336,24 @@ TEST(Texture, TexturedQuadMeanIsTextureMean) {
     }
     // Not the factor alone: the texture's mean is far from the untextured albedo 1.
     for (int c = 0; c < 3; ++c) EXPECT_LT(want[c], 0.8);
+}
+
+// The albedo AOV of a textured quad is the texture: a 2 x 1 clamped texture, red left
+// and blue right, over an orthographic view of the quad.
+TEST(Texture, AlbedoAovShowsTheTexture) {
+    Scene scene = lit_quad(16);
+    const std::vector<float> rgb = {0.8f, 0.1f, 0.1f, 0.1f, 0.2f, 0.7f};
+    scene.textures.push_back(make_texture(2, 1, rgba_of(rgb), FC_WRAP_CLAMP, FC_WRAP_CLAMP));
+    scene.materials[0].textures.base_color = 0;
+    Bvh bvh = build_bvh(scene.vertices);
+    const AovImages a = render_aovs(test::context(), scene, bvh, 4);
+    for (int y : {2, 8, 13}) {
+        const std::size_t left = std::size_t(y) * 16 + 1, right = std::size_t(y) * 16 + 14;
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(a.albedo[3 * left + std::size_t(c)], rgb[std::size_t(c)], 1e-4f) << "left, channel " << c;
+            EXPECT_NEAR(a.albedo[3 * right + std::size_t(c)], rgb[3 + std::size_t(c)], 1e-4f) << "right, channel " << c;
+        }
+    }
 }
 
 TEST(Texture, FlatNormalMapEqualsUnmapped) {

@@ -162,6 +162,7 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
     img.spp = spec.get_int_attribute("facet:spp", -1);
     // Integer formats hold display-encoded values: sRGB unless the file says linear.
     const bool integer = spec.format.basetype == TypeDesc::UINT8 || spec.format.basetype == TypeDesc::UINT16;
+    if (integer) img.bits = spec.format.basetype == TypeDesc::UINT8 ? 8 : 16;
     const std::string space = spec.get_string_attribute("oiio:ColorSpace", "sRGB");
     if (integer && space != "Linear" && space != "linear") {
         img.decoded_srgb = true;

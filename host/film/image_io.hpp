@@ -45,6 +45,7 @@ struct ImageRGB {
     // An 8-bit or 16-bit integer image in sRGB (PNG, JPEG...): its values were decoded to
     // linear, and `note` says so (such an image stops at 1: no sun, no highlights).
     bool decoded_srgb = false;
+    int bits = 32;  // 8 or 16 for an integer file (its precision; textures store it compactly)
     std::string note;
 };
 

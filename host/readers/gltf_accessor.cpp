@@ -49,7 +49,8 @@ View view(const tinygltf::Model& m, int index, int want_type, std::size_t compon
         fail(fmt::format("has type {}, expected {}", a.type,
                          want_type == TINYGLTF_TYPE_SCALAR ? "SCALAR"
                          : want_type == TINYGLTF_TYPE_VEC2 ? "VEC2"
-                                                           : "VEC3"));
+                         : want_type == TINYGLTF_TYPE_VEC3 ? "VEC3"
+                                                           : "VEC4"));
     const std::size_t size = component_size(a.componentType);
     if (size == 0) fail(fmt::format("unknown componentType {}", a.componentType));
     if (a.count == 0) fail("count is 0");
@@ -109,6 +110,22 @@ std::vector<glm::vec3> read_vec3(const tinygltf::Model& m, int accessor, const s
         if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
             throw Error(fmt::format("{}: {}: accessor {}: element {} is not finite ({}, {}, {})", file, place, accessor,
                                     i, out[i].x, out[i].y, out[i].z));
+    }
+    return out;
+}
+
+std::vector<glm::vec4> read_tangents(const tinygltf::Model& m, int accessor, const std::string& file,
+                                     const std::string& place) {
+    const View v = view(m, accessor, TINYGLTF_TYPE_VEC4, 4, file, place);
+    if (m.accessors[std::size_t(accessor)].componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+        throw Error(fmt::format("{}: {}: accessor {}: expected FLOAT components", file, place, accessor));
+    std::vector<glm::vec4> out(v.count);
+    for (std::size_t i = 0; i < v.count; ++i) {
+        const unsigned char* p = v.base + i * v.stride;
+        out[i] = glm::vec4(load<float>(p), load<float>(p + 4), load<float>(p + 8), load<float>(p + 12));
+        const glm::vec4 t = out[i];
+        if (!std::isfinite(t.x) || !std::isfinite(t.y) || !std::isfinite(t.z) || !std::isfinite(t.w))
+            throw Error(fmt::format("{}: {}: accessor {}: element {} is not finite", file, place, accessor, i));
     }
     return out;
 }

@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <tiny_gltf.h>
 
 namespace facet::gltf {
@@ -18,6 +19,9 @@ namespace facet::gltf {
 // VEC3 FLOAT, every component finite (POSITION, NORMAL).
 std::vector<glm::vec3> read_vec3(const tinygltf::Model& m, int accessor, const std::string& file,
                                  const std::string& place);
+// VEC4 FLOAT, every component finite (TANGENT: xyz, handedness w = +-1).
+std::vector<glm::vec4> read_tangents(const tinygltf::Model& m, int accessor, const std::string& file,
+                                     const std::string& place);
 // VEC2 FLOAT or normalised UNSIGNED_BYTE / UNSIGNED_SHORT (TEXCOORD_n), finite.
 std::vector<glm::vec2> read_vec2(const tinygltf::Model& m, int accessor, const std::string& file,
                                  const std::string& place);

@@ -235,7 +235,7 @@ private:
                 continue;
             }
             for (const auto& [name, accessor] : prim.attributes)
-                if (name != "POSITION" && name != "NORMAL" && name != "TEXCOORD_0")
+                if (name != "POSITION" && name != "NORMAL" && name != "TEXCOORD_0" && name != "TANGENT")
                     ignored_.add("attribute " + name, place);
             if (!prim.targets.empty()) ignored_.add("morph targets", place);
             for (const auto& [name, value] : prim.extensions) ignored_.add("primitive extension " + name, place);
@@ -256,6 +256,12 @@ private:
                 if (uvs.size() != m.positions.size())
                     throw Error(fmt::format("{}: {}: TEXCOORD_0 and POSITION have different counts", path_, place));
                 m.texcoords = uvs;
+            }
+            if (auto t = prim.attributes.find("TANGENT"); t != prim.attributes.end()) {
+                m.tangents = gltf::read_tangents(model_, t->second, path_, place + ".attributes.TANGENT");
+                if (m.tangents.size() != m.positions.size())
+                    throw Error(fmt::format("{}: {}: TANGENT has {} elements, POSITION {}", path_, place,
+                                            m.tangents.size(), m.positions.size()));
             }
             std::vector<std::uint32_t> order;
             if (prim.indices >= 0) {

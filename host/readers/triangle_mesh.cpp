@@ -8,6 +8,7 @@
 #include <glm/matrix.hpp>
 
 #include "host/error.hpp"
+#include "host/scene/texture_tangents.hpp"
 #include "host/util/wide_vector.hpp"
 
 namespace facet {
@@ -70,6 +71,13 @@ void add_indexed_mesh(const IndexedMesh& mesh, const glm::mat4& transform, int m
             const std::uint32_t b = mirrored ? idx[2] : idx[1], c = mirrored ? idx[1] : idx[2];
             set_triangle_texcoords(scene, scene.shading.size() - 1, mesh.texcoords[idx[0]], mesh.texcoords[b],
                                    mesh.texcoords[c]);
+        }
+        if (mesh.tangents.size() == mesh.positions.size()) {  // the file's; else texture_tangents.cpp's
+            const std::uint32_t b = mirrored ? idx[2] : idx[1], c = mirrored ? idx[1] : idx[2];
+            const glm::mat3 m(transform);
+            auto world = [&](const glm::vec4& v) { return glm::vec4(m * glm::vec3(v), side * v.w); };
+            const glm::vec4 t[3] = {world(mesh.tangents[idx[0]]), world(mesh.tangents[b]), world(mesh.tangents[c])};
+            set_triangle_tangents(scene, scene.shading.size() - 1, t);
         }
     }
 }

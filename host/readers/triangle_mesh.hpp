@@ -10,6 +10,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "host/readers/mesh_normals.hpp"
 #include "host/scene/scene.hpp"
@@ -27,6 +28,7 @@ struct IndexedMesh {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;      // one per position, or empty
     std::vector<glm::vec2> texcoords;    // one per position (v = 0 at the image's top), or empty
+    std::vector<glm::vec4> tangents;     // one per position (xyz, handedness w = +-1: glTF TANGENT), or empty
     std::vector<std::uint32_t> indices;  // three per triangle, each < positions.size()
 };
 

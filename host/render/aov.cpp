@@ -55,6 +55,14 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::u
         cl::Buffer sphere_nodes = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
         kernel.setArg(6, spheres);
         kernel.setArg(7, sphere_nodes);
+        cl::Buffer textures = upload(c, std::span<const FcTexture>(dev.textures.table));
+        cl::Buffer texels = upload(c, std::span<const std::uint32_t>(dev.textures.texels));
+        cl::Buffer material_textures = upload(c, std::span<const FcMaterialTextures>(dev.textures.materials));
+        cl::Buffer texcoords = upload(c, std::span<const FcTriTexcoords>(dev.textures.texcoords));
+        kernel.setArg(8, textures);
+        kernel.setArg(9, texels);
+        kernel.setArg(10, material_textures);
+        kernel.setArg(11, texcoords);
         const std::uint32_t rows = rows_per_launch(width, spp);
         for (std::uint32_t row = 0; row < height; row += rows) {
             FcRenderParams p = dev.params;

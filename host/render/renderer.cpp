@@ -64,7 +64,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
                                      {"spheres", dev.spheres.spheres.size() * sizeof(FcSphere)},
                                      {"sphere BVH", dev.spheres.nodes.size() * sizeof(FcSphereNode)},
                                      {"image", 2 * pixel_count() * sizeof(cl_float4)},
-                                     {"textures", dev.textures.texels.size() * sizeof(float)},
+                                     {"textures", dev.textures.texels.size() * sizeof(std::uint32_t)},
                                      {"texture uvs", dev.textures.texcoords.size() * sizeof(FcTriTexcoords)}});
 
     stats_.features = generic ? all_features() : scene_features(scene);
@@ -92,7 +92,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
         env_dist_ = upload(c, dev.environment_distribution);
         accum_ = cl::Buffer(c, CL_MEM_READ_WRITE, 2 * pixel_count() * sizeof(cl_float4));
         textures_ = upload(c, std::span<const FcTexture>(dev.textures.table));
-        texels_ = upload(c, std::span<const float>(dev.textures.texels));
+        texels_ = upload(c, std::span<const std::uint32_t>(dev.textures.texels));
         material_textures_ = upload(c, std::span<const FcMaterialTextures>(dev.textures.materials));
         texcoords_ = upload(c, std::span<const FcTriTexcoords>(dev.textures.texcoords));
         spheres_ = upload(c, std::span<const FcSphere>(dev.spheres.spheres));

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <fmt/format.h>
+#include <glm/gtc/packing.hpp>
+#include <glm/vec4.hpp>
 
 #include "host/error.hpp"
 #include "host/film/image_io.hpp"
 #include "host/scene/scene.hpp"
+#include "host/scene/texture_tangents.hpp"
 
 namespace facet {
 namespace {
@@ -34,6 +38,40 @@ std::vector<float> half_level(const float* src, int w, int h, int nw, int nh) {
     }
     return out;
 }
+
+// The sRGB transfer function's inverse, as read_image decodes integer images.
+float srgb_decode(float encoded) {
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+std::uint32_t unorm8(float v) { return std::uint32_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+
+// Appends texel `rgba` to the pool in `format` (kernels/shared/texture_layout.h).
+void append_texel(std::vector<std::uint32_t>& pool, int format, const float* rgba) {
+    switch (format) {
+        case FC_TEXEL_RGBA8_SRGB:
+            pool.push_back(unorm8(srgb_encode(rgba[0])) | unorm8(srgb_encode(rgba[1])) << 8 |
+                           unorm8(srgb_encode(rgba[2])) << 16 | unorm8(rgba[3]) << 24);
+            break;
+        case FC_TEXEL_RGBA8:
+            pool.push_back(unorm8(rgba[0]) | unorm8(rgba[1]) << 8 | unorm8(rgba[2]) << 16 | unorm8(rgba[3]) << 24);
+            break;
+        case FC_TEXEL_RGBA16F: {
+            const std::uint64_t h = glm::packHalf4x16(glm::vec4(rgba[0], rgba[1], rgba[2], rgba[3]));
+            pool.push_back(std::uint32_t(h));
+            pool.push_back(std::uint32_t(h >> 32));
+            break;
+        }
+        default:
+            for (int c = 0; c < 4; ++c) {
+                std::uint32_t bits;
+                std::memcpy(&bits, &rgba[c], sizeof bits);
+                pool.push_back(bits);
+            }
+    }
+}
+
+std::uint32_t texel_words(int format) { return format == FC_TEXEL_RGBA32F ? 4u : format == FC_TEXEL_RGBA16F ? 2u : 1u; }
 
 }  // namespace
 
@@ -81,6 +119,10 @@ TextureImage load_texture(const std::string& path, TextureSpace space, const std
     TextureImage t = make_texture(img.width, img.height, std::move(rgba));
     t.path = path;
     t.space = space;
+    // As precise as the file: sRGB bytes decoded on the device, 16 bits as half floats.
+    if (img.bits == 8)
+        t.format = img.decoded_srgb && space == TextureSpace::Color ? FC_TEXEL_RGBA8_SRGB : FC_TEXEL_RGBA8;
+    else if (img.bits == 16) t.format = FC_TEXEL_RGBA16F;
     return t;
 }
 
@@ -145,25 +187,35 @@ DeviceTextures compile_textures(const Scene& scene) {
     if (!scene_uses_textures(scene)) {
         for (FcMaterialTextures& m : d.materials) m = device_material_textures(MaterialTextures{});
         d.table.push_back(FcTexture{});
-        d.texels.assign(4, 0.0f);
+        d.texels.assign(4, 0u);
         d.texcoords.push_back(FcTriTexcoords{});
         return d;
     }
+    for (std::uint32_t k = 0; k < FC_SRGB_TABLE_WORDS; ++k) {
+        const float linear = srgb_decode(float(k) / 255.0f);
+        std::uint32_t bits;
+        std::memcpy(&bits, &linear, sizeof bits);
+        d.texels.push_back(bits);
+    }
     for (const TextureImage& t : scene.textures) {
         FcTexture e{};
-        if (d.texels.size() / 4u > 0xffffffffull - t.texels.size() / 4u)
-            throw Error(fmt::format("textures: more than 2^32 texels in all (at {})", t.path));
-        e.offset = std::uint32_t(d.texels.size() / 4u);
+        const std::uint64_t words = t.texels.size() / 4u * texel_words(t.format);
+        if (words > 0xffffffffull || d.texels.size() > 0xffffffffull - words)
+            throw Error(fmt::format("textures: more than 16 GiB of texels in all (at {})", t.path));
+        e.offset = std::uint32_t(d.texels.size());
         e.width = t.width;
         e.height = t.height;
         e.levels = t.levels;
         e.wrap_u = t.wrap_u;
         e.wrap_v = t.wrap_v;
+        e.format = t.format;
         d.table.push_back(e);
-        d.texels.insert(d.texels.end(), t.texels.begin(), t.texels.end());
+        d.texels.reserve(d.texels.size() + words);
+        for (std::size_t i = 0; i + 3 < t.texels.size(); i += 4) append_texel(d.texels, t.format, &t.texels[i]);
     }
     d.texcoords = scene.texcoords;
     d.texcoords.resize(scene.shading.size(), FcTriTexcoords{});
+    compute_tangents(scene, d.texcoords);
     for (const FcLight& l : scene.lights) {
         if (l.type != FC_LIGHT_AREA_TRIANGLE) continue;
         const std::size_t t = std::size_t(l.prim);

@@ -25,6 +25,9 @@ enum class TextureSpace { Color, Data };
 
 // A decoded texture with its mip pyramid: `texels` holds 4 floats (RGBA, A = 1) a texel,
 // level 0 (width x height, top row first) then each smaller level down to 1 x 1.
+// `format` is how the device stores it (FC_TEXEL_*, kernels/shared/texture_layout.h):
+// as precise as the file, no more (8-bit files in 4 bytes a texel, sRGB colours decoded
+// on the device; 16-bit ones as half floats; float files as floats).
 struct TextureImage {
     std::string path;
     TextureSpace space = TextureSpace::Color;
@@ -33,6 +36,7 @@ struct TextureImage {
     int levels = 0;
     int wrap_u = FC_WRAP_REPEAT;
     int wrap_v = FC_WRAP_REPEAT;
+    int format = FC_TEXEL_RGBA32F;
     std::vector<float> texels;
 };
 
@@ -63,12 +67,12 @@ bool scene_uses_textures(const Scene& scene);
 // material always, since the generic program reads them.
 struct DeviceTextures {
     std::vector<FcTexture> table;
-    std::vector<float> texels;  // 4 floats a texel (the kernels read float4)
+    std::vector<std::uint32_t> texels;  // the pool: the sRGB table, then each texture in its format
     std::vector<FcMaterialTextures> materials;
     std::vector<FcTriTexcoords> texcoords;
 
     std::uint64_t bytes() const {
-        return table.size() * sizeof(FcTexture) + texels.size() * sizeof(float) +
+        return table.size() * sizeof(FcTexture) + texels.size() * sizeof(std::uint32_t) +
                materials.size() * sizeof(FcMaterialTextures) + texcoords.size() * sizeof(FcTriTexcoords);
     }
 };

@@ -5,9 +5,11 @@
  * image is. Delta (mirror, smooth glass) surfaces are passed through along a sampled
  * direction, their weight carried into the albedo, as OIDN asks for.
  *   albedo  the diffuse reflectance plus the specular lobe's Fresnel reflectance at the
- *           viewing angle, clamped to [0, 1] per channel (Cycles' denoising albedo);
- *           0 where the sample escapes
- *   normal  the world-space shading normal, facing the incoming ray; 0 where it escapes
+ *           viewing angle, clamped to [0, 1] per channel (Cycles' denoising albedo),
+ *           with the material's textures applied as the path tracer applies them
+ *           (apply_textures); 0 where the sample escapes
+ *   normal  the world-space shading normal (normal-mapped), facing the incoming ray; 0
+ *           where it escapes
  *   depth   the length of the path from the camera to the hit (through mirrors: the
  *           depth of the reflection); averaged over the samples that hit
  * The accumulation buffer holds two float4 a pixel: (albedo sum, sum of |weight| over the
@@ -20,6 +22,7 @@
 #include "kernels/camera/pixel_sample.cl"
 #include "kernels/bsdf/bsdf.cl"
 #include "kernels/util/sampler.cl"
+#include "kernels/texture/material_textures.cl"
 
 /* Delta surfaces followed at most this many times before a sample counts as escaped. */
 #define FC_AOV_MAX_DELTA_BOUNCES 16u
@@ -37,13 +40,16 @@ inline float3 aov_albedo(const FcMaterial* m, float3 wo_local) {
 __kernel void aov_pass(__constant const FcRenderParams* params, __global const FcBvhNode* nodes,
                        __global const FcTriangle* tris, __global const FcTriShading* shading,
                        __global const FcMaterial* materials, __global float4* accum, __global const FcSphere* spheres,
-                       __global const FcSphereNode* sphere_nodes) {
+                       __global const FcSphereNode* sphere_nodes, __global const FcTexture* textures,
+                       __global const uint* texels, __global const FcMaterialTextures* material_textures,
+                       __global const FcTriTexcoords* texcoords) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
     uint pixel = y * params->width + x;
-    SceneView sc = {params, nodes, tris, shading, materials, 0, 0, 0, 0, 0, 0, 0, 0, spheres, sphere_nodes};
+    SceneView sc = {params, nodes,    tris,   shading,           materials, 0,       0,           0,
+                    0,      textures, texels, material_textures, texcoords, spheres, sphere_nodes};
     float4 albedo_sum = (float4)(0.0f), normal_sum = (float4)(0.0f);
     for (uint i = 0; i < params->sample_count; ++i) {
         uint index = params->sample_begin + i;
@@ -58,6 +64,9 @@ __kernel void aov_pass(__constant const FcRenderParams* params, __global const F
             distance += hit.t;
             Surface s = scene_surface_at(&sc, &hit, o, d);
             FcMaterial mat = materials[s.material];
+#if FC_HAS_TEXTURES
+            apply_textures(&sc, &hit, s.material, d, ray_cone_width(params, distance), &s.ns, &mat);
+#endif
             const FcMaterial* m = &mat;
             float3 wo = -d;
             float3 wo_local; /* the side the ray arrived from (as path.cl) */

@@ -171,7 +171,7 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
                           __global const FcMaterial* materials, __global const FcLight* lights,
                           __global const float* light_cdf, __global const float4* env_texels,
                           __global const float* env_dist, __global float4* accum, __global const FcTexture* textures,
-                          __global const float4* texels, __global const FcMaterialTextures* material_textures,
+                          __global const uint* texels, __global const FcMaterialTextures* material_textures,
                           __global const FcTriTexcoords* texcoords, __global const FcSphere* spheres,
                           __global const FcSphereNode* sphere_nodes) {
     uint gid = get_global_id(0);

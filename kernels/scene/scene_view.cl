@@ -17,7 +17,7 @@ typedef struct {
     __global const float* env_dist;
     /* Textures (kernels/shared/texture_layout.h); one-element placeholders without them. */
     __global const FcTexture* textures;
-    __global const float4* texels;
+    __global const uint* texels;
     __global const FcMaterialTextures* material_textures;
     __global const FcTriTexcoords* texcoords;
     __global const FcSphere* spheres;

@@ -50,9 +50,9 @@
     F(FcEnvironment, width) F(FcEnvironment, height) F(FcEnvironment, enabled) F(FcEnvironment, scale)                      \
     F(FcEnvironment, total) F(FcEnvironment, to_map)                                                                        \
     F(FcTexture, offset) F(FcTexture, width) F(FcTexture, height) F(FcTexture, levels) F(FcTexture, wrap_u)                 \
-    F(FcTexture, wrap_v) F(FcMaterialTextures, base_color) F(FcMaterialTextures, normal)                                    \
+    F(FcTexture, wrap_v) F(FcTexture, format) F(FcMaterialTextures, base_color) F(FcMaterialTextures, normal)               \
     F(FcMaterialTextures, base_factor) F(FcMaterialTextures, flags) F(FcMaterialTextures, uv_transform)                     \
-    F(FcTriTexcoords, uv)                                                                                                   \
+    F(FcTriTexcoords, uv) F(FcTriTexcoords, tangent_flags) F(FcTriTexcoords, tangent)                                       \
     F(FcSphere, center) F(FcSphere, radius) F(FcSphere, material) F(FcSphere, light) F(FcSphere, flags)                     \
     F(FcSphere, prim) F(FcSphereNode, a_lo) F(FcSphereNode, a_index) F(FcSphereNode, a_hi) F(FcSphereNode, a_count)         \
     F(FcSphereNode, b_lo) F(FcSphereNode, b_index) F(FcSphereNode, b_hi) F(FcSphereNode, b_count)

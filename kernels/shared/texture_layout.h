@@ -1,9 +1,15 @@
 /* Image textures (docs/textures.md): one texel pool, a table of textures into it, the
  * textures bound to each material, and each triangle's texture coordinates.
  *
- * The pool holds linear RGBA float texels (float4): colour textures were decoded from
- * sRGB on the host, data textures (roughness, metalness, normal maps) are stored as
- * the file gives them. A texture is a box-filtered mip pyramid: level 0 of width x
+ * The pool is an array of 32-bit words. Its first 256 words (FC_SRGB_TABLE) are the
+ * sRGB decoding table (word k: the float bits of the linear value of 8-bit code k);
+ * then each texture's texels in its format (FcTexture.format):
+ *   FC_TEXEL_RGBA32F     linear float RGBA, 4 words a texel (float images: EXR, HDR, PFM)
+ *   FC_TEXEL_RGBA16F     linear half RGBA, 2 words (16-bit images, decoded on the host)
+ *   FC_TEXEL_RGBA8       linear 8-bit unorm RGBA, 1 word, R in the low byte (8-bit data
+ *                        textures: roughness, metalness, normal maps)
+ *   FC_TEXEL_RGBA8_SRGB  8-bit RGB in sRGB, decoded through the table, and linear A
+ * A texture is a box-filtered mip pyramid: level 0 of width x
  * height texels, top row first, then each level of max(1, w/2) x max(1, h/2) texels
  * until 1 x 1, all from `offset` in the pool. Texel (x, y) of a level covers
  * [x/w, (x+1)/w) x [y/h, (y+1)/h) of the (u, v) square; v = 0 is the image's top row
@@ -18,15 +24,24 @@
 #define FC_WRAP_CLAMP 1
 #define FC_WRAP_MIRROR 2
 
+/* Texel formats (FcTexture.format), and the pool's sRGB table. */
+#define FC_TEXEL_RGBA32F 0
+#define FC_TEXEL_RGBA16F 1
+#define FC_TEXEL_RGBA8 2
+#define FC_TEXEL_RGBA8_SRGB 3
+#define FC_SRGB_TABLE 0u /* the table's first word in the pool */
+#define FC_SRGB_TABLE_WORDS 256u
+
 /* A texture of the pool. */
 typedef struct FcTexture {
-    fc_uint offset; /* first texel of level 0, in float4s */
+    fc_uint offset; /* first texel of level 0, in 32-bit words of the pool */
     fc_int width;
     fc_int height;
     fc_int levels; /* mip levels, >= 1 */
     fc_int wrap_u;
     fc_int wrap_v;
-    fc_int pad0[2];
+    fc_int format; /* FC_TEXEL_* */
+    fc_int pad0;
 } FcTexture;
 
 /* How a material's roughness texture is read (FcMaterialTextures.roughness_mode). */
@@ -65,19 +80,31 @@ typedef struct FcMaterialTextures {
     float uv_transform[2][4]; /* rows (a, b, c, unused): u' = a u + b v + c */
 } FcMaterialTextures;
 
+/* FcTriTexcoords.tangent_flags: bit c (0..2) set when corner c's bitangent is
+ * -cross(n, t) (handedness w = -1), FC_TANGENTS_SET when `tangent` holds the corners'
+ * vertex tangents (the file's, or MikkTSpace-style ones: host/scene/texture_tangents.cpp). */
+#define FC_TANGENTS_SET 8u
+
 /* Texture coordinates of one triangle's vertices (indexed like FcTriShading).
  * light_swapped is 1 when the triangle's area light (FcLight) has its edges swapped
- * (e1 = v2 - v0), so that a light sample's barycentrics find the right uv. */
+ * (e1 = v2 - v0), so that a light sample's barycentrics find the right uv.
+ * tangent[c]: corner c's unit world-space tangent, octahedral-encoded as two 16-bit
+ * signed normalised integers (x in the low half, y in the high half; Cigolle et al.
+ * 2014, "A Survey of Efficient Representations for Independent Unit Vectors"); read
+ * only by programs with a normal map. */
 typedef struct FcTriTexcoords {
     float uv[3][2];
     fc_int light_swapped;
-    fc_int pad0;
+    fc_uint tangent_flags;
+    fc_uint tangent[3];
+    fc_uint pad0;
 } FcTriTexcoords;
 
 FC_STATIC_ASSERT(sizeof(FcTexture) == 32, "FcTexture is 32 bytes");
 FC_STATIC_ASSERT(sizeof(FcMaterialTextures) == 96, "FcMaterialTextures is 96 bytes");
 FC_STATIC_ASSERT(offsetof(FcMaterialTextures, base_factor) == 32 && offsetof(FcMaterialTextures, uv_transform) == 64,
                  "FcMaterialTextures offsets");
-FC_STATIC_ASSERT(sizeof(FcTriTexcoords) == 32, "FcTriTexcoords is 32 bytes");
+FC_STATIC_ASSERT(sizeof(FcTriTexcoords) == 48, "FcTriTexcoords is 48 bytes");
+FC_STATIC_ASSERT(offsetof(FcTriTexcoords, tangent) == 32, "FcTriTexcoords offsets");
 
 #endif

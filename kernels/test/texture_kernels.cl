@@ -4,7 +4,7 @@
 #include "kernels/texture/material_textures.cl"
 
 /* texture_sample of texture `index` at each (u, v, lod) of `uvl` (xyz). */
-__kernel void texture_lookup_batch(__global const FcTexture* textures, __global const float4* texels, int index,
+__kernel void texture_lookup_batch(__global const FcTexture* textures, __global const uint* texels, int index,
                                    __global const float4* uvl, __global float4* out) {
     uint i = (uint)get_global_id(0);
     float4 q = uvl[i];
@@ -20,5 +20,16 @@ __kernel void normal_map_batch(__global const float4* in, __global float4* out) 
     p.dpdu = (float3)(1.0f, 0.0f, 0.0f);
     p.dpdv = (float3)(0.0f, -1.0f, 0.0f);
     p.uv_area = p.world_area = 1.0f;
+    p.tangent = (float4)(0.0f);
     out[i] = (float4)(normal_mapped((float3)(0.0f, 0.0f, 1.0f), &p, in[i].xyz, in[i].w), 0.0f);
+}
+
+/* tex_tangent (the frame normal_mapped reads) for each query (x: the scene triangle,
+ * y, z: the barycentrics of its v1 and v2): the interpolated vertex tangent (xyz) and
+ * the handedness (w; 0 where the triangle has no tangents). */
+__kernel void tangent_batch(__global const FcTriTexcoords* texcoords, __global const float4* query,
+                            __global float4* out) {
+    uint i = (uint)get_global_id(0);
+    float4 q = query[i];
+    out[i] = tex_tangent(&texcoords[(int)q.x], q.y, q.z);
 }

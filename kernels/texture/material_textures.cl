@@ -17,6 +17,8 @@ typedef struct {
     float3 dpdu, dpdv; /* surface derivatives along u and v (zero where the uvs are degenerate) */
     float uv_area;     /* the triangle's area in the (u, v) square */
     float world_area;  /* and in world units */
+    float4 tangent;    /* the vertex tangents interpolated (xyz) and the handedness (w = +-1);
+                        * w = 0 where the triangle has none (dp/du is used) */
 } TexPoint;
 
 /* The width of the ray cone at distance `dist` along the path from the camera: the
@@ -26,6 +28,30 @@ typedef struct {
 inline float ray_cone_width(__constant const FcRenderParams* P, float dist) {
     float pixel = 2.0f * length(load3c(P->camera.up)) / (float)P->height;
     return P->camera.projection == FC_PROJECTION_PERSPECTIVE ? pixel * dist : pixel;
+}
+
+/* The unit vector of an octahedral code (kernels/shared/texture_layout.h: two 16-bit
+ * signed normalised integers, x in the low half). */
+inline float3 tex_octahedral_decode(uint code) {
+    int ix = (int)(code & 0xffffu), iy = (int)(code >> 16);
+    float x = (float)(ix >= 32768 ? ix - 65536 : ix) / 32767.0f;
+    float y = (float)(iy >= 32768 ? iy - 65536 : iy) / 32767.0f;
+    float3 v = (float3)(x, y, 1.0f - fabs(x) - fabs(y));
+    float fold = fmax(-v.z, 0.0f); /* the lower half, unfolded over the diagonals */
+    v.x += v.x >= 0.0f ? -fold : fold;
+    v.y += v.y >= 0.0f ? -fold : fold;
+    return normalize(v);
+}
+
+/* The triangle's corner tangents interpolated at barycentrics (b1, b2), with the
+ * handedness of the nearest corner; w = 0 when it has none. */
+inline float4 tex_tangent(__global const FcTriTexcoords* t, float b1, float b2) {
+    if (!(t->tangent_flags & FC_TANGENTS_SET)) return (float4)(0.0f);
+    float b0 = 1.0f - b1 - b2;
+    float3 v = b0 * tex_octahedral_decode(t->tangent[0]) + b1 * tex_octahedral_decode(t->tangent[1]) +
+               b2 * tex_octahedral_decode(t->tangent[2]);
+    int nearest = b0 >= b1 && b0 >= b2 ? 0 : b1 >= b2 ? 1 : 2;
+    return (float4)(v, ((t->tangent_flags >> nearest) & 1u) ? -1.0f : 1.0f);
 }
 
 /* The texture point of scene triangle `prim` at barycentrics (b1, b2) of v1 and v2,
@@ -43,6 +69,7 @@ inline TexPoint tex_point(__global const FcTriTexcoords* tc, int prim, float b1,
     float inv = det != 0.0f ? 1.0f / det : 0.0f;
     p.dpdu = (d2.y * e1 - d1.y * e2) * inv;
     p.dpdv = (d1.x * e2 - d2.x * e1) * inv;
+    p.tangent = tex_tangent(t, b1, b2);
     return p;
 }
 
@@ -62,6 +89,7 @@ inline TexPoint tex_point_sphere(__global const FcSphere* sp, float3 n) {
     p.dpdv = FC_PI * r * (float3)(n.y * radial.x, -sin_theta, n.y * radial.z);
     p.uv_area = 1.0f;
     p.world_area = 2.0f * FC_PI * FC_PI * r * r * fmax(sin_theta, 1e-4f);
+    p.tangent = (float4)(0.0f);
     return p;
 }
 
@@ -88,18 +116,21 @@ inline float4 tex_lookup(const SceneView* sc, int index, float2 uv, const TexPoi
     return texture_sample(sc->textures, sc->texels, index, uv, lod);
 }
 
-/* The tangent-space normal map's normal: x along dp/du, y along -dp/dv (toward the
- * image's top, the OpenGL / glTF / MikkTSpace convention), z along ns; the tangent is
- * dp/du made orthogonal to ns per hit (Gram-Schmidt), the bitangent's handedness from
- * the uv winding. */
+/* The tangent-space normal map's normal: x along the tangent, y along the bitangent
+ * (toward the image's top, the OpenGL / glTF / MikkTSpace convention), z along ns. The
+ * tangent is the interpolated vertex tangent (the file's or MikkTSpace-style) made
+ * orthogonal to ns (Gram-Schmidt), the bitangent w cross(ns, t) (glTF's rule); a
+ * triangle without vertex tangents uses its dp/du, the handedness from its uv winding. */
 inline float3 normal_mapped(float3 ns, const TexPoint* p, float3 texel, float scale) {
     float3 m = 2.0f * texel - 1.0f;
     m.xy *= scale;
-    float3 t = p->dpdu - ns * dot(ns, p->dpdu);
+    float3 t0 = p->tangent.w != 0.0f ? p->tangent.xyz : p->dpdu;
+    float3 t = t0 - ns * dot(ns, t0);
     if (!(dot(t, t) > 0.0f)) return ns;
     t = normalize(t);
     float3 b = cross(ns, t);
-    if (dot(b, p->dpdv) > 0.0f) b = -b;
+    if (p->tangent.w != 0.0f) b *= p->tangent.w;
+    else if (dot(b, p->dpdv) > 0.0f) b = -b;
     return normalize_or(m.x * t + m.y * b + m.z * ns, ns);
 }
 

@@ -25,12 +25,30 @@ inline int texture_wrap(int i, int n, int wrap) {
     return m < 0 ? m + n : m;
 }
 
-/* First texel of `level`, and its size. */
+/* 32-bit words a texel of `format` takes in the pool. */
+inline uint texel_words(int format) { return format == FC_TEXEL_RGBA32F ? 4u : format == FC_TEXEL_RGBA16F ? 2u : 1u; }
+
+/* Texel i of a texture of `format` whose level starts at word `base` of the pool, as
+ * linear RGBA (kernels/shared/texture_layout.h gives the formats). */
+inline float4 texel_fetch(__global const uint* pool, int format, uint base, uint i) {
+    if (format == FC_TEXEL_RGBA32F) return as_float4(vload4(0, pool + base + 4u * i));
+    if (format == FC_TEXEL_RGBA16F) return vload_half4(0, (__global const half*)(pool + base + 2u * i));
+    uint w = pool[base + i];
+    uint r = w & 0xffu, g = (w >> 8) & 0xffu, b = (w >> 16) & 0xffu;
+    float a = (float)(w >> 24) / 255.0f;
+    if (format == FC_TEXEL_RGBA8_SRGB)
+        return (float4)(as_float(pool[FC_SRGB_TABLE + r]), as_float(pool[FC_SRGB_TABLE + g]),
+                        as_float(pool[FC_SRGB_TABLE + b]), a);
+    return (float4)((float)r / 255.0f, (float)g / 255.0f, (float)b / 255.0f, a);
+}
+
+/* First word of `level` in the pool, and its size. */
 inline uint texture_level(__global const FcTexture* t, int level, int* w, int* h) {
     uint offset = t->offset;
+    uint words = texel_words(t->format);
     int lw = t->width, lh = t->height;
     for (int l = 0; l < level; ++l) {
-        offset += (uint)(lw * lh);
+        offset += (uint)(lw * lh) * words;
         lw = max(lw / 2, 1);
         lh = max(lh / 2, 1);
     }
@@ -40,7 +58,7 @@ inline uint texture_level(__global const FcTexture* t, int level, int* w, int* h
 }
 
 /* Bilinear lookup in one level: texel centres sit at ((x + 0.5) / w, (y + 0.5) / h). */
-inline float4 texture_bilinear(__global const FcTexture* t, __global const float4* texels, int level, float2 uv) {
+inline float4 texture_bilinear(__global const FcTexture* t, __global const uint* texels, int level, float2 uv) {
     int w, h;
     uint base = texture_level(t, level, &w, &h);
     /* Large |uv| (a far repeat) would lose the fraction in float: keep it in [0, 2) periods
@@ -53,13 +71,14 @@ inline float4 texture_bilinear(__global const FcTexture* t, __global const float
     float ax = x - fx, ay = y - fy;
     int x0 = texture_wrap((int)fx, w, t->wrap_u), x1 = texture_wrap((int)fx + 1, w, t->wrap_u);
     int y0 = texture_wrap((int)fy, h, t->wrap_v), y1 = texture_wrap((int)fy + 1, h, t->wrap_v);
-    float4 a = texels[base + (uint)(y0 * w + x0)], b = texels[base + (uint)(y0 * w + x1)];
-    float4 c = texels[base + (uint)(y1 * w + x0)], d = texels[base + (uint)(y1 * w + x1)];
+    int f = t->format;
+    float4 a = texel_fetch(texels, f, base, (uint)(y0 * w + x0)), b = texel_fetch(texels, f, base, (uint)(y0 * w + x1));
+    float4 c = texel_fetch(texels, f, base, (uint)(y1 * w + x0)), d = texel_fetch(texels, f, base, (uint)(y1 * w + x1));
     return mix(mix(a, b, ax), mix(c, d, ax), ay);
 }
 
 /* Trilinear lookup at level of detail `lod` (0: level 0; clamped to the pyramid). */
-inline float4 texture_sample(__global const FcTexture* textures, __global const float4* texels, int index, float2 uv,
+inline float4 texture_sample(__global const FcTexture* textures, __global const uint* texels, int index, float2 uv,
                              float lod) {
     __global const FcTexture* t = &textures[index];
     float l = clamp(isnan(lod) ? 0.0f : lod, 0.0f, (float)(t->levels - 1));
