@@ -71,7 +71,10 @@ inline bool box_hit(const BoxRay* r, __global const float* lo, __global const fl
  * four lanes at a time; with `any_hit`, stops at the first hit. Within a block the
  * nearest hit lane wins (the lowest on a tie), and a later block's hit must be strictly
  * nearer: the hit a loop over the triangles in order would keep. */
-inline bool leaf_hit(__global const float4* rows, int row, int blocks, const TriRay* tr, Hit* hit, bool any_hit) {
+/* Inlined by force, with tri4_hit: PoCL's LLVM called both out of line, the block's nine
+ * rows spilled between them (docs/performance.md: 7-9% fewer trace instructions inlined). */
+__attribute__((always_inline)) inline bool leaf_hit(__global const float4* rows, int row, int blocks, const TriRay* tr,
+                                                    Hit* hit, bool any_hit) {
     bool found = false;
     for (; blocks > 0; --blocks, row += 10) {
         __global const float4* b = rows + row;
