@@ -163,8 +163,9 @@ double mrays(std::size_t n, double s) { return s > 0.0 ? double(n) / s * 1e-6 : 
 
 std::string fmt_rate(double v) { return v > 0.0 ? fmt::format("{:.2f}", v) : std::string("—"); }
 
-nlohmann::json bench_scene(ClContext& ctx, const BenchCase& c, bool quick, bool build_only, std::size_t local,
-                           const BvhOptions& bvh_options, Markdown& build_md, Markdown& trace_md, Markdown& render_md) {
+nlohmann::json bench_scene(ClContext& ctx, const BenchCase& c, bool quick, bool build_only, bool facet_only,
+                           std::size_t local, const BvhOptions& bvh_options, Markdown& build_md, Markdown& trace_md,
+                           Markdown& render_md) {
     Scene scene = load_scene(c.path);
     nlohmann::json j;
     j["scene"] = c.name;
@@ -219,7 +220,7 @@ nlohmann::json bench_scene(ClContext& ctx, const BenchCase& c, bool quick, bool 
     RayBatch diffuse = diffuse_rays(scene, cam, t, prim, quick ? 1 : 4);
     const int threads = int(std::max<std::uint32_t>(1, ctx.desc().compute_units));
     std::string why;
-    const bool have_embree = embree_available(&why);
+    const bool have_embree = !facet_only && embree_available(&why);
     double embree_build = 0.0;
     auto rate = [](std::size_t n, const Timing& tm) { return mrays(n, tm.wall); };
     auto cpu_rate = [](std::size_t n, const Timing& tm) { return mrays(n, tm.cpu); };
@@ -293,6 +294,7 @@ nlohmann::json bench_scene(ClContext& ctx, const BenchCase& c, bool quick, bool 
                   fmt::format("{:.0f}", double(bvh.stats.device_bytes) / tris),
                   embree_build > 0 ? fmt::format("{:.2f}", tris / embree_build * 1e-6) : std::string("—")});
 
+    if (facet_only) return j;
     // Render: samples per second of the full path tracer at the bench size.
     scene.settings.width = size;
     scene.settings.height = size;
@@ -373,8 +375,15 @@ int run(int argc, char** argv) {
     app.add_option("--bvh-width", bvh_options.width,
                    "BVH node width, 4 or 8 (default: FACET_BVH_WIDTH when set, else the device's, as the CLI picks it)")
         ->check(CLI::IsMember({0, 4, 8}));
+    app.add_option("--bvh-quantised", bvh_options.quantised,
+                   "8-wide BVH: 1 quantised child boxes (80-byte nodes), 0 float boxes (default: FACET_BVH_QUANTISED "
+                   "when set, else the build's default)")
+        ->check(CLI::IsMember({-1, 0, 1}));
     app.add_option("--bvh-intersection-cost", bvh_options.intersection_cost,
                    "BVH knob: SAH cost of a triangle test against a node visit (default 1)");
+    bool facet_only = false;
+    app.add_flag("--facet-only", facet_only,
+                 "Trace section: facet's traversal alone (no Embree, no render), for profiles and instruction counts");
     std::string scene_filter;
     app.add_option("--scene", scene_filter, "Trace section: only the scenes whose name contains this");
     std::string only;
@@ -393,7 +402,8 @@ int run(int argc, char** argv) {
     if (bvh_options.width == 0)
         bvh_options.width = bvh_width_for(ctx.desc().type == CL_DEVICE_TYPE_GPU,
                                           ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
-    bench_print("BVH node width: {}\n", bvh_options.width);
+    bench_print("BVH node width: {}{}\n", bvh_options.width,
+                bvh_options.width == 8 && resolve_quantised(bvh_options) ? " (quantised boxes)" : "");
     std::vector<BenchCase> cases = {
         {"cornell_box", (fs::path(FACET_SOURCE_DIR) / "scenes" / "cornell_box.json").string()}};
     if (wanted("trace")) {
@@ -433,8 +443,8 @@ int run(int argc, char** argv) {
             if (!scene_filter.empty() && c.name.find(scene_filter) == std::string::npos) continue;
             fmt::print("  [{}]\n", c.name);
             std::fflush(stdout);
-            all["scenes"].push_back(
-                bench_scene(ctx, c, quick, only == "build", trace_local, bvh_options, build_md, trace_md, render_md));
+            all["scenes"].push_back(bench_scene(ctx, c, quick, only == "build", facet_only, trace_local, bvh_options,
+                                                build_md, trace_md, render_md));
         }
         bench_print(
             "\n### BVH build (one thread; SAH cost normalised by the root's area, traversal = one 4-triangle block test = 1)\n\n{}",

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -24,7 +26,8 @@ using test::IndexedMesh;
 // ---- host-side structure ------------------------------------------------------------
 
 struct Walk {
-    std::vector<int> seen;  // leaf visits per triangle
+    std::vector<int> seen;                 // leaf visits per triangle
+    std::vector<std::array<float, 6>> up;  // the boxes of the inner children on the path (lo, hi)
     int max_depth = 0;
     std::size_t leaves = 0;
     int pushes = 0;      // stack entries pushed on the path to the node being walked
@@ -37,11 +40,18 @@ bool encloses(const float* lo, const float* hi, const float* p) {
     return true;
 }
 
-// Both node widths, for every test that builds a tree.
-constexpr int kWidths[] = {4, 8};
+// Every node layout, for every test that builds a tree.
+struct Layout {
+    int width;
+    int quantised;
+    const char* name;
+};
+constexpr Layout kLayouts[] = {{4, 0, "4-wide"}, {8, 0, "8-wide"}, {8, 1, "8-wide quantised"}};
+constexpr Layout kFloat8 = kLayouts[1], kQuantised8 = kLayouts[2];
 
-BvhOptions with_width(BvhOptions o, int width) {
-    o.width = width;
+BvhOptions with_layout(BvhOptions o, const Layout& layout) {
+    o.width = layout.width;
+    o.quantised = layout.quantised;
     return o;
 }
 
@@ -113,8 +123,14 @@ void walk_child(const Bvh& bvh, const float* lo, const float* hi, int index, int
     if (count == 0) {
         ASSERT_GT(index, 0) << "an inner child never refers back to the root";
         ASSERT_LT(static_cast<std::size_t>(index), bvh.stats.nodes);
-        EXPECT_TRUE(encloses_children(lo, hi, node_view(bvh, static_cast<std::size_t>(index))));
+        // Float boxes nest; quantised ones, each rounded outward on its own node's grid, need
+        // not, but must hold every triangle below them (checked at the leaves).
+        if (!bvh.stats.quantised) {
+            EXPECT_TRUE(encloses_children(lo, hi, node_view(bvh, static_cast<std::size_t>(index))));
+        }
+        w.up.push_back({lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]});
         walk_node(bvh, index, depth, w.pushes, w);
+        w.up.pop_back();
         return;
     }
     ++w.leaves;
@@ -143,6 +159,10 @@ void walk_child(const Bvh& bvh, const float* lo, const float* hi, int index, int
             EXPECT_EQ(std::memcmp(p1, t.v1, sizeof p1), 0);
             EXPECT_EQ(std::memcmp(p2, t.v2, sizeof p2), 0);
             EXPECT_TRUE(encloses(lo, hi, t.v0) && encloses(lo, hi, t.v1) && encloses(lo, hi, t.v2));
+            for (const auto& b : w.up)
+                ASSERT_TRUE(encloses(&b[0], &b[3], t.v0) && encloses(&b[0], &b[3], t.v1) &&
+                            encloses(&b[0], &b[3], t.v2))
+                    << "triangle " << blk.tri[lane] << " outside an ancestor's box";
         }
     }
 }
@@ -169,18 +189,18 @@ void check_structure(const Bvh& bvh, const std::vector<glm::vec3>& input, std::s
     }
     EXPECT_LE(bvh.stats.stack_need, stack_size(bvh));
     EXPECT_EQ(w.leaves, bvh.stats.leaves);
-    const std::size_t node_units = bvh.stats.nodes * static_cast<std::size_t>(bvh.stats.width / 4);
-    EXPECT_EQ(bvh.nodes.size(), (node_units * 128 + bvh.stats.leaf_blocks * 160 + 127) / 128);
+    const std::size_t node_bytes = bvh.stats.quantised ? 80 : 32 * static_cast<std::size_t>(bvh.stats.width);
+    EXPECT_EQ(bvh.nodes.size(), (bvh.stats.nodes * node_bytes + bvh.stats.leaf_blocks * 160 + 127) / 128);
     EXPECT_EQ(bvh.stats.triangles, bvh.triangles.size());
     EXPECT_EQ(bvh.stats.device_bytes, bvh.nodes.size() * 128 + bvh.triangles.size() * 48);
 }
 
 TEST(Bvh, StructureValid) {
-    for (int width : kWidths) {
-        SCOPED_TRACE(testing::Message() << "width " << width);
+    for (const Layout& layout : kLayouts) {
+        SCOPED_TRACE(layout.name);
         std::vector<glm::vec3> torus = test::make_torus(100, 100, 1.0f, 0.3f).soup();
         std::size_t skipped = 99;
-        Bvh bvh = build_bvh(torus, with_width({}, width), &skipped);
+        Bvh bvh = build_bvh(torus, with_layout({}, layout), &skipped);
         EXPECT_EQ(skipped, 0u);
         check_structure(bvh, torus, skipped);
         EXPECT_LE(bvh.stats.max_leaf_size, BvhOptions{}.max_leaf_size);
@@ -195,7 +215,7 @@ TEST(Bvh, StructureValid) {
             stack.insert(stack.end(),
                          {glm::vec3(-s, -s, 0.0f), glm::vec3(s, -s, 0.0f), glm::vec3(0.0f, 2.0f * s, 0.0f)});
         }
-        Bvh same = build_bvh(stack, with_width({}, width), &skipped);
+        Bvh same = build_bvh(stack, with_layout({}, layout), &skipped);
         check_structure(same, stack, skipped);
         EXPECT_LE(same.stats.max_leaf_size, BvhOptions{}.max_leaf_size);
 
@@ -207,7 +227,7 @@ TEST(Bvh, StructureValid) {
         }
         BvhOptions one;
         one.max_leaf_size = 1;
-        Bvh deep = build_bvh(nested, with_width(one, width), &skipped);
+        Bvh deep = build_bvh(nested, with_layout(one, layout), &skipped);
         check_structure(deep, nested, skipped);
         EXPECT_LE(3 * deep.stats.max_depth, FC_BVH_STACK_SIZE);
     }
@@ -218,8 +238,8 @@ TEST(Bvh, StructureValid) {
 // sweep of small ranges, the median fallback for coincident centroids under a binned
 // split, every option combination, zero-area triangles kept out.
 TEST(Bvh, StructureValidAcrossBuilderPaths) {
-    for (int width : kWidths) {
-        SCOPED_TRACE(testing::Message() << "width " << width);
+    for (const Layout& layout : kLayouts) {
+        SCOPED_TRACE(layout.name);
         std::vector<glm::vec3> soup = test::make_torus(60, 40, 1.0f, 0.3f).soup();
         const std::size_t torus_tris = soup.size() / 3;
         // Two far clusters of triangles sharing one centroid each (odd counts), after the
@@ -247,7 +267,7 @@ TEST(Bvh, StructureValidAcrossBuilderPaths) {
                     o.exact_max = exact;
                     o.max_leaf_size = leaf;
                     std::size_t skipped = 99;
-                    Bvh bvh = build_bvh(soup, with_width(o, width), &skipped);
+                    Bvh bvh = build_bvh(soup, with_layout(o, layout), &skipped);
                     SCOPED_TRACE(testing::Message() << "bins " << bins << " exact " << exact << " leaf " << leaf);
                     EXPECT_EQ(skipped, 7u);
                     EXPECT_EQ(bvh.triangles.size(), kept);
@@ -258,13 +278,13 @@ TEST(Bvh, StructureValidAcrossBuilderPaths) {
                 }
         // The default build (exact sweep of small ranges) is no worse than plain binning.
         EXPECT_GT(plain_sah, 0.0);
-        EXPECT_LE(build_bvh(soup, with_width({}, width)).stats.sah_cost, plain_sah * (1.0 + 1e-6));
+        EXPECT_LE(build_bvh(soup, with_layout({}, layout)).stats.sah_cost, plain_sah * (1.0 + 1e-6));
 
         // Small inputs: every count up to a few binned levels, and the torus alone.
         for (std::size_t n : {1u, 2u, 3u, 5u, 8u, 9u, 16u, 17u, 33u, 129u, 130u}) {
             std::vector<glm::vec3> part(soup.begin(), soup.begin() + static_cast<std::ptrdiff_t>(3 * n));
             std::size_t skipped = 99;
-            Bvh bvh = build_bvh(part, with_width({}, width), &skipped);
+            Bvh bvh = build_bvh(part, with_layout({}, layout), &skipped);
             SCOPED_TRACE(testing::Message() << n << " triangles");
             EXPECT_EQ(skipped, 0u);
             check_structure(bvh, part, skipped);
@@ -319,6 +339,7 @@ std::vector<glm::vec4> offset_origins(const std::vector<glm::vec4>& points, cons
 
 // The test kernels built for the tree's node width.
 const char* trace_program(const Bvh& bvh) {
+    if (bvh.stats.quantised) return "kernels/test/trace_kernels8q.cl";
     return bvh.stats.width == 8 ? "kernels/test/trace_kernels8.cl" : "kernels/test/trace_kernels.cl";
 }
 
@@ -410,10 +431,10 @@ Rays random_rays(const std::vector<glm::vec3>& soup, std::size_t count, float ex
 }
 
 TEST(Bvh, MatchesBruteForceOnMesh) {
-    for (int width : kWidths) {
-        SCOPED_TRACE(testing::Message() << "width " << width);
+    for (const Layout& layout : kLayouts) {
+        SCOPED_TRACE(layout.name);
         std::vector<glm::vec3> torus = test::make_torus(50, 20, 1.0f, 0.35f).soup();
-        Bvh bvh = build_bvh(torus, with_width({}, width));
+        Bvh bvh = build_bvh(torus, with_layout({}, layout));
         Result r = expect_agreement(bvh, torus, random_rays(torus, 100000, 1.6f, 1));
         EXPECT_GT(std::count_if(r.any.begin(), r.any.end(), [](int a) { return a != 0; }), 30000);
     }
@@ -421,13 +442,13 @@ TEST(Bvh, MatchesBruteForceOnMesh) {
 
 // The Stanford bunny from ../shared/assets, when present.
 TEST(Bvh, MatchesBruteForceOnBunny) {
-    for (int width : kWidths) {
-        SCOPED_TRACE(testing::Message() << "width " << width);
+    for (const Layout& layout : kLayouts) {
+        SCOPED_TRACE(layout.name);
         const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
         if (!std::filesystem::exists(bunny)) GTEST_SKIP() << bunny << " not found";
         std::vector<glm::vec3> soup = test::load_obj_soup(bunny);
         ASSERT_GT(soup.size(), 3000u);
-        Bvh bb = build_bvh(soup, with_width({}, width));
+        Bvh bb = build_bvh(soup, with_layout({}, layout));
         check_structure(bb, soup, soup.size() / 3 - bb.triangles.size());
         glm::vec3 lo(INFINITY), hi(-INFINITY);
         for (const glm::vec3& p : soup) lo = glm::min(lo, p), hi = glm::max(hi, p);
@@ -438,11 +459,11 @@ TEST(Bvh, MatchesBruteForceOnBunny) {
 }
 
 TEST(Bvh, MatchesBruteForceDegenerateMesh) {
-    for (int width : kWidths) {
-        SCOPED_TRACE(testing::Message() << "width " << width);
+    for (const Layout& layout : kLayouts) {
+        SCOPED_TRACE(layout.name);
         std::size_t unusable = 0, skipped = 0;
         std::vector<glm::vec3> soup = test::make_degenerate_soup(1400, unusable);
-        Bvh bvh = build_bvh(soup, with_width({}, width), &skipped);
+        Bvh bvh = build_bvh(soup, with_layout({}, layout), &skipped);
         EXPECT_EQ(skipped, unusable);
         check_structure(bvh, soup, skipped);
         expect_agreement(bvh, soup, random_rays(soup, 100000, 1.5f, 3));
@@ -453,8 +474,8 @@ TEST(Bvh, MatchesBruteForceDegenerateMesh) {
 // from inside, must hit (Woop et al. 2013): on the integer grid cube the edge
 // functions come out exactly zero; on the torus the rays are oblique.
 TEST(Bvh, EdgesAndVerticesAreWatertight) {
-    for (int width : kWidths) {
-        SCOPED_TRACE(testing::Message() << "width " << width);
+    for (const Layout& layout : kLayouts) {
+        SCOPED_TRACE(layout.name);
         Rays rays;
         std::vector<float> expect_t;  // expected distance; ray directions are not normalised
         const int n = 6;
@@ -475,7 +496,7 @@ TEST(Bvh, EdgesAndVerticesAreWatertight) {
                         d[(axis + 1) % 3] = 0.25f, d[(axis + 2) % 3] = -0.5f;  // oblique, exact
                         rays.add(p - 2.0f * d, d), expect_t.push_back(-2.0f);  // any t <= 2
                     }
-        Bvh cube_bvh = build_bvh(cube.soup(), with_width({}, width));
+        Bvh cube_bvh = build_bvh(cube.soup(), with_layout({}, layout));
         std::vector<glm::vec3> cube_soup = cube.soup();
         Result r = expect_agreement(cube_bvh, cube_soup, rays);
         for (std::size_t i = 0; i < rays.o.size(); ++i) {
@@ -501,7 +522,7 @@ TEST(Bvh, EdgesAndVerticesAreWatertight) {
             trays.add(ring, p - ring);
         }
         std::vector<glm::vec3> torus_soup = torus.soup();
-        Result tr = expect_agreement(build_bvh(torus_soup, with_width({}, width)), torus_soup, trays);
+        Result tr = expect_agreement(build_bvh(torus_soup, with_layout({}, layout)), torus_soup, trays);
         for (std::size_t i = 0; i < trays.o.size(); ++i) {
             ASSERT_GE(tr.prim(i), 0) << "torus ray " << i << " slipped through";
             EXPECT_NEAR(tr.hit[i].x, 1.0f, 1e-4f) << "torus ray " << i;
@@ -510,8 +531,8 @@ TEST(Bvh, EdgesAndVerticesAreWatertight) {
 }
 
 TEST(Bvh, EmptyAndSingleTriangle) {
-    for (int width : kWidths) {
-        SCOPED_TRACE(testing::Message() << "width " << width);
+    for (const Layout& layout : kLayouts) {
+        SCOPED_TRACE(layout.name);
         auto expect_empty_slot = [](const NodeView& n, int k) {
             EXPECT_EQ(n.count[k], 0);
             EXPECT_EQ(n.index[k], 0);
@@ -529,24 +550,24 @@ TEST(Bvh, EmptyAndSingleTriangle) {
         for (const std::vector<glm::vec3>& input :
              {std::vector<glm::vec3>{}, std::vector<glm::vec3>{z, z, x, z, x, 2.0f * x}}) {
             std::size_t skipped = 99;
-            Bvh bvh = build_bvh(input, with_width({}, width), &skipped);
+            Bvh bvh = build_bvh(input, with_layout({}, layout), &skipped);
             EXPECT_EQ(skipped, input.size() / 3);
             ASSERT_EQ(bvh.stats.nodes, 1u);
-            ASSERT_EQ(bvh.nodes.size(), static_cast<std::size_t>(width / 4));
+            ASSERT_EQ(bvh.nodes.size(), static_cast<std::size_t>(layout.quantised ? 1 : layout.width / 4));
             EXPECT_EQ(bvh.stats.leaf_blocks, 0u);
             EXPECT_TRUE(bvh.triangles.empty());
-            for (int k = 0; k < width; ++k) expect_empty_slot(node_view(bvh, 0), k);
+            for (int k = 0; k < layout.width; ++k) expect_empty_slot(node_view(bvh, 0), k);
             Result r = expect_agreement(bvh, input, rays);
             for (std::size_t i = 0; i < rays.o.size(); ++i) EXPECT_EQ(r.prim(i), -1);
         }
 
         // One triangle: root = {leaf, empty}.
         std::vector<glm::vec3> one = {z, x, glm::vec3(0.0f, 1.0f, 0.0f)};
-        Bvh bvh = build_bvh(one, with_width({}, width));
+        Bvh bvh = build_bvh(one, with_layout({}, layout));
         ASSERT_EQ(bvh.stats.nodes, 1u);
         EXPECT_EQ(bvh.stats.leaf_blocks, 1u);
         EXPECT_EQ(node_view(bvh, 0).count[0], 1);
-        for (int k = 1; k < width; ++k) expect_empty_slot(node_view(bvh, 0), k);
+        for (int k = 1; k < layout.width; ++k) expect_empty_slot(node_view(bvh, 0), k);
         check_structure(bvh, one, 0);
         Result r = expect_agreement(bvh, one, rays);
         const std::size_t k = rays.o.size() - 4;
@@ -559,19 +580,19 @@ TEST(Bvh, EmptyAndSingleTriangle) {
         EXPECT_EQ(r.prim(k + 2), -1);
         EXPECT_EQ(r.prim(k + 3), -1);
 
-        EXPECT_THROW(build_bvh(std::vector<glm::vec3>(4), with_width({}, width)), Error);
+        EXPECT_THROW(build_bvh(std::vector<glm::vec3>(4), with_layout({}, layout)), Error);
     }
 }
 
 // Secondary rays leaving a surface from offset_ray_origin (Wächter & Binder 2019)
 // never hit the triangle they start on, near the origin and far from it.
 TEST(Bvh, OffsetOriginAvoidsSelfHits) {
-    for (int width : kWidths) {
-        SCOPED_TRACE(testing::Message() << "width " << width);
+    for (const Layout& layout : kLayouts) {
+        SCOPED_TRACE(layout.name);
         for (float shift : {0.0f, 3000.0f}) {
             std::vector<glm::vec3> soup = test::make_torus(40, 16, 1.0f, 0.35f).soup();
             for (glm::vec3& p : soup) p += glm::vec3(shift, -shift, 0.5f * shift);
-            Bvh bvh = build_bvh(soup, with_width({}, width));
+            Bvh bvh = build_bvh(soup, with_layout({}, layout));
             std::mt19937 rng(5);
             std::uniform_real_distribution<float> u01(0.0f, 1.0f), u(-1.0f, 1.0f);
             std::vector<glm::vec4> points, normals;
@@ -606,15 +627,15 @@ TEST(Bvh, OffsetOriginAvoidsSelfHits) {
 // surface it leaves. The wall and a second quad share one leaf block (LargeScene's lit
 // wall, where half the shadow rays were blocked by the wall at 1e5 and up).
 TEST(Bvh, NoSelfHitsOnAPlaneThroughZeroAtLargeScale) {
-    for (int width : kWidths) {
-        SCOPED_TRACE(testing::Message() << "width " << width);
+    for (const Layout& layout : kLayouts) {
+        SCOPED_TRACE(layout.name);
         for (float scale : {1.0f, 1e5f, 1e10f}) {
             const glm::vec3 w0 = scale * glm::vec3(0.0f, -1.0f, -1.0f), wy = scale * glm::vec3(0.0f, 2.0f, 0.0f),
                             wz = scale * glm::vec3(0.0f, 0.0f, 2.0f);
             const glm::vec3 l0 = scale * glm::vec3(0.0f, 2.0f, -1.0f), lx = scale * glm::vec3(2.0f, 0.0f, 0.0f);
             std::vector<glm::vec3> soup = {w0, w0 + wy, w0 + wy + wz, w0, w0 + wy + wz, w0 + wz,
                                            l0, l0 + lx, l0 + lx + wz, l0, l0 + lx + wz, l0 + wz};
-            Bvh bvh = build_bvh(soup, with_width({}, width));
+            Bvh bvh = build_bvh(soup, with_layout({}, layout));
             ASSERT_EQ(bvh.stats.leaves, 1u);
             std::mt19937 rng(6);
             std::uniform_real_distribution<float> u01(0.0f, 1.0f), u(-1.0f, 1.0f);
@@ -636,9 +657,9 @@ TEST(Bvh, NoSelfHitsOnAPlaneThroughZeroAtLargeScale) {
     }
 }
 
-// ---- 8-wide against 4-wide ------------------------------------------------------------
+// ---- layouts against each other -------------------------------------------------------
 
-// The two widths' traversals over trees collapsed from the same binary tree (the same
+// Two layouts' traversals over trees collapsed from the same binary tree (the same
 // leaves, the same blocks) return the same nearest hit: the same triangle at the same t
 // with the same barycentrics, bit for bit, and the same any-hit answer. With `ties`
 // (soups of overlapping coplanar slivers, whose computed distances differ by more than
@@ -646,24 +667,25 @@ TEST(Bvh, NoSelfHitsOnAPlaneThroughZeroAtLargeScale) {
 // is allowed where the two planes' exact distances tie, as in expect_agreement.
 // Returns the number of rays that hit.
 std::size_t expect_same_hits(const std::vector<glm::vec3>& soup, const BvhOptions& options, const Rays& rays,
-                             bool ties = false) {
-    const Bvh b4 = build_bvh(soup, with_width(options, 4)), b8 = build_bvh(soup, with_width(options, 8));
-    EXPECT_EQ(b4.stats.leaves, b8.stats.leaves);
-    EXPECT_EQ(b4.stats.leaf_blocks, b8.stats.leaf_blocks);
-    const Result r4 = run("trace_rays_bvh", b4, rays), r8 = run("trace_rays_bvh", b8, rays);
+                             bool ties = false, const Layout& a = kLayouts[0], const Layout& b = kFloat8) {
+    const Bvh ba = build_bvh(soup, with_layout(options, a)), bb = build_bvh(soup, with_layout(options, b));
+    EXPECT_EQ(ba.stats.leaves, bb.stats.leaves);
+    EXPECT_EQ(ba.stats.leaf_blocks, bb.stats.leaf_blocks);
+    const Result ra = run("trace_rays_bvh", ba, rays), rb = run("trace_rays_bvh", bb, rays);
     int failures = 0;
     std::size_t hits = 0;
     for (std::size_t i = 0; i < rays.o.size() && failures < 10; ++i) {
-        hits += r4.prim(i) >= 0;
-        if (std::memcmp(&r4.hit[i], &r8.hit[i], sizeof r4.hit[i]) == 0 && r4.any[i] == r8.any[i]) continue;
-        if (ties && r4.any[i] == r8.any[i] && r4.prim(i) >= 0 && r8.prim(i) >= 0) {
+        hits += ra.prim(i) >= 0;
+        if (std::memcmp(&ra.hit[i], &rb.hit[i], sizeof ra.hit[i]) == 0 && ra.any[i] == rb.any[i]) continue;
+        if (ties && ra.any[i] == rb.any[i] && ra.prim(i) >= 0 && rb.prim(i) >= 0) {
             const glm::vec3 o(rays.o[i]), d(rays.d[i]);
-            const double p4 = plane_t(soup, r4.prim(i), o, d), p8 = plane_t(soup, r8.prim(i), o, d);
-            if (std::fabs(p4 - p8) <= 1e-5 * std::fabs(p4)) continue;
+            const double pa = plane_t(soup, ra.prim(i), o, d), pb = plane_t(soup, rb.prim(i), o, d);
+            if (std::fabs(pa - pb) <= 1e-5 * std::fabs(pa)) continue;
         }
         ++failures;
-        ADD_FAILURE() << "ray " << i << ": 4-wide prim " << r4.prim(i) << " t " << r4.hit[i].x << " any " << r4.any[i]
-                      << ", 8-wide prim " << r8.prim(i) << " t " << r8.hit[i].x << " any " << r8.any[i];
+        ADD_FAILURE() << "ray " << i << ": " << a.name << " prim " << ra.prim(i) << " t " << ra.hit[i].x << " any "
+                      << ra.any[i] << ", " << b.name << " prim " << rb.prim(i) << " t " << rb.hit[i].x << " any "
+                      << rb.any[i];
     }
     return hits;
 }
@@ -705,17 +727,104 @@ TEST(Bvh, EightWideSmallScenes) {
             BvhOptions o;
             o.max_leaf_size = leaf;
             Rays rays = random_rays(soup, 4000, 3.0f, static_cast<unsigned>(20 + n));
-            for (int width : kWidths) {
-                SCOPED_TRACE(testing::Message() << "width " << width);
-                Bvh bvh = build_bvh(soup, with_width(o, width));
+            for (const Layout& layout : kLayouts) {
+                SCOPED_TRACE(layout.name);
+                Bvh bvh = build_bvh(soup, with_layout(o, layout));
                 check_structure(bvh, soup, 0);
                 expect_agreement(bvh, soup, rays);
-                if (width == 8 && leaf == 1) {
+                if (layout.width == 8 && leaf == 1) {
                     EXPECT_EQ(bvh.stats.nodes, n <= 8 ? 1u : 2u);
                 }
             }
             expect_same_hits(soup, o, rays);
+            expect_same_hits(soup, o, rays, false, kFloat8, kQuantised8);
         }
+}
+
+// Quantised boxes (FcBvhNodeQ) against the float boxes of the same tree: every decoded
+// box contains the exact one and is at most one grid step (plus the decode's rounding)
+// larger on each side; the same slots, children and leaves. Meshes near the origin, far
+// from it, flat, tiny and huge.
+TEST(Bvh, QuantisedBoxesContainFloatBoxes) {
+    std::vector<std::vector<glm::vec3>> soups;
+    soups.push_back(test::make_torus(80, 40, 1.0f, 0.35f).soup());
+    for (float shift : {3000.0f, -1e5f}) {  // coordinates far above the node sizes
+        soups.push_back(soups[0]);
+        for (glm::vec3& p : soups.back()) p = 0.1f * p + glm::vec3(shift, 0.5f * shift, -shift);
+    }
+    soups.push_back(soups[0]);  // flat: every box of zero height along z
+    for (glm::vec3& p : soups.back()) p.z = 2.5f;
+    for (float scale : {1e-20f, 1e15f}) {
+        soups.push_back(soups[0]);
+        for (glm::vec3& p : soups.back()) p *= scale;
+    }
+    std::size_t unusable = 0;
+    soups.push_back(test::make_degenerate_soup(1400, unusable));
+    const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
+    if (std::filesystem::exists(bunny)) soups.push_back(test::load_obj_soup(bunny));
+    for (std::size_t s = 0; s < soups.size(); ++s) {
+        SCOPED_TRACE(testing::Message() << "soup " << s);
+        const Bvh f = build_bvh(soups[s], with_layout({}, kFloat8)),
+                  q = build_bvh(soups[s], with_layout({}, kQuantised8));
+        ASSERT_EQ(q.stats.quantised, 1);
+        ASSERT_EQ(f.stats.nodes, q.stats.nodes);
+        ASSERT_EQ(f.stats.leaf_blocks, q.stats.leaf_blocks);
+        EXPECT_EQ(q.nodes.size(), (80 * q.stats.nodes + 160 * q.stats.leaf_blocks + 127) / 128);
+        check_structure(q, soups[s], soups[s].size() / 3 - q.triangles.size());
+        const std::int64_t shift =
+            5 * static_cast<std::int64_t>(q.stats.nodes) - 16 * static_cast<std::int64_t>(f.stats.nodes);
+        int failures = 0;
+        for (std::size_t i = 0; i < f.stats.nodes && failures < 10; ++i) {
+            const NodeView a = node_view(f, i), b = node_view(q, i);
+            const FcBvhNodeQ raw = wide_node_q(q, i);
+            for (int k = 0; k < 8; ++k) {
+                ASSERT_EQ(a.count[k], b.count[k]) << "node " << i << " slot " << k;
+                if (a.lo[0][k] > a.hi[0][k]) continue;  // empty in both (count and index 0, checked by the walk)
+                ASSERT_EQ(a.count[k] == 0 ? a.index[k] : a.index[k] + shift, b.index[k])
+                    << "node " << i << " slot " << k;
+                for (int ax = 0; ax < 3; ++ax) {
+                    const float step = std::bit_cast<float>(((raw.exps >> (8 * ax)) & 0xffu) << 23);
+                    const float slack = step +
+                                        2.0f * std::fabs(std::nextafter(raw.origin[ax], INFINITY) - raw.origin[ax]) +
+                                        2.0f * std::fabs(std::nextafter(a.hi[ax][k], INFINITY) - a.hi[ax][k]);
+                    const bool ok = b.lo[ax][k] <= a.lo[ax][k] && a.hi[ax][k] <= b.hi[ax][k] &&
+                                    a.lo[ax][k] - b.lo[ax][k] <= slack && b.hi[ax][k] - a.hi[ax][k] <= slack;
+                    if (!ok && ++failures <= 10)
+                        ADD_FAILURE() << "node " << i << " slot " << k << " axis " << ax << ": float [" << a.lo[ax][k]
+                                      << ", " << a.hi[ax][k] << "], quantised [" << b.lo[ax][k] << ", " << b.hi[ax][k]
+                                      << "], step " << step;
+                }
+            }
+        }
+    }
+}
+
+// Quantised traversal against the float boxes' over the same tree: the same hits bit for
+// bit (t, barycentrics, triangle) and the same any-hit answers; the conservative boxes
+// only add visits.
+TEST(Bvh, QuantisedHitsEqualFloatOnMeshes) {
+    std::vector<glm::vec3> torus = test::make_torus(120, 60, 1.0f, 0.35f).soup();
+    EXPECT_GT(expect_same_hits(torus, {}, random_rays(torus, 100000, 1.6f, 31), false, kFloat8, kQuantised8), 30000u);
+    BvhOptions small;
+    small.max_leaf_size = 1;
+    expect_same_hits(torus, small, random_rays(torus, 20000, 1.6f, 32), false, kFloat8, kQuantised8);
+    std::vector<glm::vec3> far = torus;
+    for (glm::vec3& p : far) p = 0.01f * p + glm::vec3(3000.0f, 1500.0f, -3000.0f);
+    Rays far_rays = random_rays(far, 20000, 0.02f, 33);
+    for (auto& o : far_rays.o) o += glm::vec4(3000.0f, 1500.0f, -3000.0f, 0.0f);
+    expect_same_hits(far, {}, far_rays, false, kFloat8, kQuantised8);
+    std::size_t unusable = 0;
+    std::vector<glm::vec3> soup = test::make_degenerate_soup(1400, unusable);
+    expect_same_hits(soup, {}, random_rays(soup, 20000, 1.5f, 34), true, kFloat8, kQuantised8);
+
+    const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
+    if (!std::filesystem::exists(bunny)) GTEST_SKIP() << bunny << " not found";
+    std::vector<glm::vec3> mesh = test::load_obj_soup(bunny);
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : mesh) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    Rays rays = random_rays(mesh, 100000, 1.0f, 35);
+    for (auto& o : rays.o) o = glm::vec4(0.5f * (lo + hi) + 0.75f * glm::vec3(o) * (hi - lo), 0.0f);
+    EXPECT_GT(expect_same_hits(mesh, {}, rays, false, kFloat8, kQuantised8), 20000u);
 }
 
 // The width comes from BvhOptions::width, else FACET_BVH_WIDTH, else 4; anything else is
@@ -726,11 +835,11 @@ TEST(Bvh, WidthChoice) {
     const std::string keep = saved ? saved : "";
     unsetenv("FACET_BVH_WIDTH");
     EXPECT_EQ(build_bvh(tri).stats.width, 4);
-    EXPECT_EQ(build_bvh(tri, with_width({}, 8)).stats.width, 8);
-    EXPECT_EQ(bvh_prelude(build_bvh(tri, with_width({}, 8))), "#define FC_BVH_WIDTH 8");
+    EXPECT_EQ(build_bvh(tri, with_layout({}, kFloat8)).stats.width, 8);
+    EXPECT_EQ(bvh_prelude(build_bvh(tri, with_layout({}, kFloat8))), "#define FC_BVH_WIDTH 8");
     setenv("FACET_BVH_WIDTH", "8", 1);
     EXPECT_EQ(build_bvh(tri).stats.width, 8);
-    EXPECT_EQ(build_bvh(tri, with_width({}, 4)).stats.width, 4);
+    EXPECT_EQ(build_bvh(tri, with_layout({}, kLayouts[0])).stats.width, 4);
     setenv("FACET_BVH_WIDTH", "16", 1);
     try {
         build_bvh(tri);
@@ -738,7 +847,7 @@ TEST(Bvh, WidthChoice) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("FACET_BVH_WIDTH is \"16\""), std::string::npos) << e.what();
     }
-    EXPECT_THROW(build_bvh(tri, with_width({}, 2)), Error);
+    EXPECT_THROW(build_bvh(tri, with_layout({}, {2, 0, "2-wide"})), Error);
     // By device, FACET_BVH_WIDTH unset: 8 on CPUs with 8-wide float vectors, 4 elsewhere.
     unsetenv("FACET_BVH_WIDTH");
     EXPECT_EQ(bvh_width_for(false, 8), 8);
@@ -749,6 +858,52 @@ TEST(Bvh, WidthChoice) {
     EXPECT_EQ(bvh_width_for(false, 8), 4);
     if (saved) setenv("FACET_BVH_WIDTH", keep.c_str(), 1);
     else unsetenv("FACET_BVH_WIDTH");
+}
+
+// Quantised 8-wide nodes come from BvhOptions::quantised, else FACET_BVH_QUANTISED, else
+// kQuantisedDefault where every leaf fits the node's bytes (max_leaf_size <= 16); 4-wide
+// trees are never quantised; bad values are refused with a message that names them.
+TEST(Bvh, QuantisedChoice) {
+    const std::vector<glm::vec3> tri = {glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
+    const char* saved = std::getenv("FACET_BVH_QUANTISED");
+    const std::string keep = saved ? saved : "";
+    auto expect_error = [&](const BvhOptions& o, const std::string& part) {
+        try {
+            build_bvh(tri, o);
+            ADD_FAILURE() << "accepted, expected an error naming " << part;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+        }
+    };
+    unsetenv("FACET_BVH_QUANTISED");
+    BvhOptions o;
+    o.width = 8;
+    EXPECT_EQ(build_bvh(tri, o).stats.quantised, kQuantisedDefault ? 1 : 0);
+    o.max_leaf_size = 17;
+    EXPECT_EQ(build_bvh(tri, o).stats.quantised, 0);
+    o.quantised = 1;
+    expect_error(o, "quantised nodes hold leaves of up to 16 triangles, max_leaf_size is 17");
+    o.max_leaf_size = 16;
+    const Bvh q = build_bvh(tri, o);
+    EXPECT_EQ(q.stats.quantised, 1);
+    EXPECT_EQ(bvh_prelude(q), "#define FC_BVH_WIDTH 8\n#define FC_BVH_QUANTISED 1");
+    EXPECT_THROW(wide_node_q(build_bvh(tri, with_layout({}, kFloat8)), 0), Error);
+    o.quantised = -1;
+    setenv("FACET_BVH_QUANTISED", "0", 1);
+    EXPECT_EQ(build_bvh(tri, o).stats.quantised, 0);
+    setenv("FACET_BVH_QUANTISED", "1", 1);
+    EXPECT_EQ(build_bvh(tri, o).stats.quantised, 1);
+    EXPECT_EQ(build_bvh(tri, with_layout(o, kFloat8)).stats.quantised, 0);  // the option wins
+    o.width = 4;
+    EXPECT_EQ(build_bvh(tri, o).stats.quantised, 0);
+    o.quantised = 1;
+    expect_error(o, "quantised nodes are 8-wide");
+    o.width = 8;
+    o.quantised = -1;
+    setenv("FACET_BVH_QUANTISED", "yes", 1);
+    expect_error(o, "FACET_BVH_QUANTISED is \"yes\"");
+    if (saved) setenv("FACET_BVH_QUANTISED", keep.c_str(), 1);
+    else unsetenv("FACET_BVH_QUANTISED");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // build_bvh: filters the triangle soup, runs the binned SAH builder
 // (bvh/sah_builder.cpp), collapses its binary tree into 4- or 8-wide nodes, lays the
-// triangles out in leaf order and appends the leaves' four-triangle blocks to the nodes.
+// triangles out in leaf order, appends the leaves' four-triangle blocks to the nodes and,
+// for quantised 8-wide trees, encodes the nodes (bvh/quantise.cpp).
 #include "host/bvh/bvh.hpp"
 
 #include <chrono>
@@ -9,8 +10,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "host/bvh/bvh_width.hpp"
+#include "host/bvh/quantise.hpp"
 #include "host/bvh/sah_builder.hpp"
 #include "host/error.hpp"
 
@@ -150,27 +153,26 @@ CollapseOut collapse(const std::vector<bvh_detail::BinaryNode>& bin, bool by_lev
 
 constexpr std::int64_t kRowsPerBlock = sizeof(FcTriBlock) / 16;
 static_assert(sizeof(FcBvhNode) % 16 == 0 && sizeof(FcBvhNode8) % sizeof(FcBvhNode) == 0 &&
-                  sizeof(FcTriBlock) % 16 == 0,
+                  sizeof(FcBvhNodeQ) % 16 == 0 && sizeof(FcTriBlock) % 16 == 0,
               "the node buffer is addressed in rows");
 
-std::int64_t rows_per_node(int width) {
-    return static_cast<std::int64_t>(width == 8 ? sizeof(FcBvhNode8) : sizeof(FcBvhNode)) / 16;
+// Bytes of one node of a tree as stored.
+std::size_t node_bytes(int width, bool quantised) {
+    return width == 4 ? sizeof(FcBvhNode) : quantised ? sizeof(FcBvhNodeQ) : sizeof(FcBvhNode8);
 }
 
-// Copies the wide nodes into the node buffer (128-byte units), appends the leaves'
-// triangles as FcTriBlock, in node order, and points every leaf slot at its first
-// block (a row index). Returns the block count.
+// Appends the leaves' triangles as FcTriBlock, in node order, after `stored_bytes` of nodes
+// (the nodes as they will be stored), and points every leaf slot at its first block (a
+// row index). Returns the blocks.
 template <typename Node>
-std::size_t pack_node_buffer(std::vector<Node>& nodes, const std::vector<FcTriangle>& tris,
-                             std::vector<FcBvhNode>& buffer) {
+std::vector<FcTriBlock> pack_leaf_blocks(std::vector<Node>& nodes, const std::vector<FcTriangle>& tris,
+                                         std::size_t stored_bytes) {
     constexpr int W = kWidth<Node>;
-    const std::size_t tree_nodes = nodes.size();
     std::vector<FcTriBlock> blocks;
     blocks.reserve(tris.size() / 2 + 1);
-    const std::int64_t base = static_cast<std::int64_t>(tree_nodes * sizeof(Node) / 16);
-    for (std::size_t n = 0; n < tree_nodes; ++n)
+    const auto base = static_cast<std::int64_t>(stored_bytes / 16);
+    for (Node& node : nodes)
         for (int k = 0; k < W; ++k) {
-            Node& node = nodes[n];
             if (node.count[k] <= 0) continue;
             const std::int64_t row = base + static_cast<std::int64_t>(blocks.size()) * kRowsPerBlock;
             if (row + ((node.count[k] + 3) / 4) * kRowsPerBlock > INT32_MAX)
@@ -192,11 +194,37 @@ std::size_t pack_node_buffer(std::vector<Node>& nodes, const std::vector<FcTrian
             }
             node.index[k] = static_cast<std::int32_t>(row);
         }
-    const std::size_t node_bytes = tree_nodes * sizeof(Node), bytes = blocks.size() * sizeof(FcTriBlock);
-    buffer.resize((node_bytes + bytes + sizeof(FcBvhNode) - 1) / sizeof(FcBvhNode));
+    return blocks;
+}
+
+// The node buffer (128-byte units): `bytes` of nodes, then the blocks.
+void fill_buffer(const void* nodes, std::size_t bytes, const std::vector<FcTriBlock>& blocks,
+                 std::vector<FcBvhNode>& buffer) {
+    const std::size_t block_bytes = blocks.size() * sizeof(FcTriBlock);
+    buffer.resize((bytes + block_bytes + sizeof(FcBvhNode) - 1) / sizeof(FcBvhNode));
     auto* out = reinterpret_cast<unsigned char*>(buffer.data());
-    std::memcpy(out, nodes.data(), node_bytes);
-    if (bytes) std::memcpy(out + node_bytes, blocks.data(), bytes);
+    std::memcpy(out, nodes, bytes);
+    if (block_bytes) std::memcpy(out + bytes, blocks.data(), block_bytes);
+    const std::size_t tail = buffer.size() * sizeof(FcBvhNode) - bytes - block_bytes;
+    if (tail) std::memset(out + bytes + block_bytes, 0, tail);
+}
+
+// Packs a tree of float nodes, or of their quantised encodings, with its leaf blocks.
+template <typename Node>
+std::size_t pack_node_buffer(std::vector<Node>& nodes, bool quantised, const std::vector<FcTriangle>& tris,
+                             std::vector<FcBvhNode>& buffer) {
+    const std::size_t bytes = nodes.size() * (quantised ? sizeof(FcBvhNodeQ) : sizeof(Node));
+    const std::vector<FcTriBlock> blocks = pack_leaf_blocks(nodes, tris, bytes);
+    if constexpr (std::is_same_v<Node, FcBvhNode8>) {
+        if (quantised) {
+            std::vector<FcBvhNodeQ> q;
+            q.reserve(nodes.size());
+            for (const FcBvhNode8& n : nodes) q.push_back(bvh_detail::quantise_node(n));
+            fill_buffer(q.data(), bytes, blocks, buffer);
+            return blocks.size();
+        }
+    }
+    fill_buffer(nodes.data(), bytes, blocks, buffer);
     return blocks.size();
 }
 
@@ -215,6 +243,24 @@ int resolve_width(int width) {
     return width;
 }
 
+bool resolve_quantised(const BvhOptions& options) {
+    // The meta byte holds up to 7 blocks a leaf and a leaf's first block up to 31 after the
+    // node's first: eight leaves of up to 16 triangles (4 blocks) always fit.
+    const bool fits = options.max_leaf_size <= 16;
+    int q = options.quantised;
+    const char* env = std::getenv("FACET_BVH_QUANTISED");
+    if (q < 0 && env && *env) {
+        const std::string v(env);
+        if (v != "0" && v != "1") throw Error("FACET_BVH_QUANTISED is \"" + v + "\": it must be 0 or 1");
+        q = v == "1" ? 1 : 0;
+    }
+    if (q > 1) throw Error("build_bvh: BvhOptions::quantised is " + std::to_string(q) + ": it must be -1, 0 or 1");
+    if (q == 1 && !fits)
+        throw Error("build_bvh: quantised nodes hold leaves of up to 16 triangles, max_leaf_size is " +
+                    std::to_string(options.max_leaf_size) + " (FACET_BVH_QUANTISED=0 keeps float boxes)");
+    return q < 0 ? kQuantisedDefault && fits : q == 1;
+}
+
 int bvh_width_for(bool gpu, unsigned native_float_vector_width) {
     const char* env = std::getenv("FACET_BVH_WIDTH");
     if (env && *env) return resolve_width(0);
@@ -226,6 +272,24 @@ FcBvhNode8 wide_node8(const Bvh& bvh, std::size_t i) {
         throw Error("wide_node8: node " + std::to_string(i) + " is not a node of an 8-wide tree of " +
                     std::to_string(bvh.stats.nodes) + " (width " + std::to_string(bvh.stats.width) + ")");
     FcBvhNode8 n;
+    if (!bvh.stats.quantised) {
+        std::memcpy(&n, reinterpret_cast<const unsigned char*>(bvh.nodes.data()) + i * sizeof n, sizeof n);
+        return n;
+    }
+    n = bvh_detail::dequantise_node(wide_node_q(bvh, i));
+    for (int k = 0; k < 8; ++k) {  // four triangles a block, less the last block's unused lanes
+        if (n.count[k] <= 0) continue;
+        const FcTriBlock last = leaf_block(bvh, n.index[k] + (n.count[k] / 4 - 1) * kRowsPerBlock);
+        for (int lane = 0; lane < 4; ++lane) n.count[k] -= last.tri[lane] < 0 ? 1 : 0;
+    }
+    return n;
+}
+
+FcBvhNodeQ wide_node_q(const Bvh& bvh, std::size_t i) {
+    if (!bvh.stats.quantised || i >= bvh.stats.nodes)
+        throw Error("wide_node_q: node " + std::to_string(i) + " is not a node of a quantised tree of " +
+                    std::to_string(bvh.stats.nodes) + (bvh.stats.quantised ? "" : " (the tree has float boxes)"));
+    FcBvhNodeQ n;
     std::memcpy(&n, reinterpret_cast<const unsigned char*>(bvh.nodes.data()) + i * sizeof n, sizeof n);
     return n;
 }
@@ -237,11 +301,16 @@ const FcBvhNode& wide_node4(const Bvh& bvh, std::size_t i) {
     return bvh.nodes[i];
 }
 
-std::string bvh_prelude(const Bvh& bvh) { return "#define FC_BVH_WIDTH " + std::to_string(bvh.stats.width); }
+std::string bvh_prelude(const Bvh& bvh) {
+    return "#define FC_BVH_WIDTH " + std::to_string(bvh.stats.width) +
+           (bvh.stats.quantised ? "\n#define FC_BVH_QUANTISED 1" : "");
+}
 
 FcTriBlock leaf_block(const Bvh& bvh, std::int64_t row) {
     const auto rows = static_cast<std::int64_t>(bvh.nodes.size() * sizeof(FcBvhNode) / 16);
-    if (row < static_cast<std::int64_t>(bvh.stats.nodes) * rows_per_node(bvh.stats.width) || row + kRowsPerBlock > rows)
+    const auto first =
+        static_cast<std::int64_t>(bvh.stats.nodes * node_bytes(bvh.stats.width, bvh.stats.quantised) / 16);
+    if (row < first || row + kRowsPerBlock > rows)
         throw Error("leaf_block: row " + std::to_string(row) + " is outside the leaf blocks of the node buffer");
     FcTriBlock b;
     std::memcpy(&b, reinterpret_cast<const unsigned char*>(bvh.nodes.data()) + row * 16, sizeof b);
@@ -281,6 +350,9 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
         bvh_detail::BuildOutput built = bvh_detail::build_sah(refs, options);
 
         const int width = resolve_width(options.width);
+        if (width == 4 && options.quantised == 1)
+            throw Error("build_bvh: BvhOptions::quantised is 1 for a 4-wide tree: quantised nodes are 8-wide");
+        const bool quantised = width == 8 && resolve_quantised(options);
         CollapseOut wide;
         std::vector<FcBvhNode> nodes4;
         std::vector<FcBvhNode8> nodes8;
@@ -306,9 +378,10 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
         }
 
         st.width = width;
+        st.quantised = quantised ? 1 : 0;
         st.nodes = width == 8 ? nodes8.size() : nodes4.size();
-        st.leaf_blocks = width == 8 ? pack_node_buffer(nodes8, bvh.triangles, bvh.nodes)
-                                    : pack_node_buffer(nodes4, bvh.triangles, bvh.nodes);
+        st.leaf_blocks = width == 8 ? pack_node_buffer(nodes8, quantised, bvh.triangles, bvh.nodes)
+                                    : pack_node_buffer(nodes4, false, bvh.triangles, bvh.nodes);
         st.triangles = bvh.triangles.size();
         st.leaves = built.leaves;
         st.max_depth = wide.depth;

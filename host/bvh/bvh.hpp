@@ -22,12 +22,20 @@ struct BvhOptions {
                                      // ceil(n / block_size) tests (Embree's blocked SAH); 1, 2, 4 or 8
     int width = 0;                   // node width, 4 (FcBvhNode) or 8 (FcBvhNode8); 0: FACET_BVH_WIDTH
                                      // when set, else 4 (bvh_width_for picks one for a device)
+    int quantised = -1;              // 8-wide trees: 1 quantised child boxes (FcBvhNodeQ, 80-byte
+                                     // nodes), 0 float boxes (FcBvhNode8); -1: FACET_BVH_QUANTISED
+                                     // when set, else kQuantisedDefault (where the leaves fit)
 };
+
+// Whether 8-wide trees are quantised when neither BvhOptions::quantised nor
+// FACET_BVH_QUANTISED says (docs/performance.md has the figures that chose it).
+inline constexpr bool kQuantisedDefault = true;
 
 struct BvhStats {
     std::size_t triangles = 0;
-    int width = 4;                 // node width: 4 (FcBvhNode) or 8 (FcBvhNode8)
-    std::size_t nodes = 0;         // wide node count (FcBvhNode or FcBvhNode8, by width)
+    int width = 4;                 // node width: 4 (FcBvhNode) or 8 (FcBvhNode8 or FcBvhNodeQ)
+    int quantised = 0;             // 1: the 8-wide nodes are FcBvhNodeQ
+    std::size_t nodes = 0;         // wide node count (FcBvhNode, FcBvhNode8 or FcBvhNodeQ)
     std::size_t leaf_blocks = 0;   // FcTriBlock count (four triangle lanes each)
     std::size_t binary_nodes = 0;  // nodes of the binary SAH tree it was collapsed from
     std::size_t leaves = 0;
@@ -44,10 +52,10 @@ struct BvhStats {
 
 struct Bvh {
     // The node buffer as uploaded, in 128-byte units: the stats.nodes wide nodes of the
-    // tree first (the root first; an FcBvhNode8 takes two units), then the leaves'
-    // FcTriBlock, addressed in 16-byte rows from the start (kernels/shared/bvh_layout.h);
-    // read them with wide_node() and leaf_block(). Programs that trace it are built with
-    // bvh_prelude(*this).
+    // tree first (the root first; an FcBvhNode8 takes two units, an FcBvhNodeQ 80 bytes),
+    // then the leaves' FcTriBlock, addressed in 16-byte rows from the start
+    // (kernels/shared/bvh_layout.h); read them with wide_node4/8() and leaf_block().
+    // Programs that trace it are built with bvh_prelude(*this).
     std::vector<FcBvhNode> nodes;
     std::vector<FcTriangle> triangles;  // reordered; FcTriangle::prim is the input index
     BvhStats stats;
@@ -57,12 +65,22 @@ struct Bvh {
 // throws an Error naming the bad value.
 int resolve_width(int width);
 
-// The i-th wide node of an 8-wide (FcBvhNode8) or 4-wide (FcBvhNode) tree.
+// Whether 8-wide trees built with `options` are quantised (BvhOptions::quantised, else
+// FACET_BVH_QUANTISED, else kQuantisedDefault when every leaf fits FcBvhNodeQ's bytes:
+// max_leaf_size <= 16); throws an Error naming the bad value or the leaf size that does not fit.
+bool resolve_quantised(const BvhOptions& options);
+
+// The i-th wide node of an 8-wide (FcBvhNode8) or 4-wide (FcBvhNode) tree. A quantised
+// node comes decoded (bvh_detail::dequantise_node: the boxes the traversal tests), with
+// each leaf's triangle count read from its blocks.
 FcBvhNode8 wide_node8(const Bvh& bvh, std::size_t i);
+// The i-th node of a quantised tree, as stored.
+FcBvhNodeQ wide_node_q(const Bvh& bvh, std::size_t i);
 const FcBvhNode& wide_node4(const Bvh& bvh, std::size_t i);
 
 // The line a program that traces `bvh` is assembled after ("#define FC_BVH_WIDTH 8"
-// or 4), so that kernels/trace/bvh_traverse.cl reads its node layout.
+// or 4, and "#define FC_BVH_QUANTISED 1" on a second line for FcBvhNodeQ), so that
+// kernels/trace/bvh_traverse.cl reads its node layout.
 std::string bvh_prelude(const Bvh& bvh);
 
 // The leaf block at 16-byte row `row` of the node buffer (a leaf's FcBvhNode::index,

@@ -50,6 +50,38 @@ typedef struct FcBvhNode8 {
     fc_int count[8];
 } FcBvhNode8;
 
+/* The quantised 8-wide node (Ylitie, Karras & Laine 2017, "Efficient Incoherent Ray
+ * Traversal on GPUs Through Compressed Wide BVHs"): 80 bytes against FcBvhNode8's 256, the
+ * same tree. Each child box plane is a byte q on a grid of the node, plane = origin[a] +
+ * q * 2^(e_a - 127) per axis a (q * scale is exact; the sum is rounded once, the same on
+ * host and device), rounded outward by the host (host/bvh/quantise.cpp): every decoded box
+ * contains its child's exact box, so the traversal may visit more but misses nothing and
+ * returns the float layout's hits. Children are referred to by rank, not index: a node's
+ * inner children are consecutive nodes from child_base, its leaves' blocks consecutive
+ * rows from leaf_base, both in slot order. Per slot c:
+ *  - inner child: bit c of exps' byte 3; node child_base + (inner slots before c);
+ *  - leaf: byte c of meta (byte c % 4 of meta[c / 4]) = blocks | first << 3: its blocks
+ *    (1-7) of FcTriBlock start at row leaf_base + 10 * first (first 0-31);
+ *  - empty slot: not inner, meta byte 0, planes inverted (lo 255, hi 0); should rounding
+ *    report it hit anyway, it is a leaf of no blocks.
+ * Planes: byte c of q_lo_x (memory order) is slot c's low x plane, and so on; the six
+ * planes in FcBvhNode8's row order (lo x, y, z, hi x, y, z), 8 bytes each from byte 32.
+ * The node buffer of a quantised tree holds FcBvhNodeQ (node indices count them), then
+ * the leaf blocks; FC_BVH_QUANTISED (with FC_BVH_WIDTH 8) selects it in a program. */
+typedef struct FcBvhNodeQ {
+    float origin[3];
+    fc_uint exps; /* bytes 0-2: biased exponents of the x, y, z scales (1-254); byte 3: inner-child bits */
+    fc_int child_base;
+    fc_int leaf_base;
+    fc_uint meta[2];
+    fc_uint q_lo_x[2];
+    fc_uint q_lo_y[2];
+    fc_uint q_lo_z[2];
+    fc_uint q_hi_x[2];
+    fc_uint q_hi_y[2];
+    fc_uint q_hi_z[2];
+} FcBvhNodeQ;
+
 /* Four triangles of a leaf, each coordinate a row of four lanes (one per triangle):
  * vertex 0 in x0 y0 z0, 1 in x1 y1 z1, 2 in x2 y2 z2, and the triangles' indices in
  * the FcTriangle array (BVH order). Unused lanes have all vertices at 0 (they never
@@ -91,6 +123,10 @@ FC_STATIC_ASSERT(sizeof(FcBvhNode) == 128, "FcBvhNode is 128 bytes");
 FC_STATIC_ASSERT(offsetof(FcBvhNode, hi_x) == 48 && offsetof(FcBvhNode, index) == 96, "FcBvhNode offsets");
 FC_STATIC_ASSERT(sizeof(FcBvhNode8) == 256, "FcBvhNode8 is 256 bytes");
 FC_STATIC_ASSERT(offsetof(FcBvhNode8, hi_x) == 96 && offsetof(FcBvhNode8, index) == 192, "FcBvhNode8 offsets");
+FC_STATIC_ASSERT(sizeof(FcBvhNodeQ) == 80, "FcBvhNodeQ is 80 bytes");
+FC_STATIC_ASSERT(offsetof(FcBvhNodeQ, meta) == 24 && offsetof(FcBvhNodeQ, q_lo_x) == 32 &&
+                     offsetof(FcBvhNodeQ, q_hi_z) == 72,
+                 "FcBvhNodeQ offsets");
 FC_STATIC_ASSERT(sizeof(FcTriBlock) == 160 && offsetof(FcTriBlock, tri) == 144, "FcTriBlock is 10 rows of 16 bytes");
 FC_STATIC_ASSERT(sizeof(FcTriangle) == 48, "FcTriangle is 48 bytes");
 FC_STATIC_ASSERT(offsetof(FcTriangle, v1) == 16 && offsetof(FcTriangle, v2) == 32, "FcTriangle offsets");

@@ -7,6 +7,7 @@
 #define FC_LAYOUT_STRUCTS(S) \
     S(FcBvhNode)             \
     S(FcBvhNode8)            \
+    S(FcBvhNodeQ)            \
     S(FcTriBlock)            \
     S(FcTriangle)            \
     S(FcTriShading)          \
@@ -27,6 +28,9 @@
     F(FcBvhNode, hi_y) F(FcBvhNode, hi_z) F(FcBvhNode, index) F(FcBvhNode, count)                                           \
     F(FcBvhNode8, lo_x) F(FcBvhNode8, lo_y) F(FcBvhNode8, lo_z) F(FcBvhNode8, hi_x) F(FcBvhNode8, hi_y)                     \
     F(FcBvhNode8, hi_z) F(FcBvhNode8, index) F(FcBvhNode8, count)                                                           \
+    F(FcBvhNodeQ, origin) F(FcBvhNodeQ, exps) F(FcBvhNodeQ, child_base) F(FcBvhNodeQ, leaf_base) F(FcBvhNodeQ, meta)        \
+    F(FcBvhNodeQ, q_lo_x) F(FcBvhNodeQ, q_lo_y) F(FcBvhNodeQ, q_lo_z) F(FcBvhNodeQ, q_hi_x)                                 \
+    F(FcBvhNodeQ, q_hi_y) F(FcBvhNodeQ, q_hi_z)                                                                             \
     F(FcTriBlock, x0) F(FcTriBlock, y0) F(FcTriBlock, z0) F(FcTriBlock, x1) F(FcTriBlock, y1)                              \
     F(FcTriBlock, z1) F(FcTriBlock, x2) F(FcTriBlock, y2) F(FcTriBlock, z2) F(FcTriBlock, tri)                              \
     F(FcTriangle, v0) F(FcTriangle, prim) F(FcTriangle, v1) F(FcTriangle, v2)                                               \

@@ -1,4 +1,5 @@
-/* BVH traversal over the 4- or 8-wide nodes of shared/bvh_layout.h (FC_BVH_WIDTH): one
+/* BVH traversal over the 4- or 8-wide nodes of shared/bvh_layout.h (FC_BVH_WIDTH; with
+ * FC_BVH_QUANTISED the 8-wide nodes' boxes are bytes, decoded to float8 per node): one
  * node fetch tests all its child boxes with float4 or float8 arithmetic, leaves are
  * intersected four triangles a block (kernels/trace/triangle.cl) and the nearest inner
  * child is visited next, the others pushed farthest first on a small private stack
@@ -66,13 +67,16 @@ inline bool box_hit(const BoxRay* r, __global const float* lo, __global const fl
     return tn <= tf;
 }
 
-/* Intersects the leaf of `count` triangles whose blocks start at row `row` of the node
- * buffer, a block of four lanes at a time; with `any_hit`, stops at the first hit. Within a
- * block the nearest hit lane wins (the lowest on a tie), and a later block's hit must be
- * strictly nearer: the hit a loop over the triangles in order would keep. */
-inline bool leaf_hit(__global const float4* rows, int row, int count, const TriRay* tr, Hit* hit, bool any_hit) {
+/* Intersects the leaf of `blocks` blocks from row `row` of the node buffer, a block of
+ * four lanes at a time; with `any_hit`, stops at the first hit. Within a block the
+ * nearest hit lane wins (the lowest on a tie), and a later block's hit must be strictly
+ * nearer: the hit a loop over the triangles in order would keep. */
+/* Inlined by force, with tri4_hit: PoCL's LLVM called both out of line, the block's nine
+ * rows spilled between them (docs/performance.md: 7-9% fewer trace instructions inlined). */
+__attribute__((always_inline)) inline bool leaf_hit(__global const float4* rows, int row, int blocks, const TriRay* tr,
+                                                    Hit* hit, bool any_hit) {
     bool found = false;
-    for (int first = 0; first < count; first += 4, row += 10) {
+    for (; blocks > 0; --blocks, row += 10) {
         __global const float4* b = rows + row;
         const Tri4 p = tri4_load(b, tr);
         float4 t, v, w, det;
@@ -91,21 +95,42 @@ inline bool leaf_hit(__global const float4* rows, int row, int count, const TriR
     return found;
 }
 
-/* The node width the program reads (FcBvhNode or FcBvhNode8), set by the host from the
- * tree it uploads; the children's masks and distances are FC_W-lane vectors. */
+/* The node layout the program reads (FcBvhNode, FcBvhNode8 or, with FC_BVH_QUANTISED,
+ * FcBvhNodeQ), set by the host from the tree it uploads (bvh_prelude); the children's
+ * masks and distances are FC_W-lane vectors. */
 #ifndef FC_BVH_WIDTH
 #define FC_BVH_WIDTH 4
+#endif
+#ifndef FC_BVH_QUANTISED
+#define FC_BVH_QUANTISED 0
+#endif
+#if FC_BVH_QUANTISED && FC_BVH_WIDTH != 8
+#error "FC_BVH_QUANTISED needs FC_BVH_WIDTH 8"
 #endif
 #if FC_BVH_WIDTH == 8
 #define FC_W 8
 #define FC_STACK FC_BVH8_STACK_SIZE
+#if FC_BVH_QUANTISED
+typedef FcBvhNodeQ FcNode;
+#else
 typedef FcBvhNode8 FcNode;
+#endif
 typedef float8 floatW;
 typedef int8 intW;
 #define FC_VLOADW vload8
 #define FC_VSTOREW vstore8
-/* An 8-bit mask from an int8 of 0 / -1 lanes: bit c set where lane c is. */
+/* An 8-bit mask from an int8 of 0 / -1 lanes: bit c set where lane c is. With AVX (PoCL
+ * on x86 CPUs) one vmovmskps of the lanes' sign bits; lane by lane, PoCL's code extracted
+ * and or-reduced the halves (about 17 instructions: the movmskps form took 6-7% off the
+ * trace kernels' instructions, docs/performance.md). Elsewhere (GPUs, Oclgrind) lane by lane. */
+#if defined(__AVX__) && defined(__clang__)
+typedef float fc_v8sf __attribute__((__vector_size__(32)));
+inline uint lane_bits_w(int8 m) {
+    return (uint)__builtin_ia32_movmskps256(__builtin_convertvector(as_float8(m), fc_v8sf));
+}
+#else
 inline uint lane_bits_w(int8 m) { return lane_bits(m.lo) | (lane_bits(m.hi) << 4); }
+#endif
 #elif FC_BVH_WIDTH == 4
 #define FC_W 4
 #define FC_STACK FC_BVH_STACK_SIZE
@@ -128,17 +153,14 @@ inline uint lane_bits_w(int4 m) { return lane_bits(m); }
  * exits ignored by the comparisons (select keeps the running value where the
  * comparison is false). Returns a mask (-1 where hit) and the entry distances in
  * *tnear. */
-inline intW children_hit(__global const FcNode* n, float3 o, float3 inv_d, int3 near, int3 far, float tmax,
-                         floatW* tnear) {
-    /* Whole-vector loads (nodes are aligned to their size): vload8 became two 16-byte
-     * loads and an insert in PoCL's code. */
-    __global const floatW* v = (__global const floatW*)n;
-    floatW t0x = (v[near.x] - o.x) * inv_d.x;
-    floatW t1x = (v[far.x] - o.x) * inv_d.x;
-    floatW t0y = (v[near.y] - o.y) * inv_d.y;
-    floatW t1y = (v[far.y] - o.y) * inv_d.y;
-    floatW t0z = (v[near.z] - o.z) * inv_d.z;
-    floatW t1z = (v[far.z] - o.z) * inv_d.z;
+inline intW slabs_hit(floatW nx, floatW fx, floatW ny, floatW fy, floatW nz, floatW fz, float3 o, float3 inv_d,
+                      float tmax, floatW* tnear) {
+    floatW t0x = (nx - o.x) * inv_d.x;
+    floatW t1x = (fx - o.x) * inv_d.x;
+    floatW t0y = (ny - o.y) * inv_d.y;
+    floatW t1y = (fy - o.y) * inv_d.y;
+    floatW t0z = (nz - o.z) * inv_d.z;
+    floatW t1z = (fz - o.z) * inv_d.z;
     t1x *= FC_SLAB_SCALE;
     t1y *= FC_SLAB_SCALE;
     t1z *= FC_SLAB_SCALE;
@@ -152,6 +174,39 @@ inline intW children_hit(__global const FcNode* n, float3 o, float3 inv_d, int3 
     *tnear = tn;
     return tn <= tf;
 }
+
+#if FC_BVH_QUANTISED
+/* The quantised node's planes decoded as the host rounded them, origin + q * scale
+ * (q * scale is exact, so contraction into an fma changes nothing), then the slabs.
+ * `head` is the node's first row: the origin and the exponents. */
+inline int8 children_hit(__global const FcNode* n, float4 head, float3 o, float3 inv_d, int3 near, int3 far, float tmax,
+                         float8* tnear) {
+    __global const uchar8* q = (__global const uchar8*)n->q_lo_x;
+    const uint e = as_uint(head.w);
+    const float sx = as_float((e & 0xffu) << 23), sy = as_float(((e >> 8) & 0xffu) << 23),
+                sz = as_float(((e >> 16) & 0xffu) << 23);
+    return slabs_hit(head.x + convert_float8(q[near.x]) * sx, head.x + convert_float8(q[far.x]) * sx,
+                     head.y + convert_float8(q[near.y]) * sy, head.y + convert_float8(q[far.y]) * sy,
+                     head.z + convert_float8(q[near.z]) * sz, head.z + convert_float8(q[far.z]) * sz, o, inv_d, tmax,
+                     tnear);
+}
+#else
+inline intW children_hit(__global const FcNode* n, float3 o, float3 inv_d, int3 near, int3 far, float tmax,
+                         floatW* tnear) {
+    /* Whole-vector loads (nodes are aligned to their size): vload8 became two 16-byte
+     * loads and an insert in PoCL's code. */
+    __global const floatW* v = (__global const floatW*)n;
+    return slabs_hit(v[near.x], v[far.x], v[near.y], v[far.y], v[near.z], v[far.z], o, inv_d, tmax, tnear);
+}
+#endif
+
+/* The node index of hit inner child c: from the float node's index row, or, quantised,
+ * by its rank among the node's inner children. */
+#if FC_BVH_QUANTISED
+#define FC_CHILD(c) (child_base + (int)popcount(inner_slots & ((1u << (c)) - 1u)))
+#else
+#define FC_CHILD(c) (idx[c])
+#endif
 
 /* The traversal shared by trace_closest and trace_any. Per node: all boxes in one go,
  * then the hit leaves (their hits shorten the ray before any inner child is entered),
@@ -175,6 +230,15 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
     for (;;) {
         __global const FcNode* n = &nodes[node];
         floatW tnw;
+#if FC_BVH_QUANTISED
+        /* Leaves and inner children from one mask: the node marks its inner slots. An
+         * empty slot reported hit by rounding is a leaf of no blocks. */
+        const float4 head = *(__global const float4*)n;
+        const uint inner_slots = as_uint(head.w) >> 24;
+        const uint hits = lane_bits_w(children_hit(n, head, o, br.inv_d, near_row, far_row, hit->t, &tnw));
+        uint leaves = hits & ~inner_slots;
+        uint inner = hits & inner_slots;
+#else
         const intW mask = children_hit(n, o, br.inv_d, near_row, far_row, hit->t, &tnw);
         const intW count = FC_VLOADW(0, n->count);
         const intW index = FC_VLOADW(0, n->index);
@@ -182,13 +246,25 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
         uint inner = lane_bits_w(mask & (count <= 0)); /* empty slots are never hit */
         int idx[FC_W];
         FC_VSTOREW(index, 0, idx);
+#endif
         if (leaves) {
+#if FC_BVH_QUANTISED
+            const ulong meta = as_ulong(vload2(0, n->meta));
+            const int leaf_base = n->leaf_base;
+#else
             int cnt[FC_W];
             FC_VSTOREW(count, 0, cnt);
+#endif
             do {
                 const uint c = lowest_bit(leaves);
                 leaves &= leaves - 1u;
-                if (leaf_hit(rows, idx[c], cnt[c], &tr, hit, any)) {
+#if FC_BVH_QUANTISED
+                const uint m = (uint)(meta >> (8u * c)) & 0xffu; /* blocks | first << 3 */
+                const int row = leaf_base + 10 * (int)(m >> 3), blocks = (int)(m & 7u);
+#else
+                const int row = idx[c], blocks = (cnt[c] + 3) >> 2;
+#endif
+                if (leaf_hit(rows, row, blocks, &tr, hit, any)) {
                     found = true;
                     if (any) return true;
                 }
@@ -204,10 +280,13 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
             node = stack_node[sp];
             continue;
         }
+#if FC_BVH_QUANTISED
+        const int child_base = n->child_base;
+#endif
         const uint c0 = lowest_bit(inner);
         inner &= inner - 1u;
         if (!inner) {
-            node = idx[c0];
+            node = FC_CHILD(c0);
             continue;
         }
         float tn[FC_W];
@@ -218,11 +297,11 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
             const bool swap = tn[c1] < tn[c0];
             const uint nearer = swap ? c1 : c0, farther = swap ? c0 : c1;
             if (sp < FC_STACK) { /* always, by the builder */
-                stack_node[sp] = idx[farther];
+                stack_node[sp] = FC_CHILD(farther);
                 stack_t[sp] = tn[farther];
                 ++sp;
             }
-            node = idx[nearer];
+            node = FC_CHILD(nearer);
             continue;
         }
         /* Three or more: insertion by entry distance, farthest at 0. */
@@ -245,13 +324,14 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
         } while (inner);
         for (int j = 0; j + 1 < k; ++j)
             if (sp < FC_STACK) { /* always, by the builder */
-                stack_node[sp] = idx[order[j]];
+                stack_node[sp] = FC_CHILD((uint)order[j]);
                 stack_t[sp] = dist[j];
                 ++sp;
             }
-        node = idx[order[k - 1]];
+        node = FC_CHILD((uint)order[k - 1]);
     }
 }
+#undef FC_CHILD
 
 /* Nearest hit with 0 < t < tmax. */
 inline bool trace_closest(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,

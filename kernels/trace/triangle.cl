@@ -75,8 +75,8 @@ inline float4 diff_of_products4(float4 a, float4 b, float4 c, float4 d) {
 /* Lanes hit with t < tmax and t above its rounding error (below): -1 in the mask; their distance in *t and their scaled
  * barycentrics (edge functions v, w of vertices b and c, and their sum det) for
  * tri4_weights(). Lanes whose three vertices are equal (a block's padding) never hit. */
-inline int4 tri4_hit(const TriRay* r, const Tri4* p, float tmax, float4* t_out, float4* v_out, float4* w_out,
-                     float4* det_out) {
+__attribute__((always_inline)) inline int4 tri4_hit(const TriRay* r, const Tri4* p, float tmax, float4* t_out,
+                                                    float4* v_out, float4* w_out, float4* det_out) {
     /* No fma contraction: the edge functions of a shared edge must be exact negatives
      * of each other in the two triangles (OpenCL C contracts by default). */
 #pragma OPENCL FP_CONTRACT OFF
