@@ -55,6 +55,10 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::u
         cl::Buffer sphere_nodes = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
         kernel.setArg(6, spheres);
         kernel.setArg(7, sphere_nodes);
+        cl::Buffer instances = upload(c, std::span<const FcInstance>(dev.instancing.instances));
+        cl::Buffer instance_nodes = upload(c, std::span<const FcInstanceNode>(dev.instancing.tree));
+        kernel.setArg(8, instances);
+        kernel.setArg(9, instance_nodes);
         const std::uint32_t rows = rows_per_launch(width, spp);
         for (std::uint32_t row = 0; row < height; row += rows) {
             FcRenderParams p = dev.params;
