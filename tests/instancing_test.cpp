@@ -398,8 +398,9 @@ TEST(Instancing, RenderMatchesFlattened) {
     expect_same_render(p.instanced, p.flat, 16);
 }
 
-// A checker texture on the shared mesh: the instances read the mesh's uvs, which equal
-// those of the copies (corners 1 and 2 swapped in the mirrored copy, as its vertices are).
+// Textures on the shared mesh: the instances read the mesh's uvs, which equal those of the
+// copies (corners 1 and 2 swapped in the mirrored copy, as its vertices are), and their
+// texture frames are the copies'.
 TEST(Instancing, TexturedMeshKeepsItsUvs) {
     Pair p = load_pair();
     const SharedMesh& mesh = p.instanced.meshes[0];
@@ -415,16 +416,21 @@ TEST(Instancing, TexturedMeshKeepsItsUvs) {
                 EXPECT_EQ(f.uv[fc][1], s.uv[c][1]) << "copy " << copy << " triangle " << t;
             }
         }
-    std::vector<float> rgba;
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; ++x) {
-            const float v = (x + y) % 2 ? 0.9f : 0.1f;
+    // A 64 x 64 checker (its mip level follows the world-space area of the triangle) and a
+    // tilted normal map (its tangent frame follows dp/du in world space).
+    std::vector<float> rgba, tilted;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const float v = (x / 4 + y / 4) % 2 ? 0.9f : 0.1f;
             rgba.insert(rgba.end(), {v, 0.5f * v + 0.2f, 1.0f - v, 1.0f});
         }
+    for (int i = 0; i < 16; ++i) tilted.insert(tilted.end(), {0.85f, 0.6f, 0.9f, 1.0f});
     for (Scene* s : {&p.instanced, &p.flat}) {
-        s->textures.push_back(make_texture(8, 8, rgba));
+        s->textures.push_back(make_texture(64, 64, rgba));
+        s->textures.push_back(make_texture(4, 4, tilted));
         ASSERT_EQ(s->materials.size(), 1u);
         s->materials[0].textures.base_color = 0;
+        s->materials[0].textures.normal = 1;
     }
     expect_same_render(p.instanced, p.flat, 16);
 }
