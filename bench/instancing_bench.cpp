@@ -14,6 +14,7 @@
 
 #include "bench/bench.hpp"
 #include "host/bvh/bvh.hpp"
+#include "host/error.hpp"
 #include "host/readers/gltf_reader.hpp"
 #include "host/readers/load_scene.hpp"
 #include "host/render/progressive.hpp"
