@@ -16,11 +16,10 @@ int run_info(const InfoOptions& opt) {
     Bvh bvh = build_bvh(scene.vertices);
     const BvhStats& b = bvh.stats;
     const DeviceScene dev = compile(scene, bvh);  // with the shared meshes' trees and the instances
-    const std::size_t bvh_bytes = scene.instances.empty()
-                                      ? b.device_bytes
-                                      : dev.nodes.size_bytes() + dev.triangles.size_bytes() +
-                                            dev.instancing.instances.size() * sizeof(FcInstance) +
-                                            dev.instancing.tree.size() * sizeof(FcInstanceNode);
+    const std::size_t bvh_bytes = scene.instances.empty() ? b.device_bytes
+                                                          : dev.nodes.size_bytes() + dev.triangles.size_bytes() +
+                                                                dev.instancing.instances.size() * sizeof(FcInstance) +
+                                                                dev.instancing.tree.size() * sizeof(FcInstanceNode);
     std::size_t shading_bytes = dev.shading.size_bytes() + scene.materials.size() * sizeof(FcMaterial) +
                                 scene.lights.size() * sizeof(FcLight) + scene.light_cdf.size() * sizeof(float);
     std::size_t film_bytes = std::size_t(scene.settings.width) * scene.settings.height * 16;
