@@ -76,4 +76,7 @@ nlohmann::json bench_assets(ClContext& ctx, const std::string& assets, bool quic
 // Specialised against generic programs: build time cold and warm, binary size, speed.
 nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, bool quick);
 
+// Instancing: one mesh used by 100 glTF nodes, instanced against copied (instancing_bench.cpp).
+nlohmann::json bench_instancing(ClContext& ctx, const std::string& assets, bool quick);
+
 }  // namespace facet

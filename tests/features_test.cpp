@@ -168,6 +168,29 @@ TEST(Features, EveryFlagIsExercised) {
         build_lights(s);
         cases.push_back({"analytic spheres", s});
     }
+    {
+        Scene s = base();  // one mesh placed twice (instances), once mirrored
+        add_material(s, make_material("lambert"), "white");
+        Scene ico;
+        add_sphere(ico, glm::vec3(0.0f), 0.7f, 1, 0, false);
+        SharedMesh mesh;
+        mesh.name = "icosphere";
+        mesh.vertices = ico.vertices;
+        mesh.shading = ico.shading;
+        const int m = add_shared_mesh(s, mesh);
+        glm::mat4 left(1.0f), right(1.0f);
+        left[3] = glm::vec4(-0.8f, 0.0f, 0.0f, 1.0f);
+        right[0][0] = -1.0f, right[1][1] = 1.3f;
+        right[3] = glm::vec4(0.8f, 0.0f, 0.0f, 1.0f);
+        add_instance(s, m, left);
+        add_instance(s, m, right);
+        add_quad(s, glm::vec3(-3, -1, 3), glm::vec3(6, 0, 0), glm::vec3(0, 0, -6), 0);
+        PunctualLight p;
+        p.position = glm::vec3(0, 3, 3);
+        s.punctual_lights.push_back(p);
+        build_lights(s);
+        cases.push_back({"instances", s});
+    }
     FeatureMask seen_on = 0, seen_off = 0;
     for (auto& [label, scene] : cases) {
         FeatureMask mask = scene_features(scene);

@@ -151,9 +151,18 @@ TEST(SceneGltf, NormalsNodeHierarchyAndInstancing) {
     matrix.mesh = mesh;
     matrix.matrix = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 5, 0, 1};
     b.node(matrix);
+    const std::string path = b.write(d, "tree.gltf");
+    Scene shared;  // the mesh stored once, two instances (tests/instancing_test.cpp traces them)
+    load_gltf(path, shared);
+    EXPECT_EQ(shared.triangle_count(), 0u);
+    ASSERT_EQ(shared.meshes.size(), 1u);
+    EXPECT_EQ(shared.meshes[0].triangle_count(), 2u);
+    EXPECT_EQ(shared.instances.size(), 2u);
     Scene s;
-    load_gltf(b.write(d, "tree.gltf"), s);
-    ASSERT_EQ(s.triangle_count(), 4u);  // flattened: two copies of the two triangles
+    GltfLoadOptions copied;
+    copied.instancing = false;
+    load_gltf(path, s, copied);
+    ASSERT_EQ(s.triangle_count(), 4u);  // copied: two copies of the two triangles
     // (1, 0, 0) -> scale (2, 0, 0) -> rotate about y: (0, 0, -2) -> translate (10, 0, -2).
     EXPECT_NEAR(glm::length(s.vertices[1] - glm::vec3(10, 0, -2)), 0.0f, 1e-5f);
     EXPECT_NEAR(glm::length(v3(s.shading[0].n0) - glm::vec3(0, 0, -1)), 0.0f, 1e-5f);  // +x rotated

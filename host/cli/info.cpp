@@ -5,6 +5,7 @@
 #include "host/cli/commands.hpp"
 #include "host/render/features.hpp"
 #include "host/readers/load_scene.hpp"
+#include "host/scene/device_scene.hpp"
 #include "host/scene/material.hpp"
 
 namespace facet {
@@ -14,12 +15,26 @@ int run_info(const InfoOptions& opt) {
     for (const std::string& w : scene.warnings) fmt::print(stderr, "facet: warning: {}\n", w);
     Bvh bvh = build_bvh(scene.vertices);
     const BvhStats& b = bvh.stats;
-    std::size_t shading_bytes = scene.shading.size() * sizeof(FcTriShading) +
-                                scene.materials.size() * sizeof(FcMaterial) + scene.lights.size() * sizeof(FcLight) +
-                                scene.light_cdf.size() * sizeof(float);
+    const DeviceScene dev = compile(scene, bvh);  // with the shared meshes' trees and the instances
+    const std::size_t bvh_bytes = scene.instances.empty() ? b.device_bytes
+                                                          : dev.nodes.size_bytes() + dev.triangles.size_bytes() +
+                                                                dev.instancing.instances.size() * sizeof(FcInstance) +
+                                                                dev.instancing.tree.size() * sizeof(FcInstanceNode);
+    std::size_t shading_bytes = dev.shading.size_bytes() + scene.materials.size() * sizeof(FcMaterial) +
+                                scene.lights.size() * sizeof(FcLight) + scene.light_cdf.size() * sizeof(float);
     std::size_t film_bytes = std::size_t(scene.settings.width) * scene.settings.height * 16;
     fmt::print("scene       {}\n", scene.source_path);
-    fmt::print("triangles   {}\n", scene.triangle_count());
+    if (scene.instances.empty()) {
+        fmt::print("triangles   {}\n", scene.triangle_count());
+    } else {
+        fmt::print("triangles   {} in the world, {} on the device ({} + {} in shared meshes)\n",
+                   scene.placed_triangle_count(), scene.stored_triangle_count(), scene.triangle_count(),
+                   scene.stored_triangle_count() - scene.triangle_count());
+        fmt::print(
+            "instances   {} of {} shared meshes (meshes that emit light are copied into the world: lights "
+            "are sampled in world space)\n",
+            scene.instances.size(), scene.meshes.size());
+    }
     if (!scene.spheres.empty()) fmt::print("spheres     {} (analytic)\n", scene.spheres.size());
     fmt::print("materials   {}\n", scene.materials.size());
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
@@ -41,7 +56,7 @@ int run_info(const InfoOptions& opt) {
                : scene.environment.params.width == 0
                    ? "constant"
                    : fmt::format("{}x{} map", scene.environment.params.width, scene.environment.params.height));
-    const std::size_t texture_bytes = compile_textures(scene).bytes();
+    const std::size_t texture_bytes = dev.textures.bytes();
     if (scene_uses_textures(scene))
         fmt::print("textures    {} images, {:.2f} MiB with mip-maps and uvs\n", scene.textures.size(),
                    double(texture_bytes) / (1 << 20));
@@ -51,8 +66,8 @@ int run_info(const InfoOptions& opt) {
     fmt::print("image       {}x{}, {} spp, max depth {}\n", scene.settings.width, scene.settings.height,
                scene.settings.spp, scene.settings.max_depth);
     fmt::print("device mem  {:.2f} MiB (bvh {:.2f}, shading {:.2f}, textures {:.2f}, film {:.2f})\n",
-               double(b.device_bytes + shading_bytes + texture_bytes + film_bytes) / (1 << 20),
-               double(b.device_bytes) / (1 << 20), double(shading_bytes) / (1 << 20), double(texture_bytes) / (1 << 20),
+               double(bvh_bytes + shading_bytes + texture_bytes + film_bytes) / (1 << 20),
+               double(bvh_bytes) / (1 << 20), double(shading_bytes) / (1 << 20), double(texture_bytes) / (1 << 20),
                double(film_bytes) / (1 << 20));
     return kExitOk;
 }

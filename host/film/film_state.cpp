@@ -70,6 +70,14 @@ std::uint64_t film_scene_hash(const Scene& scene) {
     Fnv f;
     f.vec(scene.vertices);
     f.vec(scene.shading);
+    for (const SharedMesh& m : scene.meshes) {  // nothing for scenes without instances
+        f.vec(m.vertices);
+        f.vec(m.shading);
+    }
+    for (const Instance& in : scene.instances) {
+        f.value(in.mesh);
+        f.value(in.object_to_world);
+    }
     // The device layout of each material: plain floats and ints, no padding to hash.
     for (const Material& m : scene.materials) f.value(device_material(m));
     f.vec(scene.lights);

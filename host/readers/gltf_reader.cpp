@@ -1,7 +1,9 @@
 // glTF 2.0 through tinygltf: the file is parsed (images are not decoded: facet has no
 // textures yet), the extensions it requires are checked, then the default scene's node
 // tree is walked with its transforms; each primitive's accessors are read with bounds
-// checks (gltf_accessor.cpp) and added as an indexed mesh (triangle_mesh.cpp).
+// checks (gltf_accessor.cpp) and added as an indexed mesh (triangle_mesh.cpp): copied into
+// world space for a mesh one node uses, stored once in object space with one instance per
+// node for a mesh several nodes use (Scene::meshes, Scene::instances).
 #include "host/readers/gltf_reader.hpp"
 
 #include <algorithm>
@@ -152,6 +154,7 @@ public:
         }
         std::vector<bool> on_path(model_.nodes.size(), false);
         for (int root : roots) visit(root, options_.mesh.transform, on_path, 0);
+        place_meshes();
         if (!options_.camera_name.empty() && !camera_taken_) {
             std::string names;
             for (const tinygltf::Camera& c : model_.cameras) names += (names.empty() ? "'" : ", '") + c.name + "'";
@@ -190,7 +193,7 @@ private:
                 fmt::format("{}: {}: the node hierarchy has a cycle (the node is its own ancestor)", path_, place));
         const tinygltf::Node& node = model_.nodes[std::size_t(index)];
         const glm::mat4 world = parent * local_transform(node, path_, place);
-        if (node.mesh >= 0) add_mesh(node.mesh, world, place);
+        if (node.mesh >= 0) uses_.push_back(MeshUse{node.mesh, world, place});
         if (node.camera >= 0) camera(node.camera, world, place);
         if (auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end())
             light(it->second, world, place);
@@ -220,11 +223,73 @@ private:
         return slot;
     }
 
+    struct MeshUse {
+        int mesh;
+        glm::mat4 world;
+        std::string place;
+    };
+    struct Primitive {
+        IndexedMesh mesh;
+        int material;
+    };
+    static constexpr int kUnread = -1, kCopied = -2, kEmpty = -3;
+
+    // Every node's mesh, in node order: a mesh that two or more nodes use is stored once and
+    // instanced (unless options_.instancing is off, it emits light: the light list samples
+    // world-space triangles, or a node's transform is not invertible), else it is copied
+    // into the world for each node.
+    void place_meshes() {
+        std::vector<int> uses(model_.meshes.size(), 0), shared(model_.meshes.size(), kUnread);
+        for (const MeshUse& u : uses_)
+            if (u.mesh >= 0 && std::size_t(u.mesh) < uses.size()) ++uses[std::size_t(u.mesh)];
+        for (const MeshUse& u : uses_) {
+            if (options_.instancing && u.mesh >= 0 && std::size_t(u.mesh) < uses.size() &&
+                uses[std::size_t(u.mesh)] >= 2 && instance_transform_ok(u.world)) {
+                int& slot = shared[std::size_t(u.mesh)];
+                if (slot == kUnread) slot = share_mesh(u.mesh, u.place);
+                if (slot == kEmpty) continue;
+                if (slot >= 0) {
+                    add_instance(scene_, slot, u.world);
+                    continue;
+                }
+            }
+            add_mesh(u.mesh, u.world, u.place);
+        }
+    }
+
+    // Mesh `index` in object space as a shared mesh: its index in scene_.meshes, kCopied when
+    // it emits light, kEmpty when no triangle is left.
+    int share_mesh(int index, const std::string& node_place) {
+        std::vector<Primitive> prims = primitives(index, node_place);
+        for (const Primitive& p : prims) {
+            const glm::vec3 e = scene_.materials[std::size_t(p.material)].emission;
+            if (e.x > 0.0f || e.y > 0.0f || e.z > 0.0f) return kCopied;
+        }
+        Scene object;  // the triangles alone; materials index scene_'s
+        for (const Primitive& p : prims)
+            add_indexed_mesh(p.mesh, glm::mat4(1.0f), p.material, options_.mesh.normals, false, object, tally_);
+        if (object.shading.empty()) return kEmpty;
+        SharedMesh m;
+        const std::string& name = model_.meshes[std::size_t(index)].name;
+        m.name = name.empty() ? fmt::format("meshes[{}]", index) : name;
+        m.vertices = std::move(object.vertices);
+        m.shading = std::move(object.shading);
+        m.texcoords = std::move(object.texcoords);
+        return add_shared_mesh(scene_, std::move(m));
+    }
+
     void add_mesh(int index, const glm::mat4& world, const std::string& node_place) {
+        for (const Primitive& p : primitives(index, node_place))
+            add_indexed_mesh(p.mesh, world, p.material, options_.mesh.normals, false, scene_, tally_);
+    }
+
+    // The triangle primitives of mesh `index` and their scene materials.
+    std::vector<Primitive> primitives(int index, const std::string& node_place) {
         if (std::size_t(index) >= model_.meshes.size())
             throw Error(fmt::format("{}: {}: mesh {} does not exist ({} meshes)", path_, node_place, index,
                                     model_.meshes.size()));
         const tinygltf::Mesh& mesh = model_.meshes[std::size_t(index)];
+        std::vector<Primitive> out;
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             const tinygltf::Primitive& prim = mesh.primitives[p];
             const std::string place = fmt::format("meshes[{}].primitives[{}]", index, p);
@@ -271,8 +336,9 @@ private:
                 for (std::size_t i = 0; i < order.size(); ++i) order[i] = std::uint32_t(i);
             }
             m.indices = triangles(order, mode);
-            add_indexed_mesh(m, world, material(prim.material, place), options_.mesh.normals, false, scene_, tally_);
+            out.push_back(Primitive{std::move(m), material(prim.material, place)});
         }
+        return out;
     }
 
     static std::vector<std::uint32_t> triangles(const std::vector<std::uint32_t>& v, int mode) {
@@ -403,6 +469,7 @@ private:
     bool camera_taken_ = false;
     MeshTally tally_;
     Ignored ignored_;
+    std::vector<MeshUse> uses_;  // every node's mesh, in node order
     static constexpr std::size_t kMaxNodeVisits = 1000000;
     std::size_t visits_ = 0;
 };

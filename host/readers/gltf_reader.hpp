@@ -17,11 +17,14 @@ struct GltfLoadOptions {
     bool take_camera = true;  // set scene.camera from the first camera a node uses
     std::string camera_name;  // non-empty: the camera of this name instead (--camera NAME)
     bool take_lights = true;  // KHR_lights_punctual into scene.punctual_lights
+    bool instancing = true;   // a mesh several nodes use stored once and instanced; off: copied
 };
 
-// Appends the default scene's meshes (every node's world transform applied; a mesh used
-// by several nodes is copied for each: instancing is flattened on the host). Returns
-// whether a camera was taken.
+// Appends the default scene's meshes (every node's world transform applied): a mesh one
+// node uses is copied into world space; a mesh several nodes use is stored once in object
+// space (Scene::meshes) with one instance per node (Scene::instances), unless it emits
+// light or `options.instancing` is off (then it is copied for each). Returns whether a
+// camera was taken.
 bool load_gltf(const std::string& path, Scene& scene, const GltfLoadOptions& options = {});
 
 }  // namespace facet

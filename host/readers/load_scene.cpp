@@ -81,6 +81,19 @@ void check_geometry(const Scene& scene, const std::string& path) {
                             "(check the transforms and the shapes' sizes)",
                             path, i, s.center[0], s.center[1], s.center[2], s.radius, kMaxCoordinate));
     }
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const SharedMesh& m = scene.meshes[std::size_t(scene.instances[i].mesh)];
+        const Bounds b = transformed_bounds(m.vertices, scene.instances[i].object_to_world);
+        bool ok = true;
+        for (const glm::vec3& v : m.vertices) ok = ok && std::isfinite(v.x + v.y + v.z);
+        for (int c = 0; c < 3; ++c)
+            ok = ok && std::fabs(b.lo[c]) <= kMaxCoordinate && std::fabs(b.hi[c]) <= kMaxCoordinate;
+        if (!ok)
+            throw Error(
+                fmt::format("{}: instance {} of mesh '{}' reaches ({:g}, {:g}, {:g}) to ({:g}, {:g}, {:g}): "
+                            "coordinates must be finite and within +-{:g} (check the transforms)",
+                            path, i, m.name, b.lo.x, b.lo.y, b.lo.z, b.hi.x, b.hi.y, b.hi.z, kMaxCoordinate));
+    }
 }
 
 // The first bytes of a file ("" when it cannot be read: the caller's error names it).

@@ -63,6 +63,10 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::u
         kernel.setArg(9, texels);
         kernel.setArg(10, material_textures);
         kernel.setArg(11, texcoords);
+        cl::Buffer instances = upload(c, std::span<const FcInstance>(dev.instancing.instances));
+        cl::Buffer instance_nodes = upload(c, std::span<const FcInstanceNode>(dev.instancing.tree));
+        kernel.setArg(12, instances);
+        kernel.setArg(13, instance_nodes);
         const std::uint32_t rows = rows_per_launch(width, spp);
         for (std::uint32_t row = 0; row < height; row += rows) {
             FcRenderParams p = dev.params;

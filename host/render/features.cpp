@@ -47,9 +47,9 @@ FeatureMask scene_features(const Scene& scene) {
     // Escaped rays see the environment even when it lights nothing (a black map).
     if (scene.environment.params.enabled) mask |= kENVIRONMENT;
     std::vector<bool> used(scene.materials.size(), false);
-    for (const FcTriShading& s : scene.shading)
-        if (s.material >= 0 && std::size_t(s.material) < used.size()) used[std::size_t(s.material)] = true;
+    mark_triangle_materials(scene, used);
     if (!scene.spheres.empty()) mask |= kSPHERES;
+    if (!scene.instances.empty()) mask |= kINSTANCES;
     for (const FcSphere& s : scene.spheres)
         if (s.material >= 0 && std::size_t(s.material) < used.size()) used[std::size_t(s.material)] = true;
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {

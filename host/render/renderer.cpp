@@ -63,6 +63,8 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
                                      {"environment distribution", dev.environment_distribution.size_bytes()},
                                      {"spheres", dev.spheres.spheres.size() * sizeof(FcSphere)},
                                      {"sphere BVH", dev.spheres.nodes.size() * sizeof(FcSphereNode)},
+                                     {"instances", dev.instancing.instances.size() * sizeof(FcInstance)},
+                                     {"instance BVH", dev.instancing.tree.size() * sizeof(FcInstanceNode)},
                                      {"image", 2 * pixel_count() * sizeof(cl_float4)},
                                      {"textures", dev.textures.texels.size() * sizeof(std::uint32_t)},
                                      {"texture uvs", dev.textures.texcoords.size() * sizeof(FcTriTexcoords)}});
@@ -97,11 +99,13 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
         texcoords_ = upload(c, std::span<const FcTriTexcoords>(dev.textures.texcoords));
         spheres_ = upload(c, std::span<const FcSphere>(dev.spheres.spheres));
         sphere_nodes_ = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
+        instances_ = upload(c, std::span<const FcInstance>(dev.instancing.instances));
+        instance_nodes_ = upload(c, std::span<const FcInstanceNode>(dev.instancing.tree));
         // render_pass's arguments, in the order kernels/integrator/path.cl declares them
         cl_uint arg = 0;
-        for (const cl::Buffer* b :
-             {&params_buf_, &nodes_, &tris_, &shading_, &materials_, &lights_, &light_cdf_, &env_texels_, &env_dist_,
-              &accum_, &textures_, &texels_, &material_textures_, &texcoords_, &spheres_, &sphere_nodes_})
+        for (const cl::Buffer* b : {&params_buf_, &nodes_, &tris_, &shading_, &materials_, &lights_, &light_cdf_,
+                                    &env_texels_, &env_dist_, &accum_, &textures_, &texels_, &material_textures_,
+                                    &texcoords_, &spheres_, &sphere_nodes_, &instances_, &instance_nodes_})
             kernel_.setArg(arg++, *b);
     });
     reset();

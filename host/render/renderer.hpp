@@ -91,6 +91,7 @@ private:
     cl::Buffer params_buf_, nodes_, tris_, shading_, materials_, lights_, light_cdf_, env_texels_, env_dist_, accum_;
     cl::Buffer textures_, texels_, material_textures_, texcoords_;
     cl::Buffer spheres_, sphere_nodes_;
+    cl::Buffer instances_, instance_nodes_;
     RenderStats stats_;
 };
 

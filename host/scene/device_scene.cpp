@@ -28,6 +28,41 @@ FcRenderParams render_params(const Scene& scene) {
     return p;
 }
 
+// The shared meshes' BLASes, their shading after the world's, and the instances.
+void compile_instances(const Scene& scene, const Bvh& bvh, DeviceScene& d) {
+    std::vector<InstancedMesh> meshes;
+    std::vector<InstancePlacement> placements;
+    std::size_t prim = scene.shading.size();
+    for (const SharedMesh& m : scene.meshes) {
+        meshes.push_back(InstancedMesh{m.vertices, std::int32_t(prim)});
+        prim += m.triangle_count();
+    }
+    for (const Instance& in : scene.instances) placements.push_back(InstancePlacement{in.mesh, in.object_to_world});
+    d.instancing = build_instance_bvh(bvh, meshes, placements);
+    if (scene.instances.empty()) return;  // the world's arrays as they are
+    d.nodes_owned.reserve(bvh.nodes.size() + d.instancing.nodes.size());
+    d.nodes_owned = bvh.nodes;
+    d.nodes_owned.insert(d.nodes_owned.end(), d.instancing.nodes.begin(), d.instancing.nodes.end());
+    d.triangles_owned.reserve(bvh.triangles.size() + d.instancing.triangles.size());
+    d.triangles_owned = bvh.triangles;
+    d.triangles_owned.insert(d.triangles_owned.end(), d.instancing.triangles.begin(), d.instancing.triangles.end());
+    d.shading_owned.reserve(prim);
+    d.shading_owned = scene.shading;
+    for (const SharedMesh& m : scene.meshes)
+        d.shading_owned.insert(d.shading_owned.end(), m.shading.begin(), m.shading.end());
+    d.nodes = d.nodes_owned;
+    d.triangles = d.triangles_owned;
+    d.shading = d.shading_owned;
+    // uvs (when the scene has textures): the world's padded to its triangles, then each mesh's
+    if (scene_uses_textures(scene)) {
+        for (const SharedMesh& m : scene.meshes) {
+            const std::size_t at = d.textures.texcoords.size();
+            d.textures.texcoords.insert(d.textures.texcoords.end(), m.texcoords.begin(), m.texcoords.end());
+            d.textures.texcoords.resize(at + m.triangle_count(), FcTriTexcoords{});
+        }
+    }
+}
+
 }  // namespace
 
 FcMaterial device_material(const Material& m) {
@@ -100,6 +135,7 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     for (const Material& m : scene.materials) d.materials.push_back(device_material(m));
     d.textures = compile_textures(scene);
     d.spheres = build_sphere_bvh(scene.spheres);
+    compile_instances(scene, bvh, d);
     return d;
 }
 

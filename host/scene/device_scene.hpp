@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "host/bvh/bvh.hpp"
+#include "host/bvh/instance_bvh.hpp"
 #include "host/scene/scene.hpp"
 #include "host/scene/sphere_bvh.hpp"
 #include "kernels/shared/material_layout.h"
@@ -38,6 +39,13 @@ struct DeviceScene {
     // Texture pool, material bindings and uvs (host/scene/texture.hpp).
     DeviceTextures textures;
     SphereBvh spheres;  // the analytic spheres and their tree (a root only when there are none)
+    // Instancing (host/bvh/instance_bvh.hpp): the instances and their top-level tree (a root
+    // with two empty children when there are none). With instances, nodes, triangles and
+    // shading view the owned arrays below: the world's, then each shared mesh's once.
+    InstanceBvh instancing;
+    std::vector<FcBvhNode> nodes_owned;
+    std::vector<FcTriangle> triangles_owned;
+    std::vector<FcTriShading> shading_owned;
 };
 
 // The kernels' struct of a host material, and back (for tests and tools that hold

@@ -74,7 +74,7 @@ FcLight punctual_light(const PunctualLight& p, double* power, double radius) {
 }
 
 double bounding_radius(const Scene& scene) {
-    if (scene.vertices.empty() && scene.spheres.empty()) return 1.0;
+    if (scene.vertices.empty() && scene.spheres.empty() && scene.instances.empty()) return 1.0;
     const double r = double(scene_bounds(scene).radius());
     return r > 0.0 && std::isfinite(r) ? r : 1.0;
 }

@@ -1,5 +1,6 @@
 #include "host/scene/scene.hpp"
 
+#include "host/error.hpp"
 #include "host/scene/material.hpp"
 #include "host/util/vec3.hpp"
 
@@ -8,7 +9,9 @@
 #include <limits>
 #include <utility>
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 namespace facet {
@@ -57,14 +60,84 @@ Bounds scene_bounds(const Scene& scene) {
         b.lo = glm::min(b.lo, c - glm::vec3(sp.radius));
         b.hi = glm::max(b.hi, c + glm::vec3(sp.radius));
     }
+    for (const Instance& in : scene.instances) {
+        const Bounds ib = transformed_bounds(scene.meshes[std::size_t(in.mesh)].vertices, in.object_to_world);
+        if (ib.empty()) continue;
+        b.lo = glm::min(b.lo, ib.lo);
+        b.hi = glm::max(b.hi, ib.hi);
+    }
     return b;
+}
+
+Bounds transformed_bounds(const std::vector<glm::vec3>& points, const glm::mat4& transform) {
+    constexpr float big = std::numeric_limits<float>::max();
+    Bounds box{glm::vec3(big), glm::vec3(-big)}, out = box;
+    for (const glm::vec3& p : points) {
+        box.lo = glm::min(box.lo, p);
+        box.hi = glm::max(box.hi, p);
+    }
+    if (box.empty()) return out;
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec3 corner((k & 1) ? box.hi.x : box.lo.x, (k & 2) ? box.hi.y : box.lo.y,
+                               (k & 4) ? box.hi.z : box.lo.z);
+        const glm::vec3 p(transform * glm::vec4(corner, 1.0f));
+        out.lo = glm::min(out.lo, p);
+        out.hi = glm::max(out.hi, p);
+    }
+    return out;
+}
+
+bool instance_transform_ok(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f) return false;
+    const double det = glm::determinant(glm::dmat3(glm::mat3(m)));
+    return det != 0.0 && std::isfinite(det);
+}
+
+int add_shared_mesh(Scene& scene, SharedMesh mesh) {
+    scene.meshes.push_back(std::move(mesh));
+    return static_cast<int>(scene.meshes.size() - 1);
+}
+
+void add_instance(Scene& scene, int mesh, const glm::mat4& object_to_world) {
+    if (mesh < 0 || std::size_t(mesh) >= scene.meshes.size())
+        throw Error(fmt::format("add_instance: mesh {} does not exist ({} shared meshes)", mesh, scene.meshes.size()));
+    if (!instance_transform_ok(object_to_world))
+        throw Error(
+            fmt::format("add_instance: the transform of an instance of mesh '{}' is not an invertible "
+                        "affine transform",
+                        scene.meshes[std::size_t(mesh)].name));
+    scene.instances.push_back(Instance{mesh, object_to_world});
+}
+
+void mark_triangle_materials(const Scene& scene, std::vector<bool>& used) {
+    auto mark = [&](const std::vector<FcTriShading>& shading) {
+        for (const FcTriShading& s : shading)
+            if (s.material >= 0 && std::size_t(s.material) < used.size()) used[std::size_t(s.material)] = true;
+    };
+    mark(scene.shading);
+    for (const SharedMesh& m : scene.meshes) mark(m.shading);
+}
+
+std::size_t Scene::stored_triangle_count() const {
+    std::size_t n = shading.size();
+    for (const SharedMesh& m : meshes) n += m.triangle_count();
+    return n;
+}
+
+std::size_t Scene::placed_triangle_count() const {
+    std::size_t n = shading.size();
+    for (const Instance& in : instances) n += meshes[std::size_t(in.mesh)].triangle_count();
+    return n;
 }
 
 CameraDesc frame_camera(const Scene& scene) {
     constexpr float fov = 40.0f;
     CameraDesc cam;
     cam.fov_y_degrees = fov;
-    if (scene.vertices.empty() && scene.spheres.empty()) return cam;
+    if (scene.vertices.empty() && scene.spheres.empty() && scene.instances.empty()) return cam;
     const Bounds bounds = scene_bounds(scene);
     const glm::vec3 center = bounds.center();
     float radius = bounds.radius();

@@ -1,5 +1,5 @@
 // The scene as the host holds it: a triangle soup with per-triangle shading data,
-// materials, lights, a camera and render settings. Loaded from a JSON scene file
+// meshes shared by several instances, materials, lights, a camera and render settings. Loaded from a JSON scene file
 // or directly from an OBJ (host/readers/load_scene.hpp); compiled into the device's
 // arrays by host/scene/device_scene.hpp.
 #pragma once
@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "host/scene/environment_map.hpp"
@@ -54,6 +55,26 @@ struct PunctualLight {
     float outer_degrees = 45.0f;             // spot: no light outside this half-angle
 };
 
+// A mesh stored once, in object space, and placed in the world by instances (a glTF mesh
+// that several nodes use, docs/scene-format.md): its triangles go to the device once, with a
+// tree of their own (host/bvh/instance_bvh.hpp). Never emissive: the light list samples
+// world-space triangles, so emitting meshes are copied into the world instead.
+struct SharedMesh {
+    std::string name;
+    std::vector<glm::vec3> vertices;        // 3 per triangle, object space
+    std::vector<FcTriShading> shading;      // 1 per triangle: object-space normals; light -1
+    std::vector<FcTriTexcoords> texcoords;  // empty, or up to some triangle (padded with zeros)
+
+    std::size_t triangle_count() const { return shading.size(); }
+};
+
+// One use of a shared mesh: its object-to-world transform, affine (last row 0 0 0 1) and
+// invertible (instance_transform_ok).
+struct Instance {
+    int mesh = 0;  // index into Scene::meshes
+    glm::mat4 object_to_world{1.0f};
+};
+
 struct Scene {
     std::vector<glm::vec3> vertices;    // 3 per triangle
     std::vector<FcTriShading> shading;  // 1 per triangle
@@ -75,8 +96,15 @@ struct Scene {
     // up to some triangle (compile_textures pads them with zeros).
     std::vector<TextureImage> textures;
     std::vector<FcTriTexcoords> texcoords;
+    std::vector<SharedMesh> meshes;   // instanced meshes, each stored once
+    std::vector<Instance> instances;  // their uses
 
+    // The world-space triangles (not counting instanced meshes).
     std::size_t triangle_count() const { return shading.size(); }
+    // The triangles held on the device: the world's plus each shared mesh's once.
+    std::size_t stored_triangle_count() const;
+    // The triangles the image shows: the world's plus each instance's mesh.
+    std::size_t placed_triangle_count() const;
 };
 
 // A material with Lambertian defaults (diffuse 0.8 grey, no emission).
@@ -107,7 +135,7 @@ void add_quad(Scene& scene, glm::vec3 corner, glm::vec3 e1, glm::vec3 e2, int ma
 void add_triangle(Scene& scene, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 n0, glm::vec3 n1, glm::vec3 n2,
                   int material);
 
-// The axis-aligned box around every vertex and sphere (lo > hi when there are none).
+// The axis-aligned box around every vertex, sphere and instance (lo > hi when there are none).
 struct Bounds {
     glm::vec3 lo, hi;
     bool empty() const { return !(lo.x <= hi.x); }
@@ -115,6 +143,20 @@ struct Bounds {
     float radius() const;  // of the bounding sphere about center(): half the diagonal
 };
 Bounds scene_bounds(const Scene& scene);
+// The box around `points` placed by `transform` (its eight corners transformed).
+Bounds transformed_bounds(const std::vector<glm::vec3>& points, const glm::mat4& transform);
+
+// Whether `transform` can place an instance: finite, affine (last row 0 0 0 1) and with a
+// non-zero determinant (the kernels trace rays in the mesh's space through its inverse).
+bool instance_transform_ok(const glm::mat4& transform);
+// Appends a shared mesh and returns its index.
+int add_shared_mesh(Scene& scene, SharedMesh mesh);
+// Places shared mesh `mesh` by `object_to_world`; throws an Error naming the problem
+// when the mesh does not exist or the transform is not instance_transform_ok.
+void add_instance(Scene& scene, int mesh, const glm::mat4& object_to_world);
+// Sets used[m] for every material that a world or shared-mesh triangle uses (`used` has
+// one entry per material).
+void mark_triangle_materials(const Scene& scene, std::vector<bool>& used);
 
 // A camera that frames the scene's bounding box: looking at its centre from +z and
 // slightly above, far enough that the bounding sphere fits a 40 degree vertical fov.

@@ -151,8 +151,7 @@ void set_triangle_texcoords(Scene& scene, std::size_t tri, glm::vec2 uv0, glm::v
 
 bool scene_uses_textures(const Scene& scene) {
     std::vector<bool> used(scene.materials.size(), false);
-    for (const FcTriShading& s : scene.shading)
-        if (s.material >= 0 && std::size_t(s.material) < used.size()) used[std::size_t(s.material)] = true;
+    mark_triangle_materials(scene, used);
     for (std::size_t i = 0; i < scene.materials.size(); ++i)
         if (used[i] && scene.materials[i].textures.any()) return true;
     return false;

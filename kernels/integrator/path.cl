@@ -173,13 +173,15 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
                           __global const float* env_dist, __global float4* accum, __global const FcTexture* textures,
                           __global const uint* texels, __global const FcMaterialTextures* material_textures,
                           __global const FcTriTexcoords* texcoords, __global const FcSphere* spheres,
-                          __global const FcSphereNode* sphere_nodes) {
+                          __global const FcSphereNode* sphere_nodes, __global const FcInstance* instances,
+                          __global const FcInstanceNode* instance_nodes) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
-    SceneView sc = {params,   nodes,    tris,   shading,           materials, lights,  light_cdf,   env_texels,
-                    env_dist, textures, texels, material_textures, texcoords, spheres, sphere_nodes};
+    SceneView sc = {params,    nodes,      tris,         shading,   materials,     lights,
+                    light_cdf, env_texels, env_dist,     textures,  texels,        material_textures,
+                    texcoords, spheres,    sphere_nodes, instances, instance_nodes};
     uint pixel = y * params->width + x;
     float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
     for (uint i = 0; i < params->sample_count; ++i) {

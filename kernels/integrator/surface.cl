@@ -1,6 +1,6 @@
 /* The surface at a ray hit: position from the triangle's barycentrics (more precise
- * than o + t d) or re-projected onto the sphere, geometric and shading normals, and the
- * material. */
+ * than o + t d; an instanced triangle's vertices placed in the world first) or re-projected
+ * onto the sphere, geometric and shading normals in world space, and the material. */
 #ifndef FACET_INTEGRATOR_SURFACE_CL
 #define FACET_INTEGRATOR_SURFACE_CL
 
@@ -20,17 +20,30 @@ typedef struct {
     float3 p_error; /* spheres: bound on p's rounding error per axis; 0 for triangles */
 } Surface;
 
-inline Surface surface_at(__global const FcTriangle* tris, __global const FcTriShading* shading, const Hit* hit) {
-    __global const FcTriangle* tri = &tris[hit->tri];
-    float3 v0 = load3(tri->v0);
-    float3 e1 = load3(tri->v1) - v0;
-    float3 e2 = load3(tri->v2) - v0;
-    __global const FcTriShading* sh = &shading[hit->prim];
+/* The surface of triangle hit->tri at the hit, in world space: an instanced triangle's
+ * vertices placed by its instance, its vertex normals by the inverse transpose, each
+ * renormalised as the normals of a mesh copied into the world are (host/readers/triangle_mesh.cpp),
+ * so both give the same surface. */
+inline Surface surface_at(const SceneView* sc, const Hit* hit) {
+    float3 v0, v1, v2;
+    hit_triangle_vertices(sc, hit, &v0, &v1, &v2);
+    float3 e1 = v1 - v0;
+    float3 e2 = v2 - v0;
+    __global const FcTriShading* sh = &sc->shading[hit->prim];
+    float3 n0 = load3(sh->n0), n1 = load3(sh->n1), n2 = load3(sh->n2);
     Surface s;
     s.p = v0 + hit->u * e1 + hit->v * e2;
     s.ng = normalize_scaled_or(cross(e1, e2), (float3)(0.0f, 0.0f, 1.0f));
+#if FC_HAS_INSTANCES
+    if (hit->inst >= 0) {
+        __global const FcInstance* in = &sc->instances[hit->inst];
+        n0 = normalize_or(instance_normal_to_world(in, n0), s.ng);
+        n1 = normalize_or(instance_normal_to_world(in, n1), s.ng);
+        n2 = normalize_or(instance_normal_to_world(in, n2), s.ng);
+    }
+#endif
     float w = 1.0f - hit->u - hit->v;
-    s.ns = normalize_or(w * load3(sh->n0) + hit->u * load3(sh->n1) + hit->v * load3(sh->n2), s.ng);
+    s.ns = normalize_or(w * n0 + hit->u * n1 + hit->v * n2, s.ng);
     if (dot(s.ng, s.ns) < 0.0f) s.ng = -s.ng;
     s.prim = hit->prim;
     s.material = sh->material;
@@ -62,7 +75,7 @@ inline Surface scene_surface_at(const SceneView* sc, const Hit* hit, float3 o, f
 #else
     (void)o, (void)d;
 #endif
-    return surface_at(sc->tris, sc->shading, hit);
+    return surface_at(sc, hit);
 }
 
 /* The origin of a ray leaving surface s on the side of its (oriented) geometric normal n. */

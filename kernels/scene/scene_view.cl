@@ -22,6 +22,9 @@ typedef struct {
     __global const FcTriTexcoords* texcoords;
     __global const FcSphere* spheres;
     __global const FcSphereNode* sphere_nodes;
+    /* Instances and their top-level tree (kernels/shared/instance_layout.h). */
+    __global const FcInstance* instances;
+    __global const FcInstanceNode* instance_nodes;
 } SceneView;
 
 #endif

@@ -5,6 +5,7 @@
 #include "kernels/shared/bvh_layout.h"
 #include "kernels/shared/scene_layout.h"
 #include "kernels/shared/sphere_layout.h"
+#include "kernels/shared/instance_layout.h"
 #include "kernels/shared/render_layout.h"
 #include "kernels/shared/environment_layout.h"
 #include "kernels/shared/texture_layout.h"

@@ -19,7 +19,8 @@
     X(BECKMANN, 7)          \
     X(DIELECTRIC, 8)        \
     X(TEXTURES, 9)          \
-    X(SPHERES, 10)
+    X(SPHERES, 10)          \
+    X(INSTANCES, 11)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -53,6 +54,9 @@
 #endif
 #ifndef FC_HAS_SPHERES
 #define FC_HAS_SPHERES 1
+#endif
+#ifndef FC_HAS_INSTANCES
+#define FC_HAS_INSTANCES 1
 #endif
 
 #endif

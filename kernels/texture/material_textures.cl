@@ -9,6 +9,7 @@
 #include "kernels/scene/scene_view.cl"
 #include "kernels/texture/texture.cl"
 #include "kernels/trace/bvh_traverse.cl"
+#include "kernels/trace/instance.cl"
 #include "kernels/trace/sphere.cl"
 
 /* A hit point's texture coordinates and what filtering and normal maps need. */
@@ -147,9 +148,9 @@ inline void apply_textures(const SceneView* sc, const Hit* hit, int material, fl
         __global const FcSphere* sp = &sc->spheres[hit->prim];
         p = tex_point_sphere(sp, (sp->flags & FC_SPHERE_INWARD) ? -*ns : *ns);
     } else {
-        __global const FcTriangle* tri = &sc->tris[hit->tri];
-        float3 v0 = load3(tri->v0);
-        p = tex_point(sc->texcoords, hit->prim, hit->u, hit->v, load3(tri->v1) - v0, load3(tri->v2) - v0);
+        float3 v0, v1, v2; /* world space: dp/du and the areas of the placed triangle */
+        hit_triangle_vertices(sc, hit, &v0, &v1, &v2);
+        p = tex_point(sc->texcoords, hit->prim, hit->u, hit->v, v1 - v0, v2 - v0);
     }
     float2 uv = tex_transform(mt, p.uv);
     float cos_hit = dot(*ns, d);

@@ -21,6 +21,7 @@ typedef struct {
     float v;  /* barycentric weight of v2 */
     int prim; /* FcTriangle.prim of the hit triangle (its scene index); -1 on a miss */
     int tri;  /* index of the hit triangle in BVH order (the FcTriangle array) */
+    int inst; /* the instance the triangle was met in (kernels/trace/instance.cl), or -1 */
 } Hit;
 
 /* 1 + 2 * gamma(3), gamma(n) = n*eps / (1 - n*eps), eps = 2^-24: scaling the exit
@@ -333,6 +334,13 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
 }
 #undef FC_CHILD
 
+/* trace_bvh on the tree whose buffer starts `root` FcBvhNode units into `buffer` (an
+ * instanced mesh's BLAS, kernels/shared/instance_layout.h): its node and row indices count
+ * from there; hit->tri is then its own triangle index. */
+inline bool trace_bvh_from(__global const FcBvhNode* buffer, int root, float3 o, float3 d, Hit* hit, bool any) {
+    return trace_bvh(buffer + root, o, d, hit, any);
+}
+
 /* Nearest hit with 0 < t < tmax. */
 inline bool trace_closest(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,
                           float tmax, Hit* hit) {
@@ -341,6 +349,7 @@ inline bool trace_closest(__global const FcBvhNode* nodes, __global const FcTria
     hit->v = 0.0f;
     hit->prim = -1;
     hit->tri = -1;
+    hit->inst = -1;
     if (!trace_bvh(nodes, o, d, hit, false)) return false;
     hit->prim = tris[hit->tri].prim;
     return true;
@@ -354,6 +363,7 @@ inline bool trace_any(__global const FcBvhNode* nodes, __global const FcTriangle
     hit.t = tmax;
     hit.prim = -1;
     hit.tri = -1;
+    hit.inst = -1;
     return trace_bvh(nodes, o, d, &hit, true);
 }
 

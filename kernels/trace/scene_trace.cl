@@ -1,21 +1,31 @@
 /* Rays against everything in the scene: the triangles' BVH (bvh_traverse.cl), then, in
- * programs built with FC_HAS_SPHERES, the analytic spheres' own tree (sphere.cl), which
- * only has to beat the nearest triangle. Programs without spheres trace triangles alone. */
+ * programs built with FC_HAS_INSTANCES, the instances of shared meshes (instance.cl), and in
+ * programs built with FC_HAS_SPHERES, the analytic spheres' own tree (sphere.cl); each only
+ * has to beat the nearest hit so far. Programs without them trace triangles alone. */
 #ifndef FACET_TRACE_SCENE_TRACE_CL
 #define FACET_TRACE_SCENE_TRACE_CL
 
 #include "kernels/scene/scene_view.cl"
 #include "kernels/trace/bvh_traverse.cl"
-/* Included whatever FC_HAS_SPHERES says: the host assembles a program's sources once
- * each, so a file first included inside a disabled #if would be missing for the later
- * includes (material_textures.cl needs sphere_uv); unused inline functions cost nothing. */
+/* Included whatever FC_HAS_SPHERES and FC_HAS_INSTANCES say: the host assembles a program's
+ * sources once each, so a file first included inside a disabled #if would be missing for
+ * the later includes (material_textures.cl needs sphere_uv); unused inline functions cost
+ * nothing. */
+#include "kernels/trace/instance.cl"
 #include "kernels/trace/sphere.cl"
 
-/* Nearest hit with 0 < t < tmax: a triangle (hit->tri >= 0) or a sphere (FC_HIT_SPHERE). */
+/* Nearest hit with 0 < t < tmax: a triangle (hit->tri >= 0; hit->inst >= 0 when met in an
+ * instance) or a sphere (FC_HIT_SPHERE). */
 inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float tmax, Hit* hit) {
     bool found = trace_closest(sc->nodes, sc->tris, o, d, tmax, hit);
+#if FC_HAS_INSTANCES
+    if (trace_instances(sc, o, d, hit, false)) found = true;
+#endif
 #if FC_HAS_SPHERES
-    if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, hit, false)) found = true;
+    if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, hit, false)) {
+        hit->inst = -1;
+        found = true;
+    }
 #endif
     return found;
 }
@@ -23,11 +33,17 @@ inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float t
 /* Whether anything is hit with 0 < t < tmax (shadow rays). */
 inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax) {
     if (trace_any(sc->nodes, sc->tris, o, d, tmax)) return true;
-#if FC_HAS_SPHERES
+#if FC_HAS_INSTANCES || FC_HAS_SPHERES
     Hit hit;
     hit.t = tmax;
     hit.prim = -1;
     hit.tri = -1;
+    hit.inst = -1;
+#endif
+#if FC_HAS_INSTANCES
+    if (trace_instances(sc, o, d, &hit, true)) return true;
+#endif
+#if FC_HAS_SPHERES
     if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, &hit, true)) return true;
 #endif
     return false;
