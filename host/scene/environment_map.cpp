@@ -3,14 +3,12 @@
 #include "host/scene/environment_map.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <new>
 
 #include <fmt/format.h>
 
 #include "host/error.hpp"
-#include "host/scene/alias_table.hpp"
 #include "host/util/color.hpp"
 #include "host/util/math.hpp"
 #include "kernels/shared/render_layout.h"
@@ -110,31 +108,21 @@ namespace {
 // texel that emits keeps a density.
 constexpr double kCompensationFloor = 0.1;
 
-// Writes a table's bins as (q, alias) float pairs, the alias's int32 bits stored as a
-// float (read back by as_int in the kernel, exact).
-void store_alias_bins(const AliasTable& t, float* out) {
-    for (std::size_t i = 0; i < t.q.size(); ++i) {
-        out[2 * i] = t.q[i];
-        out[2 * i + 1] = std::bit_cast<float>(t.alias[i]);
-    }
-}
-
-// Fills `dist` (the layout of EnvironmentMap::distribution) with the alias tables and
-// densities of texel weights max(luminance - subtract, floor * luminance) * sin(theta)
-// and returns their sum; `mean` gets the integral of the luminance over the sphere.
-double build_tables(const EnvironmentMap& env, double subtract, double floor, std::vector<float>& dist, double* mean) {
+// Fills `dist` (the layout of EnvironmentMap::distribution) with the cdfs of texel weights
+// max(luminance - subtract, floor * luminance) * sin(theta) and returns their sum; `mean`
+// gets the integral of the luminance over the sphere.
+double build_cdfs(const EnvironmentMap& env, double subtract, double floor, std::vector<float>& dist, double* mean) {
     const FcEnvironment& p = env.params;
     const double sr = double(p.scale[0]), sg = double(p.scale[1]), sb = double(p.scale[2]);
     const int w = p.width, h = p.height;
-    const std::size_t texels = std::size_t(w) * h;
-    dist.assign(2 * std::size_t(h) + 3 * texels, 0.0f);
-    float* density = dist.data() + 2 * std::size_t(h) + 2 * texels;
+    dist.assign(std::size_t(h + 1) + std::size_t(h) * (w + 1), 0.0f);
+    float* marginal = dist.data();
     std::vector<double> row_sum(h, 0.0), f(w);
-    std::vector<double> column_p(texels);  // P(column x | row y)
     *mean = 0.0;
     for (int y = 0; y < h; ++y) {
         const double sin_theta = std::sin(kPi * (y + 0.5) / h);
         const double omega = texel_solid_angle(y, w, h);
+        float* cond = marginal + (h + 1) + std::size_t(y) * (w + 1);
         double sum = 0.0;
         for (int x = 0; x < w; ++x) {
             const float* t = &env.texels[4 * (std::size_t(y) * w + x)];
@@ -143,21 +131,23 @@ double build_tables(const EnvironmentMap& env, double subtract, double floor, st
             f[x] = std::max(lum - subtract, floor * lum) * sin_theta;
             sum += f[x];
         }
-        // the row's conditional table (uniform when the row is black: never picked)
-        AliasTable row = build_alias_table(f);
-        store_alias_bins(row, dist.data() + 2 * std::size_t(h) + 2 * std::size_t(y) * w);
-        std::copy(row.probability.begin(), row.probability.end(), column_p.begin() + std::ptrdiff_t(y) * w);
+        // conditional cdf of the row (uniform when the row is black: never picked)
+        double acc = 0.0;
+        for (int x = 0; x < w; ++x) {
+            cond[x] = sum > 0.0 ? float(acc / sum) : float(double(x) / w);
+            acc += f[x];
+        }
+        cond[w] = 1.0f;
         row_sum[y] = sum;
     }
     double total = 0.0;
     for (int y = 0; y < h; ++y) total += row_sum[y];
-    const AliasTable rows = build_alias_table(row_sum);
-    store_alias_bins(rows, dist.data());
-    // the density over the (u, v) square of what the stored tables sample
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            density[std::size_t(y) * w + x] =
-                float(rows.probability[y] * column_p[std::size_t(y) * w + x] * double(texels));
+    double acc = 0.0;
+    for (int y = 0; y < h; ++y) {
+        marginal[y] = total > 0.0 ? float(acc / total) : float(double(y) / h);
+        acc += row_sum[y];
+    }
+    marginal[h] = 1.0f;
     return total;
 }
 
@@ -172,7 +162,7 @@ void build_environment_distribution(EnvironmentMap& env) {
         return;
     }
     double mean = 0.0;
-    const double total = build_tables(env, 0.0, 1.0, env.distribution, &mean);
+    const double total = build_cdfs(env, 0.0, 1.0, env.distribution, &mean);
     p.total = float(total / (double(p.width) * p.height));
     env.mean_luminance = p.enabled ? mean / (4.0 * kPi) : 0.0;
 }
@@ -186,9 +176,9 @@ std::vector<float> compensated_environment_distribution(const EnvironmentMap& en
     // luminance rounds around the mean, keep only the floor, proportional to the plain
     // weights, and the map falls back to the plain distribution itself
     const double level = fraction * env.mean_luminance * (1.0 + 1e-6);
-    const double total = build_tables(env, level, 0.0, dist, &mean);
+    const double total = build_cdfs(env, level, 0.0, dist, &mean);
     if (!(total > 0.0)) return env.distribution;
-    build_tables(env, level, kCompensationFloor, dist, &mean);
+    build_cdfs(env, level, kCompensationFloor, dist, &mean);
     return dist;
 }
 

@@ -7,18 +7,16 @@
 // Buffers uploaded to the device:
 //  - texels: 4 floats a texel (R, G, B, 0), linear radiance before `scale`, top row
 //    (theta = 0) first, width x height texels (one zero texel when width == 0).
-//  - distribution (floats), for a map of W x H texels: alias tables (alias_table.hpp),
-//    each bin two floats (q, then the alias index's int32 bits), and the density:
-//      [0, 2H)                             the rows' table (the marginal distribution)
-//      [2H + 2 y W, ... + 2W)              the table of row y's columns (the conditional
-//                                          distribution; uniform for a row with no energy)
-//      [2H + 2WH + y W + x]                texel (x, y)'s density over the (u, v) square,
-//                                          W H P(row y) P(column x | row y), P as the
-//                                          stored tables sample them
-//    Texel (x, y) weighs f = luminance(texel * scale) * sin(theta of row y's centre).
-//    params.total is the integral of f over the (u, v) square: sum(f) / (W H); 0 for a
-//    black map, whose pdf is then 0 everywhere. A constant environment has a one-float
-//    distribution (an OpenCL buffer cannot be empty).
+//  - distribution (floats), for a map of W x H texels:
+//      [0, H]                              the marginal cdf over rows: H + 1 entries,
+//                                          cdf[0] = 0, cdf[H] = 1
+//      [H + 1 + y (W + 1), ... + W]        the conditional cdf of row y: W + 1 entries,
+//                                          0 ... 1 (uniform for a row with no energy)
+//    Texel (x, y) weighs f = luminance(texel * scale) * sin(theta of row y's centre); a
+//    texel's probability is the product of its two cdf steps. params.total is the
+//    integral of f over the (u, v) square: sum(f) / (W H); 0 for a black map, whose
+//    pdf is then 0 everywhere. A constant environment has a one-float distribution (an
+//    OpenCL buffer cannot be empty).
 //    With MIS compensation (opt-in, under the MIS strategy) the renderer uploads
 //    instead the same layout built from max(luminance - mean, luminance / 10) * sin(theta)
 //    (environment_sampling_distribution; docs/sampling.md, "MIS compensation").

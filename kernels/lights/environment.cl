@@ -7,18 +7,16 @@
  *   uniformly over the sphere, pdf 1 / (4 pi) (0 when the radiance is black).
  * - Equirectangular map: nearest-texel lookup, so the radiance is piecewise constant
  *   over the texels, exactly like the sampling density. Sampling picks a texel from a
- *   piecewise-constant 2D distribution over luminance x sin(theta) (a row from the
- *   marginal distribution, then a column from the row's conditional one, as pbrt-v3
- *   section 14.2.4, Pharr, Jakob, Humphreys 2016), each by an alias table in O(1)
- *   (Walker 1977, Vose 1991; pbrt-v4's AliasTable) rather than a binary search of a cdf,
- *   and a uniform point in it. The density in (u, v) converts to solid angle with
+ *   piecewise-constant 2D distribution over luminance x sin(theta) (a marginal cdf over
+ *   rows, a conditional cdf per row; pbrt-v3 section 14.2.4, Pharr, Jakob, Humphreys
+ *   2016) and a uniform point in it. The density in (u, v) converts to solid angle with
  *   the Jacobian of the equirectangular map, d(omega) = 2 pi^2 sin(theta) du dv:
  *     p(omega) = p(u, v) / (2 pi^2 sin(theta)).
  *   Directions at the poles (sin(theta) == 0) get pdf 0.
  *
- * The host stores each texel's density as the tables it built sample it (from their
- * float thresholds: host/scene/alias_table.hpp), so a texel the tables never pick
- * reports pdf 0: env_pdf is the density of env_sample as it runs. env_sample returns
+ * Every probability is derived from differences of the stored float cdfs, so a texel
+ * the float binary search can never pick reports pdf 0: env_pdf is the density of
+ * env_sample as it runs, not of the exact real-number distribution. env_sample returns
  * the radiance and pdf of the direction it produced through the same lookup as
  * env_radiance and env_pdf, so the three always agree bit for bit. */
 #ifndef FACET_LIGHTS_ENVIRONMENT_CL
@@ -84,18 +82,18 @@ inline float3 env_radiance(__constant const FcEnvironment* env, __global const f
     return texels[t.y * env->width + t.x].xyz * load3c(env->scale);
 }
 
-/* The solid-angle pdf of texel t at sin(theta) `sin_theta` (0 at the poles), from the
- * texel's stored density over the (u, v) square. */
+/* The solid-angle pdf of texel t at sin(theta) `sin_theta` (0 at the poles). */
 inline float env_texel_pdf(__constant const FcEnvironment* env, __global const float* dist, int2 t, float sin_theta) {
     if (!(env->total > 0.0f) || !(sin_theta > 0.0f)) return 0.0f;
-    int w = env->width, h = env->height;
-    float density = dist[2 * h + 2 * w * h + t.y * w + t.x];
-    float pdf = density * FC_INV_2PI2 / sin_theta;
+    __global const float* cond = dist + (env->height + 1) + t.y * (env->width + 1);
+    float p_row = dist[t.y + 1] - dist[t.y];
+    float p_col = cond[t.x + 1] - cond[t.x];
+    float pdf = p_row * (float)env->height * p_col * (float)env->width * FC_INV_2PI2 / sin_theta;
     return isfinite(pdf) ? pdf : 0.0f;
 }
 
 /* Solid-angle density with which env_sample produces `dir`. The texel buffer is not
- * needed: the density lives in the distribution buffer. */
+ * needed: the density lives in the cdfs. */
 inline float env_pdf(__constant const FcEnvironment* env, __global const float* dist, float3 dir) {
     if (!env->enabled) return 0.0f;
     if (env->width == 0) return is_black(load3c(env->scale)) ? 0.0f : FC_INV_4PI;
@@ -121,21 +119,23 @@ inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global con
     return texels[t.y * env->width + t.x].xyz * scale;
 }
 
-/* An index in [0, n) from the alias table `bins` ((q, alias bits) pairs, host/scene/
- * alias_table.hpp): bin i = floor(u n), kept if u's place f inside it is below q[i],
- * else handed to its alias. `rest` gets f's place inside the part taken, in [0, 1):
- * the uniform number left for the position inside the texel. */
-inline int env_alias_pick(__global const float* bins, int n, float u, float* rest) {
-    float s = u * (float)n;
-    int i = min((int)s, n - 1);
-    float f = fmin(s - (float)i, FC_ONE_MINUS_EPSILON);
-    float q = bins[2 * i];
-    if (f < q) {
-        *rest = fmin(f / q, FC_ONE_MINUS_EPSILON);
-        return i;
+/* The interval i of cdf[0..n] (cdf[0] = 0, cdf[n] = 1, non-decreasing) with
+ * cdf[i] <= u < cdf[i + 1]: never an interval of zero width. */
+inline int env_find_interval(__global const float* cdf, int n, float u) {
+    int lo = 0, hi = n;
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (cdf[mid] <= u) lo = mid;
+        else hi = mid;
     }
-    *rest = fmin((f - q) / (1.0f - q), FC_ONE_MINUS_EPSILON);
-    return as_int(bins[2 * i + 1]);
+    return lo;
+}
+
+/* u's position inside interval i of cdf, in [0, 1). */
+inline float env_remap(__global const float* cdf, int i, float u) {
+    float w = cdf[i + 1] - cdf[i];
+    float t = (w > 0.0f) ? (u - cdf[i]) / w : 0.5f;
+    return clamp(t, 0.0f, FC_ONE_MINUS_EPSILON);
 }
 
 /* Samples a direction toward the environment: returns the radiance along it, `dir`
@@ -158,11 +158,13 @@ inline float3 env_sample(__constant const FcEnvironment* env, __global const flo
         return load3c(env->scale);
     }
     if (!(env->total > 0.0f)) return (float3)(0.0f);
-    /* row from the marginal table, column from the row's conditional table */
+    /* row from the marginal cdf, column from the row's conditional cdf */
     int w = env->width, h = env->height;
-    float du, dv;
-    int y = env_alias_pick(dist, h, u.y, &dv);
-    int x = env_alias_pick(dist + 2 * h + 2 * y * w, w, u.x, &du);
+    int y = env_find_interval(dist, h, u.y);
+    float dv = env_remap(dist, y, u.y);
+    __global const float* cond = dist + (h + 1) + y * (w + 1);
+    int x = env_find_interval(cond, w, u.x);
+    float du = env_remap(cond, x, u.x);
     float2 uv = (float2)(((float)x + du) / (float)w, ((float)y + dv) / (float)h);
     *dir = normalize_or(env_map_to_dir(env, env_uv_to_map_dir(uv)), (float3)(0.0f, 1.0f, 0.0f));
     /* radiance and pdf of the direction produced, by the lookup of env_radiance/env_pdf */

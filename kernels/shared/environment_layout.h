@@ -10,9 +10,9 @@
  * right-handed), so the map is seen unmirrored. Texel (x, y) covers
  * [x/W, (x+1)/W) x [y/H, (y+1)/H); lookups are nearest-texel. Radiance = texel * scale.
  * Sampling uses a piecewise-constant 2D distribution over luminance x sin(theta):
- * an alias table over rows (H bins) then one per row (W bins each), and each texel's
- * density, in the distribution buffer (host/scene/environment_map.hpp documents the
- * layout; docs/environment.md the whole). */
+ * a marginal cdf over rows (H + 1 floats) then a conditional cdf per row (W + 1 floats
+ * each) in the distribution buffer (host/scene/environment_map.hpp documents the layout;
+ * docs/environment.md the whole). */
 #ifndef FACET_SHARED_ENVIRONMENT_LAYOUT_H
 #define FACET_SHARED_ENVIRONMENT_LAYOUT_H
 
