@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <set>
 #include <vector>
 
@@ -43,6 +44,89 @@ std::vector<float> half_coords(const std::vector<float>& v, std::uint32_t pixel,
     for (std::uint32_t s = std::uint32_t(half); s < samples; s += 2)
         out.push_back(v[4 * (std::size_t(pixel) * samples + s) + c]);
     return out;
+}
+
+// Burley's sampler written plainly on the host (each scramble on its own, Sobol' points
+// from the direction numbers of Joe & Kuo's new-joe-kuo-6.21201 table, as
+// tests/tools/sobol_table.py), against which the kernel's chained formulation is checked
+// bit for bit.
+namespace burley {
+
+std::uint64_t mix64(std::uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+std::uint32_t reverse(std::uint32_t x) {
+    std::uint32_t r = 0;
+    for (int b = 0; b < 32; ++b) r |= ((x >> b) & 1u) << (31 - b);
+    return r;
+}
+
+std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed) {
+    x = reverse(x) + seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return reverse(x);
+}
+
+// Dimension d's direction numbers v[k] (bit k of the index, from the top bit down).
+std::vector<std::uint32_t> directions(int d) {
+    std::vector<std::uint32_t> v(32);
+    if (d == 0) {
+        for (int k = 0; k < 32; ++k) v[k] = 1u << (31 - k);
+        return v;
+    }
+    const int s[] = {1, 2, 3}, a[] = {0, 1, 1};
+    const std::vector<std::uint32_t> m[] = {{1}, {1, 3}, {1, 3, 1}};
+    const int sd = s[d - 1], ad = a[d - 1];
+    for (int k = 0; k < sd; ++k) v[k] = m[d - 1][k] << (31 - k);
+    for (int k = sd; k < 32; ++k) {
+        std::uint32_t x = v[k - sd] ^ (v[k - sd] >> sd);
+        for (int j = 1; j < sd; ++j)
+            if ((ad >> (sd - 1 - j)) & 1) x ^= v[k - j];
+        v[k] = x;
+    }
+    return v;
+}
+
+std::uint32_t sobol(int d, std::uint32_t i) {
+    static const std::vector<std::uint32_t> v[4] = {directions(0), directions(1), directions(2), directions(3)};
+    std::uint32_t x = 0;
+    for (int k = 0; k < 32; ++k)
+        if ((i >> k) & 1u) x ^= v[d][k];
+    return x;
+}
+
+std::uint32_t hash_pair(std::uint32_t a, std::uint32_t b) { return std::uint32_t(mix64((std::uint64_t(a) << 32) | b)); }
+
+// Coordinate c of dimension set `set` of sample `sample` of `pixel`.
+float point(std::uint32_t seed, std::uint32_t pixel, std::uint32_t sample, std::uint32_t set, int c) {
+    const std::uint32_t half_seed = std::uint32_t(
+        mix64(mix64(std::uint64_t(seed) ^ 0x5a17e5eedULL) ^ ((std::uint64_t(sample & 1u) << 32) | pixel)));
+    const std::uint32_t set_seed = hash_pair(half_seed, set);
+    const std::uint32_t i = nested_uniform_scramble(sample >> 1, set_seed);
+    const std::uint32_t x = nested_uniform_scramble(sobol(c, i), hash_pair(set_seed, std::uint32_t(c + 1)));
+    return float(x >> 8) * 0x1p-24f;
+}
+
+}  // namespace burley
+
+TEST(Sampler, SobolIsBurleysScramble) {
+    const std::uint32_t samples = 64, seed = 5;
+    for (std::uint32_t set : {0u, 1u, 2u, 7u, 40u}) {
+        std::vector<float> v = points(FC_SAMPLER_SOBOL, seed, 3, samples, set);
+        int wrong = 0;
+        for (std::uint32_t g = 0; g < 3 * samples; ++g)
+            for (int c = 0; c < 4; ++c)
+                if (v[4 * g + c] != burley::point(seed, 1000 + g / samples, g % samples, set, c) && ++wrong < 5)
+                    ADD_FAILURE() << "set " << set << ", pixel " << 1000 + g / samples << ", sample " << g % samples
+                                  << ", coordinate " << c;
+        EXPECT_EQ(wrong, 0) << "set " << set;
+    }
 }
 
 TEST(Sampler, SobolHalvesAreZeroTwoNets) {

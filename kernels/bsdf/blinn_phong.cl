@@ -28,26 +28,33 @@ inline float fc_phong_exponent(float e) { return (e > 0.0f) ? fmin(e, FC_PHONG_E
 /* cos^e for cos in [0, 1]; 0 for cos <= 0 (never a pow of a negative base). */
 inline float fc_pow_cos(float c, float e) { return (c > 0.0f) ? pow(fmin(c, 1.0f), e) : 0.0f; }
 
-inline float3 blinn_phong_eval(const FcMaterial* m, float3 wo, float3 wi) {
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
+/* The lobe at half vector h (wo, wi above the surface): its value, and through
+ * *pdf its density (cos^(e+1) as cos^e cos: the one pow serves both). */
+inline float3 blinn_phong_at(const FcMaterial* m, float3 wo, float3 h, float* pdf) {
     float e = fc_phong_exponent(m->exponent_x);
     float3 ks = fmax(load3p(m->specular), (float3)(0.0f));
-    /* wo + wi is never zero with both above the surface */
-    float3 h = normalize(wo + wi);
+    float cos_e = fc_pow_cos(h.z, e);
     float scale =
         (m->specular_model == FC_SPECULAR_BLINN_PHONG_NORMALIZED) ? (e + 8.0f) * (0.125f * FC_INV_PI) : FC_INV_PI;
-    return ks * (scale * fc_pow_cos(h.z, e));
+    float wo_h = dot(wo, h);
+    float p_h = (e + 2.0f) * (0.5f * FC_INV_PI) * (cos_e * fmin(h.z, 1.0f));
+    float p = p_h / (4.0f * wo_h);
+    *pdf = (wo_h > 0.0f && isfinite(p)) ? p : 0.0f;
+    return ks * (scale * cos_e);
+}
+
+inline float3 blinn_phong_eval(const FcMaterial* m, float3 wo, float3 wi) {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
+    float pdf;
+    /* wo + wi is never zero with both above the surface */
+    return blinn_phong_at(m, wo, normalize(wo + wi), &pdf);
 }
 
 inline float blinn_phong_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-    float e = fc_phong_exponent(m->exponent_x);
-    float3 h = normalize(wo + wi);
-    float wo_h = dot(wo, h);
-    if (!(wo_h > 0.0f)) return 0.0f;
-    float p_h = (e + 2.0f) * (0.5f * FC_INV_PI) * fc_pow_cos(h.z, e + 1.0f);
-    float pdf = p_h / (4.0f * wo_h);
-    return isfinite(pdf) ? pdf : 0.0f;
+    float pdf;
+    blinn_phong_at(m, wo, normalize(wo + wi), &pdf);
+    return pdf;
 }
 
 inline bool blinn_phong_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSample* s) {
@@ -61,7 +68,9 @@ inline bool blinn_phong_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSam
     float2 sc = sincos_turns(u.y); /* phi = 2 pi u.y */
     float3 h = (float3)(sin_h * sc.y, sin_h * sc.x, cos_h);
     if (!reflect_about(wo, h, &s->wi)) return false;
-    return finish_sample(s, blinn_phong_eval(m, wo, s->wi), blinn_phong_pdf(m, wo, s->wi));
+    float pdf;
+    float3 f = blinn_phong_at(m, wo, normalize(wo + s->wi), &pdf);
+    return finish_sample(s, f, pdf);
 }
 
 #endif

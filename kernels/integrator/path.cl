@@ -96,10 +96,11 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         if (!scene_trace_closest(sc, o, d, INFINITY, &hit)) {
 #if FC_HAS_ENVIRONMENT
             /* The ray escapes: the environment, MIS-weighted against light sampling. */
-            float3 le = env_radiance(&P->environment, sc->env_texels, d);
+            float env_pdf_d;
+            float3 le = env_radiance_pdf(&P->environment, sc->env_texels, sc->env_dist, d, &env_pdf_d);
             if (!is_black(le)) {
-                float w =
-                    depth > 0u ? bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, environment_light_pdf(sc, d)) : 1.0f;
+                float light_pdf = environment_pick_pdf(sc) * env_pdf_d;
+                float w = depth > 0u ? bsdf_strategy_weight(P->strategy, prev_bsdf_pdf, light_pdf) : 1.0f;
                 radiance += throughput * le * w;
             }
 #endif

@@ -102,6 +102,23 @@ inline float env_pdf(__constant const FcEnvironment* env, __global const float* 
     return env_texel_pdf(env, dist, t, sin_theta);
 }
 
+/* env_radiance and env_pdf of one direction by one lookup (a ray that escaped after a
+ * BSDF sample needs both). */
+inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global const float4* texels,
+                               __global const float* dist, float3 dir, float* pdf) {
+    *pdf = 0.0f;
+    if (!env->enabled) return (float3)(0.0f);
+    float3 scale = load3c(env->scale);
+    if (env->width == 0) {
+        *pdf = is_black(scale) ? 0.0f : FC_INV_4PI;
+        return scale;
+    }
+    float sin_theta;
+    int2 t = env_locate(env, dir, &sin_theta);
+    *pdf = env_texel_pdf(env, dist, t, sin_theta);
+    return texels[t.y * env->width + t.x].xyz * scale;
+}
+
 /* The interval i of cdf[0..n] (cdf[0] = 0, cdf[n] = 1, non-decreasing) with
  * cdf[i] <= u < cdf[i + 1]: never an interval of zero width. */
 inline int env_find_interval(__global const float* cdf, int n, float u) {

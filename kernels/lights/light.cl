@@ -106,15 +106,11 @@ inline float light_pdf_hit(const SceneView* sc, int index, float3 o, float t, fl
     return area_light_pdf_solid_angle(l, t, cos_light);
 }
 
-/* Density with which sample_light reaches the environment along wi (for MIS). */
-inline float environment_light_pdf(const SceneView* sc, float3 wi) {
-#if FC_HAS_ENVIRONMENT
+/* The probability with which sample_light picks the environment (0: never); times
+ * env_pdf, the density with which it reaches the environment along a direction (MIS). */
+inline float environment_pick_pdf(const SceneView* sc) {
     int index = sc->params->environment_light;
-    if (index < 0) return 0.0f;
-    return sc->lights[index].pick_pdf * env_pdf(&sc->params->environment, sc->env_dist, wi);
-#else
-    return 0.0f;
-#endif
+    return index < 0 ? 0.0f : sc->lights[index].pick_pdf;
 }
 
 #endif

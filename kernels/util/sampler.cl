@@ -28,10 +28,10 @@
 #include "kernels/util/sobol_table.cl"
 
 typedef struct {
-    Rng rng;    /* FC_SAMPLER_INDEPENDENT's stream */
-    uint index; /* the sample's index within its half */
-    uint seed;  /* the scramble seed of this pixel's half */
-    uint kind;  /* FC_SAMPLER_* */
+    Rng rng;             /* FC_SAMPLER_INDEPENDENT's stream */
+    uint index_reversed; /* the bit-reversed index of the sample within its half */
+    uint seed;           /* the scramble seed of this pixel's half */
+    uint kind;           /* FC_SAMPLER_* */
 } Sampler;
 
 /* The dimension sets. The camera's; then two per bounce (depth 0 = the first hit). */
@@ -44,34 +44,37 @@ inline uint reverse_bits32(uint x) {
            ((uint)fc_reverse_byte[(x >> 16) & 0xffu] << 8) | (uint)fc_reverse_byte[x >> 24];
 }
 
-/* An Owen scramble of x's bits from the most significant down (Burley 2020, listing 3:
- * the Laine-Karras hash applied to the reversed bits). */
-inline uint nested_uniform_scramble(uint x, uint seed) {
-    x = reverse_bits32(x);
+/* The Laine-Karras hash of Burley 2020, listing 3: applied to bit-reversed x it is an Owen
+ * scramble of x's bits from the most significant down (nested uniform scrambling), and
+ * stays in the reversed domain. */
+inline uint laine_karras(uint x, uint seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
-    x ^= x * 0x8d22f6e6u;
-    return reverse_bits32(x);
+    return x ^ (x * 0x8d22f6e6u);
 }
 
-/* Sobol' dimensions 0..3 of index i, from the 4-bit chunk table: one uint4 load a chunk,
- * written out (PoCL keeps the 8-step loop rolled, at twice the instructions). */
-inline uint4 sobol4(uint i) {
-    __constant const uint4* t = fc_sobol4;
-    return t[i & 15u] ^ t[16u + ((i >> 4) & 15u)] ^ t[32u + ((i >> 8) & 15u)] ^ t[48u + ((i >> 12) & 15u)] ^
-           t[64u + ((i >> 16) & 15u)] ^ t[80u + ((i >> 20) & 15u)] ^ t[96u + ((i >> 24) & 15u)] ^ t[112u + (i >> 28)];
+/* Sobol' dimensions 0..3, bit-reversed, of the index whose bit reversal is r, from the
+ * reversed chunk table: one uint4 load a chunk, written out (PoCL keeps the 8-step loop
+ * rolled, at twice the instructions). */
+inline uint4 sobol4_reversed(uint r) {
+    __constant const uint4* t = fc_sobol4_reversed;
+    return t[r & 15u] ^ t[16u + ((r >> 4) & 15u)] ^ t[32u + ((r >> 8) & 15u)] ^ t[48u + ((r >> 12) & 15u)] ^
+           t[64u + ((r >> 16) & 15u)] ^ t[80u + ((r >> 20) & 15u)] ^ t[96u + ((r >> 24) & 15u)] ^ t[112u + (r >> 28)];
 }
 
 inline uint hash_pair(uint a, uint b) { return (uint)mix64(((ulong)a << 32) | (ulong)b); }
 
+/* The independent sampler's stream is seeded only for it: the Sobol' sampler never reads it. */
 inline Sampler sampler_init(uint kind, uint seed, uint pixel, uint sample) {
     Sampler s;
     s.kind = kind;
-    s.index = sample >> 1;
+    s.index_reversed = reverse_bits32(sample >> 1);
     s.seed = (uint)mix64(mix64((ulong)seed ^ 0x5a17e5eedUL) ^ (((ulong)(sample & 1u) << 32) | (ulong)pixel));
-    s.rng = rng_init(seed, pixel, sample);
+    s.rng.state = 0UL;
+    s.rng.inc = 0UL;
+    if (kind == FC_SAMPLER_INDEPENDENT) s.rng = rng_init(seed, pixel, sample);
     return s;
 }
 
@@ -89,29 +92,30 @@ inline uint4 reverse_bits4(uint4 x) {
 #endif
 }
 
-/* nested_uniform_scramble of each lane with its own seed, given the lanes' bits
- * already reversed. */
-inline uint4 nested_uniform_scramble4_reversed(uint4 x, uint4 seed) {
+/* laine_karras of each lane with its own seed. */
+inline uint4 laine_karras4(uint4 x, uint4 seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
-    x ^= x * 0x8d22f6e6u;
-    return reverse_bits4(x);
+    return x ^ (x * 0x8d22f6e6u);
 }
 
-/* The point of dimension set `set`, each coordinate in [0, 1). The four coordinates are
- * scrambled together as one uint4 (the same values as scrambling each on its own). */
+/* The point of dimension set `set`, each coordinate in [0, 1). Burley's scrambles,
+ * nested_uniform_scramble(x) = reverse(laine_karras(reverse(x))), are chained in the
+ * reversed domain: the index is reversed once in sampler_init, its scramble is the
+ * reversed shuffled index, which the reversed Sobol' table takes as it is, and the four
+ * coordinates (scrambled together as one uint4) are reversed once at the end. The
+ * values are those of scrambling each step on its own. */
 inline float4 sampler_get4(Sampler* s, uint set) {
     if (s->kind == FC_SAMPLER_INDEPENDENT) {
         float2 a = rng_float2(&s->rng);
         return (float4)(a, rng_float2(&s->rng));
     }
     uint seed = hash_pair(s->seed, set);
-    uint i = nested_uniform_scramble(s->index, seed);
-    uint4 rev = reverse_bits4(sobol4(i));
+    uint r = laine_karras(s->index_reversed, seed);
     uint4 seeds = (uint4)(hash_pair(seed, 1u), hash_pair(seed, 2u), hash_pair(seed, 3u), hash_pair(seed, 4u));
-    uint4 x = nested_uniform_scramble4_reversed(rev, seeds);
+    uint4 x = reverse_bits4(laine_karras4(sobol4_reversed(r), seeds));
     return convert_float4(x >> 8) * 0x1p-24f; /* the top 24 bits: every float in [0, 1) exact */
 }
 
