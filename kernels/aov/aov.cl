@@ -49,8 +49,9 @@ __kernel void aov_pass(__constant const FcRenderParams* params, __global const F
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
     uint pixel = y * params->width + x;
-    SceneView sc = {params, nodes, tris, shading, materials, 0, 0, 0, 0, textures, texels, material_textures,
-                    texcoords, spheres, sphere_nodes, instances, instance_nodes};
+    SceneView sc = {
+        params,    nodes,   tris,         shading,   materials,     0, 0, 0, 0, textures, texels, material_textures,
+        texcoords, spheres, sphere_nodes, instances, instance_nodes};
     float4 albedo_sum = (float4)(0.0f), normal_sum = (float4)(0.0f);
     for (uint i = 0; i < params->sample_count; ++i) {
         uint index = params->sample_begin + i;
