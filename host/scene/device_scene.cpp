@@ -1,5 +1,7 @@
 #include "host/scene/device_scene.hpp"
 
+#include "host/scene/texture_tangents.hpp"
+
 #include <cstdint>
 
 #include "host/scene/pixel_filter.hpp"
@@ -57,7 +59,17 @@ void compile_instances(const Scene& scene, const Bvh& bvh, DeviceScene& d) {
     if (scene_uses_textures(scene)) {
         for (const SharedMesh& m : scene.meshes) {
             const std::size_t at = d.textures.texcoords.size();
-            d.textures.texcoords.insert(d.textures.texcoords.end(), m.texcoords.begin(), m.texcoords.end());
+            // The mesh's vertex tangents in object space, as for world triangles; the kernels
+            // place them with the instance (instance_tangent_to_world).
+            Scene object;
+            object.vertices = m.vertices;
+            object.shading = m.shading;
+            object.texcoords = m.texcoords;
+            object.materials = scene.materials;
+            std::vector<FcTriTexcoords> texcoords = m.texcoords;
+            texcoords.resize(m.triangle_count(), FcTriTexcoords{});
+            compute_tangents(object, texcoords);
+            d.textures.texcoords.insert(d.textures.texcoords.end(), texcoords.begin(), texcoords.end());
             d.textures.texcoords.resize(at + m.triangle_count(), FcTriTexcoords{});
         }
     }

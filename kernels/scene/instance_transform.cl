@@ -35,6 +35,17 @@ inline float3 instance_vector_to_world(__global const FcInstance* in, float3 v) 
     return affine_vector(&in->object_to_world[0][0], v);
 }
 
+/* A vertex tangent (xyz) with its handedness (w = +-1) placed in the world: the tangent
+ * by the linear part, the handedness flipped by a mirroring transform (negative
+ * determinant), since the bitangent is built as w cross(n, t) from the placed n and t. */
+inline float4 instance_tangent_to_world(__global const FcInstance* in, float4 t) {
+    __global const float* m = &in->object_to_world[0][0];
+    const float3 c0 = affine_vector(m, (float3)(1.0f, 0.0f, 0.0f)), c1 = affine_vector(m, (float3)(0.0f, 1.0f, 0.0f)),
+                 c2 = affine_vector(m, (float3)(0.0f, 0.0f, 1.0f));
+    const float det = dot(c0, cross(c1, c2));
+    return (float4)(affine_vector(m, t.xyz), det < 0.0f ? -t.w : t.w);
+}
+
 /* A normal, not renormalised. */
 inline float3 instance_normal_to_world(__global const FcInstance* in, float3 n) {
     return affine_vector_transposed(&in->world_to_object[0][0], n);

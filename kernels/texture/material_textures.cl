@@ -151,6 +151,11 @@ inline void apply_textures(const SceneView* sc, const Hit* hit, int material, fl
         float3 v0, v1, v2; /* world space: dp/du and the areas of the placed triangle */
         hit_triangle_vertices(sc, hit, &v0, &v1, &v2);
         p = tex_point(sc->texcoords, hit->prim, hit->u, hit->v, v1 - v0, v2 - v0);
+#if FC_HAS_INSTANCES
+        /* An instanced mesh's vertex tangents are in object space, like its vertices. */
+        if (hit->inst >= 0 && p.tangent.w != 0.0f)
+            p.tangent = instance_tangent_to_world(&sc->instances[hit->inst], p.tangent);
+#endif
     }
     float2 uv = tex_transform(mt, p.uv);
     float cos_hit = dot(*ns, d);
