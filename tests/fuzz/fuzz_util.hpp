@@ -71,7 +71,8 @@ inline bool finite3(const float v[3]) { return std::isfinite(v[0]) && std::isfin
 // What the renderer relies on in every scene load_scene returns.
 inline void check_scene(const Scene& s) {
     if (s.vertices.size() != 3 * s.shading.size()) broken("3 vertices a triangle");
-    if (s.shading.empty() && s.spheres.empty()) broken("at least one triangle or sphere");
+    if (s.shading.empty() && s.spheres.empty() && s.instances.empty())
+        broken("at least one triangle, sphere or instance");
     for (const FcSphere& sp : s.spheres) {
         if (!finite3(sp.center) || !(sp.radius > 0.0f) || !std::isfinite(sp.radius)) broken("finite spheres");
         if (sp.material < 0 || std::size_t(sp.material) >= s.materials.size()) broken("material index in range");
