@@ -21,6 +21,7 @@
 #include "host/render/renderer.hpp"
 #include "host/readers/load_scene.hpp"
 #include "host/scene/device_scene.hpp"
+#include "tests/gltf_test_util.hpp"
 #include "tests/cl_test_env.hpp"
 #include "tests/temp_dir.hpp"
 
@@ -33,31 +34,7 @@ constexpr std::size_t kMeshTriangles = 2 * kSegments + 2 * kSegments * (kRings -
 constexpr std::size_t kGroundTriangles = 2;
 
 // A model with one buffer that accessors are appended to.
-struct Model {
-    tinygltf::Model m;
-    Model() {
-        m.buffers.emplace_back();
-        m.asset.version = "2.0";
-        m.scenes.emplace_back();
-        m.defaultScene = 0;
-    }
-    int accessor(const void* data, std::size_t bytes, int component, int type, std::size_t count) {
-        auto& buf = m.buffers[0].data;
-        while (buf.size() % 4) buf.push_back(0);
-        tinygltf::BufferView bv;
-        bv.buffer = 0;
-        bv.byteOffset = buf.size();
-        bv.byteLength = bytes;
-        buf.insert(buf.end(), static_cast<const unsigned char*>(data), static_cast<const unsigned char*>(data) + bytes);
-        m.bufferViews.push_back(bv);
-        tinygltf::Accessor a;
-        a.bufferView = int(m.bufferViews.size() - 1);
-        a.componentType = component;
-        a.type = type;
-        a.count = count;
-        m.accessors.push_back(a);
-        return int(m.accessors.size() - 1);
-    }
+struct Model : test::GltfBuilder {
     int floats(const std::vector<float>& v, int type, std::size_t width) {
         return accessor(v.data(), v.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT, type, v.size() / width);
     }

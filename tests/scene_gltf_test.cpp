@@ -10,6 +10,7 @@
 
 #include "host/readers/gltf_reader.hpp"
 #include "host/readers/load_scene.hpp"
+#include "tests/gltf_test_util.hpp"
 #include "tests/scene_test_util.hpp"
 
 namespace facet {
@@ -19,33 +20,7 @@ using test::expect_error;
 using test::TempDir;
 
 // A model built in memory: one buffer that accessors are appended to.
-struct ModelBuilder {
-    tinygltf::Model m;
-
-    ModelBuilder() {
-        m.buffers.emplace_back();
-        m.asset.version = "2.0";
-        m.scenes.emplace_back();
-        m.defaultScene = 0;
-    }
-
-    int accessor(const void* data, std::size_t bytes, int component, int type, std::size_t count) {
-        auto& buf = m.buffers[0].data;
-        while (buf.size() % 4) buf.push_back(0);
-        tinygltf::BufferView bv;
-        bv.buffer = 0;
-        bv.byteOffset = buf.size();
-        bv.byteLength = bytes;
-        buf.insert(buf.end(), static_cast<const unsigned char*>(data), static_cast<const unsigned char*>(data) + bytes);
-        m.bufferViews.push_back(bv);
-        tinygltf::Accessor a;
-        a.bufferView = int(m.bufferViews.size() - 1);
-        a.componentType = component;
-        a.type = type;
-        a.count = count;
-        m.accessors.push_back(a);
-        return int(m.accessors.size() - 1);
-    }
+struct ModelBuilder : test::GltfBuilder {
     int vec3s(const std::vector<float>& v) {
         return accessor(v.data(), v.size() * 4, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, v.size() / 3);
     }
