@@ -15,6 +15,7 @@
 #include "host/scene/scene.hpp"
 #include "host/scene/texture.hpp"
 #include "tests/cl_test_env.hpp"
+#include "tests/gltf_test_util.hpp"
 #include "tests/temp_dir.hpp"
 
 namespace facet {
@@ -73,39 +74,23 @@ std::string write_uv_sphere(const test::TempDir& d, const std::string& name, boo
             const std::uint32_t a = std::uint32_t(i * (nu + 1) + j), b = a + 1, c = a + nu + 1, e = c + 1;
             idx.insert(idx.end(), {a, c, e, a, e, b});  // counter-clockwise seen from outside
         }
-    tinygltf::Model m;
-    m.asset.version = "2.0";
-    m.buffers.emplace_back();
-    auto add = [&](const void* data, std::size_t bytes, int component, int type, std::size_t count) {
-        auto& buf = m.buffers[0].data;
-        tinygltf::BufferView bv;
-        bv.buffer = 0;
-        bv.byteOffset = buf.size();
-        bv.byteLength = bytes;
-        buf.insert(buf.end(), static_cast<const unsigned char*>(data), static_cast<const unsigned char*>(data) + bytes);
-        m.bufferViews.push_back(bv);
-        tinygltf::Accessor a;
-        a.bufferView = int(m.bufferViews.size() - 1);
-        a.componentType = component;
-        a.type = type;
-        a.count = count;
-        m.accessors.push_back(a);
-        return int(m.accessors.size() - 1);
-    };
+    test::GltfBuilder g;
+    tinygltf::Model& m = g.m;
     const int f = TINYGLTF_COMPONENT_TYPE_FLOAT;
     tinygltf::Primitive p;
-    p.attributes["POSITION"] = add(pos.data(), pos.size() * 4, f, TINYGLTF_TYPE_VEC3, pos.size() / 3);
-    p.attributes["NORMAL"] = add(nrm.data(), nrm.size() * 4, f, TINYGLTF_TYPE_VEC3, nrm.size() / 3);
-    p.attributes["TEXCOORD_0"] = add(uv.data(), uv.size() * 4, f, TINYGLTF_TYPE_VEC2, uv.size() / 2);
-    if (tangents) p.attributes["TANGENT"] = add(tan.data(), tan.size() * 4, f, TINYGLTF_TYPE_VEC4, tan.size() / 4);
-    p.indices = add(idx.data(), idx.size() * 4, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, idx.size());
+    p.attributes["POSITION"] = g.accessor(pos.data(), pos.size() * 4, f, TINYGLTF_TYPE_VEC3, pos.size() / 3);
+    p.attributes["NORMAL"] = g.accessor(nrm.data(), nrm.size() * 4, f, TINYGLTF_TYPE_VEC3, nrm.size() / 3);
+    p.attributes["TEXCOORD_0"] = g.accessor(uv.data(), uv.size() * 4, f, TINYGLTF_TYPE_VEC2, uv.size() / 2);
+    if (tangents)
+        p.attributes["TANGENT"] = g.accessor(tan.data(), tan.size() * 4, f, TINYGLTF_TYPE_VEC4, tan.size() / 4);
+    p.indices =
+        g.accessor(idx.data(), idx.size() * 4, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, idx.size());
     p.mode = TINYGLTF_MODE_TRIANGLES;
     m.meshes.emplace_back().primitives.push_back(p);
     tinygltf::Node n;
     n.mesh = 0;
     m.nodes.push_back(n);
-    m.scenes.emplace_back().nodes.push_back(0);
-    m.defaultScene = 0;
+    m.scenes[0].nodes.push_back(0);
     tinygltf::TinyGLTF writer;
     const std::string path = d.path(name);
     EXPECT_TRUE(writer.WriteGltfSceneToFile(&m, path, false, true, true, true)) << path;
