@@ -7,7 +7,8 @@ bench/mitsuba/<scene>.json where materials had to be replaced, else scenes/<scen
 
   1. a long reference with each renderer, as two halves of independent seeds (so that
      the reference's own noise is known and taken out of every RMSE below); cached
-     under out/bench/mitsuba/refs/ and reused while the scene files and settings match;
+     under out/bench/mitsuba/refs/ and reused while the scene files, settings and the
+     renderer (facet's binary, Mitsuba's version) match;
   2. for each time budget, `--repeats` rounds, each running every program once in turn
      (facet, facet --sampler independent, Mitsuba's independent sampler, Mitsuba's best
      sampler, then again): the image reached in the budget, its samples per second and
@@ -29,7 +30,8 @@ how to install it and exits 0.
 
 Other modes: --check (agreement in mean: the two references, region by region with a
 z-test from their halves), --equal-spp N (RMSE at N samples per pixel: error per sample,
-insensitive to machine load).
+insensitive to machine load), --per-sample K (error per sample without a reference: the
+variance across K images of independent seeds).
 """
 import argparse
 import glob
@@ -135,6 +137,12 @@ class Facet:
         self.exe, self.sampler, self.work = exe, sampler, work
         self.label = "facet" if sampler is None else f"facet --sampler {sampler}"
 
+    def version(self):
+        """facet's references are kept per build: a change to the kernels or to how the
+        host builds the scene changes the image a scene file gives."""
+        with open(self.exe, "rb") as f:
+            return "facet-" + hashlib.sha256(f.read()).hexdigest()[:10]
+
     def render(self, scene, seed, seconds=None, spp=None):
         out = os.path.join(self.work, f"facet_{scene.name}.exr")
         cmd = [self.exe, "render", scene.facet_json, "--out", out, "--seed", str(seed), "--quiet",
@@ -155,6 +163,9 @@ class Mitsuba:
         self.sampler, self.assets = sampler, assets
         self.label = f"Mitsuba {sampler}"
         self.loaded = {}
+
+    def version(self):
+        return "mitsuba-" + mi.__version__
 
     def scene(self, scene):
         if scene.name not in self.loaded:
@@ -248,7 +259,7 @@ class Mitsuba:
 
 def reference(prog, scene, seconds, refs_dir):
     """(half A, half B, samples per pixel of both): two halves of independent seeds."""
-    path = os.path.join(refs_dir, f"{scene.keys[prog.renderer]}_{prog.renderer}_{seconds:g}s.npz")
+    path = os.path.join(refs_dir, f"{scene.keys[prog.renderer]}_{prog.version()}_{seconds:g}s.npz")
     if os.path.exists(path):
         z = np.load(path)
         return z["a"], z["b"], float(z["spp"])
@@ -266,6 +277,17 @@ class Ref:
         # E[((a - b) / 2)^2] is the variance of (a + b) / 2: the reference's own noise.
         self.noise_mse = float(np.mean((0.5 * (a - b)) ** 2))
         self.spp = spp
+
+
+def rmse_three_cornered(img, own, other, cross):
+    """The image's RMSE from its squared differences to both references and theirs to
+    each other (the "three-cornered hat"): with v the variances and b the bias between
+    the renderers, |img - own|^2 = v_img + v_own, |img - other|^2 = v_img + v_other + b^2
+    and |own - other|^2 = v_own + v_other + b^2, so v_img comes out without either
+    reference's noise estimate and whatever the bias."""
+    d_own = float(np.mean((img - own.image) ** 2))
+    d_other = float(np.mean((img - other.image) ** 2))
+    return math.sqrt(max(0.5 * (d_own + d_other - cross), 0.0))
 
 
 def rmse(img, ref):
@@ -356,12 +378,14 @@ def fmt_rgb(v, f=".4g"):
 # --------------------------------------------------------------------------------------
 # Equal time / equal spp
 
-def measure(scenes, progs, budgets, repeats, spp, ref_seconds, refs_dir, out_dir, info):
+def measure(scenes, progs, makers, budgets, repeats, spp, ref_seconds, refs_dir, out_dir, info):
+    """makers: the program that renders each renderer's reference."""
     rows = []
     for sc in scenes:
         refs = {}
         for r in ("facet", "mitsuba"):
-            refs[r] = Ref(*reference(progs[r], sc, ref_seconds, refs_dir))
+            refs[r] = Ref(*reference(makers[r], sc, ref_seconds, refs_dir))
+        cross = float(np.mean((refs["facet"].image - refs["mitsuba"].image) ** 2))
         for p in progs.values():
             if isinstance(p, Mitsuba):
                 p.warm_up(sc)
@@ -377,12 +401,16 @@ def measure(scenes, progs, budgets, repeats, spp, ref_seconds, refs_dir, out_dir
                         img, n, t = p.render(sc, seed, spp=amount)
                     own, other = refs[p.renderer], refs["mitsuba" if p.renderer == "facet" else "facet"]
                     runs[key].append({"spp": n / sc.pixels, "seconds": t, "msamples_s": n / t * 1e-6,
-                                      "rmse_own": rmse(img, own), "rmse_other": rmse(img, other)})
+                                      "rmse_own": rmse(img, own), "rmse_other": rmse(img, other),
+                                      "rmse_3c": rmse_three_cornered(img, own, other, cross)})
                     print(f"  {sc.name} {amount:g} {kind} #{rep + 1} {p.label:28s} {n / sc.pixels:8.1f} spp "
                           f"{t:7.2f} s {n / t * 1e-6:6.2f} Msamples/s  rmse own {runs[key][-1]['rmse_own']:.4g} "
-                          f"other {runs[key][-1]['rmse_other']:.4g}", flush=True)
+                          f"other {runs[key][-1]['rmse_other']:.4g} 3c {runs[key][-1]['rmse_3c']:.4g}", flush=True)
             for key, rs in runs.items():
                 med = {k: statistics.median(r[k] for r in rs) for k in rs[0]}
+                # The RMSE of the mean squared error over the runs: what the expected error
+                # is, where a median of a few runs of a firefly-dominated image is not.
+                med["rmse_pooled"] = math.sqrt(statistics.fmean(r["rmse_own"] ** 2 for r in rs))
                 rows.append({"scene": sc.name, "size": f"{sc.width}x{sc.height}", kind: amount,
                              "program": progs[key].label, "renderer": progs[key].renderer,
                              "runs": rs, "median": med,
@@ -395,21 +423,60 @@ def measure(scenes, progs, budgets, repeats, spp, ref_seconds, refs_dir, out_dir
              f"{info['load_after']} after. RMSE against each renderer's reference with the reference's own "
              "noise taken out; 'own': the program's renderer, 'other': the other renderer's.", ""]
     col = "spp" if spp else "budget (s)"
-    lines += [f"| scene | {col} | program | spp | Msamples/s | RMSE own | RMSE other | RMSE / facet's (own) |",
-              "|---|---|---|---|---|---|---|---|"]
+    lines += [f"| scene | {col} | program | spp | Msamples/s | RMSE own | RMSE other | RMSE / facet's (own) "
+              "| RMSE pooled (√ mean MSE) | pooled / facet's | RMSE three-cornered | 3c / facet's |",
+              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         amount = r.get("spp", r.get("s"))
         base = next(x for x in rows if x["scene"] == r["scene"] and x.get("spp", x.get("s")) == amount
                     and x["program"] == "facet")
         m = r["median"]
         ratio = m["rmse_own"] / base["median"]["rmse_own"] if base["median"]["rmse_own"] > 0 else float("nan")
+        pooled = m["rmse_pooled"] / base["median"]["rmse_pooled"] if base["median"]["rmse_pooled"] > 0 else float("nan")
+        b3 = base["median"]["rmse_3c"]
+        ratio3 = m["rmse_3c"] / b3 if b3 > 0 else float("nan")
         lines.append(f"| {r['scene']} | {amount:g} | {r['program']} | {m['spp']:.1f} | {m['msamples_s']:.2f} | "
-                     f"{m['rmse_own']:.4g} | {m['rmse_other']:.4g} | {ratio:.2f} |")
+                     f"{m['rmse_own']:.4g} | {m['rmse_other']:.4g} | {ratio:.2f} | {m['rmse_pooled']:.4g} | {pooled:.2f} "
+                     f"| {m['rmse_3c']:.4g} | {ratio3:.2f} |")
     refs_line = sorted({(r["scene"], r["size"], round(r["ref_spp"]["facet"]), round(r["ref_spp"]["mitsuba"]))
                         for r in rows})
     lines += ["", "References (spp): " + "; ".join(f"{s} {sz}: facet {a}, Mitsuba {b}" for s, sz, a, b in refs_line)]
     info["rows"] = rows
     write_outputs(out_dir, "mitsuba_equal_spp" if spp else "mitsuba_equal_time", lines, info)
+
+
+def per_sample(scenes, progs, spp, images, out_dir, info):
+    """Error per sample without a reference: `images` images of independent seeds per
+    program at `spp` samples per pixel; the per-pixel variance across them, averaged over
+    the image, is the MSE of one image (its square root below). No reference's noise to
+    take out, insensitive to the machine's load; on a firefly-dominated image (the sun
+    through glass) a handful of samples decide it."""
+    rows = []
+    for sc in scenes:
+        for key, p in progs.items():
+            imgs, n = [], 0
+            for k in range(images):
+                img, samples, _ = p.render(sc, 500 + k, spp=spp)
+                imgs.append(img)
+                n += samples
+            stack = np.stack(imgs)
+            rmse1 = math.sqrt(float(np.mean(np.var(stack, axis=0, ddof=1))))
+            rows.append({"scene": sc.name, "size": f"{sc.width}x{sc.height}", "program": p.label,
+                         "spp": n / images / sc.pixels, "images": images, "rmse_one_image": rmse1,
+                         "mean": stack.mean(axis=(0, 1, 2)).tolist()})
+            print(f"  {sc.name} {p.label:28s} {rows[-1]['spp']:.1f} spp x {images}: RMSE of one image {rmse1:.4g}",
+                  flush=True)
+    info["load_after"] = " ".join(f"{x:.1f}" for x in os.getloadavg())
+    lines = [f"# facet vs Mitsuba 3, error per sample ({images} images of independent seeds, {spp} spp)", "",
+             f"Load average {info['load_before']} before, {info['load_after']} after. RMSE of one image: the "
+             "square root of the per-pixel variance across the images, averaged over the image.", "",
+             "| scene | program | spp | RMSE of one image | / facet's |", "|---|---|---|---|---|"]
+    for r in rows:
+        base = next(x for x in rows if x["scene"] == r["scene"] and x["program"] == "facet")
+        lines.append(f"| {r['scene']} {r['size']} | {r['program']} | {r['spp']:.1f} | {r['rmse_one_image']:.4g} | "
+                     f"{r['rmse_one_image'] / base['rmse_one_image']:.2f} |")
+    info["rows"] = rows
+    write_outputs(out_dir, "mitsuba_per_sample", lines, info)
 
 
 def write_outputs(out_dir, stem, lines, data):
@@ -437,8 +504,14 @@ def main():
     ap.add_argument("--mitsuba-best", default="multijitter",
                     help="Mitsuba's best sampler, run beside its default 'independent' (default multijitter)")
     ap.add_argument("--equal-spp", type=int, default=0, help="instead of time budgets: N samples per pixel")
+    ap.add_argument("--per-sample", type=int, default=0, metavar="K",
+                    help="error per sample without a reference: K images of independent seeds per program at "
+                         "--equal-spp samples per pixel (default 16)")
     ap.add_argument("--check", action="store_true",
                     help="agreement in mean: the two references compared region by region")
+    ap.add_argument("--programs", default="facet,facet_independent,mitsuba,mitsuba_best",
+                    help="which programs to run, of facet, facet_independent, mitsuba (its default sampler) "
+                         "and mitsuba_best (default: all four)")
     ap.add_argument("--threads", type=int, default=2, help="Mitsuba threads (default 2, as facet's PoCL here)")
     ap.add_argument("--facet", default=os.path.join(ROOT, "build", "facet"), help="the facet binary")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "bench"), help="output folder")
@@ -462,15 +535,27 @@ def main():
              "mitsuba": Mitsuba("independent", assets)}
     if a.mitsuba_best and a.mitsuba_best != "independent":
         progs["mitsuba_best"] = Mitsuba(a.mitsuba_best, assets)
+    wanted = a.programs.split(",")
+    unknown = [k for k in wanted if k not in ("facet", "facet_independent", "mitsuba", "mitsuba_best")]
+    if unknown or "facet" not in wanted:
+        raise SystemExit(f"equal_time.py: --programs {a.programs}: needs facet, and only facet, "
+                         "facet_independent, mitsuba, mitsuba_best")
+    refs_progs = dict(progs)   # both renderers' references are made whatever runs
+    progs = {k: p for k, p in progs.items() if k in wanted}
     info = {"mitsuba": mi.__version__, "variant": mi.variant(), "threads": a.threads,
             "load_before": " ".join(f"{x:.1f}" for x in os.getloadavg())}
     if a.check:
-        check(scenes, progs, a.reference_seconds, refs_dir, a.out)
+        check(scenes, refs_progs, a.reference_seconds, refs_dir, a.out)
+        return 0
+    if a.per_sample:
+        if a.per_sample < 2:
+            raise SystemExit("equal_time.py: --per-sample needs at least 2 images")
+        per_sample(scenes, progs, a.equal_spp or 16, a.per_sample, a.out, info)
         return 0
     budgets = [float(x) for x in a.budgets.split(",")]
     t0 = time.time()
-    check(scenes, progs, a.reference_seconds, refs_dir, a.out)   # the references, compared
-    measure(scenes, progs, budgets, a.repeats, a.equal_spp, a.reference_seconds, refs_dir, a.out, info)
+    check(scenes, refs_progs, a.reference_seconds, refs_dir, a.out)   # the references, compared
+    measure(scenes, progs, refs_progs, budgets, a.repeats, a.equal_spp, a.reference_seconds, refs_dir, a.out, info)
     print(f"equal_time.py: {time.time() - t0:.0f} s")
     return 0
 
