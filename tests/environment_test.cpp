@@ -57,6 +57,13 @@ double pdf_integral(const EnvironmentMap& e) {
     return sum;
 }
 
+// The map with its distribution swapped for MIS compensation's, as the renderer uploads it.
+EnvironmentMap compensated_copy(const EnvironmentMap& e) {
+    EnvironmentMap c = e;
+    c.distribution = compensated_environment_distribution(e);
+    return c;
+}
+
 EnvironmentMap smooth_env(int w, int h, const glm::mat3& rot) {
     std::vector<std::string> warnings;
     return environment_from_pixels(w, h, smooth_map(w, h), glm::vec3(1.0f, 0.5f, 2.0f), rot, "smooth", warnings);
@@ -97,6 +104,11 @@ TEST(Environment, PdfEvalConsistency) {
     EnvironmentMap sky = sun_sky_environment(p, 1024);
     set_environment_rotation(sky, test_rotation());
     EXPECT_LT(check_consistency(sky, 1u << 18, "sun-sky"), 1e-4);
+    EnvironmentMap bilinear = sky;
+    set_environment_filter(bilinear, FC_ENV_FILTER_BILINEAR);
+    EXPECT_NE(bilinear.distribution, sky.distribution) << "the weights follow the lookup";
+    EXPECT_LT(check_consistency(bilinear, 1u << 18, "sun-sky, bilinear"), 1e-4);
+    EXPECT_LT(check_consistency(compensated_copy(bilinear), 1u << 18, "sun-sky, bilinear, compensated"), 1e-4);
     EXPECT_LT(check_consistency(smooth_env(256, 128, test_rotation()), 1u << 18, "smooth"), 1e-4);
     EXPECT_EQ(check_consistency(constant_environment(glm::vec3(0.5f, 1.0f, 2.0f)), 1u << 14, "constant"), 0.0);
 }
@@ -107,6 +119,12 @@ TEST(Environment, PdfIntegratesToOne) {
     EXPECT_NEAR(pdf_integral(sky), 1.0, 1e-4);
     set_environment_rotation(sky, test_rotation());
     EXPECT_NEAR(pdf_integral(sky), 1.0, 1e-4);
+    EnvironmentMap bilinear = sky;
+    set_environment_filter(bilinear, FC_ENV_FILTER_BILINEAR);
+    EXPECT_NEAR(pdf_integral(bilinear), 1.0, 1e-4);
+    // the filter moves no power: the (1/8, 3/4, 1/8) weights sum to 1 (to the sin(theta)
+    // of the neighbouring rows, which differ by a texel)
+    EXPECT_NEAR(bilinear.mean_luminance / sky.mean_luminance, 1.0, 1e-3);
     EXPECT_NEAR(pdf_integral(smooth_env(256, 128, glm::mat3(1.0f))), 1.0, 1e-4);
     EXPECT_NEAR(pdf_integral(smooth_env(64, 64, glm::mat3(1.0f))), 1.0, 1e-4);  // not 2:1
     // mean luminance: the solid-angle mean of the radiance's luminance
@@ -227,6 +245,51 @@ TEST(Environment, RotationAndConvention) {
     std::vector<float> err(rand_dirs.size());
     ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, err.size() * sizeof(float), err.data());
     for (std::size_t i = 0; i < err.size(); ++i) ASSERT_LT(err[i], 2e-5f) << "direction " << i;
+}
+
+// The bilinear lookup (the scene file's default, docs/environment.md): a texel's value at
+// its centre, the mean of two neighbours half-way between their centres, the last and
+// first columns mixed across u = 0, the first row alone between its centre and the pole.
+// Texel (x, y) of this map holds 1 + x + 100 y (+ 0.25 per channel), linear in x and y,
+// so every interpolated value is known.
+TEST(Environment, BilinearLookup) {
+    const int w = 16, h = 8;
+    std::vector<float> rgb(std::size_t(w) * h * 3);
+    auto value = [&](int x, int y) { return 1.0 + x + 100.0 * y; };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) rgb[3 * (std::size_t(y) * w + x) + c] = float(value(x, y) + 0.25 * c);
+    std::vector<std::string> warnings;
+    EnvironmentMap e = environment_from_pixels(w, h, rgb, glm::vec3(1.0f), glm::mat3(1.0f), "ids", warnings);
+    EXPECT_EQ(e.params.filter, FC_ENV_FILTER_NEAREST) << "maps built in code start with the nearest lookup";
+    set_environment_filter(e, FC_ENV_FILTER_BILINEAR);
+    struct Probe {
+        double u, v, want;
+        const char* what;
+    };
+    const std::vector<Probe> probes = {
+        {5.5 / w, 3.5 / h, value(5, 3), "a texel's centre"},
+        {6.0 / w, 3.5 / h, 0.5 * (value(5, 3) + value(6, 3)), "half-way along a row"},
+        {5.5 / w, 4.0 / h, 0.5 * (value(5, 3) + value(5, 4)), "half-way down a column"},
+        {5.75 / w, 3.75 / h,
+         0.75 * 0.75 * value(5, 3) + 0.25 * 0.75 * (value(6, 3) + value(5, 4)) + 0.25 * 0.25 * value(6, 4),
+         "a quarter of the way diagonally"},
+        {0.25 / w, 3.5 / h, 0.25 * value(w - 1, 3) + 0.75 * value(0, 3), "across u = 0 (wrapping around)"},
+        {(w - 0.25) / w, 3.5 / h, 0.75 * value(w - 1, 3) + 0.25 * value(0, 3), "across u = 1"},
+        {5.5 / w, 0.2 / h, value(5, 0), "between the first row's centre and the pole"},
+        {5.5 / w, (h - 0.2) / h, value(5, h - 1), "between the last row's centre and the pole"},
+    };
+    std::vector<cl_float4> dirs;
+    for (const Probe& p : probes) dirs.push_back(to_world(e.params, map_direction(kPi * p.v, 2.0 * kPi * p.u)));
+    const std::vector<cl_float4> got = eval_batch(e, dirs);
+    for (std::size_t i = 0; i < probes.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(double(got[i].s[c]), probes[i].want + 0.25 * c, 2e-4 * probes[i].want)
+                << probes[i].what << ", channel " << c;
+    // the nearest lookup of the same point between two centres is one texel
+    set_environment_filter(e, FC_ENV_FILTER_NEAREST);
+    EXPECT_EQ(double(eval_batch(e, {dirs[1]})[0].s[0]), value(6, 3));
+    EXPECT_THROW(set_environment_filter(e, 7), Error);
 }
 
 TEST(Environment, SanitisesBadTexels) {

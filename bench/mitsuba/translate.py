@@ -52,9 +52,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 SCENES = ["cornell_box", "spheres_sky", "material_grid", "glass_metal_sky"]
 ALPHA_MIRROR = 1e-4          # facet's FC_ALPHA_MIRROR
 ALPHA_SMOOTH_IN_BLEND = 1e-3  # the rough stand-in for a delta lobe inside a blendbsdf
-ENV_UPSAMPLE = 2             # Mitsuba interpolates its map bilinearly; facet reads the
-                             # nearest texel: the map Mitsuba gets repeats each texel
-                             # 2 x 2 so that the blur is a quarter texel wide
+ENV_KIND = "bilinear"        # the map Mitsuba gets reproduces facet's bilinear lookup
+                             # exactly (write_sky)
 
 # facet's tables (host/scene/material.cpp), copied: the XML must hold numbers.
 CONDUCTORS = {
@@ -437,7 +436,7 @@ def sky_args(sky):
 
 
 def sky_file(sky):
-    return "sky_" + "_".join(sky_args(sky)[1::2]) + f"_x{ENV_UPSAMPLE}.exr"
+    return "sky_" + "_".join(sky_args(sky)[1::2]) + f"_{ENV_KIND}.exr"
 
 
 def facet_scene_path(name):
@@ -467,11 +466,15 @@ def translate_scenes():
 
 
 def write_sky(facet, sky, out_dir):
-    """The environment for Mitsuba: facet's map (`facet sky`), each texel repeated
-    ENV_UPSAMPLE x ENV_UPSAMPLE times. Mitsuba places row j at theta = pi j / (H - 1)
-    (corners aligned) and column i at phi = 2 pi (i + 0.5) / W, and interpolates; facet
-    reads the texel containing (phi / 2 pi, theta / pi). Each Mitsuba sample takes the
-    facet texel its own direction falls into."""
+    """The environment for Mitsuba: facet's map (`facet sky`, W x H) made into the map
+    whose bilinear interpolation, as Mitsuba does it, is facet's bilinear lookup
+    exactly. Mitsuba puts column i at phi = 2 pi (i + 0.5) / W (wrapping around), as
+    facet does: the columns stay. It puts row k of H' rows at theta = pi k / (H' - 1),
+    facet row y's centre is at theta = pi (y + 0.5) / H and facet holds the first and
+    last rows constant toward the poles: with H' = 2 H + 1, row 2 y + 1 is facet's row
+    y, row 2 y between them is their mean (facet's value half-way between the centres,
+    where its interpolation is linear), rows 0 and 2 H are facet's first and last rows.
+    Between two of these rows both interpolate linearly along the same segment."""
     import mitsuba as mi
     if mi.variant() is None:
         mi.set_variant("scalar_rgb")
@@ -480,12 +483,14 @@ def write_sky(facet, sky, out_dir):
         return path
     raw = os.path.join(out_dir, "sky_facet.exr")
     subprocess.run([facet, "sky", raw] + sky_args(sky), check=True, stdout=subprocess.DEVNULL)
-    src = np.array(mi.Bitmap(raw).convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32, False))
+    src = np.array(mi.Bitmap(raw).convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32, False),
+                   dtype=np.float64)
     h, w = src.shape[:2]
-    k = ENV_UPSAMPLE
-    rows = np.minimum((np.arange(k * h) / (k * h - 1) * h).astype(np.int64), h - 1)
-    cols = np.minimum(((np.arange(k * w) + 0.5) / (k * w) * w).astype(np.int64), w - 1)
-    big = np.ascontiguousarray(src[rows][:, cols]).astype(np.float32)
+    big = np.empty((2 * h + 1, w, 3))
+    big[1::2] = src
+    big[2:-1:2] = 0.5 * (src[:-1] + src[1:])
+    big[0], big[-1] = src[0], src[-1]
+    big = np.ascontiguousarray(big.astype(np.float32))
     mi.Bitmap(big, mi.Bitmap.PixelFormat.RGB).write(path)
     os.remove(raw)
     return path

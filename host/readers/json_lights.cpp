@@ -79,7 +79,7 @@ EnvironmentMap sun_sky(const JsonReader& r, const Json& sky, const std::string& 
 // The environment: a map file, a constant radiance or the generated sun and sky, with
 // a radiance scale and a rotation.
 void JsonLoader::environment(const Json& v, const std::string& path) {
-    r.object(v, path, {"file", "constant", "sky", "scale", "rotate", "sampling"});
+    r.object(v, path, {"file", "constant", "sky", "scale", "rotate", "sampling", "filter"});
     auto k = [&](const char* key) { return JsonReader::key(path, key); };
     int sources = int(v.contains("file")) + int(v.contains("constant")) + int(v.contains("sky"));
     if (sources != 1) r.fail(path, "give exactly one of 'file', 'constant' or 'sky'");
@@ -107,6 +107,15 @@ void JsonLoader::environment(const Json& v, const std::string& path) {
         set_environment_scale(scene.environment, scale);
     }
     set_environment_rotation(scene.environment, world_to_map);
+    // A map is looked up bilinearly unless the scene asks for the nearest texel.
+    int filter = FC_ENV_FILTER_BILINEAR;
+    if (v.contains("filter")) {
+        const std::string name = r.string(v["filter"], k("filter"));
+        if (name == "nearest") filter = FC_ENV_FILTER_NEAREST;
+        else if (name != "bilinear")
+            r.fail(k("filter"), fmt::format("unknown filter '{}' (expected bilinear or nearest)", name));
+    }
+    if (scene.environment.params.width > 0) set_environment_filter(scene.environment, filter);
     if (v.contains("sampling")) {
         const std::string name = r.string(v["sampling"], k("sampling"));
         if (name == "plain") scene.environment.sampling = EnvironmentSampling::plain;

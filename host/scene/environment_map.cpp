@@ -75,6 +75,13 @@ void set_environment_rotation(EnvironmentMap& env, const glm::mat3& world_to_map
     set_environment_rotation(env.params, world_to_map);
 }
 
+void set_environment_filter(EnvironmentMap& env, int filter) {
+    if (filter != FC_ENV_FILTER_NEAREST && filter != FC_ENV_FILTER_BILINEAR)
+        throw Error(fmt::format("environment: unknown filter {}", filter));
+    env.params.filter = filter;
+    build_environment_distribution(env);
+}
+
 void set_environment_scale(EnvironmentMap& env, const glm::vec3& scale) {
     check_scale(scale, "environment");
     for (int c = 0; c < 3; ++c) env.params.scale[c] *= scale[c];
@@ -100,13 +107,45 @@ EnvironmentMap constant_environment(const glm::vec3& radiance) {
 
 namespace {
 
-// Fills `dist` (the layout of EnvironmentMap::distribution) with the cdfs of texel weights
-// max(luminance - subtract, 0) * sin(theta) and returns their sum; `mean` gets the
-// integral of the luminance over the sphere.
-double build_cdfs(const EnvironmentMap& env, double subtract, std::vector<float>& dist, double* mean) {
+// The luminance (scale included) of each texel as the kernels look it up: the texel's
+// own, or for the bilinear lookup its mean over the texel's (u, v) square, which the
+// interpolation between the surrounding centres makes (1/8, 3/4, 1/8) in each direction
+// over the 3 x 3 texels around it (wrapping around in u, the edge rows repeated in v as
+// the lookup clamps them). Every weight is positive, so a texel whose square sees any
+// light has a positive weight: light sampling alone still covers the whole map.
+std::vector<double> texel_luminance(const EnvironmentMap& env) {
     const FcEnvironment& p = env.params;
     const double sr = double(p.scale[0]), sg = double(p.scale[1]), sb = double(p.scale[2]);
     const int w = p.width, h = p.height;
+    std::vector<double> lum(std::size_t(w) * h);
+    for (std::size_t i = 0; i < lum.size(); ++i) {
+        const float* t = &env.texels[4 * i];
+        lum[i] = luminance(double(t[0]) * sr, double(t[1]) * sg, double(t[2]) * sb);
+    }
+    if (p.filter != FC_ENV_FILTER_BILINEAR) return lum;
+    constexpr double k[3] = {0.125, 0.75, 0.125};
+    std::vector<double> across(lum.size());  // filtered in u
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const double* row = &lum[std::size_t(y) * w];
+            across[std::size_t(y) * w + x] = k[0] * row[(x + w - 1) % w] + k[1] * row[x] + k[2] * row[(x + 1) % w];
+        }
+    for (int y = 0; y < h; ++y) {
+        const double* up = &across[std::size_t(std::max(y - 1, 0)) * w];
+        const double* mid = &across[std::size_t(y) * w];
+        const double* down = &across[std::size_t(std::min(y + 1, h - 1)) * w];
+        for (int x = 0; x < w; ++x) lum[std::size_t(y) * w + x] = k[0] * up[x] + k[1] * mid[x] + k[2] * down[x];
+    }
+    return lum;
+}
+
+// Fills `dist` (the layout of EnvironmentMap::distribution) with the cdfs of texel weights
+// max(luminance - subtract, 0) * sin(theta), the luminance as texel_luminance gives it,
+// and returns their sum; `mean` gets the integral of the luminance over the sphere.
+double build_cdfs(const EnvironmentMap& env, double subtract, std::vector<float>& dist, double* mean) {
+    const FcEnvironment& p = env.params;
+    const int w = p.width, h = p.height;
+    const std::vector<double> texel_lum = texel_luminance(env);
     dist.assign(std::size_t(h + 1) + std::size_t(h) * (w + 1), 0.0f);
     float* marginal = dist.data();
     std::vector<double> row_sum(h, 0.0), f(w);
@@ -117,8 +156,7 @@ double build_cdfs(const EnvironmentMap& env, double subtract, std::vector<float>
         float* cond = marginal + (h + 1) + std::size_t(y) * (w + 1);
         double sum = 0.0;
         for (int x = 0; x < w; ++x) {
-            const float* t = &env.texels[4 * (std::size_t(y) * w + x)];
-            const double lum = luminance(double(t[0]) * sr, double(t[1]) * sg, double(t[2]) * sb);
+            const double lum = texel_lum[std::size_t(y) * w + x];
             *mean += lum * omega;
             f[x] = std::max(lum - subtract, 0.0) * sin_theta;
             sum += f[x];

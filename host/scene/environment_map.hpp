@@ -12,7 +12,8 @@
 //                                          cdf[0] = 0, cdf[H] = 1
 //      [H + 1 + y (W + 1), ... + W]        the conditional cdf of row y: W + 1 entries,
 //                                          0 ... 1 (uniform for a row with no energy)
-//    Texel (x, y) weighs f = luminance(texel * scale) * sin(theta of row y's centre); a
+//    Texel (x, y) weighs f = luminance(texel * scale) * sin(theta of row y's centre) (for
+//    the bilinear lookup, the luminance is its mean over the texel's square); a
 //    texel's probability is the product of its two cdf steps. params.total is the
 //    integral of f over the (u, v) square: sum(f) / (W H); 0 for a black map, whose
 //    pdf is then 0 everywhere. A constant environment has a one-float distribution (an
@@ -51,6 +52,11 @@ struct EnvironmentMap {
 // Stores the world-to-map rotation in params.to_map (rows).
 void set_environment_rotation(FcEnvironment& params, const glm::mat3& world_to_map);
 void set_environment_rotation(EnvironmentMap& env, const glm::mat3& world_to_map);
+
+// How the kernels look the map up, FC_ENV_FILTER_NEAREST (what every map starts with)
+// or FC_ENV_FILTER_BILINEAR (the scene file's default); rebuilds the distribution, whose
+// texel weights follow the lookup. Throws facet::Error on another value.
+void set_environment_filter(EnvironmentMap& env, int filter);
 
 // Multiplies the radiance by `scale` (finite, >= 0) and rebuilds the distribution.
 void set_environment_scale(EnvironmentMap& env, const glm::vec3& scale);

@@ -5,9 +5,12 @@
  *
  * - Constant environment (width == 0): radiance `scale` from every direction, sampled
  *   uniformly over the sphere, pdf 1 / (4 pi) (0 when the radiance is black).
- * - Equirectangular map: nearest-texel lookup, so the radiance is piecewise constant
- *   over the texels, exactly like the sampling density. Sampling picks a texel from a
- *   piecewise-constant 2D distribution over luminance x sin(theta) (a marginal cdf over
+ * - Equirectangular map: nearest-texel lookup (the radiance piecewise constant over the
+ *   texels, like the sampling density) or bilinear between texel centres (`filter`;
+ *   the scene file's default: smooth reflections, and a small sun's power spread over a
+ *   wider disc, as Mitsuba 3 and Cycles look maps up). Sampling picks a texel from a
+ *   piecewise-constant 2D distribution over luminance x sin(theta) (for the bilinear
+ *   lookup the luminance integrated over the texel; a marginal cdf over
  *   rows, a conditional cdf per row; pbrt-v3 section 14.2.4, Pharr, Jakob, Humphreys
  *   2016) and a uniform point in it. The density in (u, v) converts to solid angle with
  *   the Jacobian of the equirectangular map, d(omega) = 2 pi^2 sin(theta) du dv:
@@ -65,12 +68,35 @@ inline int2 env_texel(__constant const FcEnvironment* env, float2 uv) {
     return (int2)(x, y);
 }
 
-/* The texel world direction `dir` falls in, and sin(theta) in the map's frame (from
- * the horizontal component: accurate near the poles). */
-inline int2 env_locate(__constant const FcEnvironment* env, float3 dir, float* sin_theta) {
+/* The texel world direction `dir` falls in, its (u, v), and sin(theta) in the map's
+ * frame (from the horizontal component: accurate near the poles). */
+inline int2 env_locate(__constant const FcEnvironment* env, float3 dir, float* sin_theta, float2* uv) {
     float3 m = env_dir_to_map(env, dir);
     *sin_theta = sqrt(m.x * m.x + m.z * m.z);
-    return env_texel(env, env_map_dir_to_uv(m));
+    *uv = env_map_dir_to_uv(m);
+    return env_texel(env, *uv);
+}
+
+/* The map's value at (u, v), which lies in texel t, before `scale`: texel t itself, or
+ * the bilinear interpolation of the four texel centres around (u, v), wrapping around in
+ * u and clamped to the first and last rows in v. */
+inline float3 env_lookup(__constant const FcEnvironment* env, __global const float4* texels, float2 uv, int2 t) {
+    int w = env->width, h = env->height;
+    if (env->filter != FC_ENV_FILTER_BILINEAR) return texels[t.y * w + t.x].xyz;
+    float x = uv.x * (float)w - 0.5f, y = uv.y * (float)h - 0.5f;
+    float x0f = floor(x), y0f = floor(y);
+    float fx = clamp(x - x0f, 0.0f, 1.0f), fy = clamp(y - y0f, 0.0f, 1.0f);
+    int x0 = (int)x0f, y0 = (int)y0f;
+    int x1 = x0 + 1, y1 = y0 + 1;
+    x0 = (x0 < 0) ? x0 + w : x0;
+    x1 = (x1 >= w) ? x1 - w : x1;
+    x0 = clamp(x0, 0, w - 1);
+    x1 = clamp(x1, 0, w - 1);
+    y0 = clamp(y0, 0, h - 1);
+    y1 = clamp(y1, 0, h - 1);
+    float3 top = mix(texels[y0 * w + x0].xyz, texels[y0 * w + x1].xyz, fx);
+    float3 bottom = mix(texels[y1 * w + x0].xyz, texels[y1 * w + x1].xyz, fx);
+    return mix(top, bottom, fy);
 }
 
 /* Radiance arriving from world direction `dir` (unit, pointing away from the scene). */
@@ -78,8 +104,9 @@ inline float3 env_radiance(__constant const FcEnvironment* env, __global const f
     if (!env->enabled) return (float3)(0.0f);
     if (env->width == 0) return load3c(env->scale);
     float sin_theta;
-    int2 t = env_locate(env, dir, &sin_theta);
-    return texels[t.y * env->width + t.x].xyz * load3c(env->scale);
+    float2 uv;
+    int2 t = env_locate(env, dir, &sin_theta, &uv);
+    return env_lookup(env, texels, uv, t) * load3c(env->scale);
 }
 
 /* The solid-angle pdf of texel t at sin(theta) `sin_theta` (0 at the poles). */
@@ -98,7 +125,8 @@ inline float env_pdf(__constant const FcEnvironment* env, __global const float* 
     if (!env->enabled) return 0.0f;
     if (env->width == 0) return is_black(load3c(env->scale)) ? 0.0f : FC_INV_4PI;
     float sin_theta;
-    int2 t = env_locate(env, dir, &sin_theta);
+    float2 uv;
+    int2 t = env_locate(env, dir, &sin_theta, &uv);
     return env_texel_pdf(env, dist, t, sin_theta);
 }
 
@@ -114,9 +142,10 @@ inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global con
         return scale;
     }
     float sin_theta;
-    int2 t = env_locate(env, dir, &sin_theta);
+    float2 uv;
+    int2 t = env_locate(env, dir, &sin_theta, &uv);
     *pdf = env_texel_pdf(env, dist, t, sin_theta);
-    return texels[t.y * env->width + t.x].xyz * scale;
+    return env_lookup(env, texels, uv, t) * scale;
 }
 
 /* The interval i of cdf[0..n] (cdf[0] = 0, cdf[n] = 1, non-decreasing) with
@@ -169,9 +198,10 @@ inline float3 env_sample(__constant const FcEnvironment* env, __global const flo
     *dir = normalize_or(env_map_to_dir(env, env_uv_to_map_dir(uv)), (float3)(0.0f, 1.0f, 0.0f));
     /* radiance and pdf of the direction produced, by the lookup of env_radiance/env_pdf */
     float sin_theta;
-    int2 t = env_locate(env, *dir, &sin_theta);
+    float2 uv_back;
+    int2 t = env_locate(env, *dir, &sin_theta, &uv_back);
     *pdf = env_texel_pdf(env, dist, t, sin_theta);
-    return texels[t.y * w + t.x].xyz * load3c(env->scale);
+    return env_lookup(env, texels, uv_back, t) * load3c(env->scale);
 }
 
 #endif

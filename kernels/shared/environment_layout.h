@@ -8,7 +8,10 @@
  * matrix): +y up (v = 0 the top row), the centre of the image (u = 0.5) looking along +z,
  * u growing to the right of a viewer inside the sphere looking at the centre (toward -x,
  * right-handed), so the map is seen unmirrored. Texel (x, y) covers
- * [x/W, (x+1)/W) x [y/H, (y+1)/H); lookups are nearest-texel. Radiance = texel * scale.
+ * [x/W, (x+1)/W) x [y/H, (y+1)/H), its centre at ((x + 0.5)/W, (y + 0.5)/H). Lookups
+ * (`filter`) are nearest-texel, or bilinear between the four nearest texel centres
+ * (wrapping in u; constant beyond the first and last rows' centres, toward the poles).
+ * Radiance = lookup * scale.
  * Sampling uses a piecewise-constant 2D distribution over luminance x sin(theta):
  * a marginal cdf over rows (H + 1 floats) then a conditional cdf per row (W + 1 floats
  * each) in the distribution buffer (host/scene/environment_map.hpp documents the layout;
@@ -18,11 +21,14 @@
 
 #include "kernels/shared/types.h"
 
+#define FC_ENV_FILTER_NEAREST 0
+#define FC_ENV_FILTER_BILINEAR 1
+
 typedef struct FcEnvironment {
     fc_int width; /* 0: no map (constant radiance, or no environment at all) */
     fc_int height;
-    fc_int enabled; /* 0: no environment (escaped rays see black) */
-    fc_int pad0;
+    fc_int enabled;     /* 0: no environment (escaped rays see black) */
+    fc_int filter;      /* FC_ENV_FILTER_*: how a map is looked up */
     float scale[3];     /* radiance multiplier (the constant radiance when width == 0) */
     float total;        /* integral of luminance x sin(theta) over the map's (u, v) square */
     float to_map[3][4]; /* world-to-map rotation, row-major, 4th column unused */
