@@ -247,7 +247,7 @@ TEST(Environment, RotationAndConvention) {
     for (std::size_t i = 0; i < err.size(); ++i) ASSERT_LT(err[i], 2e-5f) << "direction " << i;
 }
 
-// The bilinear lookup (the scene file's default, docs/environment.md): a texel's value at
+// The bilinear lookup (opt-in, docs/environment.md): a texel's value at
 // its centre, the mean of two neighbours half-way between their centres, the last and
 // first columns mixed across u = 0, the first row alone between its centre and the pole.
 // Texel (x, y) of this map holds 1 + x + 100 y (+ 0.25 per channel), linear in x and y,
@@ -261,7 +261,7 @@ TEST(Environment, BilinearLookup) {
             for (int c = 0; c < 3; ++c) rgb[3 * (std::size_t(y) * w + x) + c] = float(value(x, y) + 0.25 * c);
     std::vector<std::string> warnings;
     EnvironmentMap e = environment_from_pixels(w, h, rgb, glm::vec3(1.0f), glm::mat3(1.0f), "ids", warnings);
-    EXPECT_EQ(e.params.filter, FC_ENV_FILTER_NEAREST) << "maps built in code start with the nearest lookup";
+    EXPECT_EQ(e.params.filter, FC_ENV_FILTER_NEAREST) << "maps start with the nearest lookup";
     set_environment_filter(e, FC_ENV_FILTER_BILINEAR);
     struct Probe {
         double u, v, want;

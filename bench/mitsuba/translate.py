@@ -52,8 +52,10 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 SCENES = ["cornell_box", "spheres_sky", "material_grid", "glass_metal_sky"]
 ALPHA_MIRROR = 1e-4          # facet's FC_ALPHA_MIRROR
 ALPHA_SMOOTH_IN_BLEND = 1e-3  # the rough stand-in for a delta lobe inside a blendbsdf
-ENV_KIND = "bilinear"        # the map Mitsuba gets reproduces facet's bilinear lookup
-                             # exactly (write_sky)
+ENV_UPSAMPLE = 2             # for facet's nearest lookup (the default), Mitsuba, which
+                             # interpolates bilinearly, gets each texel repeated 2 x 2:
+                             # its blur is a quarter texel wide (write_sky); for the
+                             # bilinear lookup, a map it interpolates exactly as facet
 
 # facet's tables (host/scene/material.cpp), copied: the XML must hold numbers.
 CONDUCTORS = {
@@ -423,7 +425,7 @@ def mitsuba_xml(name, scene, materials, shapes):
         if "sky" not in env or "rotate" in env or isinstance(env.get("scale", 1.0), list):
             raise SystemExit(f"{name}: only an unrotated sky with a scalar scale is translated")
         lines += ['    <emitter type="envmap">',
-                  f'        <string name="filename" value="$assets/{sky_file(env["sky"])}"/>',
+                  f'        <string name="filename" value="$assets/{sky_file(env)}"/>',
                   f'        <float name="scale" value="{env.get("scale", 1.0):.9g}"/>',
                   '    </emitter>']
     lines.append('</scene>')
@@ -435,8 +437,13 @@ def sky_args(sky):
             "--azimuth", str(sky.get("azimuth", 40)), "--turbidity", str(sky.get("turbidity", 3))]
 
 
-def sky_file(sky):
-    return "sky_" + "_".join(sky_args(sky)[1::2]) + f"_{ENV_KIND}.exr"
+def env_filter(env):
+    return env.get("filter", "nearest")
+
+
+def sky_file(env):
+    kind = "bilinear" if env_filter(env) == "bilinear" else f"x{ENV_UPSAMPLE}"
+    return "sky_" + "_".join(sky_args(env["sky"])[1::2]) + f"_{kind}.exr"
 
 
 def facet_scene_path(name):
@@ -465,31 +472,42 @@ def translate_scenes():
               "".join(f"\n  {k}: {n}" for k, n in changed.items()))
 
 
-def write_sky(facet, sky, out_dir):
-    """The environment for Mitsuba: facet's map (`facet sky`, W x H) made into the map
-    whose bilinear interpolation, as Mitsuba does it, is facet's bilinear lookup
-    exactly. Mitsuba puts column i at phi = 2 pi (i + 0.5) / W (wrapping around), as
-    facet does: the columns stay. It puts row k of H' rows at theta = pi k / (H' - 1),
-    facet row y's centre is at theta = pi (y + 0.5) / H and facet holds the first and
-    last rows constant toward the poles: with H' = 2 H + 1, row 2 y + 1 is facet's row
-    y, row 2 y between them is their mean (facet's value half-way between the centres,
-    where its interpolation is linear), rows 0 and 2 H are facet's first and last rows.
-    Between two of these rows both interpolate linearly along the same segment."""
+def write_sky(facet, env, out_dir):
+    """The environment for Mitsuba: facet's map (`facet sky`, W x H), made into the map
+    Mitsuba's bilinear interpolation reads as facet reads its own. Mitsuba puts column i
+    at phi = 2 pi (i + 0.5) / W (wrapping around), as facet does, and row k of H' rows at
+    theta = pi k / (H' - 1).
+      * facet's nearest lookup (the default): each texel repeated 2 x 2, the rows so
+        that each of Mitsuba's takes the facet texel its direction falls in; Mitsuba's
+        interpolation still blurs the map by a quarter texel (an exact copy would need
+        a far larger map, which slows Mitsuba down: bench/README.md).
+      * facet's bilinear lookup ("filter": "bilinear"): W x (2H + 1), exact. facet row
+        y's centre is at theta = pi (y + 0.5) / H and facet holds the first and last rows
+        constant toward the poles: row 2 y + 1 is facet's row y, row 2 y between them is
+        their mean (facet's value half-way between the centres, where its interpolation
+        is linear), rows 0 and 2 H are facet's first and last rows; between two of these
+        rows both interpolate linearly along the same segment."""
     import mitsuba as mi
     if mi.variant() is None:
         mi.set_variant("scalar_rgb")
-    path = os.path.join(out_dir, sky_file(sky))
+    path = os.path.join(out_dir, sky_file(env))
     if os.path.exists(path):
         return path
     raw = os.path.join(out_dir, "sky_facet.exr")
-    subprocess.run([facet, "sky", raw] + sky_args(sky), check=True, stdout=subprocess.DEVNULL)
+    subprocess.run([facet, "sky", raw] + sky_args(env["sky"]), check=True, stdout=subprocess.DEVNULL)
     src = np.array(mi.Bitmap(raw).convert(mi.Bitmap.PixelFormat.RGB, mi.Struct.Type.Float32, False),
                    dtype=np.float64)
     h, w = src.shape[:2]
-    big = np.empty((2 * h + 1, w, 3))
-    big[1::2] = src
-    big[2:-1:2] = 0.5 * (src[:-1] + src[1:])
-    big[0], big[-1] = src[0], src[-1]
+    if env_filter(env) == "bilinear":
+        big = np.empty((2 * h + 1, w, 3))
+        big[1::2] = src
+        big[2:-1:2] = 0.5 * (src[:-1] + src[1:])
+        big[0], big[-1] = src[0], src[-1]
+    else:
+        k = ENV_UPSAMPLE
+        rows = np.minimum((np.arange(k * h) / (k * h - 1) * h).astype(np.int64), h - 1)
+        cols = np.minimum(((np.arange(k * w) + 0.5) / (k * w) * w).astype(np.int64), w - 1)
+        big = src[rows][:, cols]
     big = np.ascontiguousarray(big.astype(np.float32))
     mi.Bitmap(big, mi.Bitmap.PixelFormat.RGB).write(path)
     os.remove(raw)
@@ -510,7 +528,7 @@ def write_assets(out_dir, facet):
                 write_ply(p, v, f)
         env = scene.get("environment")
         if env and "sky" in env:
-            write_sky(facet, env["sky"], out_dir)
+            write_sky(facet, env, out_dir)
 
 
 def main(argv):

@@ -107,13 +107,13 @@ void JsonLoader::environment(const Json& v, const std::string& path) {
         set_environment_scale(scene.environment, scale);
     }
     set_environment_rotation(scene.environment, world_to_map);
-    // A map is looked up bilinearly unless the scene asks for the nearest texel.
-    int filter = FC_ENV_FILTER_BILINEAR;
+    // A map is read at the nearest texel unless the scene asks for bilinear lookups.
+    int filter = FC_ENV_FILTER_NEAREST;
     if (v.contains("filter")) {
         const std::string name = r.string(v["filter"], k("filter"));
         if (name == "nearest") filter = FC_ENV_FILTER_NEAREST;
-        else if (name != "bilinear")
-            r.fail(k("filter"), fmt::format("unknown filter '{}' (expected bilinear or nearest)", name));
+        else if (name == "bilinear") filter = FC_ENV_FILTER_BILINEAR;
+        else r.fail(k("filter"), fmt::format("unknown filter '{}' (expected nearest or bilinear)", name));
     }
     if (scene.environment.params.width > 0) set_environment_filter(scene.environment, filter);
     if (v.contains("sampling")) {

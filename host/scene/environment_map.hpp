@@ -53,8 +53,8 @@ struct EnvironmentMap {
 void set_environment_rotation(FcEnvironment& params, const glm::mat3& world_to_map);
 void set_environment_rotation(EnvironmentMap& env, const glm::mat3& world_to_map);
 
-// How the kernels look the map up, FC_ENV_FILTER_NEAREST (what every map starts with)
-// or FC_ENV_FILTER_BILINEAR (the scene file's default); rebuilds the distribution, whose
+// How the kernels look the map up, FC_ENV_FILTER_NEAREST (the default) or
+// FC_ENV_FILTER_BILINEAR (the scene's "filter": "bilinear"); rebuilds the distribution, whose
 // texel weights follow the lookup. Throws facet::Error on another value.
 void set_environment_filter(EnvironmentMap& env, int filter);
 

@@ -5,10 +5,10 @@
  *
  * - Constant environment (width == 0): radiance `scale` from every direction, sampled
  *   uniformly over the sphere, pdf 1 / (4 pi) (0 when the radiance is black).
- * - Equirectangular map: nearest-texel lookup (the radiance piecewise constant over the
- *   texels, like the sampling density) or bilinear between texel centres (`filter`;
- *   the scene file's default: smooth reflections, and a small sun's power spread over a
- *   wider disc, as Mitsuba 3 and Cycles look maps up). Sampling picks a texel from a
+ * - Equirectangular map: nearest-texel lookup (the default: the radiance piecewise
+ *   constant over the texels, like the sampling density) or bilinear between texel
+ *   centres (`filter`, opt-in: smooth reflections, as Mitsuba 3 and Cycles look maps
+ *   up; docs/environment.md says what it costs in noise). Sampling picks a texel from a
  *   piecewise-constant 2D distribution over luminance x sin(theta) (for the bilinear
  *   lookup the luminance integrated over the texel; a marginal cdf over
  *   rows, a conditional cdf per row; pbrt-v3 section 14.2.4, Pharr, Jakob, Humphreys
