@@ -58,6 +58,7 @@ TEST(FuzzRegression, GltfAndPlyFindingsFailCleanly) {
         {"ply/face_of_1000_vertices.ply", nullptr, 998 + 2},  // a fan
         {"ply/binary_truncated_mid_face.ply", "names vertex", 0},
         {"ply/binary_face_count_beyond_file.ply", "names vertex", 0},
+        {"ply/header_line_with_hash.ply", ":15: '#' in a PLY header line", 0},
     };
     for (const Case& c : cases) {
         const std::string path = (std::filesystem::path(FACET_FUZZ_DIR) / "regressions" / c.file).string();
