@@ -1,6 +1,8 @@
 // PLY headers, checked line by line.
 #include "host/readers/ply_header.hpp"
 
+#include <vector>
+
 #include <fmt/format.h>
 
 #include "host/error.hpp"
@@ -16,6 +18,39 @@ bool scalar_type(std::string_view t) {
     return false;
 }
 
+// The lists of an ASCII body checked against the tokens that follow: a list whose count is
+// more than the file holds makes Assimp allocate for it first (minutes for a count of
+// 7777777777777: fuzz_ply). `lists[e]` says which properties of element e are lists.
+void check_ascii_body(const std::string& path, std::string_view body, const std::vector<std::string>& names,
+                      const std::vector<std::uint64_t>& counts, const std::vector<std::vector<bool>>& lists) {
+    std::size_t pos = 0;
+    auto next = [&]() -> std::string_view {
+        while (pos < body.size() && (body[pos] == ' ' || body[pos] == '\t' || body[pos] == '\n' || body[pos] == '\r'))
+            ++pos;
+        const std::size_t start = pos;
+        while (pos < body.size() && !(body[pos] == ' ' || body[pos] == '\t' || body[pos] == '\n' || body[pos] == '\r'))
+            ++pos;
+        return body.substr(start, pos - start);
+    };
+    for (std::size_t e = 0; e < names.size(); ++e)
+        for (std::uint64_t i = 0; i < counts[e]; ++i)
+            for (bool list : lists[e]) {
+                const std::string_view t = next();
+                if (t.empty())
+                    throw Error(fmt::format("{}: the PLY file ends inside element '{}' {} of {} (cut short)", path,
+                                            names[e], i, counts[e]));
+                if (!list) continue;
+                long n = 0;
+                if (!text::parse_int(t, n) || n < 0 || std::uint64_t(n) > (body.size() - pos) / 2 + 1)
+                    throw Error(fmt::format("{}: element '{}' {} has a list of '{}' values, more than the file holds",
+                                            path, names[e], i, t));
+                for (long k = 0; k < n; ++k)
+                    if (next().empty())
+                        throw Error(fmt::format("{}: the PLY file ends inside element '{}' {} of {} (cut short)", path,
+                                                names[e], i, counts[e]));
+            }
+}
+
 }  // namespace
 
 PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
@@ -24,6 +59,9 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
     std::size_t pos = 0;
     std::string element;
     std::uint64_t elements = 0;  // every element's count, summed
+    std::vector<std::string> names;
+    std::vector<std::uint64_t> counts;
+    std::vector<std::vector<bool>> lists;  // per element, whether each property is a list
     bool format = false;
     for (int line = 1;; ++line) {
         const std::size_t end = bytes.find('\n', pos);
@@ -55,6 +93,9 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
                 fail(line, "expected 'element NAME COUNT' with a count in [0, 2^40]");
             element = std::string(f[1]);
             elements += std::uint64_t(count);
+            names.push_back(element);
+            counts.push_back(std::uint64_t(count));
+            lists.emplace_back();
             if (element == "vertex") h.vertices = std::uint64_t(count);
             if (element == "face") h.faces = std::uint64_t(count);
         } else if (f[0] == "property") {
@@ -62,6 +103,7 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
             const bool list = f.size() == 5 && f[1] == "list" && scalar_type(f[2]) && scalar_type(f[3]);
             if (!list && !(f.size() == 3 && scalar_type(f[1])))
                 fail(line, "expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
+            lists.back().push_back(list);
         } else {
             fail(line, fmt::format("unknown PLY header line '{}'", f[0]));
         }
@@ -77,6 +119,7 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
                         "cut short or corrupt)",
                         path, elements, bytes.size() - pos));
     h.body_offset = pos;
+    if (!h.binary) check_ascii_body(path, bytes.substr(pos), names, counts, lists);
     return h;
 }
 
