@@ -31,15 +31,18 @@ PACKAGES := build-essential cmake pkg-config \
 	fiu-utils oclgrind \
 	libopenmpi-dev openmpi-bin
 
-# What `make demo` needs to build and run facet, nothing of the test or bench toolchain.
+# What `make demo` needs to build and run facet, nothing of the test or bench toolchain: every
+# package CMakeLists.txt's REQUIRED find_package and pkg_check_modules look for, and PoCL to run.
+# `make fresh-check` proves the list on a freshly bootstrapped Debian 12 (tests/fresh/).
 DEMO_PACKAGES := build-essential cmake pkg-config \
 	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
-	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev
+	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
+	libtinygltf-dev libassimp-dev zlib1g-dev
 DEMO_BUILD ?= build-demo
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
-.PHONY: all deps deps-demo install-packages configure build demo test bench bench-mitsuba sanitize fuzz-build fuzz format clean
+.PHONY: all deps deps-demo install-packages configure build demo test fresh-check bench bench-mitsuba sanitize fuzz-build fuzz format clean
 
 all: build
 
@@ -73,6 +76,12 @@ demo: deps-demo
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	$(MAKE) fuzz
+
+# `make demo` on a freshly bootstrapped Debian 12 (minbase + git, make, ca-certificates, sudo),
+# from a clone of HEAD, as a user with sudo; needs root. The base is bootstrapped once and kept
+# (tests/fresh/fresh_machine.sh says where). CI runs it after the suite.
+fresh-check:
+	$(SUDO) bash tests/fresh/fresh_machine.sh
 
 # The loaders' libFuzzer harnesses (tests/fuzz), built with clang in their own folder.
 fuzz-build: deps
