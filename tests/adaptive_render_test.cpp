@@ -17,12 +17,13 @@
 #include "host/render/renderer.hpp"
 #include "host/readers/load_scene.hpp"
 #include "tests/cl_test_env.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
 
 Scene cornell(int spp) {
-    Scene scene = load_scene(FACET_SCENES_DIR "/cornell_box.json");
+    Scene scene = load_scene(test::scenes_dir() + "/cornell_box.json");
     scene.settings.width = scene.settings.height = 32;
     scene.settings.spp = spp;
     return scene;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/bvh_test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -122,7 +123,7 @@ TEST(Bvh, MatchesBruteForceOnMesh) {
 TEST(Bvh, MatchesBruteForceOnBunny) {
     for (const Layout& layout : kLayouts) {
         SCOPED_TRACE(layout.name);
-        const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
+        const std::string bunny = test::assets_dir() + "/meshes_common3d/stanford-bunny.obj";
         if (!std::filesystem::exists(bunny)) GTEST_SKIP() << bunny << " not found";
         std::vector<glm::vec3> soup = test::load_obj_soup(bunny);
         ASSERT_GT(soup.size(), 3000u);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/bvh_test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -30,7 +31,7 @@ TEST(BvhWide, EightWideHitsEqualFourWideOnMeshes) {
     std::vector<glm::vec3> soup = test::make_degenerate_soup(1400, unusable);
     expect_same_hits(soup, {}, random_rays(soup, 20000, 1.5f, 13), true);
 
-    const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
+    const std::string bunny = test::assets_dir() + "/meshes_common3d/stanford-bunny.obj";
     if (!std::filesystem::exists(bunny)) GTEST_SKIP() << bunny << " not found";
     std::vector<glm::vec3> mesh = test::load_obj_soup(bunny);
     Rays rays = rays_from_inside(mesh, 50000, 14);
@@ -87,7 +88,7 @@ TEST(BvhWide, QuantisedBoxesContainFloatBoxes) {
     }
     std::size_t unusable = 0;
     soups.push_back(test::make_degenerate_soup(1400, unusable));
-    const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
+    const std::string bunny = test::assets_dir() + "/meshes_common3d/stanford-bunny.obj";
     if (std::filesystem::exists(bunny)) soups.push_back(test::load_obj_soup(bunny));
     for (std::size_t s = 0; s < soups.size(); ++s) {
         SCOPED_TRACE(testing::Message() << "soup " << s);
@@ -144,7 +145,7 @@ TEST(BvhWide, QuantisedHitsEqualFloatOnMeshes) {
     std::vector<glm::vec3> soup = test::make_degenerate_soup(1400, unusable);
     expect_same_hits(soup, {}, random_rays(soup, 20000, 1.5f, 34), true, kFloat8, kQuantised8);
 
-    const std::string bunny = FACET_ASSETS_DIR "/meshes_common3d/stanford-bunny.obj";
+    const std::string bunny = test::assets_dir() + "/meshes_common3d/stanford-bunny.obj";
     if (!std::filesystem::exists(bunny)) GTEST_SKIP() << bunny << " not found";
     std::vector<glm::vec3> mesh = test::load_obj_soup(bunny);
     Rays rays = rays_from_inside(mesh, 100000, 35);

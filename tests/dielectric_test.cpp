@@ -16,6 +16,7 @@
 #include "host/readers/load_scene.hpp"
 #include "host/scene/material.hpp"
 #include "host/readers/mtl_material.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -169,7 +170,7 @@ TEST(Dielectric, MtlGlassAndMirror) {
 // single NaN, infinite or negative sample.
 TEST(Dielectric, McGuireCornellBoxesRenderClean) {
     for (const char* name : {"CornellBox-Sphere.obj", "CornellBox-Water.obj"}) {
-        const std::string file = std::string(FACET_ASSETS_DIR) + "/cornell_mcguire/" + name;
+        const std::string file = test::assets_dir() + "/cornell_mcguire/" + name;
         if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
         Scene scene = load_scene(file);
         scene.settings.width = scene.settings.height = 32;

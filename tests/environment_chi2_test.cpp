@@ -17,6 +17,7 @@
 #include "tests/environment_test_util.hpp"
 #include "host/readers/environment_file.hpp"
 #include "host/scene/sky.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -122,7 +123,7 @@ TEST(EnvironmentChi2, ChiSquareCompensated) {
 }
 
 TEST(EnvironmentChi2, ChiSquareSunrise) {
-    const std::filesystem::path file = std::filesystem::path(FACET_ASSETS_DIR) / "env_blender" / "sunrise.exr";
+    const std::filesystem::path file = std::filesystem::path(test::assets_dir()) / "env_blender" / "sunrise.exr";
     if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " not found";
     std::vector<std::string> warnings;
     EnvironmentMap e = load_environment_map(file.string(), glm::vec3(1.0f), test_rotation(), warnings);

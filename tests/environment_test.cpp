@@ -15,6 +15,7 @@
 #include "host/scene/sky.hpp"
 #include "kernels/shared/render_layout.h"
 #include "tests/temp_dir.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -392,7 +393,7 @@ TEST(Environment, MissingFileNamesIt) {
 
 // Lossy DWAB-compressed maps with large negative texels around the sun.
 TEST(Environment, PmndrsMapsAreSanitised) {
-    const fs::path dir = fs::path(FACET_ASSETS_DIR) / "env_pmndrs";
+    const fs::path dir = fs::path(test::assets_dir()) / "env_pmndrs";
     if (!fs::exists(dir / "sky.exr")) GTEST_SKIP() << dir << " not found";
     for (const char* name : {"sky.exr", "esplanade.exr", "park.exr", "studio.exr"}) {
         std::vector<std::string> warnings;
@@ -406,7 +407,7 @@ TEST(Environment, PmndrsMapsAreSanitised) {
 }
 
 TEST(Environment, RadianceHdrFile) {
-    const fs::path file = fs::path(FACET_ASSETS_DIR) / "env_polyhaven_hdr" / "kloppenheim_06_1k.hdr";
+    const fs::path file = fs::path(test::assets_dir()) / "env_polyhaven_hdr" / "kloppenheim_06_1k.hdr";
     if (!fs::exists(file)) GTEST_SKIP() << file << " not found";
     std::vector<std::string> warnings;
     EnvironmentMap e = load_environment_map(file.string(), glm::vec3(1.0f), glm::mat3(1.0f), warnings);

@@ -14,6 +14,7 @@
 #include "host/readers/load_scene.hpp"
 #include "host/scene/material.hpp"
 #include "kernels/shared/feature_flags.h"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -77,7 +78,7 @@ void expect_same_distribution(const Pair& p, const std::string& what) {
 }
 
 Scene small(const std::string& file) {
-    Scene scene = load_scene(std::string(FACET_SCENES_DIR) + "/" + file);
+    Scene scene = load_scene(test::scenes_dir() + "/" + file);
     scene.settings.width = 24;
     scene.settings.height = 24;
     scene.settings.max_depth = 6;

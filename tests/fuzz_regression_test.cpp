@@ -12,13 +12,14 @@
 #include <gtest/gtest.h>
 
 #include "tests/fuzz/harnesses.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
 
 std::vector<std::filesystem::path> inputs(const char* harness) {
     std::vector<std::filesystem::path> files;
-    const std::filesystem::path dir = std::filesystem::path(FACET_FUZZ_DIR) / "regressions" / harness;
+    const std::filesystem::path dir = std::filesystem::path(test::fuzz_dir()) / "regressions" / harness;
     std::error_code ec;
     for (const auto& e : std::filesystem::directory_iterator(dir, ec))
         if (e.is_regular_file()) files.push_back(e.path());
@@ -62,7 +63,7 @@ TEST(FuzzRegression, GltfAndPlyFindingsFailCleanly) {
         {"ply/ascii_list_count_huge.ply", "the PLY file ends inside element 'vertex' 2 of 5", 0},
     };
     for (const Case& c : cases) {
-        const std::string path = (std::filesystem::path(FACET_FUZZ_DIR) / "regressions" / c.file).string();
+        const std::string path = (std::filesystem::path(test::fuzz_dir()) / "regressions" / c.file).string();
         SCOPED_TRACE(path);
         ASSERT_TRUE(std::filesystem::exists(path));
         try {
@@ -81,7 +82,7 @@ TEST(FuzzRegression, GltfAndPlyFindingsFailCleanly) {
 // The stored seed corpus loads (or fails cleanly) too: the harnesses' conventions hold.
 TEST(FuzzRegression, SeedCorpus) {
     for (const char* h : {"scene_json", "obj_mtl", "env_map", "gltf", "ply"}) {
-        const std::filesystem::path dir = std::filesystem::path(FACET_FUZZ_DIR) / "corpus" / h;
+        const std::filesystem::path dir = std::filesystem::path(test::fuzz_dir()) / "corpus" / h;
         for (const auto& e : std::filesystem::directory_iterator(dir)) {
             SCOPED_TRACE(e.path().string());
             std::ifstream in(e.path(), std::ios::binary);

@@ -24,6 +24,7 @@
 #include "tests/gltf_test_util.hpp"
 #include "tests/cl_test_env.hpp"
 #include "tests/temp_dir.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -437,7 +438,7 @@ TEST(Instancing, FeatureBitOnlyWithInstances) {
     EXPECT_EQ(scene_features(p.flat) & bit, 0u);
     EXPECT_NE(describe_features(scene_features(p.instanced)).find("instances"), std::string::npos);
     for (const char* file : {"cornell_box.json", "material_grid.json", "spheres_sky.json", "glass_metal_sky.json"})
-        EXPECT_EQ(scene_features(load_scene(std::string(FACET_SCENES_DIR) + "/" + file)) & bit, 0u) << file;
+        EXPECT_EQ(scene_features(load_scene(test::scenes_dir() + "/" + file)) & bit, 0u) << file;
 }
 
 }  // namespace

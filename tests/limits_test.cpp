@@ -15,6 +15,7 @@
 #include "host/scene/environment_map.hpp"
 #include "host/readers/load_scene.hpp"
 #include "tests/scene_test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -244,7 +245,7 @@ TEST(Limits, CorruptExrHeaderIsRejectedBeforeReading) {
     std::vector<std::string> warnings;
     expect_error(
         [&] {
-            load_environment_map(std::string(FACET_FUZZ_DIR) + "/regressions/env_map/exr_attribute_size_oom.exr",
+            load_environment_map(test::fuzz_dir() + "/regressions/env_map/exr_attribute_size_oom.exr",
                                  glm::vec3(1.0f), glm::mat3(1.0f), warnings);
         },
         {"exr_attribute_size_oom.exr", "attribute"});

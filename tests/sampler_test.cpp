@@ -18,6 +18,7 @@
 #include "kernels/shared/render_layout.h"
 #include "tests/cl_test_env.hpp"
 #include "tests/test_helpers.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -247,7 +248,7 @@ TEST(Sampler, SobolBeatsIndependentOnSmoothIntegrand) {
 // is a z-test of their difference, per 8x8-pixel block and over the whole image, with
 // variances estimated from each render's own two halves.
 TEST(Sampler, RenderMatchesIndependentInMean) {
-    Scene scene = load_scene(std::string(FACET_SCENES_DIR) + "/cornell_box.json");
+    Scene scene = load_scene(test::scenes_dir() + "/cornell_box.json");
     scene.settings.width = scene.settings.height = 32;
     const std::uint32_t spp = 128;
     Bvh bvh = build_bvh(scene.vertices);

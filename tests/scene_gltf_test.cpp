@@ -12,6 +12,7 @@
 #include "host/readers/load_scene.hpp"
 #include "tests/gltf_test_util.hpp"
 #include "tests/scene_test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -222,7 +223,7 @@ TEST(SceneGltf, CameraChosenByName) {
     EXPECT_NEAR(side.camera.fov_y_degrees, 60.0f, 1e-4f);
     for (const std::string& w : side.warnings) EXPECT_EQ(w.find("every camera but the first"), std::string::npos) << w;
     expect_error([&] { load_scene(file, "top"); }, {"two_cameras.gltf", "--camera top", "'front', 'side'"});
-    expect_error([&] { load_scene(std::string(FACET_SCENES_DIR) + "/cornell_box.json", "front"); },
+    expect_error([&] { load_scene(test::scenes_dir() + "/cornell_box.json", "front"); },
                  {"cornell_box.json", "only glTF files name their cameras"});
 }
 
@@ -341,7 +342,7 @@ TEST(SceneGltf, MalformedFilesNameTheProblem) {
 }
 
 TEST(SceneGltf, DemoSceneLoads) {
-    const Scene s = load_scene(std::string(FACET_SCENES_DIR) + "/gltf_materials.gltf");
+    const Scene s = load_scene(test::scenes_dir() + "/gltf_materials.gltf");
     EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
     EXPECT_EQ(s.triangle_count(), 2u + 3u * 12u + 2u);  // floor, three cubes, the panel
     ASSERT_EQ(s.materials.size(), 5u);

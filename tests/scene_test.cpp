@@ -8,6 +8,7 @@
 #include "host/readers/load_scene.hpp"
 #include "host/scene/scene.hpp"
 #include "tests/scene_test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -16,7 +17,7 @@ using test::centroid;
 using test::face_normal;
 using test::vec;
 
-const std::string kScenes = FACET_SCENES_DIR;
+const std::string kScenes = test::scenes_dir();
 
 TEST(Scene, CornellBoxLoads) {
     const Scene s = load_scene(kScenes + "/cornell_box.json");
