@@ -5,7 +5,7 @@
 #               whole test suite (ctest), then each fuzz harness for FUZZ_SECONDS (30 s) on
 #               the stored corpus
 #   make bench  installs what is missing (PACKAGES, with Embree), builds, runs the bench
-# Other targets: make build | deps | bench | bench-mitsuba | sanitize | fuzz | format | clean (docs/robustness.md)
+# Other targets: make build | deps | install [PREFIX=/usr/local] | package | fresh-check | bench | bench-mitsuba | sanitize | fuzz | format | clean (docs/robustness.md)
 
 BUILD ?= build
 FUZZ_BUILD ?= build-fuzz
@@ -42,7 +42,7 @@ DEMO_BUILD ?= build-demo
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
-.PHONY: all deps deps-demo install-packages configure build demo test fresh-check bench bench-mitsuba sanitize fuzz-build fuzz format clean
+.PHONY: all deps deps-demo install-packages configure build build-demo demo install package test fresh-check bench bench-mitsuba sanitize fuzz-build fuzz format clean
 
 all: build
 
@@ -68,10 +68,23 @@ configure: deps
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-demo: deps-demo
+demo: build-demo
+	$(DEMO_BUILD)/facet render scenes/cornell_box.json --out out/cornell_box.exr
+
+# facet alone (no tests, no bench) in $(DEMO_BUILD), with only DEMO_PACKAGES installed.
+build-demo: deps-demo
 	cmake -S . -B $(DEMO_BUILD) -DCMAKE_BUILD_TYPE=Release -DFACET_BUILD_TESTS=OFF -DFACET_BUILD_BENCH=OFF $(CMAKE_FLAGS)
 	cmake --build $(DEMO_BUILD) -j $(JOBS) --target facet
-	$(DEMO_BUILD)/facet render scenes/cornell_box.json --out out/cornell_box.exr
+
+# Installs facet (its kernels are embedded), the example scenes and the docs under PREFIX.
+PREFIX ?= /usr/local
+install: build-demo
+	$(SUDO) cmake --install $(DEMO_BUILD) --prefix $(PREFIX)
+
+# A Debian package of that build: $(DEMO_BUILD)/facet_<version>_<arch>.deb, its dependencies
+# declared (`sudo apt install ./$(DEMO_BUILD)/facet_*.deb` installs them).
+package: build-demo
+	cd $(DEMO_BUILD) && cpack -G DEB
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -79,9 +92,10 @@ test: build
 
 # `make demo` on a freshly bootstrapped Debian 12 (minbase + git, make, ca-certificates, sudo),
 # from a clone of HEAD, as a user with sudo; needs root. The base is bootstrapped once and kept
-# (tests/fresh/fresh_machine.sh says where). CI runs it after the suite.
+# (tests/fresh/fresh_machine.sh says where). Then the .deb of `make package` is installed with
+# apt on a second fresh system and renders there. CI runs it after the suite.
 fresh-check:
-	$(SUDO) bash tests/fresh/fresh_machine.sh
+	$(SUDO) env FRESH_DEB=1 bash tests/fresh/fresh_machine.sh
 
 # The loaders' libFuzzer harnesses (tests/fuzz), built with clang in their own folder.
 fuzz-build: deps

@@ -9,8 +9,9 @@
 #   2. A copy of that base, a clone of this repository's HEAD in a normal user's home (the user
 #      has sudo, as on a desktop), then `make demo` as that user, timed.
 #   3. The demo's image and PNG must be there and not empty; with FRESH_DEB=1 (`make fresh-check`
-#      passes it), the CPack package built in the same system is installed with apt on a second
-#      copy of the base, and the installed `facet` renders a scene there.
+#      passes it), `make package` builds the .deb in the same system, apt installs it (and the
+#      dependencies it declares) on a second copy of the base, and the installed `facet` renders
+#      the installed Cornell box there as the user.
 #
 # Needs root (chroot, mounts), debootstrap (installed when missing) and the Debian mirror of the
 # host's apt sources. Downloaded packages are kept in FACET_FRESH_APT_CACHE between runs, only to
@@ -124,13 +125,13 @@ if [[ ${FRESH_DEB:-0} == 1 ]]; then
     root2=$work/installed
     mkdir -p "$root2"
     new_root "$root2"
-    cp "$deb" "$root2/tmp/" && cp "$repo/scenes/cornell_box.json" "$root2/home/user/"
+    cp "$deb" "$root2/tmp/"
     echo "fresh-check: installing $(basename "$deb") with apt on a second fresh system"
     chroot "$root2" /bin/bash -c "apt-get update -q >/dev/null && DEBIAN_FRONTEND=noninteractive \
         apt-get install -y -q /tmp/$(basename "$deb")" 2>&1 | tail -3 | sed 's/^/  | /'
     [[ ${PIPESTATUS[0]} -eq 0 ]] || { echo "fresh-check: FAILED: apt-get install of the package" >&2; exit 1; }
-    chroot "$root2" /bin/su - user -c "facet --version && facet render cornell_box.json --spp 4 --width 64 \
-        --height 64 --out out/cb.exr" 2>&1 | sed 's/^/  | /'
+    chroot "$root2" /bin/su - user -c "facet --version && facet render /usr/share/facet/scenes/cornell_box.json \
+        --spp 4 --width 64 --height 64 --out out/cb.exr" 2>&1 | sed 's/^/  | /'
     [[ ${PIPESTATUS[0]} -eq 0 && -s $root2/home/user/out/cb.exr ]] ||
         { echo "fresh-check: FAILED: the installed facet did not render" >&2; exit 1; }
     echo "fresh-check: the installed package rendered out/cb.exr"
