@@ -83,7 +83,10 @@ install: build-demo
 
 # A Debian package of that build: $(DEMO_BUILD)/facet_<version>_<arch>.deb, its dependencies
 # declared (`sudo apt install ./$(DEMO_BUILD)/facet_*.deb` installs them).
+# CPack reads the libraries off the binary with dpkg-shlibdeps (dpkg-dev) and file.
+PACKAGE_TOOLS := dpkg-dev file
 package: build-demo
+	@$(MAKE) --no-print-directory install-packages WANT="$(PACKAGE_TOOLS)"
 	cd $(DEMO_BUILD) && cpack -G DEB
 
 test: build
