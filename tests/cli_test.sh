@@ -29,7 +29,7 @@ expect render-help 0 "--spp" -- "$FACET" render --help
 expect devices 0 "\[0\]" -- "$FACET" devices
 expect render-cornell 0 "wrote" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --out "$tmp/cb.exr"
 [ -s "$tmp/cb.exr" ] && [ -s "$tmp/cb.png" ] && ok "exr-and-png-written" || bad "exr-and-png-written"
-# Outputs go through temporaries named ".<stem>.tmp-<pid>-<n><ext>" (film/safe_write.cpp): none may be left.
+# Outputs go through temporaries named ".<stem>.tmp-<pid>-<n><ext>" (util/safe_write.cpp): none may be left.
 if ls -A "$tmp" | grep -q '\.tmp-'; then bad "no-temporary-left"; else ok "no-temporary-left"; fi
 expect info 0 "triangles" -- "$FACET" info "$SCENES/cornell_box.json"
 

@@ -10,7 +10,7 @@
 
 #include "tests/environment_test_util.hpp"
 #include "host/error.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 #include "host/readers/environment_file.hpp"
 #include "host/scene/sky.hpp"
 #include "kernels/shared/render_layout.h"

@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "host/bvh/bvh.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 #include "host/render/renderer.hpp"
 #include "host/readers/load_scene.hpp"
 #include "tests/cl_test_env.hpp"

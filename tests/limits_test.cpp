@@ -10,7 +10,7 @@
 
 #include "host/cl/runtime.hpp"
 #include "tests/cl_test_env.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 #include "host/readers/environment_file.hpp"
 #include "host/scene/environment_map.hpp"
 #include "host/readers/load_scene.hpp"
@@ -245,8 +245,8 @@ TEST(Limits, CorruptExrHeaderIsRejectedBeforeReading) {
     std::vector<std::string> warnings;
     expect_error(
         [&] {
-            load_environment_map(test::fuzz_dir() + "/regressions/env_map/exr_attribute_size_oom.exr",
-                                 glm::vec3(1.0f), glm::mat3(1.0f), warnings);
+            load_environment_map(test::fuzz_dir() + "/regressions/env_map/exr_attribute_size_oom.exr", glm::vec3(1.0f),
+                                 glm::mat3(1.0f), warnings);
         },
         {"exr_attribute_size_oom.exr", "attribute"});
     // A valid EXR still reads.

@@ -10,7 +10,7 @@
 #include "tests/cl_test_env.hpp"
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/report/report.hpp"

@@ -1,4 +1,4 @@
-// film/safe_write.hpp: the old file or the complete new one, never a torn one; no
+// util/safe_write.hpp: the old file or the complete new one, never a torn one; no
 // temporary left; messages with the real reason and the target's name.
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "host/error.hpp"
-#include "host/film/image_io.hpp"
-#include "host/film/safe_write.hpp"
+#include "host/image/image_io.hpp"
+#include "host/util/safe_write.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/test_helpers.hpp"
 

@@ -11,7 +11,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "host/error.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 #include "host/readers/load_scene.hpp"
 #include "host/readers/obj_reader.hpp"
 #include "host/render/aov.hpp"

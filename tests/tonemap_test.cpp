@@ -1,4 +1,4 @@
-// film/tonemap.hpp: the clip is the sRGB transfer function below 1; the filmic curve keeps
+// image/tonemap.hpp: the clip is the sRGB transfer function below 1; the filmic curve keeps
 // mid grey and its contrast, is monotone, and rolls highlights off below 1 instead of
 // clipping them.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "host/film/tonemap.hpp"
+#include "host/image/tonemap.hpp"
 
 namespace facet {
 namespace {

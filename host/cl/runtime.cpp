@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 #include "host/error.hpp"
-#include "host/film/safe_write.hpp"
+#include "host/util/safe_write.hpp"
 #include "host/util/strings.hpp"
 
 namespace facet {

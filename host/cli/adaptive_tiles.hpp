@@ -12,7 +12,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/cli/stop_signals.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 #include "host/render/adaptive_bands.hpp"
 #include "host/render/device_group.hpp"
 #include "host/report/report.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "host/film/tonemap.hpp"
+#include "host/image/tonemap.hpp"
 
 namespace facet {
 

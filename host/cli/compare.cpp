@@ -7,7 +7,7 @@
 #include "host/cli/commands.hpp"
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 
 namespace facet {
 

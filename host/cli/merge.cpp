@@ -9,7 +9,7 @@
 #include "host/film/error_metrics.hpp"
 #include "host/film/film_halves.hpp"
 #include "host/film/film_merge.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 
 namespace facet {
 

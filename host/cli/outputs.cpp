@@ -9,8 +9,8 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
-#include "host/film/image_io.hpp"
-#include "host/film/safe_write.hpp"
+#include "host/image/image_io.hpp"
+#include "host/util/safe_write.hpp"
 
 namespace facet {
 namespace {

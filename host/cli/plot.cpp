@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "host/cli/commands.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 #include "host/report/report.hpp"
 
 namespace facet {

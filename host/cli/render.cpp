@@ -26,7 +26,7 @@
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/film/film_state.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 #include "host/film/sample_ranges.hpp"
 #include "host/render/aov.hpp"
 #include "host/render/features.hpp"

@@ -10,7 +10,7 @@
 
 #include "host/error.hpp"
 #include "host/scene/pixel_filter.hpp"
-#include "host/film/safe_write.hpp"
+#include "host/util/safe_write.hpp"
 #include "host/scene/scene.hpp"
 #include "host/scene/device_scene.hpp"
 

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 
 namespace facet {
 

@@ -1,5 +1,5 @@
 // Environment maps read from image files (EXR, Radiance .hdr, anything
-// host/film/image_io.hpp reads through OpenImageIO).
+// host/image/image_io.hpp reads through OpenImageIO).
 #pragma once
 
 #include <string>

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "host/error.hpp"
-#include "host/film/safe_write.hpp"
+#include "host/util/safe_write.hpp"
 
 namespace facet {
 namespace {

@@ -66,7 +66,7 @@ void write_error_plot_svg(const std::string& path, const std::vector<PassRecord>
 // naming the file and line on malformed input.
 std::vector<PassRecord> read_report_csv(const std::string& path);
 
-// Writes `text` to `path` through write_file_safely (film/safe_write.hpp): the old file
+// Writes `text` to `path` through write_file_safely (util/safe_write.hpp): the old file
 // or the complete new one.
 void write_text_atomically(const std::string& path, const std::string& text);
 

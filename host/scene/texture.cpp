@@ -9,7 +9,7 @@
 #include <glm/vec4.hpp>
 
 #include "host/error.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 #include "host/scene/scene.hpp"
 #include "host/scene/texture_tangents.hpp"
 

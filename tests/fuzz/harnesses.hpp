@@ -17,7 +17,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "host/error.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 #include "tests/fuzz/fuzz_util.hpp"
 #include "host/readers/environment_file.hpp"
 #include "host/scene/environment_map.hpp"

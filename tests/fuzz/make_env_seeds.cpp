@@ -12,7 +12,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "host/error.hpp"
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 
 namespace {
 

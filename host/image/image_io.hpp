@@ -1,5 +1,5 @@
 // Image files through OpenImageIO: linear EXR with metadata, and a tone-mapped sRGB
-// PNG for viewing. Writes go through write_file_safely (film/safe_write.hpp): the old
+// PNG for viewing. Writes go through write_file_safely (util/safe_write.hpp): the old
 // file or the complete, read-back new one, never a torn one.
 #pragma once
 
@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "host/film/tonemap.hpp"
+#include "host/image/tonemap.hpp"
 
 namespace facet {
 
@@ -32,7 +32,7 @@ struct ImageLayer {
 void write_exr(const std::string& path, int width, int height, const std::vector<float>& rgb,
                const ImageMetadata& meta = {}, const std::vector<ImageLayer>& layers = {});
 
-// Writes an 8-bit sRGB PNG: radiance times 2^exposure, tone-mapped (film/tonemap.hpp:
+// Writes an 8-bit sRGB PNG: radiance times 2^exposure, tone-mapped (image/tonemap.hpp:
 // clamped to [0, 1] and sRGB-encoded, or the filmic curve).
 void write_png(const std::string& path, int width, int height, const std::vector<float>& rgb, float exposure = 0.0f,
                ToneMap tonemap = ToneMap::Clip);

@@ -1,4 +1,4 @@
-#include "host/film/image_io.hpp"
+#include "host/image/image_io.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -15,7 +15,7 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
-#include "host/film/safe_write.hpp"
+#include "host/util/safe_write.hpp"
 #include "host/util/input_file.hpp"
 #include "host/util/strings.hpp"
 

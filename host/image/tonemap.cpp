@@ -1,4 +1,4 @@
-#include "host/film/tonemap.hpp"
+#include "host/image/tonemap.hpp"
 
 #include <algorithm>
 #include <cmath>

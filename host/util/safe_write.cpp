@@ -1,4 +1,4 @@
-#include "host/film/safe_write.hpp"
+#include "host/util/safe_write.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
