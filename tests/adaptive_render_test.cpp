@@ -1,4 +1,4 @@
-// Per-tile adaptive sampling (cli/adaptive_tiles.hpp, render/adaptive_bands.hpp) on the
+// Per-tile adaptive sampling (render/session_tiles.hpp, render/adaptive_bands.hpp) on the
 // Cornell box: bands of rows get different sample counts, each pixel is the mean of its
 // own samples, so the image must be unbiased: its mean, and each band's, agree with a
 // uniform render of many more samples within their noise (z-tests, the variance from
@@ -11,10 +11,10 @@
 #include <cstdlib>
 
 #include "host/bvh/bvh.hpp"
-#include "host/cli/adaptive_tiles.hpp"
 #include "host/render/device_group.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
+#include "host/render/session_tiles.hpp"
 #include "host/readers/load_scene.hpp"
 #include "tests/cl_test_env.hpp"
 #include "tests/test_paths.hpp"
@@ -63,14 +63,10 @@ TEST(AdaptiveRender, TilesAreUnbiasedAgainstAUniformRender) {
     for (int i = 0; i < 2; ++i) two.push_back(ClContext::create(device ? device : ""));
     DeviceGroup r(std::move(two), scene, bvh);
     render_fixed(r, 16);
-    RenderOptions opt;
-    opt.noise_threshold = 0.02;
-    opt.adaptive = RenderOptions::Adaptive::Tiles;
-    opt.quiet = true;
-    const StopSignals signals;
-    std::vector<PassRecord> passes;
-    const TileRun run = render_adaptive_tiles(opt, scene, r, std::nullopt, testing::TempDir() + "adaptive.csv",
-                                              std::chrono::steady_clock::now(), signals, passes);
+    TileOptions opt;
+    opt.threshold = 0.02;
+    opt.max_spp = 256;
+    const TileRun run = render_tiles(r, opt);
     ASSERT_GT(run.rounds, 0);
     const auto [lo, hi] = std::minmax_element(run.layout.spp.begin(), run.layout.spp.end());
     EXPECT_LT(*lo, *hi) << "the bands should end with different sample counts";

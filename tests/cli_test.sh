@@ -186,5 +186,20 @@ expect adaptive-tiles-needs-threshold 2 "--adaptive.*--noise-threshold" -- "$FAC
 expect adaptive-tiles-no-film 1 "--adaptive tiles: .*film" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" \
     --noise-threshold 0.1 --adaptive tiles --film "$tmp/t.film" --out "$tmp/t.exr"
 
+# --time alone is the stop (README "Using facet"): 2 s of rendering, past the scene's 64 spp
+# (24x24 takes far less than 2 s at 64 spp), ending within 2 s plus the kernel build plus
+# slack for a loaded 2-core machine. With --spp too, whichever ends first.
+t0=$(date +%s.%N)
+expect time-alone 0 "wrote" -- "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --time 2 --quiet \
+    --out "$tmp/timed.exr"
+t1=$(date +%s.%N)
+IFS=, read -r _ spp _ render_s compile_s _ < <(tail -n 1 "$tmp/timed.csv")
+if awk -v a="$t0" -v b="$t1" -v s="$spp" -v r="$render_s" -v c="$compile_s" \
+    'BEGIN { w = b - a; exit !(s > 64 && r >= 2 && w >= 2 && w < 2 + c + 10) }'; then
+    ok "time-alone-runs-about-2s ($spp spp, ${render_s}s rendering)"
+else bad "time-alone-runs-about-2s ($spp spp, ${render_s}s rendering, $(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')s wall)"; fi
+expect time-and-spp-first-ends 0 "wrote .*\(3 spp" -- "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 \
+    --spp 3 --time 60 --out "$tmp/timed3.exr"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

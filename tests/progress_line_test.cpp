@@ -45,5 +45,11 @@ TEST(ProgressLine, TimeLimitSetsThePercentage) {
     EXPECT_EQ(progress_line(record(), 1u << 24, 30.0, 1.0, 80).rfind(" 70%", 0), 0u);
 }
 
+TEST(ProgressLine, NoSppTargetShowsTheSamplesAndTheTimesShare) {
+    // --time alone: no spp target, the percentage is the time's (70 s of 100 s).
+    const std::string line = progress_line(record(), 0, 30.0, 1.0, 200);
+    EXPECT_EQ(line.rfind(" 70%  1536 spp  30.0s left", 0), 0u) << line;
+}
+
 }  // namespace
 }  // namespace facet

@@ -244,6 +244,54 @@ TEST(Progressive, TimeLimitEndsTheRender) {
     EXPECT_GT(r.spp, 1u);
 }
 
+// A first launch slower than the rest (a driver compiling the kernel on first use) must
+// not make a first pass that fits the time limit look longer than it: the warning is
+// given only once the pass has, as measured, taken longer than the limit.
+class SlowFirstLaunch : public FakeTarget {
+public:
+    using FakeTarget::FakeTarget;
+    void launch(std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count) override {
+        if (launches == 0) std::this_thread::sleep_for(std::chrono::milliseconds(60));
+        FakeTarget::launch(count, row_begin, row_count);
+    }
+};
+
+TEST(Progressive, FirstPassWithinTheTimeLimitIsNotWarned) {
+    // The probe launch takes 60 ms; the whole pass ~60 ms; the limit 0.5 s. Extrapolated
+    // from the probe band (16 of 256 rows) it would look like ~1 s.
+    SlowFirstLaunch t(256, 256, 0.0);
+    ProgressiveOptions opt;
+    opt.target_spp = 1;
+    opt.time_limit_s = 0.5;
+    int warned = 0;
+    opt.on_first_pass_estimate = [&](double) { ++warned; };
+    ProgressiveResult r = render_progressive(t, opt);
+    EXPECT_EQ(r.spp, 1u);
+    EXPECT_LT(r.render_s, 0.5) << "a loaded machine: the premise failed";
+    EXPECT_EQ(warned, 0);
+}
+
+TEST(Progressive, FirstPassLongerThanTheTimeLimitIsWarnedDuringIt) {
+    // 256x256 at 1 us a sample: one sample per pixel is 65 ms, the limit 20 ms.
+    FakeTarget t(256, 256, 1.0);
+    ProgressiveOptions opt;
+    opt.target_spp = 100;
+    opt.time_limit_s = 0.02;
+    opt.rules.max_launch_s = 0.005;
+    int warned = 0, passes_when_warned = -1;
+    double estimate = 0.0;
+    opt.on_first_pass_estimate = [&](double s) {
+        ++warned;
+        passes_when_warned = t.passes;
+        estimate = s;
+    };
+    ProgressiveResult r = render_progressive(t, opt);
+    EXPECT_EQ(r.spp, 1u) << "the time limit ends the render after the first pass";
+    EXPECT_EQ(warned, 1);
+    EXPECT_EQ(passes_when_warned, 0) << "told during the pass, not after it";
+    EXPECT_GT(estimate, 0.02);
+}
+
 // On PoCL: a pass in launches of one row gives the same image, bit for bit, as one launch.
 TEST(Progressive, DriverBandsMatchOneLaunchOnTheDevice) {
     Scene scene;

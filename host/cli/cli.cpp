@@ -120,10 +120,14 @@ int run_cli(int argc, char** argv) {
     CLI::App* render = app.add_subcommand("render", "Render a scene progressively to EXR + PNG");
     render->add_option("scene", opt.scene, "Scene file (.json), mesh (.obj, .ply, .ply.gz) or glTF 2.0 (.gltf, .glb)")
         ->required();
-    render->add_option("--spp", opt.spp, "Samples per pixel (default: the scene's)")->check(in_range(limits::kSpp));
+    render
+        ->add_option("--spp", opt.spp,
+                     "Samples per pixel (default: the scene's, 64 unless it says; none with --time alone)")
+        ->check(in_range(limits::kSpp));
     render
         ->add_option("--time", opt.time_limit,
-                     "Stop after this many seconds of rendering (whichever of --spp and --time ends first)")
+                     "Seconds of rendering: alone, the render stops at this time (the scene's spp does not stop "
+                     "it); with --spp, whichever ends first")
         ->check(kFinite & kSeconds);
     render
         ->add_option("--noise-threshold", opt.noise_threshold,

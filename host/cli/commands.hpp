@@ -27,7 +27,7 @@ struct RenderOptions {
     std::optional<float> fov, aperture, focus_distance;
     std::optional<double> time_limit;
     std::optional<double> noise_threshold;  // stop once the half-buffer relMSE estimate is this low
-    // --adaptive: the whole image at once, or per band of rows (cli/adaptive_tiles.hpp)
+    // --adaptive: the whole image at once, or per band of rows (render/session_tiles.hpp)
     enum class Adaptive { Global, Tiles } adaptive = Adaptive::Global;
     bool adaptive_tiles() const { return adaptive == Adaptive::Tiles; }
     std::string device;              // one selector or a list (ClContext::create_many)

@@ -40,7 +40,7 @@ std::string progress_line(const PassRecord& p, std::uint64_t target, double rema
     if (p.reference) err = fmt::format("rmse {:.3e}", p.reference->rmse);
     else if (std::isfinite(p.estimate.rmse)) err = fmt::format("rmse~{:.3e} (est.)", p.estimate.rmse);
     const std::string fields[] = {fmt::format("{:3.0f}%", 100.0 * done),
-                                  fmt::format("{}/{} spp", p.spp, target),
+                                  target > 0 ? fmt::format("{}/{} spp", p.spp, target) : fmt::format("{} spp", p.spp),
                                   fmt::format("{} left", fmt_seconds(remaining)),
                                   err,
                                   fmt::format("{} elapsed", fmt_seconds(p.wall_s)),

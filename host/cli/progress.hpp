@@ -18,7 +18,8 @@ std::string fmt_seconds(double s);
 int terminal_columns();
 
 // The progress line within `columns`: percentage done, spp, time left, the error, time
-// elapsed, speed and pass number, in that order of importance, each kept if it still fits;
+// elapsed, speed and pass number, in that order of importance, each kept if it still fits
+// (`target` 0: no spp target, only --time; the percentage is then the time's);
 // `pass_first` (a log, not a terminal): "pass N" leads the line, as scripts expect.
 std::string progress_line(const PassRecord& p, std::uint64_t target, double remaining, double msamples,
                           std::size_t columns, bool pass_first = false);

@@ -68,7 +68,7 @@ public:
     void end_pass(std::uint32_t count, double seconds) override;
     void reset() override;
 
-    // Adaptive sampling (cli/adaptive_tiles.hpp): samples [first, first + count) of a band
+    // Adaptive sampling (render/session_tiles.hpp): samples [first, first + count) of a band
     // of rows, dealt out to this process's devices; end_pass(0, seconds) then ends the
     // round. One process only (facet::Error with several MPI ranks).
     void launch_band(std::uint64_t first, std::uint32_t count, std::uint32_t row_begin, std::uint32_t row_count);

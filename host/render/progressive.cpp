@@ -49,10 +49,11 @@ ProgressiveResult render_progressive(PassTarget& target, const ProgressiveOption
             result.longest_launch_s = std::max(result.longest_launch_s, launch_s);
             row += rows;
             // The first pass's length: measured rows as measured, the rest at their mean.
-            if (s.done_spp == 0 && row < height && opt.on_first_pass_estimate && !first_pass_estimated) {
+            if (s.done_spp == 0 && row < height && opt.time_limit_s && opt.on_first_pass_estimate &&
+                !first_pass_estimated) {
                 const double done_s = since(pass_start);
-                const double estimate = done_s + done_s / double(row) * double(height - row);
-                if (!opt.time_limit_s || estimate > *opt.time_limit_s) {
+                if (done_s > *opt.time_limit_s) {
+                    const double estimate = done_s + done_s / double(row) * double(height - row);
                     opt.on_first_pass_estimate(estimate);
                     first_pass_estimated = true;
                 }

@@ -1,8 +1,8 @@
 // The progressive driver: passes of samples on a PassTarget until the target spp, the
 // time limit or a stop request, each pass cut into launches of bounded length, with a
 // callback after every pass (the CLI's report row, snapshot and progress line). Pass
-// sizes and rows per launch come from render/schedule.hpp. The one place that runs
-// passes: the CLI, the bench and the tests all render through it.
+// sizes and rows per launch come from render/schedule.hpp. The render session
+// (render/session.hpp), the bench and the tests render through it.
 #pragma once
 
 #include <cstdint>
@@ -35,8 +35,10 @@ struct ProgressiveOptions {
     // the first pass it drops that pass at once (there is nothing finished to keep).
     std::function<bool()> stop;
     std::function<void(const PassDone&)> on_pass;
-    // At most once, during the first pass: its estimated seconds, once they exceed the
-    // time limit (without one: after the first launch).
+    // At most once, during the first pass, once the seconds it has taken so far exceed the
+    // time limit with rows still to render (measured, so one sample per pixel does take
+    // longer than the limit): the pass's estimated seconds, the rows rendered so far as
+    // measured and the rest at their mean.
     std::function<void(double first_pass_s)> on_first_pass_estimate;
 };
 
