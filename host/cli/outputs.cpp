@@ -31,13 +31,13 @@ fs::path key(const std::string& path) {
     return ec ? abs.lexically_normal() : canon;
 }
 
+}  // namespace
+
 bool same_file(const std::string& a, const std::string& b) {
     if (key(a) == key(b)) return true;
     std::error_code ec;
     return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec) && !ec;  // hard links
 }
-
-}  // namespace
 
 OutputPlan plan_outputs(const RenderOptions& opt) {
     OutputPlan plan;

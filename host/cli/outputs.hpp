@@ -31,6 +31,10 @@ OutputPlan plan_outputs(const RenderOptions& opt);
 // output that cannot be written (safe_write.hpp: check_output_path).
 void check_outputs(const OutputPlan& plan, const RenderOptions& opt);
 
+// Whether two paths name one file: the same absolute, normalised spelling with symbolic
+// links of existing parts resolved, or one existing file (hard links).
+bool same_file(const std::string& a, const std::string& b);
+
 // Where an output that could not be written goes instead: the temporary folder
 // ($TMPDIR, else /tmp), a name unique to this process ("facet-rescue-<pid>-<name>").
 std::string rescue_path(const std::string& path);
