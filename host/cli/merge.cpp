@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/output_locks.hpp"
 #include "host/cli/outputs.hpp"
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
@@ -43,6 +44,9 @@ void check_merge_outputs(const MergeOptions& opt) {
 
 int run_merge(const MergeOptions& opt) {
     check_merge_outputs(opt);
+    OutputLocks locks;  // no other facet writes them meanwhile (output_locks.hpp)
+    locks.lock(opt.out, "--out");
+    if (!opt.film.empty()) locks.lock(opt.film, "--film");
     std::vector<FilmState> films;
     for (const std::string& path : opt.films) films.push_back(read_film(path));
     const FilmState merged = merge_films(films, opt.films);

@@ -17,12 +17,13 @@ struct OutputPlan {
     std::string report;           // CSV
     std::string report_json;      // summary beside the CSV
     std::string report_svg;       // plot beside the CSV
-    std::string film;             // --film, else beside --out
+    std::string film;             // --film, else beside --out, never over an older film
     bool film_requested = false;  // --film given: written at every end, not only on interrupt or failure
 };
 
 // The outputs of a render with these options (defaults: out/<scene>.exr and the rest
-// beside it).
+// beside it). Without --film the film goes beside --out as <stem>.film, or, when a file
+// of that name exists and is not the film resumed, the first free <stem>-N.film.
 OutputPlan plan_outputs(const RenderOptions& opt);
 
 // Throws facet::Error naming the option, the path and the problem: an image format that

@@ -20,6 +20,7 @@
 #include "host/cli/adaptive_tiles.hpp"
 #include "host/cli/commands.hpp"
 #include "host/cli/console.hpp"
+#include "host/cli/output_locks.hpp"
 #include "host/cli/outputs.hpp"
 #include "host/cli/progress.hpp"
 #include "host/cli/stop_signals.hpp"
@@ -336,6 +337,7 @@ int run_render(const RenderOptions& opt) {
     const std::string& out = plan.image;
     const std::string& report = plan.report;
     check_outputs(plan, opt);
+    const OutputLocks locks = Ranks::world().leads() ? lock_outputs(plan) : OutputLocks();  // held to the end
     const std::uint64_t scene_hash = film_scene_hash(scene);
     std::optional<FilmState> resumed;
     if (!opt.resume.empty()) {
@@ -479,7 +481,7 @@ int run_render(const RenderOptions& opt) {
     fit_convergence(passes, summary);
     write_report_csv(report, passes);
     write_report_json(plan.report_json, summary, passes);
-    write_error_plot_svg(plan.report_svg, passes, scene.source_path);
+    write_report_svg(plan.report_svg, passes, scene.source_path);
     if (!written) return kExitError;
 
     if (interrupted) say(stderr, "facet: interrupted; wrote the {} spp finished so far\n", st.samples_per_pixel);
