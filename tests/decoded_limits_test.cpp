@@ -30,8 +30,10 @@ void put_chunk(std::string& png, const char* type, const std::string& data) {
     put_u32(png, std::uint32_t(crc32(0, reinterpret_cast<const Bytef*>(typed.data()), uInt(typed.size()))));
 }
 
-// A valid 8-bit grey PNG of side x side black pixels (PNG 1.2: IHDR, one IDAT, IEND).
-std::string black_png(std::uint32_t side) {
+// A valid 8-bit grey PNG of side x side black pixels (PNG 1.2: IHDR, one IDAT, IEND),
+// with `padding` bytes of an ancillary chunk (readers skip it): a 16384^2 image then
+// weighs what a real one of a few colours would, past the file-size plausibility check.
+std::string black_png(std::uint32_t side, std::size_t padding = 0) {
     std::string ihdr;
     put_u32(ihdr, side);
     put_u32(ihdr, side);
@@ -54,6 +56,7 @@ std::string black_png(std::uint32_t side) {
     deflateEnd(&z);
     std::string png("\x89PNG\r\n\x1a\n", 8);
     put_chunk(png, "IHDR", ihdr);
+    if (padding > 0) put_chunk(png, "faCt", std::string(padding, 'x'));
     put_chunk(png, "IDAT", idat);
     put_chunk(png, "IEND", "");
     return png;
@@ -63,7 +66,7 @@ TEST(DecodedLimits, HugePngIsRefusedFromItsHeader) {
     test::TempDir d;
     const std::string small = d.write("small.png", black_png(64));
     EXPECT_EQ(read_image(small).width, 64);
-    const std::string huge = d.write("huge.png", black_png(16384));
+    const std::string huge = d.write("huge.png", black_png(16384, 520000));  // 783 KB
     const std::string msg = error_of([&] { read_image(huge); });
     EXPECT_NE(
         msg.find("huge.png: the image claims 16384x16384 pixels, 3072 MiB decoded as float RGB: at most 2048 MiB"),

@@ -153,16 +153,16 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
                                 spec.width, spec.height, kMaxImageSide));
     const int channels = std::min(spec.nchannels, 3);  // R, G, B (or grey); alpha and the rest unused
     const std::uint64_t decoded = std::uint64_t(spec.width) * std::uint64_t(spec.height) * 3u * sizeof(float);
-    if (decoded > kMaxDecodedImageBytes)
-        throw Error(
-            fmt::format("{}: the image claims {}x{} pixels, {} MiB decoded as float RGB: at most {} MiB "
-                        "(about 13000x13000 pixels) are read",
-                        path, spec.width, spec.height, decoded >> 20, kMaxDecodedImageBytes >> 20));
     if (decoded > kSmallImageBytes && decoded / kMaxDecodedPerFileByte > file_size)
         throw Error(
             fmt::format("{}: the image claims {}x{} pixels ({} MiB decoded) but the file has only {} bytes: "
                         "it is truncated or corrupt",
                         path, spec.width, spec.height, decoded >> 20, file_size));
+    if (decoded > kMaxDecodedImageBytes)
+        throw Error(
+            fmt::format("{}: the image claims {}x{} pixels, {} MiB decoded as float RGB: at most {} MiB "
+                        "(about 13000x13000 pixels) are read",
+                        path, spec.width, spec.height, decoded >> 20, kMaxDecodedImageBytes >> 20));
     std::vector<float> all(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
     if (!in->read_image(0, 0, 0, channels, TypeDesc::FLOAT, all.data()))
         throw Error(fmt::format("{}: cannot read pixels: {}", path, in->geterror()));
