@@ -106,6 +106,14 @@ void OutputLocks::lock(const std::string& path, const std::string& label) {
 
 OutputLocks lock_outputs(const OutputPlan& plan) {
     OutputLocks locks;
+    // Under an MPI launcher only rank 0 writes: the others lock nothing. Read from the
+    // launcher's environment, as Ranks::where() does, so that MPI is not started here (a
+    // rank that fails before the job starts must exit at once for mpirun to end the job).
+    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK"})
+        if (const char* rank = std::getenv(name)) {
+            if (std::string(rank) != "0") return locks;
+            break;
+        }
     locks.lock(plan.image, "--out");
     locks.lock(plan.report, "--report");
     locks.lock(plan.film, plan.film_requested ? "--film" : "the film beside --out");

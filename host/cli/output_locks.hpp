@@ -48,7 +48,7 @@ std::string lock_path_for(const std::string& path);
 
 // Locks the files of a render: the film (--film or the one beside --out; a film resumed
 // in place is that film), --out and --report (the PNG, JSON and SVG beside them follow
-// their names).
+// their names). An MPI rank other than 0 (by the launcher's environment) locks nothing.
 OutputLocks lock_outputs(const OutputPlan& plan);
 
 }  // namespace facet

@@ -337,7 +337,7 @@ int run_render(const RenderOptions& opt) {
     const std::string& out = plan.image;
     const std::string& report = plan.report;
     check_outputs(plan, opt);
-    const OutputLocks locks = Ranks::world().leads() ? lock_outputs(plan) : OutputLocks();  // held to the end
+    const OutputLocks locks = lock_outputs(plan);  // held to the end (output_locks.hpp)
     const std::uint64_t scene_hash = film_scene_hash(scene);
     std::optional<FilmState> resumed;
     if (!opt.resume.empty()) {
