@@ -83,6 +83,8 @@ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\n' >"$tmp/flat.obj"
 expect obj-zero-area-dropped 0 "1 of 2 triangles have zero area and were dropped" -- "$FACET" render "$tmp/flat.obj" "${small[@]}" --out "$tmp/flat.exr"
 expect unknown-strategy 2 "strategy" -- "$FACET" render "$SCENES/cornell_box.json" --strategy sometimes
 expect sky 0 "wrote" -- "$FACET" sky "$tmp/sky.exr" --width 64
+expect sky-png-refused 1 "OUT .*sky\.png: .*\.exr" -- "$FACET" sky "$tmp/sky.png" --width 64
+expect sky-hdr 0 "wrote" -- "$FACET" sky "$tmp/sky.hdr" --width 64
 expect render-sky-scene 0 "wrote" -- "$FACET" render "$SCENES/spheres_sky.json" "${small[@]}" --out "$tmp/sky_render.exr"
 expect render-glass-metal 0 "wrote" -- "$FACET" render "$SCENES/glass_metal_sky.json" "${small[@]}" --out "$tmp/glass.exr"
 expect render-material-grid 0 "wrote" -- "$FACET" render "$SCENES/material_grid.json" "${small[@]}" --out "$tmp/grid.exr"

@@ -52,6 +52,8 @@ TEST(FuzzRegression, GltfAndPlyFindingsFailCleanly) {
     };
     const Case cases[] = {
         {"gltf/image_bufferview_outside_buffer.glb", "bufferView lies outside its buffer", 0},
+        {"gltf/buffer_uri_names_its_folder.gltf", "is a directory, not a file", 0},
+        {"gltf/buffer_uri_names_parent_folder.gltf", "is a directory, not a file", 0},
         {"ply/face_index_out_of_range.ply", "face 0 names vertex 7, but there are 3 vertices", 0},
         {"ply/face_negative_index.ply", "face 0 names vertex", 0},
         {"ply/face_of_two_vertices.ply", "no triangle with a non-zero area", 0},

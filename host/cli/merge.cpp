@@ -5,24 +5,52 @@
 #include <fmt/format.h>
 
 #include "host/cli/commands.hpp"
+#include "host/cli/output_locks.hpp"
+#include "host/cli/outputs.hpp"
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/film/film_halves.hpp"
 #include "host/film/film_merge.hpp"
 #include "host/image/image_io.hpp"
+#include "host/util/safe_write.hpp"
 
 namespace facet {
+namespace {
 
-int run_merge(const MergeOptions& opt) {
+// The outputs (--out, the PNG beside it, --film) are files of their own: none an input
+// film (by any spelling: ./a.film, a link, a hard link), none another output.
+void check_merge_outputs(const MergeOptions& opt) {
+    check_output_path(opt.out, "--out");
     std::string why;
     if (!can_write_float_image(opt.out, &why)) throw Error(fmt::format("--out {}: {}", opt.out, why));
-    std::vector<FilmState> films;
-    for (const std::string& path : opt.films) {
-        if (path == opt.out || path == replace_extension(opt.out, ".png"))
-            throw Error(fmt::format("--out {} would overwrite the film {}", opt.out, path));
-        films.push_back(read_film(path));
+    std::vector<std::pair<std::string, std::string>> outputs = {
+        {"--out", opt.out}, {"the PNG beside --out", replace_extension(opt.out, ".png")}};
+    if (!opt.film.empty()) {
+        check_output_path(opt.film, "--film");
+        outputs.push_back({"--film", opt.film});
     }
+    for (const auto& [label, path] : outputs)
+        for (const std::string& film : opt.films)
+            if (same_file(path, film))
+                throw Error(fmt::format("{} {}: would overwrite the input film {}", label, path, film));
+    for (std::size_t i = 0; i < outputs.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (same_file(outputs[i].second, outputs[j].second))
+                throw Error(fmt::format("{} {}: is the same file as {} ({}): each output needs its own name",
+                                        outputs[i].first, outputs[i].second, outputs[j].first, outputs[j].second));
+}
+
+}  // namespace
+
+int run_merge(const MergeOptions& opt) {
+    check_merge_outputs(opt);
+    OutputLocks locks;  // no other facet writes them meanwhile (output_locks.hpp)
+    locks.lock(opt.out, "--out");
+    if (!opt.film.empty()) locks.lock(opt.film, "--film");
+    std::vector<FilmState> films;
+    for (const std::string& path : opt.films) films.push_back(read_film(path));
     const FilmState merged = merge_films(films, opt.films);
+    if (merged.spp == 0) throw Error("the films hold no samples: nothing to merge");
     const std::size_t pixels = std::size_t(merged.width) * std::size_t(merged.height);
     const FilmHalves h = film_halves(merged.sums, pixels, merged.samples);
     const std::vector<float> rgb = film_mean(h);

@@ -31,13 +31,35 @@ fs::path key(const std::string& path) {
     return ec ? abs.lexically_normal() : canon;
 }
 
+// The film beside --out when --film is not given: <image stem>.film, unless a file of
+// that name exists and is not the film being resumed, then the first free name of
+// <stem>-2.film, <stem>-3.film, ...: an older film (perhaps one facet said to resume
+// from) is never replaced by a render that was not asked to continue it.
+std::string implicit_film(const std::string& image, const std::string& resume) {
+    const std::string first = replace_extension(image, ".film");
+    std::error_code ec;
+    auto free = [&](const std::string& p) {
+        return !fs::exists(fs::symlink_status(p, ec)) || (!resume.empty() && same_file(p, resume));
+    };
+    if (free(first)) return first;
+    const fs::path img(image);
+    for (int n = 2; n <= 1000; ++n) {
+        const std::string candidate = (img.parent_path() / fmt::format("{}-{}.film", img.stem().string(), n)).string();
+        if (free(candidate)) return candidate;
+    }
+    throw Error(fmt::format(
+        "--out {}: the films {} and {}-2.film to {}-1000.film beside it all exist: remove "
+        "those no longer needed, or name this render's film with --film",
+        image, first, (img.parent_path() / img.stem()).string(), (img.parent_path() / img.stem()).string()));
+}
+
+}  // namespace
+
 bool same_file(const std::string& a, const std::string& b) {
     if (key(a) == key(b)) return true;
     std::error_code ec;
     return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec) && !ec;  // hard links
 }
-
-}  // namespace
 
 OutputPlan plan_outputs(const RenderOptions& opt) {
     OutputPlan plan;
@@ -47,7 +69,7 @@ OutputPlan plan_outputs(const RenderOptions& opt) {
     plan.report_json = replace_extension(plan.report, ".json");
     plan.report_svg = replace_extension(plan.report, ".svg");
     plan.film_requested = !opt.film.empty();
-    plan.film = plan.film_requested ? opt.film : replace_extension(plan.image, ".film");
+    plan.film = plan.film_requested ? opt.film : implicit_film(plan.image, opt.resume);
     return plan;
 }
 

@@ -17,12 +17,13 @@ struct OutputPlan {
     std::string report;           // CSV
     std::string report_json;      // summary beside the CSV
     std::string report_svg;       // plot beside the CSV
-    std::string film;             // --film, else beside --out
+    std::string film;             // --film, else beside --out, never over an older film
     bool film_requested = false;  // --film given: written at every end, not only on interrupt or failure
 };
 
 // The outputs of a render with these options (defaults: out/<scene>.exr and the rest
-// beside it).
+// beside it). Without --film the film goes beside --out as <stem>.film, or, when a file
+// of that name exists and is not the film resumed, the first free <stem>-N.film.
 OutputPlan plan_outputs(const RenderOptions& opt);
 
 // Throws facet::Error naming the option, the path and the problem: an image format that
@@ -30,6 +31,10 @@ OutputPlan plan_outputs(const RenderOptions& opt);
 // file, an output naming an input (scene, --reference, --resume except as --film), an
 // output that cannot be written (safe_write.hpp: check_output_path).
 void check_outputs(const OutputPlan& plan, const RenderOptions& opt);
+
+// Whether two paths name one file: the same absolute, normalised spelling with symbolic
+// links of existing parts resolved, or one existing file (hard links).
+bool same_file(const std::string& a, const std::string& b);
 
 // Where an output that could not be written goes instead: the temporary folder
 // ($TMPDIR, else /tmp), a name unique to this process ("facet-rescue-<pid>-<name>").

@@ -8,6 +8,7 @@
 
 #include "host/cli/commands.hpp"
 #include "host/cli/console.hpp"
+#include "host/cli/output_locks.hpp"
 #include "host/cli/outputs.hpp"
 #include "host/cli/progress.hpp"
 #include "host/cli/render_parts.hpp"
@@ -73,6 +74,7 @@ int run_render(const RenderOptions& opt) {
     const OutputPlan plan = plan_outputs(opt);
     check_outputs(plan, opt);
     check_render_options(opt, plan);
+    const OutputLocks locks = lock_outputs(plan);  // held to the end (output_locks.hpp)
     SessionOptions session_opt = session_options(opt, start);
     std::optional<ImageRGB> reference;
     if (!opt.reference.empty()) reference = read_reference(opt.reference, scene.settings.width, scene.settings.height);

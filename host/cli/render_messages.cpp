@@ -132,7 +132,7 @@ int finish_render(const RenderJob& job, const SessionOutcome& outcome, std::vect
     fit_convergence(passes, summary);
     write_report_csv(job.plan.report, passes);
     write_report_json(job.plan.report_json, summary, passes);
-    write_error_plot_svg(job.plan.report_svg, passes, job.scene.source_path);
+    write_report_svg(job.plan.report_svg, passes, job.scene.source_path);
     if (!written) return kExitError;
 
     const double render_s = job.session.group().stats().render_seconds;

@@ -11,6 +11,7 @@
 #include "host/error.hpp"
 #include "host/scene/pixel_filter.hpp"
 #include "host/util/safe_write.hpp"
+#include "host/film/film_validate.hpp"
 #include "host/scene/scene.hpp"
 #include "host/scene/device_scene.hpp"
 
@@ -206,7 +207,7 @@ FilmState read_film(const std::string& path) {
     if (film.width < 1 || film.height < 1 || film.width > kMaxSide || film.height > kMaxSide)
         throw Error(fmt::format("{}: the film claims {}x{} pixels", path, film.width, film.height));
     for (const SampleRange& r : film.samples)
-        if (r.end < r.begin || r.end > 0xffffffffull)
+        if (r.end < r.begin || r.end > (std::uint64_t(1) << 32))  // indices below 2^32
             throw Error(fmt::format("{}: the film claims the sample range {}-{}", path, r.begin, r.end));
     if (first_overlap(film.samples))
         throw Error(fmt::format("{}: the film's sample ranges overlap ({}): corrupt", path, describe(film.samples)));
@@ -225,6 +226,7 @@ FilmState read_film(const std::string& path) {
         throw Error(fmt::format("{}: cannot read the film's samples", path));
     if (payload_hash(film.sums) != checksum)
         throw Error(fmt::format("{}: the film's samples do not match its checksum: corrupt", path));
+    validate_film_payload(film, path);
     return film;
 }
 

@@ -35,6 +35,11 @@ constexpr int kMaxImageSide = 65536;
 // the 3 GB are allocated. Images up to kSmallImageBytes decoded are not checked.
 constexpr std::uint64_t kMaxDecodedPerFileByte = 8192;
 constexpr std::uint64_t kSmallImageBytes = std::uint64_t(64) << 20;
+// The most bytes an image may take decoded as float RGB: 2 GiB, about 13000 x 13000
+// pixels (an 8K texture is 0.75 GiB). A 783 KB PNG of 16384 x 16384 one grey (deflate
+// compresses it 340:1) needed about 12 GB before "std::bad_alloc"; it is refused from
+// its header, before any pixel is decoded.
+constexpr std::uint64_t kMaxDecodedImageBytes = std::uint64_t(2) << 30;
 using OIIO::ImageOutput;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
@@ -153,6 +158,11 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
             fmt::format("{}: the image claims {}x{} pixels ({} MiB decoded) but the file has only {} bytes: "
                         "it is truncated or corrupt",
                         path, spec.width, spec.height, decoded >> 20, file_size));
+    if (decoded > kMaxDecodedImageBytes)
+        throw Error(
+            fmt::format("{}: the image claims {}x{} pixels, {} MiB decoded as float RGB: at most {} MiB "
+                        "(about 13000x13000 pixels) are read",
+                        path, spec.width, spec.height, decoded >> 20, kMaxDecodedImageBytes >> 20));
     std::vector<float> all(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
     if (!in->read_image(0, 0, 0, channels, TypeDesc::FLOAT, all.data()))
         throw Error(fmt::format("{}: cannot read pixels: {}", path, in->geterror()));
@@ -171,6 +181,10 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
             "an EXR or HDR image holds the light itself",
             path, spec.format.basetype == TypeDesc::UINT8 ? 8 : 16);
         for (float& v : all) v = srgb_decode(v);
+    }
+    if (channels == 3) {  // already RGB: no second copy
+        img.rgb = std::move(all);
+        return img;
     }
     img.rgb.resize(std::size_t(spec.width) * spec.height * 3);
     for (std::size_t i = 0; i < std::size_t(spec.width) * spec.height; ++i)

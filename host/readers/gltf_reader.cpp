@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <filesystem>
 
+#include <sys/stat.h>
+
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -72,9 +74,41 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
+// The largest external buffer or image file a glTF may name.
+constexpr std::uint64_t kMaxGltfResourceBytes = std::uint64_t(2) << 30;
+
+// tinygltf opens the files a glTF names (external buffers and images, by URIs that may
+// lead anywhere through "../") through these callbacks, so they pass facet's input
+// checks (util/input_file.hpp): regular files only (a FIFO would block the open for ever,
+// a folder made tinygltf allocate its "size"), of bounded size, never a shell expansion
+// of the name (tinygltf's own ExpandFilePath runs wordexp on it).
+bool resource_exists(const std::string& path, void*) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0;
+}
+
+std::string resource_path(const std::string& path, void*) { return path; }
+
+bool read_resource(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    try {
+        const std::string bytes = read_input_file(path, "file", kMaxGltfResourceBytes);
+        out->assign(bytes.begin(), bytes.end());
+        return true;
+    } catch (const std::exception& e) {  // facet::Error, or no memory for the bytes
+        if (err) *err += std::string(e.what()) + "\n";
+        return false;
+    }
+}
+
+bool refuse_write(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "facet does not write '" + path + "'\n";
+    return false;
+}
+
 void parse(const std::string& path, tinygltf::Model& model, Scene& scene) {
     check_input_file(path, "glTF file");
     tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks(tinygltf::FsCallbacks{resource_exists, resource_path, read_resource, refuse_write, nullptr});
     loader.SetImageLoader(keep_image_undecoded, &model);
     std::string err, warn;
     const bool binary = lower(std::filesystem::path(path).extension().string()) == ".glb";
@@ -188,9 +222,12 @@ private:
                 fmt::format("{}: the node hierarchy instances more than {} nodes (nodes shared down many "
                             "levels multiply)",
                             path_, kMaxNodeVisits));
-        if (on_path[std::size_t(index)] || depth > 1000)
+        if (on_path[std::size_t(index)])
             throw Error(
                 fmt::format("{}: {}: the node hierarchy has a cycle (the node is its own ancestor)", path_, place));
+        if (depth > kMaxNodeDepth)
+            throw Error(fmt::format("{}: {}: the node hierarchy is more than {} levels deep, more than facet walks",
+                                    path_, place, kMaxNodeDepth));
         const tinygltf::Node& node = model_.nodes[std::size_t(index)];
         const glm::mat4 world = parent * local_transform(node, path_, place);
         if (node.mesh >= 0) uses_.push_back(MeshUse{node.mesh, world, place});
@@ -471,6 +508,7 @@ private:
     Ignored ignored_;
     std::vector<MeshUse> uses_;  // every node's mesh, in node order
     static constexpr std::size_t kMaxNodeVisits = 1000000;
+    static constexpr int kMaxNodeDepth = 4096;  // the walk recurses once per level
     std::size_t visits_ = 0;
 };
 

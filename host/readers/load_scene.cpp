@@ -18,6 +18,7 @@
 #include "host/readers/json_scene.hpp"
 #include "host/readers/obj_reader.hpp"
 #include "host/readers/ply_reader.hpp"
+#include "host/scene/texture_validate.hpp"
 #include "host/util/strings.hpp"
 
 namespace facet {
@@ -140,6 +141,7 @@ Scene load_scene(const std::string& path, const std::string& camera_name) {
             "{}: unknown scene format '{}' (expected a .json scene, an .obj or .ply mesh, or a .gltf or .glb file)",
             path, ext));
     }
+    sanitise_textures(scene);  // texels clamped to what the materials read them as (texture_validate.hpp)
     build_lights(scene);
     if (scene.lights.empty()) {
         scene.warnings.push_back(fmt::format("{}: the scene has no emitters; the image will be black", path));

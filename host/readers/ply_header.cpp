@@ -18,37 +18,57 @@ bool scalar_type(std::string_view t) {
     return false;
 }
 
-// The lists of an ASCII body checked against the tokens that follow: a list whose count is
-// more than the file holds makes Assimp allocate for it first (minutes for a count of
+// The elements of an ASCII body checked against the header: each on its own line (PLY's
+// rule) with exactly its properties' values, so a line with a number missing is an error
+// naming it rather than shifting every later value by one; and a list whose count is more
+// than the file holds is refused before Assimp allocates for it (minutes for a count of
 // 7777777777777: fuzz_ply). `lists[e]` says which properties of element e are lists.
+// `first_line` is the body's first line number in the file.
 void check_ascii_body(const std::string& path, std::string_view body, const std::vector<std::string>& names,
-                      const std::vector<std::uint64_t>& counts, const std::vector<std::vector<bool>>& lists) {
+                      const std::vector<std::uint64_t>& counts, const std::vector<std::vector<bool>>& lists,
+                      int first_line) {
     std::size_t pos = 0;
-    auto next = [&]() -> std::string_view {
-        while (pos < body.size() && (body[pos] == ' ' || body[pos] == '\t' || body[pos] == '\n' || body[pos] == '\r'))
-            ++pos;
+    long line = first_line;
+    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    auto next = [&]() -> std::string_view {  // the next value on this line, "" at its end
+        while (pos < body.size() && blank(body[pos])) ++pos;
         const std::size_t start = pos;
-        while (pos < body.size() && !(body[pos] == ' ' || body[pos] == '\t' || body[pos] == '\n' || body[pos] == '\r'))
-            ++pos;
+        while (pos < body.size() && !blank(body[pos]) && body[pos] != '\n') ++pos;
         return body.substr(start, pos - start);
     };
     for (std::size_t e = 0; e < names.size(); ++e)
-        for (std::uint64_t i = 0; i < counts[e]; ++i)
+        for (std::uint64_t i = 0; i < counts[e]; ++i) {
+            while (pos < body.size() && (blank(body[pos]) || body[pos] == '\n'))  // blank lines between
+                if (body[pos++] == '\n') ++line;
+            if (pos >= body.size())
+                throw Error(fmt::format("{}: the PLY file ends inside element '{}' {} of {} (cut short)", path,
+                                        names[e], i, counts[e]));
+            std::size_t values = 0, wanted = 0;
+            auto short_line = [&]() {
+                return Error(
+                    fmt::format("{}:{}: element '{}' {} has {} values on its line, fewer than its "
+                                "properties need",
+                                path, line, names[e], i, values));
+            };
             for (bool list : lists[e]) {
                 const std::string_view t = next();
-                if (t.empty())
-                    throw Error(fmt::format("{}: the PLY file ends inside element '{}' {} of {} (cut short)", path,
-                                            names[e], i, counts[e]));
+                ++wanted;
+                if (t.empty()) throw short_line();
+                ++values;
                 if (!list) continue;
                 long n = 0;
                 if (!text::parse_int(t, n) || n < 0 || std::uint64_t(n) > (body.size() - pos) / 2 + 1)
                     throw Error(fmt::format("{}: element '{}' {} has a list of '{}' values, more than the file holds",
                                             path, names[e], i, t));
-                for (long k = 0; k < n; ++k)
-                    if (next().empty())
-                        throw Error(fmt::format("{}: the PLY file ends inside element '{}' {} of {} (cut short)", path,
-                                                names[e], i, counts[e]));
+                for (long k = 0; k < n; ++k, ++wanted, ++values)
+                    if (next().empty()) throw short_line();
             }
+            if (!next().empty())
+                throw Error(
+                    fmt::format("{}:{}: element '{}' {} has more values on its line than the {} its "
+                                "properties take",
+                                path, line, names[e], i, wanted));
+        }
 }
 
 }  // namespace
@@ -63,6 +83,7 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
     std::vector<std::uint64_t> counts;
     std::vector<std::vector<bool>> lists;  // per element, whether each property is a list
     bool format = false;
+    int body_line = 0;  // the first line after end_header
     for (int line = 1;; ++line) {
         const std::size_t end = bytes.find('\n', pos);
         if (end == std::string_view::npos || line > 100000)
@@ -81,7 +102,10 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
             continue;
         }
         if (f.empty() || f[0] == "comment" || f[0] == "obj_info") continue;
-        if (f[0] == "end_header") break;
+        if (f[0] == "end_header") {
+            body_line = line + 1;
+            break;
+        }
         if (f[0] == "format") {
             if (f.size() != 3 || (f[1] != "ascii" && f[1] != "binary_little_endian" && f[1] != "binary_big_endian"))
                 fail(line, "expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
@@ -119,7 +143,7 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
                         "cut short or corrupt)",
                         path, elements, bytes.size() - pos));
     h.body_offset = pos;
-    if (!h.binary) check_ascii_body(path, bytes.substr(pos), names, counts, lists);
+    if (!h.binary) check_ascii_body(path, bytes.substr(pos), names, counts, lists, body_line);
     return h;
 }
 

@@ -6,6 +6,8 @@
 // split into fans here.
 #include "host/readers/ply_reader.hpp"
 
+#include <cmath>
+
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 #include <fmt/format.h>
@@ -23,8 +25,14 @@ std::size_t convert(const std::string& path, const aiMesh& m, IndexedMesh& out) 
     if (m.mNumVertices > 0 && !m.mVertices) throw Error(fmt::format("{}: the PLY file has no vertex positions", path));
     if (m.mNumFaces > 0 && !m.mFaces) throw Error(fmt::format("{}: the PLY file's faces could not be read", path));
     out.positions.resize(m.mNumVertices);
-    for (unsigned i = 0; i < m.mNumVertices; ++i)
+    for (unsigned i = 0; i < m.mNumVertices; ++i) {
         out.positions[i] = glm::vec3(m.mVertices[i].x, m.mVertices[i].y, m.mVertices[i].z);
+        // Not dropped later as "zero area": a NaN or infinite vertex is a broken file.
+        if (!std::isfinite(out.positions[i].x) || !std::isfinite(out.positions[i].y) ||
+            !std::isfinite(out.positions[i].z))
+            throw Error(fmt::format("{}: element 'vertex' {} is ({}, {}, {}): not finite", path, i, out.positions[i].x,
+                                    out.positions[i].y, out.positions[i].z));
+    }
     if (m.mNormals) {
         out.normals.resize(m.mNumVertices);
         for (unsigned i = 0; i < m.mNumVertices; ++i)

@@ -2,11 +2,15 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
+#include <mutex>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "host/cli/console.hpp"
 #include "host/error.hpp"
 #include "host/util/safe_write.hpp"
 
@@ -16,6 +20,22 @@ namespace {
 std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string(); }
 
 const char* kHeader = "pass,spp,wall_s,render_s,compile_s,mse,rmse,relmse,est_mse,est_rmse,est_relmse";
+
+// Runs `write`; a facet::Error is a warning naming `path`, said once per path.
+bool side_output(const std::string& path, const std::function<void()>& write) {
+    try {
+        write();
+        return true;
+    } catch (const Error& e) {
+        static std::mutex mutex;
+        static std::set<std::string> warned;
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (warned.insert(path).second)
+            say(stderr, "facet: warning: the report {} was not written ({}); the render and its image go on\n", path,
+                e.what());
+        return false;
+    }
+}
 
 }  // namespace
 
@@ -105,7 +125,7 @@ void fit_convergence(const std::vector<PassRecord>& passes, ReportSummary& summa
     }
 }
 
-void write_report_csv(const std::string& path, const std::vector<PassRecord>& passes) {
+bool write_report_csv(const std::string& path, const std::vector<PassRecord>& passes) {
     std::string text = std::string(kHeader) + "\n";
     for (const PassRecord& p : passes) {
         const double nan = std::nan("");
@@ -114,10 +134,14 @@ void write_report_csv(const std::string& path, const std::vector<PassRecord>& pa
                             num(p.compile_s), num(r.mse), num(r.rmse), num(r.relmse), num(p.estimate.mse),
                             num(p.estimate.rmse), num(p.estimate.relmse));
     }
-    write_text_atomically(path, text);
+    return side_output(path, [&] { write_text_atomically(path, text); });
 }
 
-void write_report_json(const std::string& path, const ReportSummary& s, const std::vector<PassRecord>& passes) {
+bool write_report_svg(const std::string& path, const std::vector<PassRecord>& passes, const std::string& title) {
+    return side_output(path, [&] { write_error_plot_svg(path, passes, title); });
+}
+
+bool write_report_json(const std::string& path, const ReportSummary& s, const std::vector<PassRecord>& passes) {
     nlohmann::json j;
     j["scene"] = s.scene;
     j["device"] = s.device;
@@ -153,7 +177,7 @@ void write_report_json(const std::string& path, const ReportSummary& s, const st
     if (s.clamp > 0.0) j["clamp_note"] = "each sample clamped: the image is biased (darker) where samples exceed it";
     j["estimator"] = "half-buffer: (a - b)^2 n_a n_b / n^2 per pixel, unbiased for the variance of the image";
     if (!s.slope_warning.empty()) j["warning"] = s.slope_warning;
-    write_text_atomically(path, j.dump(2) + "\n");
+    return side_output(path, [&] { write_text_atomically(path, j.dump(2) + "\n"); });
 }
 
 std::vector<PassRecord> read_report_csv(const std::string& path) {

@@ -56,10 +56,15 @@ struct ReportSummary {
 // floor (summary.reference_spp, when known).
 void fit_convergence(const std::vector<PassRecord>& passes, ReportSummary& summary);
 
-void write_report_csv(const std::string& path, const std::vector<PassRecord>& passes);
-void write_report_json(const std::string& path, const ReportSummary& summary, const std::vector<PassRecord>& passes);
+// The report of a render is a side output: a CSV, JSON summary or SVG plot that cannot be
+// written is a warning on stderr (once per file: the CSV is rewritten after every pass),
+// never the end of the render nor the loss of its image. Each returns whether it wrote.
+bool write_report_csv(const std::string& path, const std::vector<PassRecord>& passes);
+bool write_report_json(const std::string& path, const ReportSummary& summary, const std::vector<PassRecord>& passes);
+bool write_report_svg(const std::string& path, const std::vector<PassRecord>& passes, const std::string& title);
 
-// Log-log plot of RMSE (reference and estimate) against render time, as SVG.
+// Log-log plot of RMSE (reference and estimate) against render time, as SVG (`facet
+// plot`, where it is the output: throws facet::Error naming the file on failure).
 void write_error_plot_svg(const std::string& path, const std::vector<PassRecord>& passes, const std::string& title);
 
 // Reads a CSV written by write_report_csv (for `facet plot`). Throws facet::Error

@@ -42,6 +42,17 @@ run refuse-other-seed 1 "s\.film has seed 8, .*a\.film has 7" -- "$FACET" merge 
 head -c 300 "$tmp/a.film" >"$tmp/cut.film"
 run refuse-truncated 1 "cut\.film: .*truncated" -- "$FACET" merge "$tmp/cut.film" "$tmp/b.film" --out "$tmp/no.exr"
 check refused-wrote-nothing test ! -e "$tmp/no.exr"
+# An output naming an input film, by another spelling too, or another output: refused, the film kept.
+cp "$tmp/a.film" "$tmp/a.keep"
+run refuse-film-is-input 1 "--film .*/\./a\.film: would overwrite the input film" -- "$FACET" merge "$tmp/a.film" \
+    "$tmp/b.film" --out "$tmp/m.exr" --film "$tmp/./a.film"
+ln "$tmp/b.film" "$tmp/b-link.film"
+run refuse-film-is-hard-link 1 "would overwrite the input film" -- "$FACET" merge "$tmp/a.film" "$tmp/b.film" \
+    --out "$tmp/m.exr" --film "$tmp/b-link.film"
+run refuse-film-is-png 1 "--film .*m\.png: is the same file as the PNG beside --out" -- "$FACET" merge \
+    "$tmp/a.film" "$tmp/b.film" --out "$tmp/m.exr" --film "$tmp/m.png"
+check input-film-kept cmp -s "$tmp/a.film" "$tmp/a.keep"
+check refused-merges-wrote-nothing test ! -e "$tmp/m.exr"
 
 # Two devices in one process: the same image, and each device's speed in the summary.
 run two-devices 0 "share    \[0\].*Msamples/s" -- "$FACET" render "$scene" --width 24 --height 24 --seed 7 --spp 12 \

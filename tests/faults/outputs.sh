@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Output names that cannot work are refused before the first sample (exit 1, a message
 # naming the option and the file, nothing rendered), outputs never overwrite each other
-# or an input, and two renders on one --out both succeed with a whole image.
+# or an input, two renders on one output are refused, and a report that cannot be
+# written costs no image.
 source "$(dirname "${BASH_SOURCE[0]}")/common.bash"
 cd "$tmp" || exit 1
 
@@ -68,21 +69,60 @@ if run out-hdr 0 "wrote" -- "$FACET" render "$scene" "${small[@]}" --out "$tmp/h
     check out-hdr-files eval 'readable_image "$tmp/h.hdr" && [ -s "$tmp/h.png" ]'
 fi
 
-# Two renders on one --out, writing snapshots many times: both finish, the image is
-# whole, and neither leaves or names a temporary (they used to share ".tmp-<name>").
+# Two renders on one --out: the second is refused at its start, naming the first (its
+# lock file beside the image), and the first finishes with a whole image; the lock file
+# goes with it, and a third render then works.
 mkdir -p "$tmp/two"
-for i in 1 2; do
-    "$FACET" render "$scene" --width 24 --height 24 --spp 100000 --time 3 --snapshot 0.01 --quiet \
-        --out "$tmp/two/same.exr" --report "$tmp/two/r$i.csv" >"$tmp/two/log$i" 2>&1 &
+"$FACET" render "$scene" --width 24 --height 24 --spp 100000 --time 3 --snapshot 0.01 \
+    --out "$tmp/two/same.exr" --report "$tmp/two/r1.csv" >"$tmp/two/log1" 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+    grep -q '^kernels' "$tmp/two/log1" 2>/dev/null && break
+    sleep 0.1
 done
-s1=0 s2=0
-wait %1 || s1=$?
-wait %2 || s2=$?
-cat "$tmp/two/log1" "$tmp/two/log2" >"$tmp/log"
-check two-renders-one-out-both-succeed [ "$s1" -eq 0 -a "$s2" -eq 0 ]
+run two-renders-one-out-second-refused 1 "--out .*two/same\.exr: in use by another facet \(process $pid\)" -- \
+    "$FACET" render "$scene" "${small[@]}" --out "$tmp/two/same.exr" --report "$tmp/two/r2.csv"
+check two-renders-one-out-second-not-rendered eval '! grep -q "^kernels" "$tmp/log"'
+s1=0
+wait "$pid" || s1=$?
+cp "$tmp/two/log1" "$tmp/log"
+check two-renders-one-out-first-succeeds [ "$s1" -eq 0 ]
 check two-renders-one-out-whole-image readable_image "$tmp/two/same.exr"
 check two-renders-one-out-no-temporaries no_temporaries "$tmp/two"
-check two-renders-one-out-no-temporary-named no_temporary_named
+check two-renders-one-out-lock-removed eval '[ -z "$(find "$tmp/two" -name "*.lock")" ]'
+run two-renders-one-out-then-free 0 "wrote" -- "$FACET" render "$scene" "${small[@]}" --out "$tmp/two/same.exr" \
+    --report "$tmp/two/r3.csv"
+# A lock file left by a killed render does not block the next one.
+"$FACET" render "$scene" --width 24 --height 24 --spp 1000000 --out "$tmp/two/k.exr" >"$tmp/two/logk" 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+    grep -q '^kernels' "$tmp/two/logk" 2>/dev/null && break
+    sleep 0.1
+done
+kill -KILL "$pid"
+wait "$pid" 2>/dev/null
+check killed-render-left-lock-file test -e "$tmp/two/.k.exr.lock"
+run killed-render-lock-not-blocking 0 "wrote" -- "$FACET" render "$scene" "${small[@]}" --out "$tmp/two/k.exr"
+
+# The report's folder gone while rendering (replaced by a file): a warning, once per
+# file, and the image and PNG are written all the same (exit 0).
+mkdir -p "$tmp/rep" "$tmp/img"
+"$FACET" render "$scene" --width 24 --height 24 --spp 1000000 --time 2 --out "$tmp/img/x.exr" \
+    --report "$tmp/rep/r.csv" >"$tmp/rep.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+    grep -q '^kernels' "$tmp/rep.log" 2>/dev/null && break
+    sleep 0.1
+done
+mv "$tmp/rep" "$tmp/rep.gone" && : >"$tmp/rep"
+status=0
+wait "$pid" || status=$?
+cp "$tmp/rep.log" "$tmp/log"
+check report-lost-render-succeeds [ "$status" -eq 0 ]
+check report-lost-image-written eval 'readable_image "$tmp/img/x.exr" && [ -s "$tmp/img/x.png" ]'
+check report-lost-warned grep -q "warning: the report .*rep/r\.csv was not written" "$tmp/log"
+check report-lost-warned-once eval '[ "$(grep -c "rep/r\.csv was not written" "$tmp/log")" -eq 1 ]'
+check report-lost-svg-warned grep -q "warning: the report .*rep/r\.svg was not written" "$tmp/log"
 
 check no-temporaries-left no_temporaries "$tmp" "$tmp/dir.exr"
 finish

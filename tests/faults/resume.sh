@@ -70,26 +70,40 @@ if [ -n "$spp" ]; then
         --resume "$tmp/int/i.film" --out "$tmp/int/i.exr"
 fi
 
-# An error during the render (the report's folder turns into a file): exit 1, the film
-# of the samples so far is saved beside --out. The folder is a link, swapped atomically
-# for a link to a file (facet may recreate a folder that is merely moved away).
-mkdir -p "$tmp/err/repdir"
-ln -s repdir "$tmp/err/rep"
-printf x >"$tmp/err/notdir"
-"$FACET" render "$scene" "${opts[@]}" --spp 1000000 --time 20 --out "$tmp/err/e.exr" --report "$tmp/err/rep/r.csv" \
-    >"$tmp/err.log" 2>&1 &
+# The implicit film never replaces an older one: a second interrupted render to the same
+# --out saves its film under a new name (i-2.film), says so, and the first film is kept.
+cp "$tmp/int/i.film" "$tmp/int/i.keep"
+"$FACET" render "$scene" "${opts[@]}" --spp 1000000 --out "$tmp/int/i.exr" --report "$tmp/int/i2.csv" \
+    >"$tmp/int2.log" 2>&1 &
 pid=$!
 for _ in $(seq 1 600); do
-    [ -s "$tmp/err/rep/r.csv" ] && break
+    [ -s "$tmp/int/i2.csv" ] && break
     sleep 0.1
 done
-ln -s notdir "$tmp/err/rep.new" && mv -T "$tmp/err/rep.new" "$tmp/err/rep"   # rename: atomic
+kill -INT "$pid"
+wait "$pid"
+cp "$tmp/int2.log" "$tmp/log"
+check implicit-film-older-kept cmp -s "$tmp/int/i.film" "$tmp/int/i.keep"
+check implicit-film-new-name eval 'test -s "$tmp/int/i-2.film" && grep -qF -- "--resume $tmp/int/i-2.film" "$tmp/log"'
+
+# Two renders resuming one film in place: the second is refused at its start (the first
+# holds the film's lock), so neither's samples are lost.
+cp "$tmp/whole.film" "$tmp/shared.film"
+"$FACET" render "$scene" --width 24 --height 24 --seed 7 --spp 1000000 --time 3 --resume "$tmp/shared.film" \
+    --film "$tmp/shared.film" --out "$tmp/s1.exr" >"$tmp/s1.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+    grep -q '^kernels' "$tmp/s1.log" 2>/dev/null && break
+    sleep 0.1
+done
+run concurrent-resume-refused 1 "--film .*shared\.film: in use by another facet" -- "$FACET" render "$scene" \
+    "${opts[@]}" --spp 1000 --resume "$tmp/shared.film" --film "$tmp/shared.film" --out "$tmp/s2.exr"
 status=0
 wait "$pid" || status=$?
-cp "$tmp/err.log" "$tmp/log"
-check error-exit-1 [ "$status" -eq 1 ]
-check error-names-report grep -q "rep/r\.csv" "$tmp/log"
-check error-film-saved eval 'test -s "$tmp/err/e.film" && grep -qF -- "--resume $tmp/err/e.film" "$tmp/log"'
+check concurrent-resume-first-succeeds [ "$status" -eq 0 ]
+spp=$(grep -aoE '"spp": [0-9]+' "$tmp/shared.film" | grep -oE '[0-9]+')
+s1=$(grep -oE 'wrote .*\(([0-9]+) spp' "$tmp/s1.log" | grep -oE '[0-9]+ spp' | grep -oE '[0-9]+')
+check concurrent-resume-film-holds-first [ -n "$spp" ] && [ "$spp" = "$s1" ]
 
 check no-temporaries-left no_temporaries "$tmp" "$tmp/int"
 finish
