@@ -22,6 +22,7 @@
 #include "host/cli/console.hpp"
 #include "host/cli/outputs.hpp"
 #include "host/cli/progress.hpp"
+#include "host/cli/resume_size.hpp"
 #include "host/cli/stop_signals.hpp"
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
@@ -34,6 +35,7 @@
 #include "host/render/device_group.hpp"
 #include "host/render/device_group_watch.hpp"
 #include "host/report/report.hpp"
+#include "host/scene/camera_focus.hpp"
 #include "host/scene/pixel_filter.hpp"
 #include "host/util/strings.hpp"
 #include "host/readers/load_scene.hpp"
@@ -323,6 +325,7 @@ int run_render(const RenderOptions& opt) {
     const SigpipeIgnored sigpipe_ignored;  // `facet render ... | head -1` renders on
     Scene scene = load_scene(opt.scene, opt.camera);
     apply_overrides(opt, scene);
+    settle_focus(scene);  // a target nearer than anything in view: focus at the image centre (camera_focus.hpp)
     for (const std::string& w : scene.warnings) say(stderr, "facet: warning: {}\n", w);
     if (opt.adaptive_tiles() && (!opt.film.empty() || !opt.resume.empty()))
         throw Error(
@@ -340,6 +343,7 @@ int run_render(const RenderOptions& opt) {
     std::optional<FilmState> resumed;
     if (!opt.resume.empty()) {
         resumed = read_film(opt.resume);
+        take_film_size(*resumed, opt, scene.settings);  // --width/--height default to the film's
         check_film_matches(*resumed, opt.resume, scene, scene_hash);
     }
     std::optional<ImageRGB> reference;
