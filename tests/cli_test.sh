@@ -204,6 +204,9 @@ expect filter-suggested 2 "gausian is not a pixel filter: .*\(did you mean gauss
     "$FACET" render "$SCENES/cornell_box.json" --filter gausian
 expect strategy-suggested 2 "--strategy: mls is not a strategy: one of mis, light or bsdf \(did you mean mis\?\)" -- \
     "$FACET" render "$SCENES/cornell_box.json" --strategy mls
+expect not-a-number-in-words 2 "^--spp: abc is not a whole number$" -- "$FACET" render "$SCENES/cornell_box.json" --spp abc
+expect range-in-words 2 "^--exposure: Value 40 is not between -30 and 30$" -- "$FACET" render \
+    "$SCENES/cornell_box.json" --exposure 40
 expect sampler-suggested 2 "did you mean sobol\?" -- "$FACET" render "$SCENES/cornell_box.json" --sampler sobl
 expect tonemap-suggested 2 "did you mean filmic\?" -- "$FACET" render "$SCENES/cornell_box.json" --tonemap filmc
 "$FACET" --version >"$tmp/version.txt" 2>&1 && grep -qE "^facet [0-9]+\.[0-9]+\.[0-9]+$" "$tmp/version.txt" &&

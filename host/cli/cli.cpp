@@ -292,7 +292,7 @@ int run_cli(int argc, char** argv) {
                      "First sample index: renders with disjoint ranges (--samples-from K --spp N renders K..K+N-1) "
                      "merge with `facet merge` (0 to 4294967295; default: 0)")
         ->option_text("K")
-        ->check(CLI::Range(std::uint64_t(0), std::uint64_t(0xffffffffu)));
+        ->check(between(0.0, 4294967295.0));
     render
         ->add_option("--out", opt.out,
                      "Output image, linear 32-bit float: .exr (or .hdr, .tif, .pfm); the tone-mapped PNG is written "
@@ -323,7 +323,7 @@ int run_cli(int argc, char** argv) {
         ->option_text("FILE");
     render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops, -30 to 30 (default: 0)")
         ->option_text("STOPS")
-        ->check(kFinite & CLI::Range(-30.0f, 30.0f));
+        ->check(kFinite & between(-30.0, 30.0));
     render
         ->add_option("--tonemap", opt.tonemap,
                      "Tone mapping of the PNG: clip (default; linear clamped to 1, sRGB-encoded) or filmic (a "
@@ -350,7 +350,7 @@ int run_cli(int argc, char** argv) {
     merge_cmd->add_option("--film", merge.film, "Also write the merged film here");
     merge_cmd->add_option("--exposure", merge.exposure, "Exposure of the PNG in stops, -30 to 30 (default: 0)")
         ->option_text("STOPS")
-        ->check(kFinite & CLI::Range(-30.0f, 30.0f));
+        ->check(kFinite & between(-30.0, 30.0));
 
     CompareOptions cmp;
     CLI::App* compare =
@@ -370,19 +370,19 @@ int run_cli(int argc, char** argv) {
     sky_cmd
         ->add_option("--width", sky.width,
                      fmt::format("Width in texels, 8 to 16384 (height is half; default: {})", sky.width))
-        ->check(CLI::Range(8, 16384));
+        ->check(between(8, 16384));
     sky_cmd
         ->add_option("--elevation", sky.elevation,
                      fmt::format("Sun elevation in degrees, -10 to 90 (default: {:g})", sky.elevation))
-        ->check(kFinite & CLI::Range(-10.0f, 90.0f));
+        ->check(kFinite & between(-10.0, 90.0));
     sky_cmd
         ->add_option("--azimuth", sky.azimuth,
                      fmt::format("Sun azimuth in degrees, -360 to 360 (default: {:g})", sky.azimuth))
-        ->check(kFinite & CLI::Range(-360.0f, 360.0f));
+        ->check(kFinite & between(-360.0, 360.0));
     sky_cmd
         ->add_option("--turbidity", sky.turbidity,
                      fmt::format("Atmospheric turbidity (Preetham's model), 1.7 to 10 (default: {:g})", sky.turbidity))
-        ->check(kFinite & CLI::Range(1.7f, 10.0f));
+        ->check(kFinite & between(1.7, 10.0));
 
     // A bare `facet`: the help, not "a subcommand is required".
     if (argc <= 1) {
@@ -395,6 +395,13 @@ int run_cli(int argc, char** argv) {
         // Prints the help, or the option and the problem ("--spp: Value 0 not in range"),
         // and for an unknown option the closest known one.
         if (!dynamic_cast<const CLI::Success*>(&e) && refuse_unknown_command(app)) return kExitUsage;
+        if (const auto* c = dynamic_cast<const CLI::ConversionError*>(&e)) {
+            const std::string words = conversion_words(app, *c);
+            if (!words.empty()) {
+                std::cerr << words << "\nRun with --help for more information.\n";
+                return kExitUsage;
+            }
+        }
         const int status = app.exit(e) == 0 ? kExitOk : kExitUsage;
         if (dynamic_cast<const CLI::ExtrasError*>(&e)) suggest_options(app);
         return status;

@@ -1,5 +1,6 @@
 #include "host/cli/cli_words.hpp"
 
+#include <cstdlib>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -93,6 +94,35 @@ CLI::Validator one_of(const std::string& what, const std::vector<std::string>& n
                                near.empty() ? "" : fmt::format(" (did you mean {}?)", near));
         },
         "");
+}
+
+CLI::Validator between(double lo, double hi) {
+    return CLI::Validator(
+        [lo, hi](std::string& text) {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0') return std::string();  // left to the conversion's message
+            return v >= lo && v <= hi ? std::string() : fmt::format("Value {} is not between {} and {}", text, lo, hi);
+        },
+        "");
+}
+
+std::string conversion_words(const CLI::App& app, const CLI::ConversionError& e) {
+    const std::string what = e.what();
+    const std::string head = "Could not convert: ";
+    const std::size_t eq = what.find(" = ");
+    if (what.rfind(head, 0) != 0 || eq == std::string::npos) return "";
+    const std::string name = what.substr(head.size(), eq - head.size()), value = what.substr(eq + 3);
+    const CLI::App* cmd = &app;
+    for (const CLI::App* sub : app.get_subcommands()) cmd = sub;  // the one parsed
+    for (const CLI::Option* o : cmd->get_options()) {
+        if (o->get_name() != name && "--" + o->get_single_name() != name) continue;
+        std::string type = o->get_type_name();
+        type = type.substr(0, type.find(':'));
+        const char* kind = type == "UINT" ? "a whole number >= 0" : type == "INT" ? "a whole number" : "a number";
+        return fmt::format("{}: {} is not {}", name, value, kind);
+    }
+    return "";
 }
 
 }  // namespace facet

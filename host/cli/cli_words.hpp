@@ -33,4 +33,12 @@ CLI::Validator choice(const std::string& what, const std::vector<std::pair<std::
 // As choice(), for a text option whose value is one of `names` itself (e.g. each of --aov's).
 CLI::Validator one_of(const std::string& what, const std::vector<std::string>& names);
 
+// A number from lo to hi (both included), refused as "Value 40 is not between -30 and 30".
+CLI::Validator between(double lo, double hi);
+
+// For a value CLI11 could not convert ("Could not convert: --spp = abc"): the option and
+// what it takes, "--spp: abc is not an integer"; empty when `e` names no option of `app`'s
+// parsed command.
+std::string conversion_words(const CLI::App& app, const CLI::ConversionError& e);
+
 }  // namespace facet
