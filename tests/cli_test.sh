@@ -203,5 +203,51 @@ else bad "time-alone-runs-about-2s ($spp spp, ${render_s}s rendering, $(awk -v a
 expect time-and-spp-first-ends 0 "wrote .*\(3 spp" -- "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 \
     --spp 3 --time 60 --out "$tmp/timed3.exr"
 
+# The command line in words (issue 25): help says choices and defaults without validator
+# internals, mistyped names get the closest one, --version says what was built, and a
+# depth-of-field target nearer than the scene focuses where the image centre looks.
+"$FACET" render --help >"$tmp/help.txt" 2>&1
+if grep -q "value in {\|FINITE\|->" "$tmp/help.txt"; then bad "help-no-validator-internals"; else ok "help-no-validator-internals"; fi
+grep -q -- "--strategy mis|light|bsdf" "$tmp/help.txt" && grep -q -- "--spp N .*else 64" "$tmp/help.txt" &&
+    grep -q -- "--width N .*else 512" "$tmp/help.txt" && grep -q -- "--max-depth N .*else 16)" "$tmp/help.txt" &&
+    grep -q -- "--seed N .*else 0)" "$tmp/help.txt" && ok "help-choices-and-defaults" || bad "help-choices-and-defaults"
+"$FACET" >"$tmp/bare.txt" 2>&1
+[ "$(head -c 12 "$tmp/bare.txt")" = "Usage: facet" ] && ok "bare-facet-usage-named" || bad "bare-facet-usage-named"
+expect command-suggested 2 "rendr is not a command: one of devices, info, render.*\(did you mean render\?\)" -- \
+    "$FACET" rendr "$SCENES/cornell_box.json"
+expect filter-choices-in-words 2 "--filter: lanczos is not a pixel filter: one of box, tent, gaussian or mitchell$" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --filter lanczos
+expect filter-suggested 2 "gausian is not a pixel filter: .*\(did you mean gaussian\?\)" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --filter gausian
+expect strategy-suggested 2 "--strategy: mls is not a strategy: one of mis, light or bsdf \(did you mean mis\?\)" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --strategy mls
+expect not-a-number-in-words 2 "^--spp: abc is not a whole number$" -- "$FACET" render "$SCENES/cornell_box.json" --spp abc
+expect range-in-words 2 "^--exposure: Value 40 is not between -30 and 30$" -- "$FACET" render \
+    "$SCENES/cornell_box.json" --exposure 40
+expect sampler-suggested 2 "did you mean sobol\?" -- "$FACET" render "$SCENES/cornell_box.json" --sampler sobl
+expect tonemap-suggested 2 "did you mean filmic\?" -- "$FACET" render "$SCENES/cornell_box.json" --tonemap filmc
+"$FACET" --version >"$tmp/version.txt" 2>&1 && grep -qE "^facet [0-9]+\.[0-9]+\.[0-9]+$" "$tmp/version.txt" &&
+    grep -qE "^commit +[0-9a-f]{4,}" "$tmp/version.txt" && grep -qE "^build +Release" "$tmp/version.txt" &&
+    grep -qE "^platform" "$tmp/version.txt" && ok "version-commit-build-platforms" || bad "version-commit-build-platforms"
+# With no OpenCL driver at all (an empty vendor folder for the ICD loader): said, not an error.
+mkdir -p "$tmp/no_icd"
+expect version-no-platforms 0 "platforms +none found" -- env OCL_ICD_VENDORS="$tmp/no_icd" "$FACET" --version
+# The Cornell box's target is 1 ahead of the eye: with an aperture it focuses at the surface in
+# the image centre (the tall box, about 1092 away) instead, and says so.
+expect focus-degenerate-target 0 "target is 1 from the eye, nearer than anything in view.*focusing at 10[0-9][0-9]" -- \
+    "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --aperture 20 --out "$tmp/dof.exr"
+expect focus-nearer-than-scene 0 "warning: the focus distance 1 is nearer than anything in view" -- \
+    "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --aperture 20 --focus-distance 1 --out "$tmp/dof1.exr"
+"$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --aperture 20 --focus-distance 1100 \
+    --out "$tmp/dof2.exr" >"$tmp/err" 2>&1 && ! grep -q "focus" "$tmp/err" && ok "focus-sane-no-warning" ||
+    bad "focus-sane-no-warning"
+# --resume takes the film's size; a different one given is refused naming both.
+"$FACET" render "$SCENES/cornell_box.json" --width 20 --height 12 --spp 2 --quiet --out "$tmp/rs.exr" \
+    --film "$tmp/rs.film" >/dev/null 2>&1
+expect resume-takes-film-size 0 "wrote .*4 spp" -- "$FACET" render "$SCENES/cornell_box.json" --spp 4 --quiet \
+    --resume "$tmp/rs.film" --out "$tmp/rs2.exr"
+expect resume-other-size-refused 1 "rs\.film: the film was rendered with a size of 20x12, this render has 32x12" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --width 32 --spp 4 --quiet --resume "$tmp/rs.film" --out "$tmp/rs3.exr"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -6,14 +6,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <map>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "host/cli/cli_words.hpp"
 #include "host/cli/commands.hpp"
 #include "host/error.hpp"
 #include "host/scene/pixel_filter.hpp"
+#include "host/scene/scene.hpp"
 #include "host/scene/settings_limits.hpp"
 #include "host/util/strings.hpp"
 #include "kernels/shared/render_layout.h"
@@ -70,10 +71,10 @@ CLI::Validator positive_up_to(double hi, const char* unit) {
         words);
 }
 
-std::map<std::string, int> pixel_filter_map() {
-    std::map<std::string, int> m;
-    for (const PixelFilterInfo& f : kPixelFilters) m[f.name] = f.code;
-    return m;
+std::vector<std::pair<std::string, long long>> pixel_filter_choices() {
+    std::vector<std::pair<std::string, long long>> c;
+    for (const PixelFilterInfo& f : kPixelFilters) c.emplace_back(f.name, f.code);
+    return c;
 }
 
 std::string pixel_filter_help() {
@@ -101,12 +102,37 @@ void suggest_options(const CLI::App& app) {
     }
 }
 
+// When no command was recognised: the first word given names none. Says so, with the
+// commands in words and the closest one; false when there is no such word.
+bool refuse_unknown_command(const CLI::App& app) {
+    if (!app.get_subcommands().empty()) return false;
+    for (const std::string& word : app.remaining()) {
+        if (word.empty() || word[0] == '-') continue;
+        std::vector<std::string> names;
+        for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+        const std::string near = closest_name(word, names);
+        std::cerr << fmt::format("facet: {} is not a command: one of {}{}\nRun facet --help for more information.\n",
+                                 word, or_list(names), near.empty() ? "" : fmt::format(" (did you mean {}?)", near));
+        return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv) {
-    CLI::App app{"facet: a physically based path tracer running as OpenCL kernels"};
+    CLI::App app{"facet: a physically based path tracer running as OpenCL kernels", "facet"};
+    app.formatter(plain_formatter());  // before the subcommands, which take it
     app.require_subcommand(1);
-    app.set_version_flag("--version", "facet 0.1.0");
+    app.add_flag_callback(
+        "--version",
+        [] {
+            std::cout << version_report();
+            throw CLI::Success();
+        },
+        "Print the version, the git commit and build type it was built from, and the OpenCL platforms and "
+        "devices found, and exit");
+    const RenderSettings defaults;  // what a scene that does not say gets
 
     CLI::App* devices = app.add_subcommand("devices", "List OpenCL platforms and devices");
 
@@ -122,75 +148,113 @@ int run_cli(int argc, char** argv) {
         ->required();
     render
         ->add_option("--spp", opt.spp,
-                     "Samples per pixel (default: the scene's, 64 unless it says; none with --time alone)")
+                     fmt::format("Samples per pixel, 1 to {} (default: the scene's, else {}; none with --time alone)",
+                                 limits::kSpp.hi, defaults.spp))
         ->check(in_range(limits::kSpp));
     render
         ->add_option("--time", opt.time_limit,
                      "Seconds of rendering: alone, the render stops at this time (the scene's spp does not stop "
-                     "it); with --spp, whichever ends first")
+                     "it); with --spp, whichever ends first (default: no time limit)")
+        ->option_text("SECONDS")
         ->check(kFinite & kSeconds);
     render
         ->add_option("--noise-threshold", opt.noise_threshold,
                      "Adaptive stopping: end once the reference-free error estimate (relMSE of the two half-images, "
-                     "from 16 spp on) is at most RELMSE (whichever of --spp, --time and this ends first)")
+                     "from 16 spp on) is at most RELMSE (whichever of --spp, --time and this ends first; default: off)")
+        ->option_text("RELMSE")
         ->check(kFinite & positive_up_to(1e30, "relMSE"));
     render
         ->add_option("--adaptive", opt.adaptive,
                      "With --noise-threshold: global (default; the whole image stops at once) or tiles (after 16 "
                      "spp, bands of 8 rows whose own estimate is above the threshold get their samples doubled, "
                      "round after round)")
-        ->transform(CLI::CheckedTransformer(std::map<std::string, RenderOptions::Adaptive>{
-            {"global", RenderOptions::Adaptive::Global}, {"tiles", RenderOptions::Adaptive::Tiles}}))
+        ->option_text("global|tiles")
+        ->transform(choice("an adaptive mode", {{"global", int(RenderOptions::Adaptive::Global)},
+                                                {"tiles", int(RenderOptions::Adaptive::Tiles)}}))
         ->needs("--noise-threshold");
-    render->add_option("--width", opt.width, "Image width in pixels (default: the scene's)")
+    render
+        ->add_option("--width", opt.width,
+                     fmt::format("Image width in pixels, 1 to {} (default: the scene's, else {}; with --resume, the "
+                                 "film's)",
+                                 limits::kWidth.hi, defaults.width))
         ->check(in_range(limits::kWidth));
-    render->add_option("--height", opt.height, "Image height in pixels (default: the scene's)")
+    render
+        ->add_option("--height", opt.height,
+                     fmt::format("Image height in pixels, 1 to {} (default: the scene's, else {}; with --resume, "
+                                 "the film's)",
+                                 limits::kHeight.hi, defaults.height))
         ->check(in_range(limits::kHeight));
-    render->add_option("--max-depth", opt.max_depth, "Maximum number of bounces (1 = direct light only)")
+    render
+        ->add_option("--max-depth", opt.max_depth,
+                     fmt::format("Maximum number of bounces, 1 to {} (1: direct light only; default: the scene's, "
+                                 "else {})",
+                                 limits::kMaxDepth.hi, defaults.max_depth))
         ->check(in_range(limits::kMaxDepth));
-    render->add_option("--seed", opt.seed, "Seed of the random stream (same seed and settings give the same image)")
+    render
+        ->add_option("--seed", opt.seed,
+                     fmt::format("Seed of the random stream, 0 to {} (same seed and settings give the same image; "
+                                 "default: the scene's, else {})",
+                                 limits::kSeed.hi, defaults.seed))
         ->check(in_range(limits::kSeed));
     render
         ->add_option("--strategy", opt.strategy,
                      "Direct light from area lights and the environment: mis (default), light (light sampling only) "
                      "or bsdf (BSDF sampling only); for measuring the strategies")
-        ->transform(CLI::CheckedTransformer(std::map<std::string, int>{
-            {"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT}, {"bsdf", FC_STRATEGY_BSDF}}));
+        ->option_text("mis|light|bsdf")
+        ->transform(
+            choice("a strategy", {{"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT}, {"bsdf", FC_STRATEGY_BSDF}}));
     render
         ->add_option("--env-sampling", opt.env_plain,
                      "Environment map sampling under MIS: compensated (default; MIS compensation, Karlik et al. "
                      "2019) or plain (by luminance)")
-        ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"compensated", 0}, {"plain", 1}}));
+        ->option_text("compensated|plain")
+        ->transform(choice("an environment sampling", {{"compensated", 0}, {"plain", 1}}));
     render
         ->add_option("--sampler", opt.sampler,
                      "Sample generator: sobol (default; Owen-scrambled Sobol', Burley 2020) or independent (PCG32)")
-        ->transform(CLI::CheckedTransformer(
-            std::map<std::string, int>{{"sobol", FC_SAMPLER_SOBOL}, {"independent", FC_SAMPLER_INDEPENDENT}}));
+        ->option_text("sobol|independent")
+        ->transform(choice("a sampler", {{"sobol", FC_SAMPLER_SOBOL}, {"independent", FC_SAMPLER_INDEPENDENT}}));
     render
         ->add_option("--filter", opt.filter,
                      "Pixel filter, drawn by filter importance sampling: " + pixel_filter_help() +
                          "; default: the scene's, else box")
-        ->transform(CLI::CheckedTransformer(pixel_filter_map()));
+        ->option_text("NAME")
+        ->transform(choice("a pixel filter", pixel_filter_choices()));
     render
-        ->add_option("--filter-radius", opt.filter_radius,
-                     "Radius of the pixel filter in pixels (default: the filter's)")
+        ->add_option(
+            "--filter-radius", opt.filter_radius,
+            fmt::format("Radius of the pixel filter in pixels, at most {:g} (default: the filter's)", kMaxFilterRadius))
+        ->option_text("PIXELS")
         ->check(kFinite & positive_up_to(kMaxFilterRadius, "pixels"));
     render
         ->add_option("--clamp", opt.clamp,
                      "Clamp each sample's contribution to this value (its largest channel): fewer fireflies, but "
                      "biased (darker); off by default, recorded in the EXR metadata and the report")
+        ->option_text("X")
         ->check(kFinite & positive_up_to(FC_MAX_RADIANCE, "radiance"));
-    render->add_option("--camera", opt.camera, "A glTF file's camera by name (default: the first one)");
-    render->add_option("--eye", opt.eye, "Camera position X,Y,Z (replaces the scene's)")
+    render->add_option("--camera", opt.camera, "A glTF file's camera by name (default: the first one)")
+        ->option_text("NAME");
+    render->add_option("--eye", opt.eye, "Camera position X,Y,Z (default: the scene's; a bare mesh is framed to fit)")
+        ->option_text("X,Y,Z")
         ->delimiter(',')
         ->expected(3)
         ->check(kFinite);
-    render->add_option("--target", opt.target, "Point the camera looks at, X,Y,Z")
+    render->add_option("--target", opt.target, "Point the camera looks at, X,Y,Z (default: the scene's)")
+        ->option_text("X,Y,Z")
         ->delimiter(',')
         ->expected(3)
         ->check(kFinite);
-    render->add_option("--up", opt.up, "Camera up direction X,Y,Z")->delimiter(',')->expected(3)->check(kFinite);
-    render->add_option("--fov", opt.fov, "Vertical field of view in degrees (perspective)")
+    render->add_option("--up", opt.up, "Camera up direction X,Y,Z (default: the scene's, else +y)")
+        ->option_text("X,Y,Z")
+        ->delimiter(',')
+        ->expected(3)
+        ->check(kFinite);
+    render
+        ->add_option("--fov", opt.fov,
+                     fmt::format("Vertical field of view in degrees, between 0 and 180 (perspective; default: the "
+                                 "scene's, else {:g})",
+                                 CameraDesc{}.fov_y_degrees))
+        ->option_text("DEGREES")
         ->check(kFinite & CLI::Validator(
                               [](std::string& text) {
                                   const double v = std::strtod(text.c_str(), nullptr);
@@ -199,7 +263,11 @@ int run_cli(int argc, char** argv) {
                                              : fmt::format("Value {} is not a number of degrees in (0, 180)", text);
                               },
                               "DEGREES in (0, 180)"));
-    render->add_option("--aperture", opt.aperture, "Thin-lens radius in scene units (0: a pinhole; depth of field)")
+    render
+        ->add_option("--aperture", opt.aperture,
+                     "Thin-lens radius in scene units, 0 or more, for depth of field (default: the scene's, else 0: "
+                     "a pinhole)")
+        ->option_text("RADIUS")
         ->check(kFinite & CLI::Validator(
                               [](std::string& text) {
                                   return std::strtod(text.c_str(), nullptr) >= 0.0
@@ -209,46 +277,66 @@ int run_cli(int argc, char** argv) {
                               "RADIUS >= 0"));
     render
         ->add_option("--focus-distance", opt.focus_distance,
-                     "Distance of the plane in focus along the view direction (default: to --target)")
+                     "Distance of the plane in focus along the view direction (default: the scene's, else the distance "
+                     "to --target; when the target is nearer than anything in view, the distance to the surface at "
+                     "the image centre)")
+        ->option_text("DISTANCE")
         ->check(kFinite & positive_up_to(1e30f, "scene units"));
-    render->add_option("--device", opt.device,
-                       "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU); "
-                       "several render together: all, gpu, cpu, or a list such as 0,2 (docs/devices.md)");
+    render
+        ->add_option("--device", opt.device,
+                     "OpenCL device: index from `facet devices` or part of its name (default: first GPU, else CPU); "
+                     "several render together: all, gpu, cpu, or a list such as 0,2 (docs/devices.md)")
+        ->option_text("DEVICE");
     render
         ->add_option("--samples-from", opt.samples_from,
                      "First sample index: renders with disjoint ranges (--samples-from K --spp N renders K..K+N-1) "
-                     "merge with `facet merge`")
-        ->check(CLI::Range(std::uint64_t(0), std::uint64_t(0xffffffffu)));
-    render->add_option("--out", opt.out,
-                       "Output image, linear 32-bit float: .exr (or .hdr, .tif, .pfm); the tone-mapped PNG is written "
-                       "beside it with .png (so --out cannot be a .png); default out/<scene>.exr");
-    render->add_option("--snapshot", opt.snapshot, "Write the image so far (and the report) every SECONDS")
+                     "merge with `facet merge` (0 to 4294967295; default: 0)")
+        ->option_text("K")
+        ->check(between(0.0, 4294967295.0));
+    render
+        ->add_option("--out", opt.out,
+                     "Output image, linear 32-bit float: .exr (or .hdr, .tif, .pfm); the tone-mapped PNG is written "
+                     "beside it with .png (so --out cannot be a .png); default out/<scene>.exr")
+        ->option_text("FILE");
+    render
+        ->add_option("--snapshot", opt.snapshot,
+                     "Write the image so far (and the report) every SECONDS (default: only at the end)")
+        ->option_text("SECONDS")
         ->check(kFinite & kSeconds);
-    render->add_option("--reference", opt.reference,
-                       "Reference image (EXR/HDR) to measure the error against, per pass");
-    render->add_option("--report", opt.report,
-                       "Error-against-time report (CSV; .json summary and .svg plot beside it); default beside --out");
-    render->add_option(
-        "--film", opt.film,
-        "Also save the film (the accumulated samples, docs/film-format.md) here at the end; without it "
-        "the film is saved beside --out (.film) only when interrupted or when the image cannot be written");
-    render->add_option("--resume", opt.resume,
-                       "Continue the render saved in this film (same scene and settings; --spp and --time count its "
-                       "samples and time too)");
-    render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops")
-        ->check(kFinite & CLI::Range(-30.0f, 30.0f));
+    render
+        ->add_option("--reference", opt.reference,
+                     "Reference image (EXR/HDR) to measure the error against, per pass (default: none)")
+        ->option_text("FILE");
+    render
+        ->add_option("--report", opt.report,
+                     "Error-against-time report (CSV; .json summary and .svg plot beside it); default beside --out")
+        ->option_text("FILE");
+    render
+        ->add_option("--film", opt.film,
+                     "Also save the film (the accumulated samples, docs/film-format.md) here at the end; without it "
+                     "the film is saved beside --out (.film) only when interrupted or when the image cannot be written")
+        ->option_text("FILE");
+    render
+        ->add_option("--resume", opt.resume,
+                     "Continue the render saved in this film (same scene and settings, its size when --width and "
+                     "--height are not given; --spp and --time count its samples and time too)")
+        ->option_text("FILE");
+    render->add_option("--exposure", opt.exposure, "Exposure of the PNG in stops, -30 to 30 (default: 0)")
+        ->option_text("STOPS")
+        ->check(kFinite & between(-30.0, 30.0));
     render
         ->add_option("--tonemap", opt.tonemap,
                      "Tone mapping of the PNG: clip (default; linear clamped to 1, sRGB-encoded) or filmic (a "
                      "sigmoid in stops, AgX-like: highlights roll off over 7 stops instead of clipping)")
-        ->transform(CLI::CheckedTransformer(
-            std::map<std::string, ToneMap>{{"clip", ToneMap::Clip}, {"filmic", ToneMap::Filmic}}));
+        ->option_text("clip|filmic")
+        ->transform(choice("a tone mapping", {{"clip", int(ToneMap::Clip)}, {"filmic", int(ToneMap::Filmic)}}));
     render
         ->add_option("--aov", opt.aov,
                      "Extra layers of the EXR for denoisers and compositors, at the first non-specular hit: any of "
-                     "albedo, normal, depth, comma-separated (albedo.R/G/B, normal.X/Y/Z, depth.Z)")
+                     "albedo, normal, depth, comma-separated (albedo.R/G/B, normal.X/Y/Z, depth.Z); default: none")
+        ->option_text("LAYERS")
         ->delimiter(',')
-        ->check(CLI::IsMember({"albedo", "normal", "depth"}));
+        ->check(one_of("a layer", {"albedo", "normal", "depth"}));
     render->add_flag(
         "--generic", opt.generic,
         "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
@@ -260,8 +348,9 @@ int run_cli(int argc, char** argv) {
     merge_cmd->add_option("films", merge.films, "Films written with --film")->required();
     merge_cmd->add_option("--out", merge.out, "Merged image (.exr; the PNG is written beside it)")->required();
     merge_cmd->add_option("--film", merge.film, "Also write the merged film here");
-    merge_cmd->add_option("--exposure", merge.exposure, "Exposure of the PNG in stops")
-        ->check(kFinite & CLI::Range(-30.0f, 30.0f));
+    merge_cmd->add_option("--exposure", merge.exposure, "Exposure of the PNG in stops, -30 to 30 (default: 0)")
+        ->option_text("STOPS")
+        ->check(kFinite & between(-30.0, 30.0));
 
     CompareOptions cmp;
     CLI::App* compare =
@@ -278,13 +367,22 @@ int run_cli(int argc, char** argv) {
     CLI::App* sky_cmd =
         app.add_subcommand("sky", "Write the generated sun-and-sky environment map as EXR (docs/environment.md)");
     sky_cmd->add_option("out", sky.out, "Output EXR")->required();
-    sky_cmd->add_option("--width", sky.width, "Width in texels (height is half)")->check(CLI::Range(8, 16384));
-    sky_cmd->add_option("--elevation", sky.elevation, "Sun elevation in degrees")
-        ->check(kFinite & CLI::Range(-10.0f, 90.0f));
-    sky_cmd->add_option("--azimuth", sky.azimuth, "Sun azimuth in degrees")
-        ->check(kFinite & CLI::Range(-360.0f, 360.0f));
-    sky_cmd->add_option("--turbidity", sky.turbidity, "Atmospheric turbidity (Preetham's model)")
-        ->check(kFinite & CLI::Range(1.7f, 10.0f));
+    sky_cmd
+        ->add_option("--width", sky.width,
+                     fmt::format("Width in texels, 8 to 16384 (height is half; default: {})", sky.width))
+        ->check(between(8, 16384));
+    sky_cmd
+        ->add_option("--elevation", sky.elevation,
+                     fmt::format("Sun elevation in degrees, -10 to 90 (default: {:g})", sky.elevation))
+        ->check(kFinite & between(-10.0, 90.0));
+    sky_cmd
+        ->add_option("--azimuth", sky.azimuth,
+                     fmt::format("Sun azimuth in degrees, -360 to 360 (default: {:g})", sky.azimuth))
+        ->check(kFinite & between(-360.0, 360.0));
+    sky_cmd
+        ->add_option("--turbidity", sky.turbidity,
+                     fmt::format("Atmospheric turbidity (Preetham's model), 1.7 to 10 (default: {:g})", sky.turbidity))
+        ->check(kFinite & between(1.7, 10.0));
 
     // A bare `facet`: the help, not "a subcommand is required".
     if (argc <= 1) {
@@ -296,6 +394,14 @@ int run_cli(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         // Prints the help, or the option and the problem ("--spp: Value 0 not in range"),
         // and for an unknown option the closest known one.
+        if (!dynamic_cast<const CLI::Success*>(&e) && refuse_unknown_command(app)) return kExitUsage;
+        if (const auto* c = dynamic_cast<const CLI::ConversionError*>(&e)) {
+            const std::string words = conversion_words(app, *c);
+            if (!words.empty()) {
+                std::cerr << words << "\nRun with --help for more information.\n";
+                return kExitUsage;
+            }
+        }
         const int status = app.exit(e) == 0 ? kExitOk : kExitUsage;
         if (dynamic_cast<const CLI::ExtrasError*>(&e)) suggest_options(app);
         return status;

@@ -84,4 +84,8 @@ int run_compare(const CompareOptions& opt);
 int run_plot(const PlotOptions& opt);
 int run_sky(const SkyOptions& opt);
 
+// `facet --version`: version, commit, build type, and each OpenCL platform and device found
+// (or that none was).
+std::string version_report();
+
 }  // namespace facet

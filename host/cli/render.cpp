@@ -12,11 +12,13 @@
 #include "host/cli/outputs.hpp"
 #include "host/cli/progress.hpp"
 #include "host/cli/render_parts.hpp"
+#include "host/cli/resume_size.hpp"
 #include "host/cli/stop_signals.hpp"
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/readers/load_scene.hpp"
 #include "host/render/session.hpp"
+#include "host/scene/camera_focus.hpp"
 #include "host/report/report.hpp"
 
 namespace facet {
@@ -70,12 +72,15 @@ int run_render(const RenderOptions& opt) {
     const SigpipeIgnored sigpipe_ignored;  // `facet render ... | head -1` renders on
     Scene scene = load_scene(opt.scene, opt.camera);
     apply_overrides(opt, scene);
+    settle_focus(scene);  // a target nearer than anything in view: focus at the image centre (camera_focus.hpp)
     for (const std::string& w : scene.warnings) say(stderr, "facet: warning: {}\n", w);
     const OutputPlan plan = plan_outputs(opt);
     check_outputs(plan, opt);
     check_render_options(opt, plan);
     const OutputLocks locks = lock_outputs(plan);  // held to the end (output_locks.hpp)
     SessionOptions session_opt = session_options(opt, start);
+    if (session_opt.resume)
+        take_film_size(*session_opt.resume, opt, scene.settings);  // --width/--height default to the film's
     std::optional<ImageRGB> reference;
     if (!opt.reference.empty()) reference = read_reference(opt.reference, scene.settings.width, scene.settings.height);
 
