@@ -17,7 +17,7 @@ int run_info(const InfoOptions& opt) {
     const BvhStats& b = bvh.stats;
     const DeviceScene dev = compile(scene, bvh);  // with the shared meshes' trees and the instances
     const std::size_t bvh_bytes = scene.instances.empty() ? b.device_bytes
-                                                          : dev.nodes.size_bytes() + dev.triangles.size_bytes() +
+                                                          : dev.nodes.size_bytes() + dev.tris.size_bytes() +
                                                                 dev.instancing.instances.size() * sizeof(FcInstance) +
                                                                 dev.instancing.tree.size() * sizeof(FcInstanceNode);
     std::size_t shading_bytes = dev.shading.size_bytes() + scene.materials.size() * sizeof(FcMaterial) +
@@ -56,7 +56,7 @@ int run_info(const InfoOptions& opt) {
                : scene.environment.params.width == 0
                    ? "constant"
                    : fmt::format("{}x{} map", scene.environment.params.width, scene.environment.params.height));
-    const std::size_t texture_bytes = dev.textures.bytes();
+    const std::size_t texture_bytes = dev.texture_data.bytes();
     if (scene_uses_textures(scene))
         fmt::print("textures    {} images, {:.2f} MiB with mip-maps and uvs\n", scene.textures.size(),
                    double(texture_bytes) / (1 << 20));

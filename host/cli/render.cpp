@@ -30,6 +30,7 @@
 #include "host/film/sample_ranges.hpp"
 #include "host/render/aov.hpp"
 #include "host/render/features.hpp"
+#include "host/render/film_identity.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/device_group.hpp"
 #include "host/render/device_group_watch.hpp"
@@ -336,12 +337,8 @@ int run_render(const RenderOptions& opt) {
     const std::string& out = plan.image;
     const std::string& report = plan.report;
     check_outputs(plan, opt);
-    const std::uint64_t scene_hash = film_scene_hash(scene);
     std::optional<FilmState> resumed;
-    if (!opt.resume.empty()) {
-        resumed = read_film(opt.resume);
-        check_film_matches(*resumed, opt.resume, scene, scene_hash);
-    }
+    if (!opt.resume.empty()) resumed = read_film(opt.resume);
     std::optional<ImageRGB> reference;
     if (!opt.reference.empty()) reference = read_reference(opt.reference, scene.settings.width, scene.settings.height);
 
@@ -360,16 +357,20 @@ int run_render(const RenderOptions& opt) {
     bvh_options.width = bvh_width_for(contexts.front().desc().type == CL_DEVICE_TYPE_GPU,
                                       contexts.front().device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
     Bvh bvh = build_bvh(scene.vertices, bvh_options);
+    // The device scene, compiled once for the AOVs and every device; the film's identity from it.
+    const DeviceScene device_scene = compile(scene, bvh);
+    const std::uint64_t scene_hash = film_identity(device_scene);
+    if (resumed) check_film_matches(*resumed, opt.resume, scene, scene_hash);
     // The AOVs first (rank 0's first device), their buffers released before the path
     // tracer uploads the scene.
     std::vector<ImageLayer> layers;
     if (!opt.aov.empty() && Ranks::world().leads()) {
         const std::uint32_t aov_spp = std::uint32_t(std::min(scene.settings.spp, kAovSpp));
-        const AovImages aovs = render_aovs(contexts.front(), scene, bvh, aov_spp);
+        const AovImages aovs = render_aovs(contexts.front(), scene, bvh, device_scene, aov_spp);
         layers = aov_layers(opt, aovs);
         if (!opt.quiet) say(stdout, "aovs     {} ({} spp) in {:.2f} s\n", name_list(opt.aov), aov_spp, aovs.seconds);
     }
-    DeviceGroup renderer(std::move(contexts), scene, bvh, opt.generic, opt.samples_from,
+    DeviceGroup renderer(std::move(contexts), scene, bvh, device_scene, opt.generic, opt.samples_from,
                          [](const std::string& w) { say(stderr, "facet: warning: {}\n", w); });
     const double compile_s = renderer.stats().compile_seconds;
     if (resumed) renderer.restore(resumed->sums, resumed->samples, resumed->render_seconds);
