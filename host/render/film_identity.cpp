@@ -90,6 +90,14 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
                         "different renders cannot be combined",
                         film_path, what, film_value, now));
     };
+    auto refuse_scene = [&] {
+        throw Error(
+            fmt::format("--resume {}: the film was rendered from another scene (identity {:016x}, this scene {:016x}; "
+                        "the film's scene file: {}, this one: {}): samples of different scenes cannot be combined",
+                        film_path, film.scene_hash, identity, film.scene_path, scene.source_path));
+    };
+    // Another scene file: said first; else the setting that differs, else the scene's contents.
+    if (film.scene_hash != identity && film.scene_path != scene.source_path) refuse_scene();
     if (film.width != s.width || film.height != s.height)
         refuse("a size of", fmt::format("{}x{}", film.width, film.height), fmt::format("{}x{}", s.width, s.height));
     if (film.seed != s.seed) refuse("--seed", std::to_string(film.seed), std::to_string(s.seed));
@@ -99,11 +107,7 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
         refuse("Russian roulette depth", std::to_string(film.rr_depth), std::to_string(s.rr_depth));
     if (film.strategy != s.strategy) refuse("--strategy", strategy_name(film.strategy), strategy_name(s.strategy));
     if (film.sampler != s.sampler) refuse("--sampler", sampler_name(film.sampler), sampler_name(s.sampler));
-    if (film.scene_hash != identity)
-        throw Error(
-            fmt::format("--resume {}: the film was rendered from another scene (identity {:016x}, this scene {:016x}; "
-                        "the film's scene file: {}, this one: {}): samples of different scenes cannot be combined",
-                        film_path, film.scene_hash, identity, film.scene_path, scene.source_path));
+    if (film.scene_hash != identity) refuse_scene();
 }
 
 }  // namespace facet

@@ -32,10 +32,11 @@ FilmState make_film(const Scene& scene, std::uint64_t identity, const SampleRang
 FilmState make_film(const Scene& scene, std::uint64_t identity, std::uint64_t spp, double render_seconds,
                     std::vector<float> sums);
 
-// Throws facet::Error naming the film and the first setting in which it differs from a
-// render of `scene` (width, height, seed, max depth, Russian roulette depth, strategy,
-// sampler), else, when the identities differ, "the film was rendered from another scene
-// (identity X, this scene Y)": samples of another scene or settings must not be mixed.
+// Throws facet::Error when the film's samples cannot be continued by a render of `scene`
+// with identity `identity`: "the film was rendered from another scene (identity X, this
+// scene Y)" when the identities and the scene files differ, else the first setting that
+// differs (width, height, seed, max depth, Russian roulette depth, strategy, sampler), else
+// the same message when only the identities differ.
 void check_film_matches(const FilmState& film, const std::string& film_path, const Scene& scene,
                         std::uint64_t identity);
 

@@ -5,8 +5,9 @@
 # --resume and --film work on rank 0; a rank killed mid-render (kill -9) loses only the
 # pass in progress: rank 0 writes the film and image of the samples every rank finished,
 # names the dead rank and the missing samples, and exits non-zero; those samples rendered
-# with --samples-from and merged give the image of one uninterrupted render. A rank without
-# an OpenCL platform says so and ends the job. Skipped without mpirun or a facet built
+# with --samples-from and merged give the image of one uninterrupted render. Ranks given
+# another scene or size are refused before the first sample. A rank without an OpenCL
+# platform says so and ends the job. Skipped without mpirun or a facet built
 # without MPI.
 source "$(dirname "${BASH_SOURCE[0]}")/common.bash"
 cd "$tmp" || exit 1
@@ -100,6 +101,17 @@ run dead-rank-merge 0 "merged   2 films: $((held + 6)) spp" -- "$FACET" merge "$
 run dead-rank-whole 0 "wrote" -- "$FACET" render "$scene" --width 24 --height 24 --seed 7 --quiet \
     --spp "$((held + 6))" --out "$tmp/whole.exr"
 check dead-rank-merge-equals-whole rmse_below "$tmp/merged.exr" "$tmp/whole.exr" 1e-5
+
+# Ranks given different scenes or sizes: refused before the first sample, naming the rank,
+# and no image of two scenes is written.
+mix=(--width 24 --seed 7 --spp 4 --quiet --out "$tmp/mix.exr")
+run ranks-other-scene 1 "MPI rank 1 renders another scene \(identity [0-9a-f]{16}, rank 0 has [0-9a-f]{16}\)" -- \
+    timeout 120 mpirun -n 1 "$FACET" render "$scene" --height 24 "${mix[@]}" : \
+    -n 1 "$FACET" render "$SCENES/furnace_sphere.json" --height 24 "${mix[@]}"
+run ranks-other-size 1 "MPI rank 1 renders a 24x16 image, rank 0 a 24x24 one" -- \
+    timeout 120 mpirun -n 1 "$FACET" render "$scene" --height 24 "${mix[@]}" : \
+    -n 1 "$FACET" render "$scene" --height 16 "${mix[@]}"
+check ranks-of-other-scenes-write-nothing test ! -e "$tmp/mix.exr"
 
 # A rank with no OpenCL platform: its message names it, and the job ends (no hang).
 mkdir -p "$tmp/no-icd"
