@@ -31,12 +31,7 @@ struct AssetCase {
 };
 
 // Bytes of every array the renderer uploads but the image.
-std::uint64_t device_bytes(const DeviceScene& d) {
-    return d.nodes.size_bytes() + d.triangles.size_bytes() + d.shading.size_bytes() +
-           d.materials.size() * sizeof(FcMaterial) + d.lights.size_bytes() + d.environment_texels.size_bytes() +
-           d.environment_distribution.size_bytes() + d.spheres.spheres.size() * sizeof(FcSphere) +
-           d.spheres.nodes.size() * sizeof(FcSphereNode) + d.textures.bytes();
-}
+std::uint64_t device_bytes(const DeviceScene& d) { return d.bytes(); }
 
 double mib(std::uint64_t bytes) { return double(bytes) / double(1u << 20); }
 
@@ -87,7 +82,7 @@ nlohmann::json bench_assets(ClContext& ctx, const std::string& assets, bool quic
         std::uint64_t float4_bytes = 0;  // the texels as the pool stored them before: 16 bytes each
         for (const TextureImage& t : scene.textures) float4_bytes += t.texels.size() * sizeof(float);
         const bool textured = scene_uses_textures(scene);
-        const std::uint64_t pool = textured ? dev.textures.texels.size() * sizeof(std::uint32_t) : 0;
+        const std::uint64_t pool = textured ? dev.texels.size_bytes() : 0;
         const double with = textured ? samples_per_second(ctx, scene, bvh, size, spp) : 0.0;
         Scene plain = scene;
         for (Material& m : plain.materials) m.textures = MaterialTextures{};

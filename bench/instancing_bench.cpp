@@ -109,9 +109,9 @@ Run run_once(ClContext& ctx, const std::string& path, bool instanced, bool quick
     const Bvh bvh = build_bvh(scene.vertices);
     const DeviceScene dev = compile(scene, bvh);
     r.build_s = since(start);
-    r.device_triangles = dev.triangles.size();
+    r.device_triangles = dev.tris.size();
     r.world_triangles = scene.placed_triangle_count();
-    r.device_bytes = dev.nodes.size_bytes() + dev.triangles.size_bytes() + dev.shading.size_bytes() +
+    r.device_bytes = dev.nodes.size_bytes() + dev.tris.size_bytes() + dev.shading.size_bytes() +
                      dev.instancing.instances.size() * sizeof(FcInstance) +
                      dev.instancing.tree.size() * sizeof(FcInstanceNode);
     Renderer renderer(ctx, scene, bvh);

@@ -87,12 +87,12 @@ TEST(DeviceScene, CompileViewsTheSceneAndConvertsMaterials) {
     EXPECT_EQ(d.params.light_count, 2u);
     EXPECT_EQ(d.params.sample_count, 0u);
     EXPECT_EQ(d.nodes.data(), bvh.nodes.data());
-    EXPECT_EQ(d.triangles.size(), bvh.triangles.size());
+    EXPECT_EQ(d.tris.size(), bvh.triangles.size());
     EXPECT_EQ(d.shading.data(), s.shading.data());
     EXPECT_EQ(d.lights.size(), s.lights.size());
     EXPECT_EQ(d.light_cdf.size(), s.light_cdf.size());
-    EXPECT_EQ(d.environment_texels.size(), s.environment.texels.size());
-    EXPECT_EQ(d.environment_distribution.size(), s.environment.distribution.size());
+    EXPECT_EQ(d.env_texels.size(), s.environment.texels.size());
+    EXPECT_EQ(d.env_dist.size(), s.environment.distribution.size());
     ASSERT_EQ(d.materials.size(), 2u);
     EXPECT_EQ(d.materials[1].emission[0], 2.0f);
     EXPECT_EQ(d.materials[0].diffuse[1], 0.8f);

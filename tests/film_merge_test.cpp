@@ -13,6 +13,7 @@
 #include "host/bvh/bvh.hpp"
 #include "host/film/film_halves.hpp"
 #include "host/film/film_merge.hpp"
+#include "host/render/film_identity.hpp"
 #include "host/render/device_group.hpp"
 #include "host/render/progressive.hpp"
 #include "tests/lit_scene.hpp"
@@ -29,8 +30,8 @@ FilmState render_film(const Scene& scene, const Bvh& bvh, std::uint64_t first, s
     const char* sel = std::getenv("FACET_TEST_DEVICE");
     DeviceGroup group({ClContext::create(sel ? sel : "")}, scene, bvh, false, first);
     render_fixed(group, spp, pass);
-    return make_film(scene, film_scene_hash(scene), group.samples(), group.stats().render_seconds,
-                     group.accumulation());
+    return make_film(scene, film_identity(scene, build_bvh(scene.vertices)), group.samples(),
+                     group.stats().render_seconds, group.accumulation());
 }
 
 std::vector<float> image_of(const FilmState& f) {
@@ -81,7 +82,7 @@ TEST(FilmMerge, MergedPartialRendersEqualOneRender) {
 
 TEST(FilmMerge, RefusesOverlapsOtherScenesAndSettings) {
     const Scene scene = test::lit_scene(6);
-    const std::uint64_t hash = film_scene_hash(scene);
+    const std::uint64_t hash = film_identity(scene, build_bvh(scene.vertices));
     const std::vector<float> sums(2 * 36 * 4, 1.0f);
     const FilmState a = make_film(scene, hash, SampleRanges{{0, 8}}, 1.0, sums);
     const FilmState b = make_film(scene, hash, SampleRanges{{6, 10}}, 1.0, sums);
@@ -89,7 +90,7 @@ TEST(FilmMerge, RefusesOverlapsOtherScenesAndSettings) {
     EXPECT_NE(msg.find("a.film and b.film both hold sample 6"), std::string::npos) << msg;
     FilmState other = make_film(scene, hash ^ 1, SampleRanges{{8, 10}}, 1.0, sums);
     msg = error_of([&] { merge_films({a, other}, {"a.film", "o.film"}); });
-    EXPECT_NE(msg.find("o.film has another scene"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("o.film: the film was rendered from another scene (identity "), std::string::npos) << msg;
     for (auto change : {+[](FilmState& f) { f.seed += 1; }, +[](FilmState& f) { f.max_depth += 1; },
                         +[](FilmState& f) { f.rr_depth += 1; }, +[](FilmState& f) { f.strategy += 1; },
                         +[](FilmState& f) { f.sampler += 1; }}) {

@@ -10,6 +10,7 @@
 #include "host/bvh/bvh.hpp"
 #include "host/error.hpp"
 #include "host/film/film_state.hpp"
+#include "host/render/film_identity.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/scene.hpp"
 #include "tests/cl_test_env.hpp"
@@ -30,7 +31,7 @@ FilmState some_film(int w, int h) {
     scene.settings.height = h;
     std::vector<float> sums(2 * std::size_t(w) * std::size_t(h) * 4);
     for (std::size_t i = 0; i < sums.size(); ++i) sums[i] = i % 4 == 3 ? 0.0f : float(i) * 0.25f;  // none rejected
-    return make_film(scene, film_scene_hash(scene), 7, 1.5, sums);
+    return make_film(scene, film_identity(scene, build_bvh(scene.vertices)), 7, 1.5, sums);
 }
 
 TEST(FilmState, RoundTrip) {
@@ -76,19 +77,20 @@ TEST(FilmState, RefusesCorruptTruncatedAndForeignFiles) {
 
 TEST(FilmState, RefusesAnotherSceneOrSettings) {
     Scene scene = lit_scene(6);
-    const std::uint64_t hash = film_scene_hash(scene);
+    const std::uint64_t hash = film_identity(scene, build_bvh(scene.vertices));
     FilmState film = make_film(scene, hash, 4, 0.1, std::vector<float>(2 * 36 * 4));
     EXPECT_EQ(error_of([&] { check_film_matches(film, "f.film", scene, hash); }), "");
 
     Scene other = scene;
     other.camera.eye.x += 0.01f;
-    EXPECT_NE(film_scene_hash(other), hash);
-    EXPECT_NE(
-        error_of([&] { check_film_matches(film, "f.film", other, film_scene_hash(other)); }).find("another scene"),
-        std::string::npos);
+    EXPECT_NE(film_identity(other, build_bvh(other.vertices)), hash);
+    EXPECT_NE(error_of([&] {
+                  check_film_matches(film, "f.film", other, film_identity(other, build_bvh(other.vertices)));
+              }).find("another scene"),
+              std::string::npos);
     other = scene;
     other.materials[0].diffuse[0] = 0.5f;
-    EXPECT_NE(film_scene_hash(other), hash);
+    EXPECT_NE(film_identity(other, build_bvh(other.vertices)), hash);
     for (auto change :
          {+[](RenderSettings& s) { s.width = 7; }, +[](RenderSettings& s) { s.seed = 3; },
           +[](RenderSettings& s) { s.max_depth = 2; }, +[](RenderSettings& s) { s.strategy = FC_STRATEGY_BSDF; },
@@ -104,7 +106,7 @@ TEST(FilmState, ResumeEqualsOneUninterruptedRender) {
     test::TempDir dir;
     Scene scene = lit_scene(16);
     Bvh bvh = build_bvh(scene.vertices);
-    const std::uint64_t hash = film_scene_hash(scene);
+    const std::uint64_t hash = film_identity(scene, build_bvh(scene.vertices));
 
     Renderer whole(test::context(), scene, bvh);
     whole.render(3);

@@ -8,6 +8,8 @@
 
 #include "host/film/film_state.hpp"
 #include "host/film/film_validate.hpp"
+#include "host/render/film_identity.hpp"
+#include "host/bvh/bvh.hpp"
 #include "host/scene/scene.hpp"
 #include "tests/lit_scene.hpp"
 #include "tests/temp_dir.hpp"
@@ -24,7 +26,7 @@ FilmState plain_film(SampleRanges samples = {{0, 6}}) {
     scene.settings.height = 3;
     std::vector<float> sums(2 * 12 * 4, 1.0f);
     for (std::size_t i = 3; i < sums.size(); i += 4) sums[i] = 0.0f;
-    return make_film(scene, film_scene_hash(scene), samples, 1.0, sums);
+    return make_film(scene, film_identity(scene, build_bvh(scene.vertices)), samples, 1.0, sums);
 }
 
 // The message read_film gives for `film` written to a file (empty when it reads).

@@ -170,7 +170,7 @@ TEST(Instancing, MeshUsedByThreeNodesIsStoredOnce) {
     // The device holds one copy; each instance's inverse is its inverse, its box holds it.
     const Bvh bvh = build_bvh(s.vertices);
     const DeviceScene dev = compile(s, bvh);
-    EXPECT_EQ(dev.triangles.size(), kGroundTriangles + kMeshTriangles);
+    EXPECT_EQ(dev.tris.size(), kGroundTriangles + kMeshTriangles);
     EXPECT_EQ(dev.shading.size(), kGroundTriangles + kMeshTriangles);
     ASSERT_EQ(dev.instancing.instances.size(), 3u);
     for (std::size_t k = 0; k < 3; ++k) {
@@ -189,10 +189,9 @@ TEST(Instancing, MeshUsedByThreeNodesIsStoredOnce) {
         }
     }
     const DeviceScene flat = compile(p.flat, build_bvh(p.flat.vertices));
-    EXPECT_EQ(flat.triangles.size(), kGroundTriangles + 3 * kMeshTriangles);
+    EXPECT_EQ(flat.tris.size(), kGroundTriangles + 3 * kMeshTriangles);
     EXPECT_TRUE(flat.instancing.instances.empty());
-    EXPECT_LT(dev.nodes.size_bytes() + dev.triangles.size_bytes(),
-              flat.nodes.size_bytes() + flat.triangles.size_bytes());
+    EXPECT_LT(dev.nodes.size_bytes() + dev.tris.size_bytes(), flat.nodes.size_bytes() + flat.tris.size_bytes());
 }
 
 // What trace_scene_batch returns for each ray.
@@ -230,12 +229,12 @@ Traced trace(const Scene& scene, const NodeLayout& layout, const std::vector<cl_
     const std::size_t n = origins.size();
     cl::Kernel k(test::program(layout.kernels), "trace_scene_batch");
     const cl::Buffer args[] = {buffer(dev.nodes),
-                               buffer(dev.triangles),
+                               buffer(dev.tris),
                                buffer(dev.shading),
-                               buffer(std::span<const FcSphere>(dev.spheres.spheres)),
-                               buffer(std::span<const FcSphereNode>(dev.spheres.nodes)),
-                               buffer(std::span<const FcInstance>(dev.instancing.instances)),
-                               buffer(std::span<const FcInstanceNode>(dev.instancing.tree)),
+                               buffer(dev.spheres),
+                               buffer(dev.sphere_nodes),
+                               buffer(dev.instances),
+                               buffer(dev.instance_nodes),
                                buffer(std::span<const cl_float4>(origins)),
                                buffer(std::span<const cl_float4>(dirs))};
     cl_uint a = 0;

@@ -17,12 +17,12 @@ int run_info(const InfoOptions& opt) {
     const BvhStats& b = bvh.stats;
     const DeviceScene dev = compile(scene, bvh);  // with the shared meshes' trees and the instances
     const std::size_t bvh_bytes = scene.instances.empty() ? b.device_bytes
-                                                          : dev.nodes.size_bytes() + dev.triangles.size_bytes() +
+                                                          : dev.nodes.size_bytes() + dev.tris.size_bytes() +
                                                                 dev.instancing.instances.size() * sizeof(FcInstance) +
                                                                 dev.instancing.tree.size() * sizeof(FcInstanceNode);
     std::size_t shading_bytes = dev.shading.size_bytes() + scene.materials.size() * sizeof(FcMaterial) +
                                 scene.lights.size() * sizeof(FcLight) + scene.light_cdf.size() * sizeof(float);
-    std::size_t film_bytes = std::size_t(scene.settings.width) * scene.settings.height * 16;
+    std::size_t film_bytes = 2 * std::size_t(scene.settings.width) * scene.settings.height * 16;  // two halves
     fmt::print("scene       {}\n", scene.source_path);
     if (scene.instances.empty()) {
         fmt::print("triangles   {}\n", scene.triangle_count());
@@ -56,7 +56,7 @@ int run_info(const InfoOptions& opt) {
                : scene.environment.params.width == 0
                    ? "constant"
                    : fmt::format("{}x{} map", scene.environment.params.width, scene.environment.params.height));
-    const std::size_t texture_bytes = dev.textures.bytes();
+    const std::size_t texture_bytes = dev.texture_data.bytes();
     if (scene_uses_textures(scene))
         fmt::print("textures    {} images, {:.2f} MiB with mip-maps and uvs\n", scene.textures.size(),
                    double(texture_bytes) / (1 << 20));
@@ -66,7 +66,7 @@ int run_info(const InfoOptions& opt) {
     fmt::print("image       {}x{}, {} spp, max depth {}\n", scene.settings.width, scene.settings.height,
                scene.settings.spp, scene.settings.max_depth);
     fmt::print("device mem  {:.2f} MiB (bvh {:.2f}, shading {:.2f}, textures {:.2f}, film {:.2f})\n",
-               double(bvh_bytes + shading_bytes + texture_bytes + film_bytes) / (1 << 20),
+               double(dev.bytes() + film_bytes) / (1 << 20),  // every array of kernels/shared/scene_arrays.h
                double(bvh_bytes) / (1 << 20), double(shading_bytes) / (1 << 20), double(texture_bytes) / (1 << 20),
                double(film_bytes) / (1 << 20));
     return kExitOk;

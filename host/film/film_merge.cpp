@@ -11,9 +11,14 @@ void check_films_combine(const FilmState& a, const std::string& a_path, const Fi
         throw Error(fmt::format("{} has {} {}, {} has {}: samples of different renders cannot be combined", b_path,
                                 what, b_value, a_path, a_value));
     };
-    if (a.scene_hash != b.scene_hash)
-        refuse("another scene:", fmt::format("{} (hash {:016x})", a.scene_path, a.scene_hash),
-               fmt::format("{} (hash {:016x})", b.scene_path, b.scene_hash));
+    auto refuse_scene = [&] {
+        throw Error(
+            fmt::format("{}: the film was rendered from another scene (identity {:016x}, {} has {:016x}; "
+                        "scene files {} and {}): samples of different scenes cannot be combined",
+                        b_path, b.scene_hash, a_path, a.scene_hash, b.scene_path, a.scene_path));
+    };
+    // Another scene file: said first; else the setting that differs, else the scene's contents.
+    if (a.scene_hash != b.scene_hash && a.scene_path != b.scene_path) refuse_scene();
     if (a.width != b.width || a.height != b.height)
         refuse("a size of", fmt::format("{}x{}", a.width, a.height), fmt::format("{}x{}", b.width, b.height));
     const std::pair<const char*, std::pair<long long, long long>> settings[] = {
@@ -24,6 +29,7 @@ void check_films_combine(const FilmState& a, const std::string& a_path, const Fi
         {"sampler", {a.sampler, b.sampler}}};
     for (const auto& [name, values] : settings)
         if (values.first != values.second) refuse(name, std::to_string(values.first), std::to_string(values.second));
+    if (a.scene_hash != b.scene_hash) refuse_scene();
 }
 
 FilmState merge_films(const std::vector<FilmState>& films, const std::vector<std::string>& paths) {

@@ -12,8 +12,8 @@
 namespace facet {
 
 // Throws facet::Error naming both files and the first setting in which `b` differs from
-// `a` (scene hash, size, seed, depths, strategy, sampler): samples of different renders
-// cannot be combined.
+// `a` (the scene's identity first when the scene files differ too, then size, seed, depths,
+// strategy, sampler, then the identity): samples of different renders cannot be combined.
 void check_films_combine(const FilmState& a, const std::string& a_path, const FilmState& b, const std::string& b_path);
 
 // The sum of `films` (paths for messages, one each), added in the order given. Throws

@@ -34,16 +34,6 @@ struct Fnv {
             h *= 1099511628211ull;
         }
     }
-    template <typename T>
-    void vec(const std::vector<T>& v) {
-        std::uint64_t n = v.size();
-        bytes(&n, sizeof n);
-        bytes(v.data(), v.size() * sizeof(T));
-    }
-    template <typename T>
-    void value(const T& v) {
-        bytes(&v, sizeof v);
-    }
 };
 
 std::uint64_t payload_hash(const std::vector<float>& sums) {
@@ -66,63 +56,6 @@ std::uint64_t parse_hex(const std::string& s) {
 }
 
 }  // namespace
-
-std::uint64_t film_scene_hash(const Scene& scene) {
-    Fnv f;
-    f.vec(scene.vertices);
-    f.vec(scene.shading);
-    for (const SharedMesh& m : scene.meshes) {  // nothing for scenes without instances
-        f.vec(m.vertices);
-        f.vec(m.shading);
-    }
-    for (const Instance& in : scene.instances) {
-        f.value(in.mesh);
-        f.value(in.object_to_world);
-    }
-    // The device layout of each material: plain floats and ints, no padding to hash.
-    for (const Material& m : scene.materials) f.value(device_material(m));
-    f.vec(scene.lights);
-    f.vec(scene.light_cdf);
-    f.value(scene.environment_light);
-    f.value(scene.environment.params);
-    f.vec(scene.environment.texels);
-    const CameraDesc& c = scene.camera;
-    for (const glm::vec3& v : {c.eye, c.target, c.up}) f.bytes(&v[0], 3 * sizeof(float));
-    f.value(c.projection);
-    f.value(c.fov_y_degrees);
-    f.value(c.ortho_height);
-    f.value(c.aperture);
-    f.value(c.focus_distance);
-    // The pixel filter and the clamp change every sample: a film continues only with them.
-    f.value(scene.settings.filter);
-    f.value(pixel_filter_radius(scene.settings.filter, scene.settings.filter_radius));
-    f.value(scene.settings.clamp);
-    return f.h;
-}
-
-FilmState make_film(const Scene& scene, std::uint64_t scene_hash, std::uint64_t spp, double render_seconds,
-                    std::vector<float> sums) {
-    return make_film(scene, scene_hash, SampleRanges{{0, spp}}, render_seconds, std::move(sums));
-}
-
-FilmState make_film(const Scene& scene, std::uint64_t scene_hash, const SampleRanges& samples, double render_seconds,
-                    std::vector<float> sums) {
-    FilmState film;
-    film.scene_path = scene.source_path;
-    film.scene_hash = scene_hash;
-    film.width = scene.settings.width;
-    film.height = scene.settings.height;
-    film.seed = scene.settings.seed;
-    film.max_depth = scene.settings.max_depth;
-    film.rr_depth = scene.settings.rr_depth;
-    film.strategy = scene.settings.strategy;
-    film.sampler = scene.settings.sampler;
-    film.samples = normalized(samples);
-    film.spp = sample_count(film.samples);
-    film.render_seconds = render_seconds;
-    film.sums = std::move(sums);
-    return film;
-}
 
 void write_film(const std::string& path, const FilmState& film) {
     const std::size_t floats = 2 * std::size_t(film.width) * std::size_t(film.height) * 4;
@@ -228,40 +161,6 @@ FilmState read_film(const std::string& path) {
         throw Error(fmt::format("{}: the film's samples do not match its checksum: corrupt", path));
     validate_film_payload(film, path);
     return film;
-}
-
-void check_film_matches(const FilmState& film, const std::string& film_path, const Scene& scene,
-                        std::uint64_t scene_hash) {
-    const RenderSettings& s = scene.settings;
-    auto refuse = [&](const std::string& what, const std::string& film_value, const std::string& now) {
-        throw Error(
-            fmt::format("--resume {}: the film was rendered with {} {}, this render has {}: samples of "
-                        "different renders cannot be combined",
-                        film_path, what, film_value, now));
-    };
-    if (film.scene_hash != scene_hash)
-        refuse("another scene:", fmt::format("{} (hash {:016x})", film.scene_path, film.scene_hash),
-               fmt::format("{} (hash {:016x})", scene.source_path, scene_hash));
-    if (film.width != s.width || film.height != s.height)
-        refuse("a size of", fmt::format("{}x{}", film.width, film.height), fmt::format("{}x{}", s.width, s.height));
-    if (film.seed != s.seed) refuse("--seed", std::to_string(film.seed), std::to_string(s.seed));
-    if (film.max_depth != s.max_depth)
-        refuse("--max-depth", std::to_string(film.max_depth), std::to_string(s.max_depth));
-    if (film.rr_depth != s.rr_depth)
-        refuse("Russian roulette depth", std::to_string(film.rr_depth), std::to_string(s.rr_depth));
-    auto strategy = [](int v) {
-        return v == FC_STRATEGY_MIS     ? std::string("mis")
-               : v == FC_STRATEGY_LIGHT ? std::string("light")
-               : v == FC_STRATEGY_BSDF  ? std::string("bsdf")
-                                        : std::to_string(v);
-    };
-    if (film.strategy != s.strategy) refuse("--strategy", strategy(film.strategy), strategy(s.strategy));
-    auto sampler = [](int v) {
-        return v == FC_SAMPLER_SOBOL         ? std::string("sobol")
-               : v == FC_SAMPLER_INDEPENDENT ? std::string("independent")
-                                             : std::to_string(v);
-    };
-    if (film.sampler != s.sampler) refuse("--sampler", sampler(film.sampler), sampler(s.sampler));
 }
 
 }  // namespace facet

@@ -2,20 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
-#include <span>
 
 #include "host/render/features.hpp"
-#include "host/scene/device_scene.hpp"
+#include "host/render/scene_buffers.hpp"
 
 namespace facet {
 namespace {
-
-template <typename T>
-cl::Buffer upload(const cl::Context& ctx, std::span<const T> v) {
-    const T zero{};
-    const std::span<const T> data = v.empty() ? std::span<const T>(&zero, 1) : v;
-    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size_bytes(), const_cast<T*>(data.data()));
-}
 
 // Rows per launch: about 2^18 pixel-samples of primary rays and delta bounces, far below
 // any display watchdog.
@@ -27,11 +19,15 @@ std::uint32_t rows_per_launch(std::uint32_t width, std::uint32_t spp) {
 }  // namespace
 
 AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::uint32_t spp) {
+    return render_aovs(ctx, scene, bvh, compile(scene, bvh), spp);
+}
+
+AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, const DeviceScene& dev, std::uint32_t spp) {
     const auto start = std::chrono::steady_clock::now();
-    const DeviceScene dev = compile(scene, bvh);
     const std::uint32_t width = dev.params.width, height = dev.params.height;
     const std::size_t pixels = std::size_t(width) * height;
     std::vector<cl_float4> sums(2 * pixels);
+    check_device_memory(ctx.desc(), scene_buffer_needs(dev, sums.size() * sizeof(cl_float4)));
     std::vector<std::string> prelude = feature_prelude(scene_features(scene));
     if (bvh.stats.width != 4) prelude.push_back(bvh_prelude(bvh));  // 4-wide: the kernels' default
     const ProgramBuild build = build_program(ctx, "kernels/aov/aov.cl", prelude);
@@ -40,33 +36,11 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::u
         cl::Kernel kernel(build.program, "aov_pass");
         const std::size_t local = std::max<std::size_t>(
             1, std::min<std::size_t>(64, kernel.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(ctx.device())));
-        cl::Buffer params(c, CL_MEM_READ_ONLY, sizeof(FcRenderParams));
-        cl::Buffer nodes = upload(c, dev.nodes), tris = upload(c, dev.triangles), shading = upload(c, dev.shading);
-        cl::Buffer materials = upload(c, std::span<const FcMaterial>(dev.materials));
+        const SceneBuffers buffers = upload_scene(c, dev);
         cl::Buffer accum(c, CL_MEM_READ_WRITE, sums.size() * sizeof(cl_float4));
         ctx.queue().enqueueFillBuffer(accum, cl_float4{{0.0f, 0.0f, 0.0f, 0.0f}}, 0, sums.size() * sizeof(cl_float4));
-        kernel.setArg(0, params);
-        kernel.setArg(1, nodes);
-        kernel.setArg(2, tris);
-        kernel.setArg(3, shading);
-        kernel.setArg(4, materials);
-        kernel.setArg(5, accum);
-        cl::Buffer spheres = upload(c, std::span<const FcSphere>(dev.spheres.spheres));
-        cl::Buffer sphere_nodes = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
-        kernel.setArg(6, spheres);
-        kernel.setArg(7, sphere_nodes);
-        cl::Buffer textures = upload(c, std::span<const FcTexture>(dev.textures.table));
-        cl::Buffer texels = upload(c, std::span<const std::uint32_t>(dev.textures.texels));
-        cl::Buffer material_textures = upload(c, std::span<const FcMaterialTextures>(dev.textures.materials));
-        cl::Buffer texcoords = upload(c, std::span<const FcTriTexcoords>(dev.textures.texcoords));
-        kernel.setArg(8, textures);
-        kernel.setArg(9, texels);
-        kernel.setArg(10, material_textures);
-        kernel.setArg(11, texcoords);
-        cl::Buffer instances = upload(c, std::span<const FcInstance>(dev.instancing.instances));
-        cl::Buffer instance_nodes = upload(c, std::span<const FcInstanceNode>(dev.instancing.tree));
-        kernel.setArg(12, instances);
-        kernel.setArg(13, instance_nodes);
+        // aov_pass(FC_SCENE_KERNEL_PARAMS, accum)
+        kernel.setArg(bind_scene(kernel, buffers), accum);
         const std::uint32_t rows = rows_per_launch(width, spp);
         for (std::uint32_t row = 0; row < height; row += rows) {
             FcRenderParams p = dev.params;
@@ -74,7 +48,7 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::u
             p.sample_count = spp;
             p.row_begin = row;
             p.row_count = std::min(rows, height - row);
-            ctx.queue().enqueueWriteBuffer(params, CL_TRUE, 0, sizeof p, &p);
+            ctx.queue().enqueueWriteBuffer(buffers.params, CL_TRUE, 0, sizeof p, &p);
             const std::size_t items = std::size_t(p.row_count) * width;
             ctx.queue().enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange((items + local - 1) / local * local),
                                              cl::NDRange(local));

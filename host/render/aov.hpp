@@ -1,6 +1,6 @@
 // Auxiliary images (AOVs) for denoisers and compositors: albedo, shading normal and depth
 // at the first non-specular hit (kernels/aov/aov.cl), rendered by their own short pass
-// before the image: the scene is uploaded for it, its samples are taken, and its
+// before the image: the compiled scene is uploaded for it, its samples are taken, and its
 // buffers are released before the path tracer's upload (so the device holds the scene
 // once at a time).
 #pragma once
@@ -11,6 +11,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "host/cl/runtime.hpp"
+#include "host/scene/device_scene.hpp"
 #include "host/scene/scene.hpp"
 
 namespace facet {
@@ -28,5 +29,8 @@ struct AovImages {
 // Renders the AOVs of `scene` with `spp` camera samples per pixel, drawn as the path
 // tracer draws them (its pixel filter and lens). Throws facet::Error on OpenCL failures.
 AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::uint32_t spp);
+// The same with the scene already compiled (`dev`, of `scene` and `bvh`), as the render's
+// devices share it.
+AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, const DeviceScene& dev, std::uint32_t spp);
 
 }  // namespace facet

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
+#include "host/render/film_identity.hpp"
 
 namespace facet {
 namespace {
@@ -73,9 +74,15 @@ std::vector<std::uint32_t> shares_by_rate(std::uint32_t count, const std::vector
 
 DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, const Bvh& bvh, bool generic,
                          std::uint64_t first_sample, Warn warn)
-    : width_(scene.settings.width), height_(scene.settings.height), warn_(std::move(warn)), first_sample_(first_sample),
-      next_(first_sample) {
+    : DeviceGroup(std::move(contexts), scene, bvh, compile(scene, bvh), generic, first_sample, std::move(warn)) {}
+
+DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, const Bvh& bvh, const DeviceScene& dev,
+                         bool generic, std::uint64_t first_sample, Warn warn)
+    : width_(int(dev.params.width)), height_(int(dev.params.height)), warn_(std::move(warn)),
+      first_sample_(first_sample), next_(first_sample) {
     if (contexts.empty()) throw Error("no OpenCL device to render on");
+    // Every rank renders the same scene at the same size, or none starts (render/mpi_ranks.hpp).
+    check_ranks_agree(ranks_, film_identity(dev), dev.params.width, dev.params.height);
     const std::size_t n = contexts.size();
     for (ClContext& c : contexts) contexts_.push_back(std::make_unique<ClContext>(std::move(c)));
     renderers_.resize(n);
@@ -85,7 +92,7 @@ DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, co
     // One program per device, built concurrently.
     std::vector<std::exception_ptr> errors = for_each_concurrently(n, [&](std::size_t i) {
         shares_[i].desc = contexts_[i]->desc();
-        renderers_[i] = std::make_unique<Renderer>(*contexts_[i], scene, bvh, generic);
+        renderers_[i] = std::make_unique<Renderer>(*contexts_[i], scene, bvh, dev, generic);
     });
     const bool none = std::all_of(errors.begin(), errors.end(), [](const std::exception_ptr& e) { return bool(e); });
     // Every rank has a device, or none renders (the others would wait for it).

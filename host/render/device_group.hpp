@@ -51,11 +51,16 @@ class DeviceGroup : public PassTarget {
 public:
     using Warn = std::function<void(const std::string&)>;
 
-    // One renderer per context (render/renderer.hpp), built concurrently. A device whose
+    // One renderer per context (render/renderer.hpp), built concurrently from one compiled scene. A device whose
     // program or upload fails is dropped through `warn`; when all fail, the first error
     // is thrown. The first pass starts at sample index `first_sample` (--samples-from).
     DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, const Bvh& bvh, bool generic = false,
                 std::uint64_t first_sample = 0, Warn warn = {});
+    // The same with the scene compiled once by the caller (`dev`, of `scene` and `bvh`):
+    // every device uploads this one DeviceScene. In an MPI job every rank's scene identity
+    // (render/film_identity.hpp) and image size are checked against rank 0's first.
+    DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, const Bvh& bvh, const DeviceScene& dev,
+                bool generic = false, std::uint64_t first_sample = 0, Warn warn = {});
     ~DeviceGroup() override;
     DeviceGroup(const DeviceGroup&) = delete;
     DeviceGroup& operator=(const DeviceGroup&) = delete;

@@ -224,4 +224,36 @@ void Ranks::end_wait() const {
     wait_ = Wait{};
 }
 
+void check_ranks_agree(const Ranks& ranks, std::uint64_t identity, std::uint32_t width, std::uint32_t height) {
+    if (ranks.size() == 1) return;
+    // Each value gathered as doubles (exact: the identity in two 32-bit halves).
+    const std::vector<double> hi = ranks.gather(double(identity >> 32));
+    const std::vector<double> lo = ranks.gather(double(identity & 0xffffffffu));
+    const std::vector<double> w = ranks.gather(double(width)), h = ranks.gather(double(height));
+    // Rank 0 finds the first rank that differs and tells every rank: [rank, identity, width, height].
+    std::vector<std::uint64_t> verdict;
+    if (ranks.leads()) {
+        verdict.assign(4, 0);
+        for (std::size_t r = 1; r < hi.size(); ++r)
+            if (hi[r] != hi[0] || lo[r] != lo[0] || w[r] != w[0] || h[r] != h[0]) {
+                verdict = {r, std::uint64_t(hi[r]) << 32 | std::uint64_t(lo[r]), std::uint64_t(w[r]),
+                           std::uint64_t(h[r])};
+                break;
+            }
+    }
+    std::vector<std::uint64_t> first{identity, width, height};  // rank 0's
+    ranks.broadcast(verdict);
+    ranks.broadcast(first);
+    if (verdict[0] == 0) return;
+    if (verdict[2] != first[1] || verdict[3] != first[2])
+        throw Error(
+            fmt::format("MPI rank {} renders a {}x{} image, rank 0 a {}x{} one: every rank must render "
+                        "the same scene and settings",
+                        verdict[0], verdict[2], verdict[3], first[1], first[2]));
+    throw Error(
+        fmt::format("MPI rank {} renders another scene (identity {:016x}, rank 0 has {:016x}): every rank "
+                    "must render the same scene and settings",
+                    verdict[0], verdict[1], first[0]));
+}
+
 }  // namespace facet

@@ -68,4 +68,10 @@ private:
     mutable double wait_start_ = 0.0;  // steady-clock seconds
 };
 
+// Throws facet::Error at every rank, before any sample, when a rank's scene identity
+// (render/film_identity.hpp) or image size differs from rank 0's, naming the first such
+// rank and both values: ranks of different scenes must not add up to one image. One
+// process: nothing to check.
+void check_ranks_agree(const Ranks& ranks, std::uint64_t identity, std::uint32_t width, std::uint32_t height);
+
 }  // namespace facet

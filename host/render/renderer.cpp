@@ -2,15 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <initializer_list>
-#include <span>
-#include <utility>
 
 #include <fmt/format.h>
 
 #include "host/error.hpp"
 #include "host/render/features.hpp"
-#include "host/scene/device_scene.hpp"
 
 namespace facet {
 namespace {
@@ -19,55 +15,19 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// A read-only buffer holding `v` (OpenCL forbids empty buffers: at least one element).
-template <typename T>
-cl::Buffer upload(const cl::Context& ctx, std::span<const T> v) {
-    const T zero{};
-    const std::span<const T> data = v.empty() ? std::span<const T>(&zero, 1) : v;
-    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size_bytes(), const_cast<T*>(data.data()));
-}
-
-// Fails before any upload when a buffer exceeds the device's largest allocation or all
-// of them its global memory, saying what the scene needs and what the device has.
-void check_device_memory(const DeviceDesc& dev, std::initializer_list<std::pair<const char*, std::size_t>> buffers) {
-    const double mib = 1024.0 * 1024.0;
-    std::size_t total = 0;
-    for (const auto& [name, bytes] : buffers) {
-        total += bytes;
-        if (bytes > dev.max_alloc)
-            throw Error(
-                fmt::format("the scene's {} need {:.1f} MiB in one buffer, but {} allows at most {:.1f} MiB "
-                            "per allocation",
-                            name, double(bytes) / mib, dev.name, double(dev.max_alloc) / mib));
-    }
-    if (total > dev.global_mem)
-        throw Error(fmt::format("out of device memory: the scene needs {:.1f} MiB, {} has {:.1f} MiB",
-                                double(total) / mib, dev.name, double(dev.global_mem) / mib));
-}
-
 }  // namespace
 
 Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool generic,
                    const std::vector<std::string>& extra_prelude)
-    : ctx_(ctx), width_(scene.settings.width), height_(scene.settings.height) {
-    if (width_ < 1 || height_ < 1) throw Error(fmt::format("invalid image size {}x{}", width_, height_));
-    const DeviceScene dev = compile(scene, bvh);
-    params_ = dev.params;
+    : Renderer(ctx, scene, bvh, compile(scene, bvh), generic, extra_prelude) {}
 
-    check_device_memory(ctx.desc(), {{"BVH nodes", dev.nodes.size_bytes()},
-                                     {"triangles", dev.triangles.size_bytes()},
-                                     {"shading data", dev.shading.size_bytes()},
-                                     {"materials", dev.materials.size() * sizeof(FcMaterial)},
-                                     {"lights", dev.lights.size_bytes()},
-                                     {"environment map", dev.environment_texels.size_bytes()},
-                                     {"environment distribution", dev.environment_distribution.size_bytes()},
-                                     {"spheres", dev.spheres.spheres.size() * sizeof(FcSphere)},
-                                     {"sphere BVH", dev.spheres.nodes.size() * sizeof(FcSphereNode)},
-                                     {"instances", dev.instancing.instances.size() * sizeof(FcInstance)},
-                                     {"instance BVH", dev.instancing.tree.size() * sizeof(FcInstanceNode)},
-                                     {"image", 2 * pixel_count() * sizeof(cl_float4)},
-                                     {"textures", dev.textures.texels.size() * sizeof(std::uint32_t)},
-                                     {"texture uvs", dev.textures.texcoords.size() * sizeof(FcTriTexcoords)}});
+Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const DeviceScene& dev, bool generic,
+                   const std::vector<std::string>& extra_prelude)
+    : ctx_(ctx), width_(int(dev.params.width)), height_(int(dev.params.height)) {
+    if (width_ < 1 || height_ < 1) throw Error(fmt::format("invalid image size {}x{}", width_, height_));
+    params_ = dev.params;
+    const std::size_t accum_bytes = 2 * pixel_count() * sizeof(cl_float4);
+    check_device_memory(ctx.desc(), scene_buffer_needs(dev, accum_bytes));
 
     stats_.features = generic ? all_features() : scene_features(scene);
     std::vector<std::string> prelude = generic ? std::vector<std::string>{} : feature_prelude(stats_.features);
@@ -79,34 +39,13 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
 
     auto start = Clock::now();
     cl_call("uploading the scene", [&] {
-        const cl::Context& c = ctx.context();
         kernel_ = cl::Kernel(program_, "render_pass");
         std::size_t max_wg = kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(ctx.device());
         local_size_ = std::max<std::size_t>(1, std::min<std::size_t>(64, max_wg));
-        params_buf_ = cl::Buffer(c, CL_MEM_READ_ONLY, sizeof(FcRenderParams));
-        nodes_ = upload(c, dev.nodes);
-        tris_ = upload(c, dev.triangles);
-        shading_ = upload(c, dev.shading);
-        materials_ = upload(c, std::span<const FcMaterial>(dev.materials));
-        lights_ = upload(c, dev.lights);
-        light_cdf_ = upload(c, dev.light_cdf);
-        env_texels_ = upload(c, dev.environment_texels);
-        env_dist_ = upload(c, dev.environment_distribution);
-        accum_ = cl::Buffer(c, CL_MEM_READ_WRITE, 2 * pixel_count() * sizeof(cl_float4));
-        textures_ = upload(c, std::span<const FcTexture>(dev.textures.table));
-        texels_ = upload(c, std::span<const std::uint32_t>(dev.textures.texels));
-        material_textures_ = upload(c, std::span<const FcMaterialTextures>(dev.textures.materials));
-        texcoords_ = upload(c, std::span<const FcTriTexcoords>(dev.textures.texcoords));
-        spheres_ = upload(c, std::span<const FcSphere>(dev.spheres.spheres));
-        sphere_nodes_ = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
-        instances_ = upload(c, std::span<const FcInstance>(dev.instancing.instances));
-        instance_nodes_ = upload(c, std::span<const FcInstanceNode>(dev.instancing.tree));
-        // render_pass's arguments, in the order kernels/integrator/path.cl declares them
-        cl_uint arg = 0;
-        for (const cl::Buffer* b : {&params_buf_, &nodes_, &tris_, &shading_, &materials_, &lights_, &light_cdf_,
-                                    &env_texels_, &env_dist_, &accum_, &textures_, &texels_, &material_textures_,
-                                    &texcoords_, &spheres_, &sphere_nodes_, &instances_, &instance_nodes_})
-            kernel_.setArg(arg++, *b);
+        scene_ = upload_scene(ctx.context(), dev);
+        accum_ = cl::Buffer(ctx.context(), CL_MEM_READ_WRITE, accum_bytes);
+        // render_pass(FC_SCENE_KERNEL_PARAMS, accum)
+        kernel_.setArg(bind_scene(kernel_, scene_), accum_);
     });
     reset();
     stats_.upload_seconds = seconds_since(start);
@@ -155,7 +94,7 @@ void Renderer::launch_samples(std::uint64_t first, std::uint32_t count, std::uin
         p.row_begin = row_begin;
         p.row_count = std::min(row_count, params_.height - row_begin);
         // Blocking write: `p` lives on the stack.
-        ctx_.queue().enqueueWriteBuffer(params_buf_, CL_TRUE, 0, sizeof p, &p);
+        ctx_.queue().enqueueWriteBuffer(scene_.params, CL_TRUE, 0, sizeof p, &p);
         // A fixed work-group size and a global size rounded up to it: drivers that
         // specialise kernels per launch geometry (PoCL does) then build them once.
         std::size_t items = std::size_t(p.row_count) * params_.width;

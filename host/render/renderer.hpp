@@ -9,6 +9,7 @@
 #include "host/bvh/bvh.hpp"
 #include "host/cl/runtime.hpp"
 #include "host/render/pass_target.hpp"
+#include "host/render/scene_buffers.hpp"
 #include "host/scene/scene.hpp"
 
 namespace facet {
@@ -29,6 +30,10 @@ public:
     // `extra_prelude` lines go before the program (the bench uses them to defeat the
     // driver's cache).
     Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool generic = false,
+             const std::vector<std::string>& extra_prelude = {});
+    // The same with the scene already compiled (`dev`, of `scene` and `bvh`): a render
+    // compiles it once for all its devices (render/device_group.hpp) and the AOV pass.
+    Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const DeviceScene& dev, bool generic = false,
              const std::vector<std::string>& extra_prelude = {});
 
     // Adds `count` samples to every pixel, split into launches of at most
@@ -88,10 +93,8 @@ private:
     ProgramBuild build_;
     cl::Program program_;
     cl::Kernel kernel_;
-    cl::Buffer params_buf_, nodes_, tris_, shading_, materials_, lights_, light_cdf_, env_texels_, env_dist_, accum_;
-    cl::Buffer textures_, texels_, material_textures_, texcoords_;
-    cl::Buffer spheres_, sphere_nodes_;
-    cl::Buffer instances_, instance_nodes_;
+    SceneBuffers scene_;  // the parameter block and the scene's arrays
+    cl::Buffer accum_;
     RenderStats stats_;
 };
 

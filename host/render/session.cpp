@@ -8,6 +8,7 @@
 #include "host/bvh/bvh_width.hpp"
 #include "host/error.hpp"
 #include "host/film/error_metrics.hpp"
+#include "host/render/film_identity.hpp"
 #include "host/render/progressive.hpp"
 
 namespace facet {
@@ -42,20 +43,24 @@ RenderSession::RenderSession(const Scene& scene, SessionOptions options) : scene
         throw Error(
             "--adaptive tiles: each band's samples are indices 0 to its count, so it renders in one process "
             "from sample 0: no --samples-from or MPI ranks");
-    // The film's identity: computed here alone, for the resumed film's check and the film saved.
-    film_identity_ = film_scene_hash(scene);
-    if (options_.resume) check_film_matches(*options_.resume, options_.resume_path, scene, film_identity_);
 
     std::vector<ClContext> contexts = open_devices(options_.device);
     BvhOptions bvh_options;  // the node width of the first device (every program reads the tree's own)
     bvh_options.width = bvh_width_for(contexts.front().desc().type == CL_DEVICE_TYPE_GPU,
                                       contexts.front().device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
     bvh_ = build_bvh(scene.vertices, bvh_options);
+    // The device scene, compiled once for the AOVs and every device; the film's identity is
+    // computed from it here alone, for the resumed film's check and the film saved, before
+    // any sample is rendered.
+    device_scene_ = std::make_unique<DeviceScene>(compile(scene, bvh_));
+    film_identity_ = film_identity(*device_scene_);
+    if (options_.resume) check_film_matches(*options_.resume, options_.resume_path, scene, film_identity_);
     // The AOVs first (rank 0's first device), their buffers released before the path
     // tracer uploads the scene.
-    if (options_.aovs && Ranks::world().leads()) aovs_ = render_aovs(contexts.front(), scene, bvh_, aov_spp());
-    group_ = std::make_unique<DeviceGroup>(std::move(contexts), scene, bvh_, options_.generic, options_.samples_from,
-                                           options_.warn);
+    if (options_.aovs && Ranks::world().leads())
+        aovs_ = render_aovs(contexts.front(), scene, bvh_, *device_scene_, aov_spp());
+    group_ = std::make_unique<DeviceGroup>(std::move(contexts), scene, bvh_, *device_scene_, options_.generic,
+                                           options_.samples_from, options_.warn);
     if (options_.resume)
         group_->restore(options_.resume->sums, options_.resume->samples, options_.resume->render_seconds);
 }

@@ -24,6 +24,7 @@
 #include "host/render/device_group_watch.hpp"
 #include "host/render/session_rules.hpp"
 #include "host/render/session_tiles.hpp"
+#include "host/scene/device_scene.hpp"
 #include "host/report/report.hpp"
 #include "host/scene/scene.hpp"
 
@@ -105,6 +106,7 @@ private:
     StopRules rules_;
     std::uint64_t film_identity_ = 0;
     Bvh bvh_;
+    std::unique_ptr<DeviceScene> device_scene_;  // what every device and the AOV pass read
     std::optional<AovImages> aovs_;
     std::unique_ptr<DeviceGroup> group_;
     double warmup_s_ = 0.0;

@@ -2,6 +2,7 @@
 
 #include "host/scene/texture_tangents.hpp"
 
+#include <bit>
 #include <cstdint>
 
 #include "host/scene/pixel_filter.hpp"
@@ -53,12 +54,12 @@ void compile_instances(const Scene& scene, const Bvh& bvh, DeviceScene& d) {
     for (const SharedMesh& m : scene.meshes)
         d.shading_owned.insert(d.shading_owned.end(), m.shading.begin(), m.shading.end());
     d.nodes = d.nodes_owned;
-    d.triangles = d.triangles_owned;
+    d.tris = d.triangles_owned;
     d.shading = d.shading_owned;
     // uvs (when the scene has textures): the world's padded to its triangles, then each mesh's
     if (scene_uses_textures(scene)) {
         for (const SharedMesh& m : scene.meshes) {
-            const std::size_t at = d.textures.texcoords.size();
+            const std::size_t at = d.texture_data.texcoords.size();
             // The mesh's vertex tangents in object space, as for world triangles; the kernels
             // place them with the instance (instance_tangent_to_world).
             Scene object;
@@ -69,8 +70,8 @@ void compile_instances(const Scene& scene, const Bvh& bvh, DeviceScene& d) {
             std::vector<FcTriTexcoords> texcoords = m.texcoords;
             texcoords.resize(m.triangle_count(), FcTriTexcoords{});
             compute_tangents(object, texcoords);
-            d.textures.texcoords.insert(d.textures.texcoords.end(), texcoords.begin(), texcoords.end());
-            d.textures.texcoords.resize(at + m.triangle_count(), FcTriTexcoords{});
+            d.texture_data.texcoords.insert(d.texture_data.texcoords.end(), texcoords.begin(), texcoords.end());
+            d.texture_data.texcoords.resize(at + m.triangle_count(), FcTriTexcoords{});
         }
     }
 }
@@ -127,27 +128,59 @@ Material host_material(const FcMaterial& d) {
 
 std::string describe_material(const FcMaterial& d) { return describe_material(host_material(d)); }
 
+std::vector<DeviceScene::Array> DeviceScene::arrays() const {
+#define FC_DEVICE_SCENE_ARRAY(device_type, host_type, name, what, kind) \
+    Array{#name, what, std::as_bytes(name), sizeof(host_type), kind},
+    return {FC_SCENE_ARRAYS(FC_DEVICE_SCENE_ARRAY)};
+#undef FC_DEVICE_SCENE_ARRAY
+}
+
+std::size_t DeviceScene::bytes() const {
+    std::size_t total = 0;
+    for (const Array& a : arrays()) total += a.bytes.size();
+    return total;
+}
+
 DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     DeviceScene d;
     d.params = render_params(scene);
     d.nodes = bvh.nodes;
-    d.triangles = bvh.triangles;
+    d.tris = bvh.triangles;
     d.shading = scene.shading;
     d.lights = scene.lights;
     d.light_cdf = scene.light_cdf;
-    d.environment_texels = scene.environment.texels;
+    d.env_texels = scene.environment.texels;
     if (scene.environment.sampling == EnvironmentSampling::plain) {
-        d.environment_distribution = scene.environment.distribution;
+        d.env_dist = scene.environment.distribution;
     } else {
         d.environment_distribution_owned =
             environment_sampling_distribution(scene.environment, scene.settings.strategy);
-        d.environment_distribution = d.environment_distribution_owned;
+        d.env_dist = d.environment_distribution_owned;
     }
-    d.materials.reserve(scene.materials.size());
-    for (const Material& m : scene.materials) d.materials.push_back(device_material(m));
-    d.textures = compile_textures(scene);
-    d.spheres = build_sphere_bvh(scene.spheres);
+    d.materials_owned.reserve(scene.materials.size());
+    for (const Material& m : scene.materials) d.materials_owned.push_back(device_material(m));
+    d.materials = d.materials_owned;
+    d.texture_data = compile_textures(scene);
+    d.sphere_tree = build_sphere_bvh(scene.spheres);
+    d.spheres = d.sphere_tree.spheres;
+    d.sphere_nodes = d.sphere_tree.nodes;
     compile_instances(scene, bvh, d);
+    d.instances = d.instancing.instances;
+    d.tree_inputs.push_back(std::as_bytes(std::span<const glm::vec3>(scene.vertices)));
+    for (const SharedMesh& m : scene.meshes)
+        d.tree_inputs.push_back(std::as_bytes(std::span<const glm::vec3>(m.vertices)));
+    for (const Instance& in : scene.instances) {
+        d.placements_owned.push_back(std::uint32_t(in.mesh));
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                d.placements_owned.push_back(std::bit_cast<std::uint32_t>(in.object_to_world[c][r]));
+    }
+    d.tree_inputs.push_back(std::as_bytes(std::span<const std::uint32_t>(d.placements_owned)));
+    d.instance_nodes = d.instancing.tree;
+    d.textures = d.texture_data.table;
+    d.texels = d.texture_data.texels;
+    d.material_textures = d.texture_data.materials;
+    d.texcoords = d.texture_data.texcoords;
     return d;
 }
 

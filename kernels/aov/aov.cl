@@ -37,21 +37,13 @@ inline float3 aov_albedo(const FcMaterial* m, float3 wo_local) {
     return clamp(a, 0.0f, 1.0f);
 }
 
-__kernel void aov_pass(__constant const FcRenderParams* params, __global const FcBvhNode* nodes,
-                       __global const FcTriangle* tris, __global const FcTriShading* shading,
-                       __global const FcMaterial* materials, __global float4* accum, __global const FcSphere* spheres,
-                       __global const FcSphereNode* sphere_nodes, __global const FcTexture* textures,
-                       __global const uint* texels, __global const FcMaterialTextures* material_textures,
-                       __global const FcTriTexcoords* texcoords, __global const FcInstance* instances,
-                       __global const FcInstanceNode* instance_nodes) {
+__kernel void aov_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
     uint pixel = y * params->width + x;
-    SceneView sc = {
-        params,    nodes,   tris,         shading,   materials,     0, 0, 0, 0, textures, texels, material_textures,
-        texcoords, spheres, sphere_nodes, instances, instance_nodes};
+    SceneView sc = FC_SCENE_VIEW_INIT;
     float4 albedo_sum = (float4)(0.0f), normal_sum = (float4)(0.0f);
     for (uint i = 0; i < params->sample_count; ++i) {
         uint index = params->sample_begin + i;

@@ -167,22 +167,12 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
  * [row_begin, row_begin + row_count). The accumulation buffer holds two images:
  * accum[pixel] sums the even-numbered samples, accum[width * height + pixel] the odd
  * ones, so the host can estimate the error from the two independent halves. */
-__kernel void render_pass(__constant const FcRenderParams* params, __global const FcBvhNode* nodes,
-                          __global const FcTriangle* tris, __global const FcTriShading* shading,
-                          __global const FcMaterial* materials, __global const FcLight* lights,
-                          __global const float* light_cdf, __global const float4* env_texels,
-                          __global const float* env_dist, __global float4* accum, __global const FcTexture* textures,
-                          __global const uint* texels, __global const FcMaterialTextures* material_textures,
-                          __global const FcTriTexcoords* texcoords, __global const FcSphere* spheres,
-                          __global const FcSphereNode* sphere_nodes, __global const FcInstance* instances,
-                          __global const FcInstanceNode* instance_nodes) {
+__kernel void render_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;
     if (gid / params->width >= params->row_count || y >= params->height) return;
-    SceneView sc = {params,    nodes,      tris,         shading,   materials,     lights,
-                    light_cdf, env_texels, env_dist,     textures,  texels,        material_textures,
-                    texcoords, spheres,    sphere_nodes, instances, instance_nodes};
+    SceneView sc = FC_SCENE_VIEW_INIT;
     uint pixel = y * params->width + x;
     float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
     for (uint i = 0; i < params->sample_count; ++i) {

@@ -1,30 +1,29 @@
-/* Everything a kernel needs to read the scene: the constant parameters and one
- * buffer per scene array (bound in host/render/renderer.cpp). */
+/* Everything a kernel needs to read the scene: the constant parameters and one buffer
+ * per scene array of kernels/shared/scene_arrays.h, bound by host/render/renderer.cpp
+ * and host/render/aov.cpp in list order. A kernel that reads the scene declares
+ *     __kernel void k(FC_SCENE_KERNEL_PARAMS, ...)
+ * and opens it with
+ *     SceneView sc = FC_SCENE_VIEW_INIT;
+ * so that its arguments, their order and the view all come from the one list. */
 #ifndef FACET_SCENE_SCENE_VIEW_CL
 #define FACET_SCENE_SCENE_VIEW_CL
 
-#include "kernels/shared/all.h"
+#include "kernels/shared/scene_arrays.h"
 
+#define FC_SCENE_VIEW_MEMBER(device_type, host_type, name, what, kind) __global const device_type* name;
 typedef struct {
     __constant const FcRenderParams* params;
-    __global const FcBvhNode* nodes;
-    __global const FcTriangle* tris;
-    __global const FcTriShading* shading;
-    __global const FcMaterial* materials;
-    __global const FcLight* lights;
-    __global const float* light_cdf;
-    __global const float4* env_texels;
-    __global const float* env_dist;
-    /* Textures (kernels/shared/texture_layout.h); one-element placeholders without them. */
-    __global const FcTexture* textures;
-    __global const uint* texels;
-    __global const FcMaterialTextures* material_textures;
-    __global const FcTriTexcoords* texcoords;
-    __global const FcSphere* spheres;
-    __global const FcSphereNode* sphere_nodes;
-    /* Instances and their top-level tree (kernels/shared/instance_layout.h). */
-    __global const FcInstance* instances;
-    __global const FcInstanceNode* instance_nodes;
+    FC_SCENE_ARRAYS(FC_SCENE_VIEW_MEMBER)
 } SceneView;
+#undef FC_SCENE_VIEW_MEMBER
+
+/* The kernel arguments: the parameter block, then every array in list order. */
+#define FC_SCENE_KERNEL_PARAM(device_type, host_type, name, what, kind) , __global const device_type* name
+#define FC_SCENE_KERNEL_PARAMS __constant const FcRenderParams* params FC_SCENE_ARRAYS(FC_SCENE_KERNEL_PARAM)
+
+/* The view of those arguments. */
+#define FC_SCENE_VIEW_ARG(device_type, host_type, name, what, kind) , name
+#define FC_SCENE_VIEW_INIT \
+    { params FC_SCENE_ARRAYS(FC_SCENE_VIEW_ARG) }
 
 #endif

@@ -13,8 +13,13 @@ __kernel void trace_scene_batch(__global const FcBvhNode* nodes, __global const 
                                 __global const float4* dirs, __global float4* hit_out, __global float4* ng_out,
                                 __global float4* ns_out, __global int* any_out) {
     const size_t i = get_global_id(0);
-    SceneView sc = {0,       nodes,        tris,      shading,       0, 0, 0, 0, 0, 0, 0, 0, 0,
-                    spheres, sphere_nodes, instances, instance_nodes};
+    SceneView sc = {.nodes = nodes,
+                    .tris = tris,
+                    .shading = shading,
+                    .spheres = spheres,
+                    .sphere_nodes = sphere_nodes,
+                    .instances = instances,
+                    .instance_nodes = instance_nodes};
     const float3 o = origins[i].xyz, d = dirs[i].xyz;
     const float tmax = dirs[i].w;
     Hit hit;
