@@ -233,9 +233,9 @@ Traced trace(const Scene& scene, const NodeLayout& layout, const std::vector<cl_
                                buffer(dev.triangles),
                                buffer(dev.shading),
                                buffer(std::span<const FcSphere>(dev.spheres.spheres)),
-                               buffer(std::span<const FcSphereNode>(dev.spheres.nodes)),
+                               buffer(std::span<const FcBinaryNode>(dev.spheres.nodes)),
                                buffer(std::span<const FcInstance>(dev.instancing.instances)),
-                               buffer(std::span<const FcInstanceNode>(dev.instancing.tree)),
+                               buffer(std::span<const FcBinaryNode>(dev.instancing.tree)),
                                buffer(std::span<const cl_float4>(origins)),
                                buffer(std::span<const cl_float4>(dirs))};
     cl_uint a = 0;

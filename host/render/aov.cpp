@@ -52,7 +52,7 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::u
         kernel.setArg(4, materials);
         kernel.setArg(5, accum);
         cl::Buffer spheres = upload(c, std::span<const FcSphere>(dev.spheres.spheres));
-        cl::Buffer sphere_nodes = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
+        cl::Buffer sphere_nodes = upload(c, std::span<const FcBinaryNode>(dev.spheres.nodes));
         kernel.setArg(6, spheres);
         kernel.setArg(7, sphere_nodes);
         cl::Buffer textures = upload(c, std::span<const FcTexture>(dev.textures.table));
@@ -64,7 +64,7 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, std::u
         kernel.setArg(10, material_textures);
         kernel.setArg(11, texcoords);
         cl::Buffer instances = upload(c, std::span<const FcInstance>(dev.instancing.instances));
-        cl::Buffer instance_nodes = upload(c, std::span<const FcInstanceNode>(dev.instancing.tree));
+        cl::Buffer instance_nodes = upload(c, std::span<const FcBinaryNode>(dev.instancing.tree));
         kernel.setArg(12, instances);
         kernel.setArg(13, instance_nodes);
         const std::uint32_t rows = rows_per_launch(width, spp);

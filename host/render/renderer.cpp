@@ -62,9 +62,9 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
                                      {"environment map", dev.environment_texels.size_bytes()},
                                      {"environment distribution", dev.environment_distribution.size_bytes()},
                                      {"spheres", dev.spheres.spheres.size() * sizeof(FcSphere)},
-                                     {"sphere BVH", dev.spheres.nodes.size() * sizeof(FcSphereNode)},
+                                     {"sphere BVH", dev.spheres.nodes.size() * sizeof(FcBinaryNode)},
                                      {"instances", dev.instancing.instances.size() * sizeof(FcInstance)},
-                                     {"instance BVH", dev.instancing.tree.size() * sizeof(FcInstanceNode)},
+                                     {"instance BVH", dev.instancing.tree.size() * sizeof(FcBinaryNode)},
                                      {"image", 2 * pixel_count() * sizeof(cl_float4)},
                                      {"textures", dev.textures.texels.size() * sizeof(std::uint32_t)},
                                      {"texture uvs", dev.textures.texcoords.size() * sizeof(FcTriTexcoords)}});
@@ -98,9 +98,9 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, bool gene
         material_textures_ = upload(c, std::span<const FcMaterialTextures>(dev.textures.materials));
         texcoords_ = upload(c, std::span<const FcTriTexcoords>(dev.textures.texcoords));
         spheres_ = upload(c, std::span<const FcSphere>(dev.spheres.spheres));
-        sphere_nodes_ = upload(c, std::span<const FcSphereNode>(dev.spheres.nodes));
+        sphere_nodes_ = upload(c, std::span<const FcBinaryNode>(dev.spheres.nodes));
         instances_ = upload(c, std::span<const FcInstance>(dev.instancing.instances));
-        instance_nodes_ = upload(c, std::span<const FcInstanceNode>(dev.instancing.tree));
+        instance_nodes_ = upload(c, std::span<const FcBinaryNode>(dev.instancing.tree));
         // render_pass's arguments, in the order kernels/integrator/path.cl declares them
         cl_uint arg = 0;
         for (const cl::Buffer* b : {&params_buf_, &nodes_, &tris_, &shading_, &materials_, &lights_, &light_cdf_,

@@ -12,7 +12,7 @@
 #include "host/bvh/bvh.hpp"
 #include "host/bvh/instance_bvh.hpp"
 #include "host/scene/scene.hpp"
-#include "host/scene/sphere_bvh.hpp"
+#include "host/bvh/sphere_bvh.hpp"
 #include "kernels/shared/material_layout.h"
 #include "kernels/shared/render_layout.h"
 

@@ -40,10 +40,10 @@ inline float3 aov_albedo(const FcMaterial* m, float3 wo_local) {
 __kernel void aov_pass(__constant const FcRenderParams* params, __global const FcBvhNode* nodes,
                        __global const FcTriangle* tris, __global const FcTriShading* shading,
                        __global const FcMaterial* materials, __global float4* accum, __global const FcSphere* spheres,
-                       __global const FcSphereNode* sphere_nodes, __global const FcTexture* textures,
+                       __global const FcBinaryNode* sphere_nodes, __global const FcTexture* textures,
                        __global const uint* texels, __global const FcMaterialTextures* material_textures,
                        __global const FcTriTexcoords* texcoords, __global const FcInstance* instances,
-                       __global const FcInstanceNode* instance_nodes) {
+                       __global const FcBinaryNode* instance_nodes) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;

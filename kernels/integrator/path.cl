@@ -174,8 +174,8 @@ __kernel void render_pass(__constant const FcRenderParams* params, __global cons
                           __global const float* env_dist, __global float4* accum, __global const FcTexture* textures,
                           __global const uint* texels, __global const FcMaterialTextures* material_textures,
                           __global const FcTriTexcoords* texcoords, __global const FcSphere* spheres,
-                          __global const FcSphereNode* sphere_nodes, __global const FcInstance* instances,
-                          __global const FcInstanceNode* instance_nodes) {
+                          __global const FcBinaryNode* sphere_nodes, __global const FcInstance* instances,
+                          __global const FcBinaryNode* instance_nodes) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
     uint y = params->row_begin + gid / params->width;

@@ -21,10 +21,10 @@ typedef struct {
     __global const FcMaterialTextures* material_textures;
     __global const FcTriTexcoords* texcoords;
     __global const FcSphere* spheres;
-    __global const FcSphereNode* sphere_nodes;
+    __global const FcBinaryNode* sphere_nodes;
     /* Instances and their top-level tree (kernels/shared/instance_layout.h). */
     __global const FcInstance* instances;
-    __global const FcInstanceNode* instance_nodes;
+    __global const FcBinaryNode* instance_nodes;
 } SceneView;
 
 #endif
