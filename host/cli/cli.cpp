@@ -14,6 +14,7 @@
 #include "host/cli/commands.hpp"
 #include "host/error.hpp"
 #include "host/scene/pixel_filter.hpp"
+#include "host/scene/render_names.hpp"
 #include "host/scene/settings_limits.hpp"
 #include "host/util/strings.hpp"
 #include "kernels/shared/render_layout.h"
@@ -150,8 +151,7 @@ int run_cli(int argc, char** argv) {
         ->add_option("--strategy", opt.strategy,
                      "Direct light from area lights and the environment: mis (default), light (light sampling only) "
                      "or bsdf (BSDF sampling only); for measuring the strategies")
-        ->transform(CLI::CheckedTransformer(std::map<std::string, int>{
-            {"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT}, {"bsdf", FC_STRATEGY_BSDF}}));
+        ->transform(CLI::CheckedTransformer(setting_map(kStrategyNames)));
     render
         ->add_option("--env-sampling", opt.env_plain,
                      "Environment map sampling under MIS: compensated (default; MIS compensation, Karlik et al. "
@@ -160,8 +160,7 @@ int run_cli(int argc, char** argv) {
     render
         ->add_option("--sampler", opt.sampler,
                      "Sample generator: sobol (default; Owen-scrambled Sobol', Burley 2020) or independent (PCG32)")
-        ->transform(CLI::CheckedTransformer(
-            std::map<std::string, int>{{"sobol", FC_SAMPLER_SOBOL}, {"independent", FC_SAMPLER_INDEPENDENT}}));
+        ->transform(CLI::CheckedTransformer(setting_map(kSamplerNames)));
     render
         ->add_option("--filter", opt.filter,
                      "Pixel filter, drawn by filter importance sampling: " + pixel_filter_help() +

@@ -11,6 +11,7 @@
 #include "host/error.hpp"
 #include "host/scene/pixel_filter.hpp"
 #include "host/film/safe_write.hpp"
+#include "host/scene/render_names.hpp"
 #include "host/scene/scene.hpp"
 #include "host/scene/device_scene.hpp"
 
@@ -247,19 +248,10 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
         refuse("--max-depth", std::to_string(film.max_depth), std::to_string(s.max_depth));
     if (film.rr_depth != s.rr_depth)
         refuse("Russian roulette depth", std::to_string(film.rr_depth), std::to_string(s.rr_depth));
-    auto strategy = [](int v) {
-        return v == FC_STRATEGY_MIS     ? std::string("mis")
-               : v == FC_STRATEGY_LIGHT ? std::string("light")
-               : v == FC_STRATEGY_BSDF  ? std::string("bsdf")
-                                        : std::to_string(v);
-    };
-    if (film.strategy != s.strategy) refuse("--strategy", strategy(film.strategy), strategy(s.strategy));
-    auto sampler = [](int v) {
-        return v == FC_SAMPLER_SOBOL         ? std::string("sobol")
-               : v == FC_SAMPLER_INDEPENDENT ? std::string("independent")
-                                             : std::to_string(v);
-    };
-    if (film.sampler != s.sampler) refuse("--sampler", sampler(film.sampler), sampler(s.sampler));
+    if (film.strategy != s.strategy)
+        refuse("--strategy", setting_name(kStrategyNames, film.strategy), setting_name(kStrategyNames, s.strategy));
+    if (film.sampler != s.sampler)
+        refuse("--sampler", setting_name(kSamplerNames, film.sampler), setting_name(kSamplerNames, s.sampler));
 }
 
 }  // namespace facet

@@ -4,18 +4,12 @@
 #include <chrono>
 #include <span>
 
+#include "host/cl/upload.hpp"
 #include "host/render/features.hpp"
 #include "host/scene/device_scene.hpp"
 
 namespace facet {
 namespace {
-
-template <typename T>
-cl::Buffer upload(const cl::Context& ctx, std::span<const T> v) {
-    const T zero{};
-    const std::span<const T> data = v.empty() ? std::span<const T>(&zero, 1) : v;
-    return cl::Buffer(ctx, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, data.size_bytes(), const_cast<T*>(data.data()));
-}
 
 // Rows per launch: about 2^18 pixel-samples of primary rays and delta bounces, far below
 // any display watchdog.

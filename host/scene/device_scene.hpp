@@ -1,8 +1,8 @@
 // The scene compiled into what the kernels read (as Cycles' scene/devicescene.h): the
 // render parameters and one array per kernel buffer, in the layouts of
 // kernels/shared/*_layout.h. host/render/renderer.cpp uploads it as it is; this is the
-// one place where host-side scene data (materials today; textures and glTF next)
-// becomes device structs.
+// one place where host-side scene data (materials, textures, spheres, instances) becomes
+// device structs.
 #pragma once
 
 #include <span>
