@@ -21,7 +21,7 @@
 #include "host/scene/environment_map.hpp"
 #include "host/scene/material.hpp"
 #include "host/scene/scene.hpp"
-#include "host/scene/sphere_bvh.hpp"
+#include "host/bvh/sphere_bvh.hpp"
 #include "host/util/vec3.hpp"
 #include "tests/cl_test_env.hpp"
 #include "tests/scene_test_util.hpp"

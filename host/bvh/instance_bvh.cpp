@@ -11,14 +11,11 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "host/bvh/sah_builder.hpp"
+#include "host/bvh/binary_tree.hpp"
 #include "host/error.hpp"
 
 namespace facet {
 namespace {
-
-static_assert(bvh_detail::kMaxLeafDepth + 1 <= FC_INSTANCE_STACK_SIZE,
-              "the top-level traversal pushes one child per level of the binary tree");
 
 // Rows of the 3x4 affine part of a column-major 4x4 matrix.
 void store_rows(float (&out)[3][4], const glm::dmat4& m) {
@@ -47,21 +44,6 @@ void world_box(std::span<const glm::vec3> v, const glm::dmat4& m, FcInstance& ou
         out.lo[a] = std::nextafter(float(wlo[a] - pad), -INFINITY);
         out.hi[a] = std::nextafter(float(whi[a] + pad), INFINITY);
     }
-}
-
-FcInstanceNode device_node(const bvh_detail::BinaryNode& b) {
-    FcInstanceNode n{};
-    for (int a = 0; a < 3; ++a) {
-        n.a_lo[a] = b.a_min[a];
-        n.a_hi[a] = b.a_max[a];
-        n.b_lo[a] = b.b_min[a];
-        n.b_hi[a] = b.b_max[a];
-    }
-    n.a_index = b.a_index;
-    n.a_count = b.a_count;
-    n.b_index = b.b_index;
-    n.b_count = b.b_count;
-    return n;
 }
 
 }  // namespace
@@ -116,12 +98,7 @@ InstanceBvh build_instance_bvh(const Bvh& world, std::span<const InstancedMesh> 
         placed.push_back(in);
         out.order.push_back(std::int32_t(i));
     }
-    BvhOptions top;
-    top.max_leaf_size = 2;
-    top.block_size = 1;  // instances are entered one at a time
-    const bvh_detail::BuildOutput built = bvh_detail::build_sah(refs, top);
-    out.tree.reserve(built.nodes.size());
-    for (const bvh_detail::BinaryNode& b : built.nodes) out.tree.push_back(device_node(b));
+    out.tree = build_binary_tree(refs, 2);
     std::vector<std::int32_t> order;
     order.reserve(refs.size());
     out.instances.reserve(refs.size());

@@ -1,10 +1,11 @@
 #include "host/cl/kernel_source.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <set>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -77,11 +78,65 @@ bool parse_include(const std::string& line, std::string& target) {
     return true;
 }
 
-void append_file(const SourceTree& tree, const std::string& path, std::set<std::string>& seen, AssembledSource& out) {
-    if (!seen.insert(path).second) return;  // every file is taken in once (#pragma once)
+// Whether `line` is the preprocessor directive `name` ("endif", "ifndef", ...).
+bool is_directive(const std::string& line, std::string_view name) {
+    std::size_t i = line.find_first_not_of(" \t");
+    if (i == std::string::npos || line[i] != '#') return false;
+    i = line.find_first_not_of(" \t", i + 1);
+    if (i == std::string::npos || line.compare(i, name.size(), name) != 0) return false;
+    const std::size_t after = i + name.size();
+    return after == line.size() || line[after] == ' ' || line[after] == '\t' || line[after] == '/';
+}
+
+// Whether `content` opens with an include guard: "#ifndef X" then "#define X" as its first
+// two directives (comments and blank lines before them are fine).
+bool has_include_guard(const std::string& content) {
+    std::istringstream in(content);
+    std::string line, guard;
+    bool in_comment = false;
+    while (std::getline(in, line)) {
+        std::size_t i = line.find_first_not_of(" \t");
+        if (in_comment) {
+            if (line.find("*/") != std::string::npos) in_comment = false;
+            continue;
+        }
+        if (i == std::string::npos || line.compare(i, 2, "//") == 0) continue;
+        if (line.compare(i, 2, "/*") == 0) {
+            in_comment = line.find("*/", i + 2) == std::string::npos;
+            continue;
+        }
+        std::istringstream words(line);
+        std::string directive, name;
+        words >> directive >> name;
+        if (guard.empty()) {
+            if (directive != "#ifndef" || name.empty()) return false;
+            guard = name;
+        } else {
+            return directive == "#define" && name == guard;
+        }
+    }
+    return false;
+}
+
+// Inlines `path` with its includes, at every include, as the preprocessor would read them:
+// an include inside a disabled #if block is inlined too and dropped by the compiler, and
+// an included file's guard (required) makes its second inlining empty. A file already
+// being inlined higher up (an include cycle) is not inlined again: its guard is defined by
+// then, so the preprocessor would read nothing. #line directives follow every inlined file
+// and every #else, #elif and #endif, so each line keeps its own file and number whichever
+// blocks the compiler skips (a skipped block's #line directives are not read).
+void append_file(const SourceTree& tree, const std::string& path, std::vector<std::string>& active,
+                 AssembledSource& out) {
+    if (std::find(active.begin(), active.end(), path) != active.end()) return;
     std::string content;
     if (!tree.find(path, content)) throw Error(fmt::format("kernel source {} not found ({})", path, tree.origin()));
-    out.files.push_back(path);
+    if (!active.empty() && !has_include_guard(content))
+        throw Error(
+            fmt::format("kernel source {} has no include guard (#ifndef NAME, #define NAME as its first "
+                        "directives); included files need one ({})",
+                        path, tree.origin()));
+    if (std::find(out.files.begin(), out.files.end(), path) == out.files.end()) out.files.push_back(path);
+    active.push_back(path);
     out.text += fmt::format("#line 1 \"{}\"\n", path);
     std::istringstream in(content);
     std::string line;
@@ -92,6 +147,8 @@ void append_file(const SourceTree& tree, const std::string& path, std::set<std::
         if (!parse_include(line, target)) {
             out.text += line;
             out.text += '\n';
+            if (is_directive(line, "endif") || is_directive(line, "else") || is_directive(line, "elif"))
+                out.text += fmt::format("#line {} \"{}\"\n", number + 1, path);
             continue;
         }
         // One include root: every include names its file from the repository root
@@ -103,9 +160,10 @@ void append_file(const SourceTree& tree, const std::string& path, std::set<std::
                 fmt::format("{}:{}: included file \"{}\" not found ({}); kernel includes name "
                             "their file from the repository root, as \"kernels/util/math.cl\"",
                             path, number, target, tree.origin()));
-        append_file(tree, resolved, seen, out);
+        append_file(tree, resolved, active, out);
         out.text += fmt::format("#line {} \"{}\"\n", number + 1, path);
     }
+    active.pop_back();
 }
 
 }  // namespace
@@ -120,8 +178,8 @@ AssembledSource assemble_program(const std::string& entry, const std::vector<std
     AssembledSource out;
     out.origin = tree.origin();
     for (const std::string& line : prelude) out.text += line + "\n";
-    std::set<std::string> seen;
-    append_file(tree, normalise(entry), seen, out);
+    std::vector<std::string> active;
+    append_file(tree, normalise(entry), active, out);
     return out;
 }
 

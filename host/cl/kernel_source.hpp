@@ -1,8 +1,10 @@
 // Kernel sources: embedded in the binary at build time (cmake/embed_kernels.cmake),
 // or read from disk when FACET_KERNEL_DIR names a kernels/ folder (for development:
 // edit a .cl file and rerun without rebuilding). assemble_program() resolves
-// #include "..." itself, so the OpenCL compiler sees one self-contained source whose
-// #line directives name the real files.
+// #include "..." itself, inlining the file at every include (included files carry include
+// guards, which leave all but the first one the preprocessor reads empty, so an include in a
+// disabled #if block takes nothing away from later ones), and the OpenCL compiler sees one
+// self-contained source whose #line directives name the real files.
 #pragma once
 
 #include <map>
@@ -33,7 +35,8 @@ struct AssembledSource {
 
 // Assembles the program rooted at `entry` (a path such as "kernels/integrator/path.cl"),
 // after the given preprocessor lines (e.g. "#define FC_FEATURE_X 1"). Throws
-// facet::Error naming the file and line of an include that cannot be found.
+// facet::Error naming the file and line of an include that cannot be found, or an included
+// file without an include guard.
 AssembledSource assemble_program(const std::string& entry, const std::vector<std::string>& prelude = {});
 
 }  // namespace facet

@@ -15,6 +15,7 @@
 #include "host/error.hpp"
 #include "host/scene/pixel_filter.hpp"
 #include "host/scene/scene.hpp"
+#include "host/scene/render_names.hpp"
 #include "host/scene/settings_limits.hpp"
 #include "host/util/strings.hpp"
 #include "kernels/shared/render_layout.h"

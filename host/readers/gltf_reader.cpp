@@ -1,6 +1,6 @@
-// glTF 2.0 through tinygltf: the file is parsed (images are not decoded: facet has no
-// textures yet), the extensions it requires are checked, then the default scene's node
-// tree is walked with its transforms; each primitive's accessors are read with bounds
+// glTF 2.0 through tinygltf: the file is parsed (images kept undecoded: gltf_material.cpp
+// decodes those a material uses), the extensions it requires are checked, then the default
+// scene's node tree is walked with its transforms; each primitive's accessors are read with bounds
 // checks (gltf_accessor.cpp) and added as an indexed mesh (triangle_mesh.cpp): copied into
 // world space for a mesh one node uses, stored once in object space with one instance per
 // node for a mesh several nodes use (Scene::meshes, Scene::instances).

@@ -15,6 +15,7 @@
 #include "host/readers/json_loader.hpp"
 #include "host/readers/text_parse.hpp"
 #include "host/scene/pixel_filter.hpp"
+#include "host/scene/render_names.hpp"
 #include "host/scene/settings_limits.hpp"
 
 namespace facet {
@@ -67,17 +68,14 @@ void JsonLoader::render(const Json& v, const std::string& path) {
     if (v.contains("strategy")) {
         const std::string key = k("strategy");
         const std::string name = r.string(v["strategy"], key);
-        if (name == "mis") s.strategy = FC_STRATEGY_MIS;
-        else if (name == "light") s.strategy = FC_STRATEGY_LIGHT;
-        else if (name == "bsdf") s.strategy = FC_STRATEGY_BSDF;
-        else r.fail(key, fmt::format("unknown strategy '{}' (expected mis, light or bsdf)", name));
+        if (const std::optional<int> value = setting_value(kStrategyNames, name)) s.strategy = *value;
+        else r.fail(key, fmt::format("unknown strategy '{}' (expected {})", name, setting_name_list(kStrategyNames)));
     }
     if (v.contains("sampler")) {
         const std::string key = k("sampler");
         const std::string name = r.string(v["sampler"], key);
-        if (name == "sobol") s.sampler = FC_SAMPLER_SOBOL;
-        else if (name == "independent") s.sampler = FC_SAMPLER_INDEPENDENT;
-        else r.fail(key, fmt::format("unknown sampler '{}' (expected sobol or independent)", name));
+        if (const std::optional<int> value = setting_value(kSamplerNames, name)) s.sampler = *value;
+        else r.fail(key, fmt::format("unknown sampler '{}' (expected {})", name, setting_name_list(kSamplerNames)));
     }
     if (v.contains("filter")) filter(v["filter"], k("filter"));
     if (v.contains("clamp")) s.clamp = r.number_in(v["clamp"], k("clamp"), 0, double(FC_MAX_RADIANCE), true);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "host/cl/upload.hpp"
 #include "host/render/features.hpp"
 #include "host/render/scene_buffers.hpp"
 

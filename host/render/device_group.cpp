@@ -10,13 +10,10 @@
 
 #include "host/error.hpp"
 #include "host/render/film_identity.hpp"
+#include "host/util/clock.hpp"
 
 namespace facet {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::string message_of(const std::exception_ptr& e) {
     try {
@@ -155,7 +152,7 @@ void DeviceGroup::run(std::vector<Job> jobs) {
             if (before_launch) before_launch(job.device);
             const auto start = Clock::now();
             renderers_[job.device]->launch_samples(job.first, job.count, job.row_begin, job.row_count);
-            seconds[j] = since(start);
+            seconds[j] = seconds_since(start);
         });
         std::vector<Job> again;
         for (std::size_t j = 0; j < jobs.size(); ++j) {

@@ -9,13 +9,10 @@
 #include "host/render/device_group.hpp"
 
 #include "host/error.hpp"
+#include "host/util/clock.hpp"
 
 namespace facet {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Rank 0's commands to the other ranks: the first word, then its arguments.
 enum Command : std::uint64_t { kLaunch = 1, kEndPass = 2, kReset = 3, kStop = 4 };
@@ -83,7 +80,7 @@ void DeviceGroup::rank_launch(const std::vector<std::uint64_t>& command) {
     const std::uint32_t count = std::uint32_t(command[mine + 1]);
     const auto start = Clock::now();
     if (count > 0) run(deal(first, count, row_begin, row_count));
-    const std::vector<double> seconds = ranks_.gather(since(start));
+    const std::vector<double> seconds = ranks_.gather(seconds_since(start));
     for (std::size_t r = 0; r < seconds.size(); ++r) {
         const double pixel_samples = double(command[3 + 2 * r + 1]) * double(row_count) * double(width_);
         if (pixel_samples == 0.0) continue;
@@ -113,7 +110,7 @@ void DeviceGroup::rank_end_pass(std::uint32_t count, double seconds) {
             for (std::size_t k = 0; k < local.size(); ++k) local[k] += c[k];
         if (ranks_.leads()) reduced.assign(local.size(), 0.0f);
         ranks_.reduce_sum(local.data(), reduced.data(), local.size());
-        reduce_seconds_ += since(start);
+        reduce_seconds_ += seconds_since(start);
     }
     const std::unique_lock<std::mutex> film = hold_film();
     if (ranks_.size() > 1 && ranks_.leads()) reduced_ = std::move(reduced);

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "host/util/strings.hpp"
 #include "kernels/shared/feature_flags.h"
 
 namespace facet {
@@ -22,12 +23,6 @@ constexpr Feature kFeatures[] = {FC_FEATURE_LIST(FC_FEATURE_ENTRY)};
 #define FC_FEATURE_BIT(name, bit) constexpr FeatureMask k##name = 1u << bit;
 FC_FEATURE_LIST(FC_FEATURE_BIT)
 #undef FC_FEATURE_BIT
-
-std::string lower(const char* s) {
-    std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return out;
-}
 
 }  // namespace
 

@@ -1,6 +1,6 @@
 // What the progressive driver (render/progressive.hpp) renders on: one device's film
-// today (Renderer); several devices or MPI ranks, each taking its share of the rows,
-// will implement the same few calls.
+// (Renderer), or several devices and MPI ranks, each taking its share of the rows
+// (DeviceGroup).
 #pragma once
 
 #include <cstdint>

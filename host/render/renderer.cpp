@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "host/cl/upload.hpp"
 #include "host/error.hpp"
 #include "host/render/features.hpp"
 
@@ -119,37 +120,17 @@ void Renderer::render(std::uint32_t count, std::uint32_t max_rows_per_launch) {
 }
 
 Renderer::Halves Renderer::halves() const {
-    std::size_t n = pixel_count();
-    std::vector<cl_float4> sums(2 * n);
+    const std::size_t n = pixel_count();
+    std::vector<float> sums(2 * n * 4);
     cl_call("reading the image back",
-            [&] { ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(cl_float4), sums.data()); });
-    // Sample i goes to half i % 2: the even half holds ceil(spp / 2) samples.
-    std::uint64_t spp = stats_.samples_per_pixel;
-    Halves h;
-    h.samples[0] = (spp + 1) / 2;
-    h.samples[1] = spp / 2;
-    for (int k = 0; k < 2; ++k) {
-        h.rgb[k].resize(3 * n);
-        float inv = h.samples[k] ? 1.0f / float(h.samples[k]) : 0.0f;
-        for (std::size_t i = 0; i < n; ++i) {
-            const cl_float4& v = sums[k * n + i];
-            for (int c = 0; c < 3; ++c) h.rgb[k][3 * i + c] = v.s[c] * inv;
-            h.rejected += double(v.s[3]);
-        }
-    }
-    return h;
+            [&] { ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data()); });
+    return film_halves(sums, n, SampleRanges{{0, stats_.samples_per_pixel}});
 }
 
 std::vector<float> Renderer::image(double* rejected_samples) const {
-    Halves h = halves();
-    std::uint64_t spp = h.samples[0] + h.samples[1];
-    std::vector<float> rgb(h.rgb[0].size(), 0.0f);
-    if (spp > 0) {
-        float w0 = float(h.samples[0]) / float(spp), w1 = float(h.samples[1]) / float(spp);
-        for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = w0 * h.rgb[0][i] + w1 * h.rgb[1][i];
-    }
+    const Halves h = halves();
     if (rejected_samples) *rejected_samples = h.rejected;
-    return rgb;
+    return film_mean(h);
 }
 
 }  // namespace facet

@@ -8,6 +8,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "host/cl/runtime.hpp"
+#include "host/film/film_halves.hpp"
 #include "host/render/pass_target.hpp"
 #include "host/render/scene_buffers.hpp"
 #include "host/scene/scene.hpp"
@@ -58,11 +59,7 @@ public:
 
     // The two independent half-images: samples with even index and with odd index,
     // each averaged over its own count (for error estimation without a reference).
-    struct Halves {
-        std::vector<float> rgb[2];
-        std::uint64_t samples[2] = {0, 0};
-        double rejected = 0.0;
-    };
+    using Halves = FilmHalves;
     Halves halves() const;
 
     // Clears the accumulated samples.

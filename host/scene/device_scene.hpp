@@ -14,8 +14,11 @@
 #include "host/bvh/bvh.hpp"
 #include "host/bvh/instance_bvh.hpp"
 #include "host/scene/scene.hpp"
-#include "host/scene/sphere_bvh.hpp"
+#include "host/bvh/sphere_bvh.hpp"
 #include "kernels/shared/scene_arrays.h"
+#include "host/bvh/sphere_bvh.hpp"
+#include "kernels/shared/material_layout.h"
+#include "kernels/shared/render_layout.h"
 
 namespace facet {
 

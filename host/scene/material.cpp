@@ -223,16 +223,16 @@ std::string enum_name_list(MaterialEnum kind) {
     return r;
 }
 
+float alpha_from_phong_exponent(float s) { return std::sqrt(2.0f / (s + 2.0f)); }
+
 float shininess_from_roughness(float m) {
-    if (std::isnan(m)) return 2.0f / (kDefaultAlpha * kDefaultAlpha) - 2.0f;
-    m = std::clamp(m, 1e-3f, 1.0f);
-    return std::clamp(2.0f / (m * m) - 2.0f, 0.0f, kExponentMax);
+    if (std::isnan(m)) return phong_exponent_from_alpha(kDefaultAlpha);
+    return std::clamp(phong_exponent_from_alpha(std::clamp(m, 1e-3f, 1.0f)), 0.0f, kExponentMax);
 }
 
 float roughness_from_shininess(float s) {
     if (std::isnan(s)) return kDefaultAlpha;
-    s = std::clamp(s, 0.0f, kExponentMax);
-    return std::clamp(std::sqrt(2.0f / (2.0f + s)), 1e-3f, 1.0f);
+    return std::clamp(alpha_from_phong_exponent(std::clamp(s, 0.0f, kExponentMax)), 1e-3f, 1.0f);
 }
 
 std::optional<std::array<float, 3>> f0_preset(std::string_view name) {

@@ -19,6 +19,12 @@
 
 namespace facet {
 
+// The Phong exponent s of Beckmann roughness alpha, s = 2 / alpha^2 - 2 (Walter et al. 2007,
+// eq. 30), and its inverse alpha = sqrt(2 / (s + 2)), unclamped: the one place the relation
+// is written (shininess_from_roughness and roughness_from_shininess clamp it).
+constexpr float phong_exponent_from_alpha(float alpha) { return 2.0f / (alpha * alpha) - 2.0f; }
+float alpha_from_phong_exponent(float s);
+
 // A material as the host holds it: the model (a diffuse lobe and a specular lobe, the
 // microfacet terms D, G, F and the sampling, each an FC_* value of material_layout.h)
 // and its parameters, colours in linear RGB. The defaults are facet's (see
@@ -43,8 +49,8 @@ struct Material {
     glm::vec3 k{0.0f};
     float alpha_x = 0.3f;  // microfacet roughness along the tangent and bitangent
     float alpha_y = 0.3f;
-    float exponent_x = 2.0f / (0.3f * 0.3f) - 2.0f;  // Phong-style exponents (alpha 0.3)
-    float exponent_y = 2.0f / (0.3f * 0.3f) - 2.0f;
+    float exponent_x = phong_exponent_from_alpha(0.3f);  // Phong-style exponents (alpha 0.3)
+    float exponent_y = phong_exponent_from_alpha(0.3f);
     float ior = 1.5f;            // relative index (Schlick from ior, dielectric)
     float sigma = 0.3f;          // Oren-Nayar's sigma, radians
     float eon_roughness = 0.3f;  // EON's roughness r in [0, 1] (Portsmouth et al. 2024)

@@ -78,7 +78,7 @@ struct Instance {
 struct Scene {
     std::vector<glm::vec3> vertices;    // 3 per triangle
     std::vector<FcTriShading> shading;  // 1 per triangle
-    std::vector<FcSphere> spheres;      // analytic spheres (host/scene/sphere_bvh.hpp)
+    std::vector<FcSphere> spheres;      // analytic spheres (host/bvh/sphere_bvh.hpp)
     std::vector<Material> materials;
     std::vector<std::string> material_names;  // parallel to materials
     std::vector<PunctualLight> punctual_lights;

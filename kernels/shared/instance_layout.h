@@ -12,12 +12,12 @@
  * index of its first FcTriangle; their FcTriangle.prim index the shading arrays (FcTriShading,
  * FcTriTexcoords), which hold each shared mesh's triangles once, after the world triangles'.
  *
- * The top-level node is laid out as FcSphereNode: children a and b, each a box and a
- * reference (inner: count == 0, index = node; leaf: count > 0 instances from `index` of the
- * FcInstance array; empty: count == 0, index == 0, inverted box). */
+ * The top-level tree is an FcBinaryNode tree (binary_node_layout.h), its leaves indexing the
+ * FcInstance array. */
 #ifndef FACET_SHARED_INSTANCE_LAYOUT_H
 #define FACET_SHARED_INSTANCE_LAYOUT_H
 
+#include "kernels/shared/binary_node_layout.h"
 #include "kernels/shared/types.h"
 
 typedef struct FcInstance {
@@ -29,27 +29,9 @@ typedef struct FcInstance {
     fc_int tri_offset; /* its mesh's first FcTriangle */
 } FcInstance;
 
-typedef struct FcInstanceNode {
-    float a_lo[3];
-    fc_int a_index;
-    float a_hi[3];
-    fc_int a_count;
-    float b_lo[3];
-    fc_int b_index;
-    float b_hi[3];
-    fc_int b_count;
-} FcInstanceNode;
-
-/* Entries of the top-level traversal's stack: one push per binary level, and the builder
- * keeps the tree at most this deep. */
-#define FC_INSTANCE_STACK_SIZE 48
-
 FC_STATIC_ASSERT(sizeof(FcInstance) == 128, "FcInstance is 128 bytes");
 FC_STATIC_ASSERT(offsetof(FcInstance, object_to_world) == 48 && offsetof(FcInstance, lo) == 96 &&
                      offsetof(FcInstance, root) == 108 && offsetof(FcInstance, tri_offset) == 124,
                  "FcInstance offsets");
-FC_STATIC_ASSERT(sizeof(FcInstanceNode) == 64, "FcInstanceNode is 64 bytes");
-FC_STATIC_ASSERT(offsetof(FcInstanceNode, b_lo) == 32 && offsetof(FcInstanceNode, b_count) == 60,
-                 "FcInstanceNode offsets");
 
 #endif

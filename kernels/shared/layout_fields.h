@@ -20,9 +20,8 @@
     S(FcMaterialTextures)    \
     S(FcTriTexcoords)        \
     S(FcSphere)              \
-    S(FcSphereNode)          \
-    S(FcInstance)            \
-    S(FcInstanceNode)
+    S(FcBinaryNode)          \
+    S(FcInstance)
 
 // clang-format off
 #define FC_LAYOUT_FIELDS(F)                                                                                                 \
@@ -60,12 +59,10 @@
     F(FcMaterialTextures, base_factor) F(FcMaterialTextures, flags) F(FcMaterialTextures, uv_transform)                     \
     F(FcTriTexcoords, uv) F(FcTriTexcoords, tangent_flags) F(FcTriTexcoords, tangent)                                       \
     F(FcSphere, center) F(FcSphere, radius) F(FcSphere, material) F(FcSphere, light) F(FcSphere, flags)                     \
-    F(FcSphere, prim) F(FcSphereNode, a_lo) F(FcSphereNode, a_index) F(FcSphereNode, a_hi) F(FcSphereNode, a_count)         \
-    F(FcSphereNode, b_lo) F(FcSphereNode, b_index) F(FcSphereNode, b_hi) F(FcSphereNode, b_count)                           \
+    F(FcSphere, prim) F(FcBinaryNode, a_lo) F(FcBinaryNode, a_index) F(FcBinaryNode, a_hi) F(FcBinaryNode, a_count)         \
+    F(FcBinaryNode, b_lo) F(FcBinaryNode, b_index) F(FcBinaryNode, b_hi) F(FcBinaryNode, b_count)                           \
     F(FcInstance, world_to_object) F(FcInstance, object_to_world) F(FcInstance, lo) F(FcInstance, root)                     \
-    F(FcInstance, hi) F(FcInstance, tri_offset) F(FcInstanceNode, a_lo) F(FcInstanceNode, a_index)                          \
-    F(FcInstanceNode, a_hi) F(FcInstanceNode, a_count) F(FcInstanceNode, b_lo) F(FcInstanceNode, b_index)                   \
-    F(FcInstanceNode, b_hi) F(FcInstanceNode, b_count)
+    F(FcInstance, hi) F(FcInstance, tri_offset)
 // clang-format on
 
 #endif

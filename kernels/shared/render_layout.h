@@ -10,15 +10,23 @@
 #define FC_PROJECTION_ORTHOGRAPHIC 1
 
 /* How light from area lights and the environment is estimated (punctual lights are
- * always sampled: nothing else can reach them). MIS is the default; the single
- * strategies exist to measure and test them. */
-#define FC_STRATEGY_MIS 0   /* light sampling + BSDF sampling, power heuristic */
-#define FC_STRATEGY_LIGHT 1 /* light sampling only */
-#define FC_STRATEGY_BSDF 2  /* BSDF sampling only */
+ * always sampled: nothing else can reach them), X(constant, name) in value order. MIS is
+ * the default; the single strategies exist to measure and test them. */
+#define FC_STRATEGY_LIST(X)                                                    \
+    X(FC_STRATEGY_MIS, "mis")     /* light + BSDF sampling, power heuristic */ \
+    X(FC_STRATEGY_LIGHT, "light") /* light sampling only */                    \
+    X(FC_STRATEGY_BSDF, "bsdf")   /* BSDF sampling only */
 
-/* Sample generators (kernels/util/sampler.cl). */
-#define FC_SAMPLER_INDEPENDENT 0 /* independent uniform numbers (PCG32) */
-#define FC_SAMPLER_SOBOL 1       /* Owen-scrambled Sobol', shuffled per dimension set (Burley 2020) */
+/* Sample generators (kernels/util/sampler.cl), X(constant, name) in value order. */
+#define FC_SAMPLER_LIST(X)                                                 \
+    X(FC_SAMPLER_INDEPENDENT, "independent") /* uniform numbers (PCG32) */ \
+    X(FC_SAMPLER_SOBOL, "sobol")             /* Owen-scrambled Sobol', shuffled per dimension set (Burley 2020) */
+
+/* The constants: 0, 1, ... in list order (the values film files store). */
+#define FC_RENDER_ENUM_VALUE(value, name) value,
+enum { FC_STRATEGY_LIST(FC_RENDER_ENUM_VALUE) FC_STRATEGY_COUNT };
+enum { FC_SAMPLER_LIST(FC_RENDER_ENUM_VALUE) FC_SAMPLER_COUNT };
+#undef FC_RENDER_ENUM_VALUE
 
 /* Pixel reconstruction filters (kernels/camera/filter.cl). */
 #define FC_FILTER_BOX 0      /* uniform over the pixel (radius 0.5) or a wider square */

@@ -1,6 +1,9 @@
 /* Test kernels for tests/instancing_test.cpp: rays against a whole scene (world triangles,
  * instances, spheres) through scene_trace_closest / scene_trace_any, and the surface at
  * each closest hit. */
+#ifndef FACET_TEST_INSTANCE_KERNELS_CL
+#define FACET_TEST_INSTANCE_KERNELS_CL
+
 #include "kernels/integrator/surface.cl"
 
 /* origins[i].xyz, dirs[i].xyz, dirs[i].w = tmax. Closest hit: hit_out[i] = (t, p), on a miss
@@ -8,8 +11,8 @@
  * scene_trace_any's answer. */
 __kernel void trace_scene_batch(__global const FcBvhNode* nodes, __global const FcTriangle* tris,
                                 __global const FcTriShading* shading, __global const FcSphere* spheres,
-                                __global const FcSphereNode* sphere_nodes, __global const FcInstance* instances,
-                                __global const FcInstanceNode* instance_nodes, __global const float4* origins,
+                                __global const FcBinaryNode* sphere_nodes, __global const FcInstance* instances,
+                                __global const FcBinaryNode* instance_nodes, __global const float4* origins,
                                 __global const float4* dirs, __global float4* hit_out, __global float4* ng_out,
                                 __global float4* ns_out, __global int* any_out) {
     const size_t i = get_global_id(0);
@@ -34,3 +37,5 @@ __kernel void trace_scene_batch(__global const FcBvhNode* nodes, __global const 
     }
     any_out[i] = scene_trace_any(&sc, o, d, tmax) ? 1 : 0;
 }
+
+#endif

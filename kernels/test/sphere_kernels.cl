@@ -14,7 +14,7 @@ __kernel void sphere_roots_batch(float4 sphere, __global const float4* origins, 
 
 /* The nearest sphere of the tree along origins[i] + t dirs[i].xyz, t < dirs[i].w:
  * out[i] = (t, as_float(sphere index in the FcSphere array)), index -1 on a miss. */
-__kernel void trace_spheres_batch(__global const FcSphereNode* nodes, __global const FcSphere* spheres,
+__kernel void trace_spheres_batch(__global const FcBinaryNode* nodes, __global const FcSphere* spheres,
                                   __global const float4* origins, __global const float4* dirs, __global float2* out) {
     const uint i = get_global_id(0);
     Hit hit;

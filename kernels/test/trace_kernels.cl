@@ -1,5 +1,8 @@
 /* Test kernels for tests/bvh_test.cpp: the BVH traversal, and a brute-force loop over
  * every triangle with the same ray/triangle test to compare it against. */
+#ifndef FACET_TEST_TRACE_KERNELS_CL
+#define FACET_TEST_TRACE_KERNELS_CL
+
 #include "kernels/trace/bvh_traverse.cl"
 
 /* Four consecutive triangles of the FcTriangle array (from `first`; lanes past `count`
@@ -69,3 +72,5 @@ __kernel void offset_origins(__global const float4* p, __global const float4* ng
     size_t i = get_global_id(0);
     out[i] = (float4)(offset_ray_origin(p[i].xyz, ng[i].xyz), 0.0f);
 }
+
+#endif

@@ -1,6 +1,6 @@
 /* Instancing (kernels/shared/instance_layout.h): rays against the instances of shared
- * meshes. A binary top-level tree over the instances' world boxes (traversed as the
- * spheres' tree is, kernels/trace/sphere.cl) leads to instances; at each, the ray is taken
+ * meshes. A binary top-level tree over the instances' world boxes (binary_traverse.cl, as
+ * the spheres' tree) leads to instances; at each, the ray is taken
  * into the mesh's object space (its direction not renormalised, so that t along it is the
  * world ray's t and the nearest hit is shared by every instance and the world's triangles)
  * and the mesh's own tree is traversed from its root by bvh_traverse.cl (pbrt-v4's
@@ -10,6 +10,7 @@
 
 #include "kernels/scene/instance_transform.cl"
 #include "kernels/scene/scene_view.cl"
+#include "kernels/trace/binary_traverse.cl"
 #include "kernels/trace/bvh_traverse.cl"
 
 /* The instances [first, first + count) of a leaf, shortening hit->t: a hit sets hit->inst
@@ -29,59 +30,15 @@ inline bool instance_leaf_hit(const SceneView* sc, int first, int count, float3 
     return found;
 }
 
-/* Nearest instanced hit with 0 < t < hit->t (or, with `any_hit`, whether there is one): the
- * top-level tree, leaves first, then the nearer inner child with the farther on the stack.
- * A closest hit gets hit->prim (its triangle's index in the shading arrays). */
+/* Nearest instanced hit with 0 < t < hit->t (or, with `any_hit`, whether there is one). A
+ * closest hit gets hit->prim (its triangle's index in the shading arrays). */
 inline bool trace_instances(const SceneView* sc, float3 o, float3 d, Hit* hit, bool any_hit) {
-    const BoxRay br = box_ray_setup(o, d);
-    int stack_node[FC_INSTANCE_STACK_SIZE];
-    float stack_t[FC_INSTANCE_STACK_SIZE];
-    int sp = 0, node = 0;
     bool found = false;
-    for (;;) {
-        __global const FcInstanceNode* n = &sc->instance_nodes[node];
-        float ta, tb;
-        bool ha = box_hit(&br, n->a_lo, n->a_hi, hit->t, &ta);
-        bool hb = box_hit(&br, n->b_lo, n->b_hi, hit->t, &tb);
-        if (ha && n->a_count > 0) {
-            ha = false;
-            if (instance_leaf_hit(sc, n->a_index, n->a_count, o, d, hit, any_hit)) {
-                if (any_hit) return true;
-                found = true;
-            }
-        }
-        if (hb && n->b_count > 0) {
-            hb = false;
-            if (instance_leaf_hit(sc, n->b_index, n->b_count, o, d, hit, any_hit)) {
-                if (any_hit) return true;
-                found = true;
-            }
-        }
-        if (ha && hb) {
-            const bool b_first = tb < ta;
-            if (sp < FC_INSTANCE_STACK_SIZE) { /* always, by the builder's depth limit */
-                stack_node[sp] = b_first ? n->a_index : n->b_index;
-                stack_t[sp] = b_first ? ta : tb;
-                ++sp;
-            }
-            node = b_first ? n->b_index : n->a_index;
-        } else if (ha) {
-            node = n->a_index;
-        } else if (hb) {
-            node = n->b_index;
-        } else {
-            /* Pop the next entry still nearer than the nearest hit. */
-            for (;;) {
-                if (sp == 0) {
-                    if (found) hit->prim = sc->tris[hit->tri].prim;
-                    return found;
-                }
-                --sp;
-                if (stack_t[sp] <= hit->t) break;
-            }
-            node = stack_node[sp];
-        }
-    }
+#define FC_INSTANCE_LEAF(first, count) instance_leaf_hit(sc, first, count, o, d, hit, any_hit)
+    FC_BINARY_TRAVERSE(sc->instance_nodes, o, d, hit, any_hit, found, FC_INSTANCE_LEAF);
+#undef FC_INSTANCE_LEAF
+    if (found) hit->prim = sc->tris[hit->tri].prim;
+    return found;
 }
 
 /* The world-space vertices of hit triangle hit->tri: its own, or placed by its instance. */

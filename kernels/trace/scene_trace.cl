@@ -7,12 +7,11 @@
 
 #include "kernels/scene/scene_view.cl"
 #include "kernels/trace/bvh_traverse.cl"
-/* Included whatever FC_HAS_SPHERES and FC_HAS_INSTANCES say: the host assembles a program's
- * sources once each, so a file first included inside a disabled #if would be missing for
- * the later includes (material_textures.cl needs sphere_uv); unused inline functions cost
- * nothing. */
+/* Every program: hit_triangle_vertices places an instanced triangle's vertices. */
 #include "kernels/trace/instance.cl"
+#if FC_HAS_SPHERES
 #include "kernels/trace/sphere.cl"
+#endif
 
 /* Nearest hit with 0 < t < tmax: a triangle (hit->tri >= 0; hit->inst >= 0 when met in an
  * instance) or a sphere (FC_HIT_SPHERE). */

@@ -1,5 +1,5 @@
 /* Analytic spheres: the ray/sphere intersection, the traversal of the spheres' own binary
- * BVH (kernels/shared/sphere_layout.h), and the surface at a hit.
+ * BVH (kernels/shared/sphere_layout.h, traversed by binary_traverse.cl), and the surface at a hit.
  *
  * The intersection is the numerically careful quadratic of Haines et al. 2019 ("Precision
  * Improvements for Ray/Sphere Intersection", Ray Tracing Gems ch. 7) as pbrt-v4 (section
@@ -15,7 +15,7 @@
 #define FACET_TRACE_SPHERE_CL
 
 #include "kernels/shared/sphere_layout.h"
-#include "kernels/trace/bvh_traverse.cl"
+#include "kernels/trace/binary_traverse.cl"
 #include "kernels/util/math.cl"
 
 /* Hit.tri of a sphere hit; Hit.prim is then the sphere's index in the FcSphere array. */
@@ -76,56 +76,14 @@ inline bool sphere_leaf_hit(__global const FcSphere* spheres, int first, int cou
     return found;
 }
 
-/* Nearest sphere hit with 0 < t < hit->t (or, with `any_hit`, whether there is one): the
- * binary tree, leaves first, then the nearer inner child with the farther on the stack. */
-inline bool trace_spheres(__global const FcSphereNode* nodes, __global const FcSphere* spheres, float3 o, float3 d,
+/* Nearest sphere hit with 0 < t < hit->t (or, with `any_hit`, whether there is one). */
+inline bool trace_spheres(__global const FcBinaryNode* nodes, __global const FcSphere* spheres, float3 o, float3 d,
                           Hit* hit, bool any_hit) {
-    const BoxRay br = box_ray_setup(o, d);
-    int stack_node[FC_SPHERE_STACK_SIZE];
-    float stack_t[FC_SPHERE_STACK_SIZE];
-    int sp = 0, node = 0;
     bool found = false;
-    for (;;) {
-        __global const FcSphereNode* n = &nodes[node];
-        float ta, tb;
-        bool ha = box_hit(&br, n->a_lo, n->a_hi, hit->t, &ta);
-        bool hb = box_hit(&br, n->b_lo, n->b_hi, hit->t, &tb);
-        if (ha && n->a_count > 0) {
-            ha = false;
-            if (sphere_leaf_hit(spheres, n->a_index, n->a_count, o, d, hit, any_hit)) {
-                if (any_hit) return true;
-                found = true;
-            }
-        }
-        if (hb && n->b_count > 0) {
-            hb = false;
-            if (sphere_leaf_hit(spheres, n->b_index, n->b_count, o, d, hit, any_hit)) {
-                if (any_hit) return true;
-                found = true;
-            }
-        }
-        if (ha && hb) {
-            const bool b_first = tb < ta;
-            if (sp < FC_SPHERE_STACK_SIZE) { /* always, by the builder's depth limit */
-                stack_node[sp] = b_first ? n->a_index : n->b_index;
-                stack_t[sp] = b_first ? ta : tb;
-                ++sp;
-            }
-            node = b_first ? n->b_index : n->a_index;
-        } else if (ha) {
-            node = n->a_index;
-        } else if (hb) {
-            node = n->b_index;
-        } else {
-            /* Pop the next entry still nearer than the nearest hit. */
-            for (;;) {
-                if (sp == 0) return found;
-                --sp;
-                if (stack_t[sp] <= hit->t) break;
-            }
-            node = stack_node[sp];
-        }
-    }
+#define FC_SPHERE_LEAF(first, count) sphere_leaf_hit(spheres, first, count, o, d, hit, any_hit)
+    FC_BINARY_TRAVERSE(nodes, o, d, hit, any_hit, found, FC_SPHERE_LEAF);
+#undef FC_SPHERE_LEAF
+    return found;
 }
 
 /* The hit point o + t d re-projected onto the sphere, its outward unit normal in *n and a

@@ -1,16 +1,17 @@
 // The analytic spheres of a scene as the kernels read them (kernels/shared/sphere_layout.h):
-// a binary BVH built by host/bvh's SAH builder over the spheres' boxes, and the spheres in
+// a binary BVH (host/bvh/binary_tree.hpp) over the spheres' boxes, and the spheres in
 // the order its leaves reference them.
 #pragma once
 
 #include <vector>
 
+#include "kernels/shared/binary_node_layout.h"
 #include "kernels/shared/sphere_layout.h"
 
 namespace facet {
 
 struct SphereBvh {
-    std::vector<FcSphereNode> nodes;  // nodes[0] is the root
+    std::vector<FcBinaryNode> nodes;  // nodes[0] is the root
     std::vector<FcSphere> spheres;    // in leaf order; FcSphere::prim is the input index
 };
 
