@@ -153,6 +153,9 @@ TEST(Features, EveryFlagIsExercised) {
     rough_glass.alpha_x = rough_glass.alpha_y = 0.2f;
     with_material("rough dielectric (beckmann)", rough_glass);
     with_material("conductor", make_material("conductor"));
+    Material half_metal = make_material("ggx");
+    set_metallic_roughness(half_metal, glm::vec3(0.9f, 0.6f, 0.3f), 0.5f, 0.04f);
+    with_material("metallic", half_metal);
     Material textured = make_material("ggx");
     textured.textures.base_color = textured.textures.roughness = textured.textures.normal = 0;
     with_material("textured", textured);

@@ -139,7 +139,11 @@ void write_png(const std::string& path, int width, int height, const std::vector
 
 // read_image after the file's checks; the decoded size is checked against the file's.
 static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_size) {
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+    // Colours as stored: OpenImageIO multiplies an unassociated alpha (PNG, TGA, TIFF) into
+    // the colour on read unless told not to, and facet reads R, G, B alone (alpha unused).
+    ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path, &config);
     if (!in) throw Error(fmt::format("{}: cannot read image: {}", path, OIIO::geterror()));
     const ImageSpec& spec = in->spec();
     if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)

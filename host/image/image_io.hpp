@@ -52,7 +52,8 @@ struct ImageRGB {
 // Reads any image OpenImageIO can (EXR, HDR, PNG...) as linear RGB floats: EXR and HDR
 // as stored, integer images in sRGB (8-bit PNG, JPEG) decoded to linear with a note
 // (ImageRGB::note). A one-channel image is
-// replicated to grey. Throws facet::Error naming the file on failure, and for images
+// replicated to grey. Alpha is not read, nor multiplied into the colour (an RGBA PNG's
+// texel of alpha 0 keeps its stored colour). Throws facet::Error naming the file on failure, and for images
 // of more than 2^28 pixels (checked on the header, before reading).
 ImageRGB read_image(const std::string& path);
 

@@ -249,10 +249,7 @@ Material convert_material(const tinygltf::Material& g, const std::string& file, 
         m.ior = ior;
     } else {
         m = make_material("ggx");
-        const float f0 = ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
-        m.f0 = m.ks = m.transmittance = glm::mix(glm::vec3(f0), base, metallic);
-        m.diffuse = base * (1.0f - metallic);
-        if (metallic >= 1.0f) m.diffuse_model = FC_DIFFUSE_NONE;
+        set_metallic_roughness(m, base, metallic, ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f)));
         m.ior = ior;
     }
     m.alpha_x = m.alpha_y = alpha;

@@ -30,16 +30,14 @@ private:
 bool supported_extension(const std::string& name);
 
 // pbrMetallicRoughness with KHR_materials_ior / _transmission / _emissive_strength as a
-// facet Material: GGX (alpha = roughness^2) over a Lambert (1 - F0) base of colour
-// base x (1 - metallic), F0 = mix(((ior - 1)/(ior + 1))^2, base, metallic), so metallic 1
-// is a conductor with the base colour as F0 and metallic 0 a dielectric coating on a
-// diffuse base; transmission >= 0.5 (non-metal) is rough glass of the IOR tinted by the
-// base colour; emission = emissiveFactor x emissiveStrength. baseColorTexture,
-// metallicRoughnessTexture, normalTexture and emissiveTexture (with
-// KHR_texture_transform, texCoord 0) are loaded into scene.textures and bound
-// (docs/textures.md). alphaMode MASK/BLEND and other extensions go to `ignored`.
-// Throws facet::Error naming `place` for values outside the specification's ranges
-// and for images that cannot be read.
+// facet Material: glTF's mix (Appendix B) by metallic of a dielectric (GGX, alpha =
+// roughness^2, Schlick F0 = ((ior - 1)/(ior + 1))^2, over a Lambert base of the base
+// colour) and a metal (the same GGX lobe, F0 = the base colour): set_metallic_roughness; transmission >= 0.5
+// (non-metal) is rough glass of the IOR tinted by the base colour; emission = emissiveFactor x emissiveStrength.
+// baseColorTexture, metallicRoughnessTexture, normalTexture and emissiveTexture (with KHR_texture_transform, texCoord
+// 0) are loaded into scene.textures and bound (docs/textures.md). alphaMode MASK/BLEND and other extensions go to
+// `ignored`. Throws facet::Error naming `place` for values outside the specification's ranges and for images that
+// cannot be read.
 Material convert_material(const tinygltf::Material& g, const std::string& file, const std::string& place,
                           Ignored& ignored, const tinygltf::Model& model, Scene& scene);
 

@@ -243,6 +243,7 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
               "conductor",
               "transmittance",
               "energy_compensation",
+              "metallic",
               "textures"});
     const MaterialKeys k{r, v, path};
     Material m = preset(k);
@@ -260,6 +261,11 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
         m.two_sided_emission = true;
     if (k.has("energy_compensation"))
         m.energy_compensation = r.boolean(v["energy_compensation"], k.key("energy_compensation"));
+    if (k.has("metallic")) {  // glTF's mix: "diffuse" the base colour, the metal's F0 (docs/brdf.md)
+        m.metallic = k.number("metallic", 0, 1);
+        if (m.metallic > 0.0f && m.specular_model != FC_SPECULAR_MICROFACET)
+            r.fail(k.key("metallic"), "needs a microfacet specular lobe (model \"ggx\" or \"microfacet\")");
+    }
     if (std::string warning = clamp_reflectance(m); !warning.empty())
         scene.warnings.push_back(fmt::format("{}: {}: {}", r.file(), path, warning));
     if (std::string problem = validate_material(m); !problem.empty()) r.fail(path, problem);

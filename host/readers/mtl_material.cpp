@@ -106,7 +106,8 @@ struct Pending {
 
 // Chooses the model from what the MTL gives (docs/scene-format.md, "MTL materials"):
 // - the PBR extension (Pr or Pm): GGX with height-correlated Smith; base colour Kd,
-//   metallic Pm: diffuse = Kd (1 - Pm), F0 = lerp(F0(Ni), Kd, Pm); alpha = Pr^2 (Pr is
+//   metallic Pm: glTF's mix by Pm of a dielectric (F0(Ni) over a Lambert base Kd) and a
+//   metal (F0 = Kd), set_metallic_roughness; alpha = Pr^2 (Pr is
 //   perceptual roughness, as in glTF and Disney 2012); no Pr: alpha from Ns;
 // - a specular colour (Ks > 0) with illum 2 or more: normalized Blinn-Phong with Ks
 //   and exponent Ns (the energy-normalised form of MTL's Phong highlight);
@@ -148,11 +149,8 @@ MtlMaterial finish(Pending& p) {
         mat = make_material("ggx");
         float alpha = p.has_pr ? std::max(p.pr * p.pr, 1e-3f) : roughness_from_shininess(shininess);
         float f0 = ((base.ior - 1.0f) / (base.ior + 1.0f)) * ((base.ior - 1.0f) / (base.ior + 1.0f));
-        for (int c = 0; c < 3; ++c) {
-            mat.diffuse[c] = base.diffuse[c] * (1.0f - m.metallic);
-            mat.f0[c] = f0 + (base.diffuse[c] - f0) * m.metallic;
-        }
-        mat.diffuse_model = FC_DIFFUSE_LAMBERT;
+        set_metallic_roughness(mat, base.diffuse, m.metallic, f0);
+        if (mat.diffuse_model != FC_DIFFUSE_NONE) mat.diffuse_model = FC_DIFFUSE_LAMBERT;
         mat.alpha_x = mat.alpha_y = alpha;
         mat.exponent_x = mat.exponent_y = shininess_from_roughness(alpha);
     } else if (has_ks && m.illum >= 2) {

@@ -64,6 +64,7 @@ FeatureMask scene_features(const Scene& scene) {
             if (m.ndf == FC_NDF_BECKMANN) mask |= kBECKMANN;
         }
         if (m.textures.any()) mask |= kTEXTURES;
+        if (m.metallic > 0.0f || m.textures.metallic_workflow) mask |= kMETALLIC;
     }
     return mask;
 }

@@ -91,6 +91,7 @@ FcMaterial device_material(const Material& m) {
     d.geometry = m.geometry;
     d.fresnel = m.fresnel;
     d.sampling = m.sampling;
+    d.metallic = m.metallic;
     d.alpha_x = m.alpha_x;
     d.alpha_y = m.alpha_y;
     d.exponent_x = m.exponent_x;
@@ -115,6 +116,7 @@ Material host_material(const FcMaterial& d) {
     m.geometry = d.geometry;
     m.fresnel = d.fresnel;
     m.sampling = d.sampling;
+    m.metallic = d.metallic;
     m.alpha_x = d.alpha_x;
     m.alpha_y = d.alpha_y;
     m.exponent_x = d.exponent_x;

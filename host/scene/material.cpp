@@ -263,6 +263,20 @@ std::vector<std::string_view> f0_preset_names() {
 
 float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
+void set_metallic_roughness(Material& m, glm::vec3 base, float metallic, float dielectric_f0) {
+    m.metallic = 0.0f;
+    if (metallic >= 1.0f) {  // the metal alone
+        m.diffuse_model = FC_DIFFUSE_NONE;
+        m.diffuse = glm::vec3(0.0f);
+        m.f0 = m.ks = m.transmittance = base;
+        return;
+    }
+    m.diffuse_model = FC_DIFFUSE_LAMBERT_1MF0;
+    m.diffuse = base;
+    m.f0 = m.ks = m.transmittance = glm::vec3(dielectric_f0);
+    m.metallic = std::max(metallic, 0.0f);
+}
+
 std::string validate_material(const Material& m) {
     auto bad = [](float v, bool ok) { return !std::isfinite(v) || !ok; };
     const struct {
@@ -289,6 +303,8 @@ std::string validate_material(const Material& m) {
                    {"exponent_y", m.exponent_y}, {"sigma", m.sigma},     {"eon_roughness", m.eon_roughness}};
     for (const auto& s : scalars)
         if (bad(s.v, s.v >= 0.0f)) return fmt::format("{} must be a finite number >= 0 (got {:g})", s.name, s.v);
+    if (bad(m.metallic, m.metallic >= 0.0f && m.metallic <= 1.0f))
+        return fmt::format("metallic must be a finite number in [0, 1] (got {:g})", m.metallic);
     if (bad(m.ior, m.ior > 0.0f)) return fmt::format("ior must be a finite number > 0 (got {:g})", m.ior);
     const struct {
         MaterialEnum kind;
@@ -358,6 +374,7 @@ std::string describe_material(const Material& m) {
             if (m.ndf == FC_NDF_BLINN_PHONG) s += fmt::format(" exponent={:g}", m.exponent_x);
             else s += fmt::format(" alpha=({:g}, {:g})", m.alpha_x, m.alpha_y);
             s += " sampling=" + enum_to_name(MaterialEnum::Sampling, m.sampling);
+            if (m.metallic > 0.0f) s += fmt::format(" metallic={:g} (F0 of the metal: the diffuse colour)", m.metallic);
             if (m.energy_compensation) s += " energy_compensation";
             break;
         case FC_SPECULAR_BLINN_PHONG:

@@ -60,6 +60,9 @@ struct Material {
     // microfacet and conductor, off for the classic named models and for the dielectric
     // (whose albedo scaling is not reciprocal: opt-in).
     bool energy_compensation = false;
+    // glTF's metallic M in [0, 1] (microfacet lobes): f = (1 - M) f + M f_metal, f_metal the
+    // microfacet lobe with Schlick F0 = diffuse, the base colour (kernels/bsdf/metallic.cl).
+    float metallic = 0.0f;
     // Image textures bound to the parameters above (docs/textures.md).
     MaterialTextures textures;
 };
@@ -133,6 +136,12 @@ std::optional<ConductorIndex> conductor_preset(std::string_view name);
 std::vector<std::string_view> conductor_preset_names();
 // The sRGB transfer function's inverse (IEC 61966-2-1), for colours given in sRGB.
 float srgb_to_linear(float c);
+
+// --- glTF's metallic-roughness -----------------------------------------------------------
+// Sets a microfacet material to glTF's mix of a dielectric (Schlick F0 `dielectric_f0` over a
+// Lambert base of colour `base`) and a metal (F0 = base) by `metallic` (docs/brdf.md): at 0
+// the dielectric alone, at 1 the metal alone (no diffuse lobe), in between the mix.
+void set_metallic_roughness(Material& m, glm::vec3 base, float metallic, float dielectric_f0);
 
 // --- validation -----------------------------------------------------------------------
 // Empty when every field is usable, else a message naming the first bad field, e.g.

@@ -7,6 +7,11 @@
  * 1997 section 9.2.4), so weight = f cos / pdf. Directions in the local frame
  * (n = +z), pointing away from the surface; wo below the surface gives 0.
  *
+ * A material with metallic M > 0 mixes in a metal lobe, glTF's metallic-roughness BRDF
+ * (metallic.cl): f = (1 - M) (diffuse + specular) + M metal; both specular lobes share one
+ * sampling density, so the mixture is sampled as one specular lobe chosen with the
+ * mixture's weight.
+ *
  * A dielectric (FC_SPECULAR_DIELECTRIC) is the whole BSDF: it alone transmits, so wo
  * and wi may lie on either side (dielectric.cl), and any diffuse lobe is ignored. */
 #ifndef FACET_BSDF_BSDF_CL
@@ -14,6 +19,7 @@
 
 #include "kernels/bsdf/bsdf_sample.cl"
 #include "kernels/bsdf/diffuse.cl"
+#include "kernels/bsdf/metallic.cl"
 #include "kernels/bsdf/specular.cl"
 #if FC_HAS_DIELECTRIC
 #include "kernels/bsdf/dielectric.cl"
@@ -30,9 +36,16 @@ inline bool bsdf_is_dielectric(const FcMaterial* m) {
 
 inline float specular_probability(const FcMaterial* m, float3 wo) {
     if (m->specular_model == FC_SPECULAR_NONE) return 0.0f;
-    if (m->diffuse_model == FC_DIFFUSE_NONE) return 1.0f;
     float s = specular_weight(m, wo);
     float d = diffuse_weight(m);
+    if (metallic_mixed(m)) { /* the metal's share of the specular choice; the diffuse's is 1 - M */
+        FcMaterial metal = metallic_lobe(m);
+        float k = metallic_weight(m);
+        if (k >= 1.0f) return 1.0f;
+        s = mix(s, specular_weight(&metal, wo), k);
+        d *= 1.0f - k;
+    }
+    if (m->diffuse_model == FC_DIFFUSE_NONE) return 1.0f;
     return (s + d > 0.0f) ? clamp(s / (s + d), 0.05f, 0.95f) : 0.5f;
 }
 
@@ -41,7 +54,12 @@ inline float3 bsdf_eval(const FcMaterial* m, float3 wo, float3 wi) {
     if (bsdf_is_dielectric(m)) return dielectric_eval(m, wo, wi);
 #endif
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
-    return diffuse_eval(m, wo, wi) + specular_eval(m, wo, wi);
+    float3 f = diffuse_eval(m, wo, wi) + specular_eval(m, wo, wi);
+    if (metallic_mixed(m)) {
+        FcMaterial metal = metallic_lobe(m);
+        f = mix(f, specular_eval(&metal, wo, wi), metallic_weight(m));
+    }
+    return f;
 }
 
 inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
@@ -75,6 +93,10 @@ inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s)
     if (u.z < p) {
         if (!specular_sample(m, wo, u.xy, s)) return false;
         if (s->delta) {
+            if (metallic_mixed(m)) { /* the mirror's reflectance, (1 - M) F_dielectric + M F_metal */
+                FcMaterial metal = metallic_lobe(m);
+                s->weight = mix(s->weight, fresnel_eval(&metal, wo.z), metallic_weight(m));
+            }
             s->weight /= p; /* the mirror was chosen with probability p */
             return all_finite(s->weight);
         }

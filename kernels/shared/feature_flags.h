@@ -20,7 +20,8 @@
     X(DIELECTRIC, 8)        \
     X(TEXTURES, 9)          \
     X(SPHERES, 10)          \
-    X(INSTANCES, 11)
+    X(INSTANCES, 11)        \
+    X(METALLIC, 12)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -57,6 +58,9 @@
 #endif
 #ifndef FC_HAS_INSTANCES
 #define FC_HAS_INSTANCES 1
+#endif
+#ifndef FC_HAS_METALLIC
+#define FC_HAS_METALLIC 1
 #endif
 
 #endif

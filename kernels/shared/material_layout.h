@@ -94,7 +94,10 @@ enum { FC_SAMPLE_LIST(FC_MATERIAL_ENUM_VALUE) FC_SAMPLE_COUNT };
  * the tangent and bitangent; exponent_x/exponent_y the Phong-style exponents
  * (Blinn-Phong uses exponent_x; Ashikhmin-Shirley nu = exponent_x, nv = exponent_y);
  * `sigma` is Oren-Nayar's sigma (radians), or EON's roughness r in [0, 1] (the host's
- * Material names the two apart). */
+ * Material names the two apart). `metallic` M in [0, 1] mixes in a metal lobe, glTF's
+ * metallic-roughness BRDF (kernels/bsdf/metallic.cl): f = (1 - M) f + M f_metal, f_metal the
+ * microfacet lobe with Schlick's F0 = `diffuse` (the base colour); 0 leaves the material as
+ * it is. */
 typedef struct FcMaterial {
     float diffuse[3];
     fc_int diffuse_model;
@@ -114,9 +117,13 @@ typedef struct FcMaterial {
     float sigma;
     fc_uint flags;
     fc_int sampling;
+    float metallic;
+    fc_uint pad0[3];
 } FcMaterial;
 
-FC_STATIC_ASSERT(sizeof(FcMaterial) == 112, "FcMaterial is 112 bytes");
-FC_STATIC_ASSERT(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104, "FcMaterial offsets");
+FC_STATIC_ASSERT(sizeof(FcMaterial) == 128, "FcMaterial is 128 bytes");
+FC_STATIC_ASSERT(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104 &&
+                     offsetof(FcMaterial, metallic) == 112,
+                 "FcMaterial offsets");
 
 #endif

@@ -49,10 +49,10 @@ typedef struct FcTexture {
 #define FC_ROUGHNESS_SHININESS 1  /* Phong exponent = Ns x texel, alpha from it (MTL map_Ns) */
 
 /* Material texture flags (FcMaterialTextures.flags). */
-/* glTF's metallic-roughness workflow: base colour B and metalness M give diffuse
- * B (1 - M) and F0 = mix(dielectric_f0, B, M), as host/readers/gltf_material.cpp does
- * for the factors. Without it the base colour texture scales `diffuse` and the
- * specular texture scales `specular`. */
+/* glTF's metallic-roughness workflow: base colour B and metalness M give diffuse B,
+ * the dielectric's F0 dielectric_f0 and metallic M (the mix of kernels/bsdf/metallic.cl),
+ * as host/scene/material.cpp's set_metallic_roughness does for the factors. Without it the base colour texture scales
+ * `diffuse` and the specular texture scales `specular`. */
 #define FC_TEX_METALLIC_WORKFLOW 1u
 
 /* The textures of one material (indexed like FcMaterial), -1 where none. A texture

@@ -171,8 +171,11 @@ inline void apply_textures(const SceneView* sc, const Hit* hit, int material, fl
         float metal = mt->metallic_factor;
         if (mt->metalness >= 0)
             metal *= tex_channel(tex_lookup(sc, mt->metalness, uv, &p, cone, cos_hit), mt->metal_channel);
-        tex_store3(mat->diffuse, base * (1.0f - metal));
-        tex_store3(mat->specular, mix((float3)(mt->dielectric_f0), base, metal));
+        /* glTF's mix of a dielectric (F0 dielectric_f0 over the base) and a metal (F0 base) by
+         * metalness, kernels/bsdf/metallic.cl. */
+        tex_store3(mat->diffuse, base);
+        tex_store3(mat->specular, (float3)(mt->dielectric_f0));
+        mat->metallic = clamp(metal, 0.0f, 1.0f);
     }
     if (mt->specular >= 0)
         tex_store3(mat->specular, load3p(mat->specular) * tex_lookup(sc, mt->specular, uv, &p, cone, cos_hit).xyz);
