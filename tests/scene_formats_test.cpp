@@ -174,5 +174,11 @@ TEST(SceneFormats, UnknownExtensionNamesTheFormats) {
                  {"model.fbx", "unknown scene format '.fbx'"});
 }
 
+// `facet render scenes/`: the error says it is a folder, not "unknown scene format ''".
+TEST(SceneFormats, FolderIsNamedAFolder) {
+    TempDir d;
+    expect_error([&] { load_scene(d.dir().string()); }, {"is a folder, not a scene file"});
+}
+
 }  // namespace
 }  // namespace facet
