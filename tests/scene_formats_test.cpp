@@ -9,6 +9,7 @@
 
 #include "host/readers/load_scene.hpp"
 #include "host/readers/ply_reader.hpp"
+#include "host/readers/text_parse.hpp"
 #include "tests/scene_test_util.hpp"
 
 namespace facet {
@@ -178,6 +179,15 @@ TEST(SceneFormats, UnknownExtensionNamesTheFormats) {
 TEST(SceneFormats, FolderIsNamedAFolder) {
     TempDir d;
     expect_error([&] { load_scene(d.dir().string()); }, {"is a folder, not a scene file"});
+}
+
+// An MTL written on Windows names ".\\tex.png": read as "./tex.png" when no file has the
+// backslash in its name.
+TEST(SceneFormats, WindowsTexturePathIsNormalised) {
+    TempDir d;
+    const std::string tex = d.write("tex.png", "x");
+    EXPECT_EQ(text::join_asset_path(d.dir().string(), ".\\tex.png"), tex);
+    EXPECT_EQ(text::join_asset_path(d.dir().string(), "tex.png"), tex);
 }
 
 }  // namespace
