@@ -9,6 +9,7 @@
 
 #include "host/readers/load_scene.hpp"
 #include "host/readers/ply_reader.hpp"
+#include "host/readers/text_parse.hpp"
 #include "tests/scene_test_util.hpp"
 
 namespace facet {
@@ -172,6 +173,21 @@ TEST(SceneFormats, UnknownExtensionNamesTheFormats) {
     TempDir d;
     expect_error([&] { load_scene(d.write("model.fbx", "Kaydara FBX Binary")); },
                  {"model.fbx", "unknown scene format '.fbx'"});
+}
+
+// `facet render scenes/`: the error says it is a folder, not "unknown scene format ''".
+TEST(SceneFormats, FolderIsNamedAFolder) {
+    TempDir d;
+    expect_error([&] { load_scene(d.dir().string()); }, {"is a folder, not a scene file"});
+}
+
+// An MTL written on Windows names ".\\tex.png": read as "./tex.png" when no file has the
+// backslash in its name.
+TEST(SceneFormats, WindowsTexturePathIsNormalised) {
+    TempDir d;
+    const std::string tex = d.write("tex.png", "x");
+    EXPECT_EQ(text::join_asset_path(d.dir().string(), ".\\tex.png"), tex);
+    EXPECT_EQ(text::join_asset_path(d.dir().string(), "tex.png"), tex);
 }
 
 }  // namespace

@@ -111,6 +111,11 @@ std::string file_head(const std::string& path) {
 Scene load_scene(const std::string& path, const std::string& camera_name) {
     Scene scene;
     scene.source_path = path;
+    if (std::error_code ec; std::filesystem::is_directory(path, ec))
+        throw Error(
+            fmt::format("{}: is a folder, not a scene file (give a .json scene, an .obj or .ply mesh, or a "
+                        ".gltf or .glb file)",
+                        path));
     const std::string ext = extension_under_gz(path);
     if (!camera_name.empty() && ext != ".gltf" && ext != ".glb")
         throw Error(

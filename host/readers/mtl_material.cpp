@@ -87,7 +87,7 @@ MtlTexture texture_statement(const MtlLine& l, const std::string& dir) {
         }
         i += n;
     }
-    t.file = text::join_path(dir, std::string(l.f[last]));
+    t.file = text::join_asset_path(dir, std::string(l.f[last]));
     return t;
 }
 
@@ -231,7 +231,7 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             if (f.size() < 2) l.fail(fmt::format("'{}' without a file name", kw));
             const std::string file(f.back());
             std::error_code ec;
-            const bool exists = std::filesystem::exists(text::join_path(dir, file), ec);
+            const bool exists = std::filesystem::exists(text::join_asset_path(dir, file), ec);
             warnings.push_back(
                 fmt::format("{}:{}: texture '{}' ({}) of material '{}' ignored: facet does not read '{}'{}", path,
                             l.line, file, kw, p.m.name, kw, exists ? "" : " (and the file is missing)"));

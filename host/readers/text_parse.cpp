@@ -1,5 +1,6 @@
 #include "host/readers/text_parse.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <filesystem>
 #include <fstream>
@@ -94,6 +95,15 @@ std::string join_path(const std::string& dir, const std::string& rel) {
     std::filesystem::path p(rel);
     if (p.is_absolute() || dir.empty()) return p.string();
     return (std::filesystem::path(dir) / p).string();
+}
+
+std::string join_asset_path(const std::string& dir, const std::string& rel) {
+    const std::string as_written = join_path(dir, rel);
+    std::error_code ec;
+    if (rel.find('\\') == std::string::npos || std::filesystem::exists(as_written, ec)) return as_written;
+    std::string slashed = rel;
+    std::replace(slashed.begin(), slashed.end(), '\\', '/');
+    return join_path(dir, std::filesystem::path(slashed).lexically_normal().string());
 }
 
 }  // namespace facet::text

@@ -33,5 +33,9 @@ const char* number_problem(std::string_view field);
 // The directory part of a path ("" for a bare file name), and `rel` resolved against it.
 std::string directory_of(const std::string& path);
 std::string join_path(const std::string& dir, const std::string& rel);
+// A file named by a model (an MTL texture) in `dir`: as join_path, but a name written on
+// Windows (".\\tex.jpg", "maps\\a.png") has its backslashes read as separators when the
+// name as written does not exist.
+std::string join_asset_path(const std::string& dir, const std::string& rel);
 
 }  // namespace facet::text
