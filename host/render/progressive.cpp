@@ -1,17 +1,11 @@
 #include "host/render/progressive.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
+#include "host/util/clock.hpp"
+
 namespace facet {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-}  // namespace
 
 ProgressiveResult render_progressive(PassTarget& target, const ProgressiveOptions& opt) {
     const std::uint32_t width = target.target_width(), height = target.target_height();
@@ -41,7 +35,7 @@ ProgressiveResult render_progressive(PassTarget& target, const ProgressiveOption
             const std::uint32_t rows = rows_per_launch(row_cost, row, width, n, last_rows, opt.rules);
             const auto launch_start = Clock::now();
             target.launch(n, row, rows);
-            const double launch_s = since(launch_start);
+            const double launch_s = seconds_since(launch_start);
             for (std::uint32_t r = row; r < row + rows; ++r)
                 row_cost[r] = std::max(launch_s, 1e-9) / (double(rows) * double(n));
             last_rows = rows;
@@ -51,7 +45,7 @@ ProgressiveResult render_progressive(PassTarget& target, const ProgressiveOption
             // The first pass's length: measured rows as measured, the rest at their mean.
             if (s.done_spp == 0 && row < height && opt.time_limit_s && opt.on_first_pass_estimate &&
                 !first_pass_estimated) {
-                const double done_s = since(pass_start);
+                const double done_s = seconds_since(pass_start);
                 if (done_s > *opt.time_limit_s) {
                     const double estimate = done_s + done_s / double(row) * double(height - row);
                     opt.on_first_pass_estimate(estimate);
@@ -59,7 +53,7 @@ ProgressiveResult render_progressive(PassTarget& target, const ProgressiveOption
                 }
             }
         }
-        const double pass_s = since(pass_start);
+        const double pass_s = seconds_since(pass_start);
         target.end_pass(n, pass_s);
         s.done_spp += n;
         s.render_s += pass_s;

@@ -7,6 +7,7 @@
 
 #include "host/bvh/bvh_width.hpp"
 #include "host/error.hpp"
+#include "host/util/clock.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/render/film_identity.hpp"
 #include "host/render/progressive.hpp"
@@ -14,13 +15,9 @@
 namespace facet {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // Camera samples per pixel of the AOV pass (at most the render's): enough for
 // antialiased edges; the AOVs hold no lighting noise.
 constexpr std::uint64_t kAovSpp = 64;
-
-double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 // Each rank opens its own devices: an error says which rank failed.
 std::vector<ClContext> open_devices(const std::string& selector) {
@@ -97,14 +94,14 @@ void RenderSession::warm_up() {
     const std::size_t devices = group_->devices().size() * std::size_t(group_->ranks().size());
     group_->launch(std::uint32_t(std::max<std::size_t>(devices, 1)), 0, 1);
     group_->reset();
-    warmup_s_ = since(t);
+    warmup_s_ = seconds_since(t);
 }
 
 PassRecord RenderSession::record(int pass, std::uint64_t spp, const ErrorMetrics& estimate) const {
     PassRecord p;
     p.pass = pass;
     p.spp = spp;
-    p.wall_s = since(options_.start);
+    p.wall_s = seconds_since(options_.start);
     p.render_s = group_->stats().render_seconds;
     p.compile_s = compile_seconds();
     p.estimate = estimate;
