@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "host/cli/console.hpp"
+#include "host/util/console.hpp"
 
 namespace facet {
 

@@ -1,7 +1,7 @@
 // The render's progress display: a live line on a terminal, as wide as the terminal;
 // otherwise plain lines, at
 // most one every two seconds, plus the first and the last. Printed through
-// cli/console.hpp, so a closed stdout only silences it.
+// util/console.hpp, so a closed stdout only silences it.
 #pragma once
 
 #include <cstdint>

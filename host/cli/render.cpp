@@ -3,11 +3,11 @@
 // After every pass: the progress line, the error against a reference and the CSV report;
 // snapshots on request (best effort). On SIGINT, SIGTERM or SIGHUP the current pass ends
 // (the first is dropped) and everything is written (exit 130); SIGPIPE is ignored
-// (cli/stop_signals.hpp, cli/console.hpp). Files and messages: cli/render_parts.hpp.
+// (cli/stop_signals.hpp, util/console.hpp). Files and messages: cli/render_parts.hpp.
 #include <fmt/format.h>
 
 #include "host/cli/commands.hpp"
-#include "host/cli/console.hpp"
+#include "host/util/console.hpp"
 #include "host/cli/output_locks.hpp"
 #include "host/cli/outputs.hpp"
 #include "host/cli/progress.hpp"

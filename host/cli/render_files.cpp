@@ -2,7 +2,7 @@
 // that, at its rescue path (cli/outputs.hpp), said on stderr: no finished sample is lost.
 #include <exception>
 
-#include "host/cli/console.hpp"
+#include "host/util/console.hpp"
 #include "host/cli/render_parts.hpp"
 #include "host/error.hpp"
 #include "host/scene/pixel_filter.hpp"

@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
-#include "host/cli/console.hpp"
+#include "host/util/console.hpp"
 #include "host/cli/render_parts.hpp"
 #include "host/render/features.hpp"
 #include "host/scene/pixel_filter.hpp"

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
 
-#include "host/cli/console.hpp"
+#include "host/util/console.hpp"
 #include "host/cli/render_parts.hpp"
 #include "host/error.hpp"
 #include "host/util/strings.hpp"

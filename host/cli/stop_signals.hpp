@@ -2,7 +2,7 @@
 // (the terminal closed) request a stop, which the progressive driver honours between
 // launches. Keep it alive until every file is written: a second Ctrl-C during the
 // final writes is then counted, not fatal. While a SigpipeIgnored lives (the whole
-// command, from its first line of output), SIGPIPE is ignored: cli/console.hpp then
+// command, from its first line of output), SIGPIPE is ignored: util/console.hpp then
 // stops printing to a closed stream and the render goes on. Both destructors restore
 // the previous dispositions.
 #pragma once

@@ -9,12 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "host/error.hpp"
-#include "host/scene/pixel_filter.hpp"
 #include "host/util/safe_write.hpp"
 #include "host/film/film_validate.hpp"
-#include "host/scene/render_names.hpp"
-#include "host/scene/scene.hpp"
-#include "host/scene/device_scene.hpp"
 
 namespace facet {
 namespace {

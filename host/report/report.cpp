@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "host/cli/console.hpp"
+#include "host/util/console.hpp"
 #include "host/error.hpp"
 #include "host/util/safe_write.hpp"
 

@@ -1,4 +1,4 @@
-#include "host/cli/console.hpp"
+#include "host/util/console.hpp"
 
 #include <atomic>
 
