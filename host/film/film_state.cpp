@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "host/error.hpp"
+#include "host/util/fnv.hpp"
 #include "host/util/safe_write.hpp"
 #include "host/film/film_validate.hpp"
 
@@ -22,19 +23,8 @@ constexpr std::uint32_t kVersion = 2;  // 1: no "samples", indices [0, spp)
 constexpr std::uint32_t kMaxHeaderBytes = 1 << 20;
 constexpr int kMaxSide = 16384;
 
-struct Fnv {
-    std::uint64_t h = 1469598103934665603ull;
-    void bytes(const void* p, std::size_t n) {
-        const unsigned char* b = static_cast<const unsigned char*>(p);
-        for (std::size_t i = 0; i < n; ++i) {
-            h ^= b[i];
-            h *= 1099511628211ull;
-        }
-    }
-};
-
 std::uint64_t payload_hash(const std::vector<float>& sums) {
-    Fnv f;
+    Fnv1a f;
     f.bytes(sums.data(), sums.size() * sizeof(float));
     return f.h;
 }

@@ -6,39 +6,13 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
+#include "host/scene/render_names.hpp"
+#include "host/util/fnv.hpp"
 
 namespace facet {
-namespace {
-
-// FNV-1a, 64 bits (Fowler, Noll and Vo; the film format's payload checksum is the same).
-struct Fnv {
-    std::uint64_t h = 1469598103934665603ull;
-    void bytes(const void* p, std::size_t n) {
-        const unsigned char* b = static_cast<const unsigned char*>(p);
-        for (std::size_t i = 0; i < n; ++i) {
-            h ^= b[i];
-            h *= 1099511628211ull;
-        }
-    }
-};
-
-std::string strategy_name(int v) {
-    return v == FC_STRATEGY_MIS     ? std::string("mis")
-           : v == FC_STRATEGY_LIGHT ? std::string("light")
-           : v == FC_STRATEGY_BSDF  ? std::string("bsdf")
-                                    : std::to_string(v);
-}
-
-std::string sampler_name(int v) {
-    return v == FC_SAMPLER_SOBOL         ? std::string("sobol")
-           : v == FC_SAMPLER_INDEPENDENT ? std::string("independent")
-                                         : std::to_string(v);
-}
-
-}  // namespace
 
 std::uint64_t film_identity(const DeviceScene& scene) {
-    Fnv f;
+    Fnv1a f;
     FcRenderParams p = scene.params;
     p.sample_begin = p.sample_count = p.row_begin = p.row_count = 0;
     f.bytes(&p, sizeof p);
@@ -105,8 +79,10 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
         refuse("--max-depth", std::to_string(film.max_depth), std::to_string(s.max_depth));
     if (film.rr_depth != s.rr_depth)
         refuse("Russian roulette depth", std::to_string(film.rr_depth), std::to_string(s.rr_depth));
-    if (film.strategy != s.strategy) refuse("--strategy", strategy_name(film.strategy), strategy_name(s.strategy));
-    if (film.sampler != s.sampler) refuse("--sampler", sampler_name(film.sampler), sampler_name(s.sampler));
+    if (film.strategy != s.strategy)
+        refuse("--strategy", setting_name(kStrategyNames, film.strategy), setting_name(kStrategyNames, s.strategy));
+    if (film.sampler != s.sampler)
+        refuse("--sampler", setting_name(kSamplerNames, film.sampler), setting_name(kSamplerNames, s.sampler));
     if (film.scene_hash != identity) refuse_scene();
 }
 
