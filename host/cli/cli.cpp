@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <span>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -70,6 +71,13 @@ CLI::Validator positive_up_to(double hi, const char* unit) {
             return v > 0.0 && v <= hi ? std::string() : fmt::format("Value {} is not {}", text, words);
         },
         words);
+}
+
+// The choices of a closed list of render settings (scene/render_names.hpp), in list order.
+std::vector<std::pair<std::string, long long>> setting_choices(std::span<const SettingName> table) {
+    std::vector<std::pair<std::string, long long>> out;
+    for (const SettingName& n : table) out.emplace_back(std::string(n.name), n.value);
+    return out;
 }
 
 std::vector<std::pair<std::string, long long>> pixel_filter_choices() {
@@ -202,8 +210,7 @@ int run_cli(int argc, char** argv) {
                      "Direct light from area lights and the environment: mis (default), light (light sampling only) "
                      "or bsdf (BSDF sampling only); for measuring the strategies")
         ->option_text("mis|light|bsdf")
-        ->transform(
-            choice("a strategy", {{"mis", FC_STRATEGY_MIS}, {"light", FC_STRATEGY_LIGHT}, {"bsdf", FC_STRATEGY_BSDF}}));
+        ->transform(choice("a strategy", setting_choices(kStrategyNames)));
     render
         ->add_option("--env-sampling", opt.env_plain,
                      "Environment map sampling under MIS: compensated (default; MIS compensation, Karlik et al. "
@@ -214,7 +221,7 @@ int run_cli(int argc, char** argv) {
         ->add_option("--sampler", opt.sampler,
                      "Sample generator: sobol (default; Owen-scrambled Sobol', Burley 2020) or independent (PCG32)")
         ->option_text("sobol|independent")
-        ->transform(choice("a sampler", {{"sobol", FC_SAMPLER_SOBOL}, {"independent", FC_SAMPLER_INDEPENDENT}}));
+        ->transform(choice("a sampler", setting_choices(kSamplerNames)));
     render
         ->add_option("--filter", opt.filter,
                      "Pixel filter, drawn by filter importance sampling: " + pixel_filter_help() +

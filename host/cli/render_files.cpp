@@ -7,6 +7,7 @@
 #include "host/error.hpp"
 #include "host/scene/pixel_filter.hpp"
 #include "host/util/strings.hpp"
+#include "host/scene/render_names.hpp"
 
 namespace facet {
 namespace {
@@ -64,7 +65,7 @@ void write_image(const RenderJob& job, const std::string& out, const std::vector
     meta.ints.push_back({"facet:spp", int(r.stats().samples_per_pixel)});
     meta.ints.push_back({"facet:seed", int(s.seed)});
     meta.ints.push_back({"facet:max_depth", s.max_depth});
-    meta.strings.push_back({"facet:sampler", s.sampler == FC_SAMPLER_SOBOL ? "sobol" : "independent"});
+    meta.strings.push_back({"facet:sampler", setting_name(kSamplerNames, s.sampler)});
     meta.strings.push_back({"facet:filter", pixel_filter_info(s.filter).name});
     meta.floats.push_back({"facet:filter_radius", pixel_filter_radius(s.filter, s.filter_radius)});
     // The clamp biases the image: recorded when on (0 would read as "clamped to 0").

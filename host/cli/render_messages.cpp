@@ -11,6 +11,7 @@
 #include "host/render/features.hpp"
 #include "host/scene/pixel_filter.hpp"
 #include "host/util/strings.hpp"
+#include "host/scene/render_names.hpp"
 
 namespace facet {
 namespace {
@@ -72,7 +73,7 @@ ReportSummary summarise(const RenderJob& job, const SessionOutcome& outcome, std
     summary.interrupted = outcome.interrupted;
     summary.rejected_samples = rejected;
     summary.stratified = s.sampler == FC_SAMPLER_SOBOL;
-    summary.sampler = summary.stratified ? "sobol" : "independent";
+    summary.sampler = setting_name(kSamplerNames, s.sampler);
     summary.filter = pixel_filter_info(s.filter).name;
     summary.filter_radius = pixel_filter_radius(s.filter, s.filter_radius);
     summary.clamp = s.clamp;
