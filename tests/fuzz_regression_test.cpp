@@ -62,7 +62,7 @@ TEST(FuzzRegression, GltfAndPlyFindingsFailCleanly) {
         {"ply/binary_truncated_mid_face.ply", "names vertex", 0},
         {"ply/binary_face_count_beyond_file.ply", "names vertex", 0},
         {"ply/header_line_with_hash.ply", ":15: '#' in a PLY header line", 0},
-        {"ply/ascii_list_count_huge.ply", "the PLY file ends inside element 'vertex' 2 of 5", 0},
+        {"ply/ascii_list_count_huge.ply", "element 'vertex' 0 has more values on its line", 0},
     };
     for (const Case& c : cases) {
         const std::string path = (std::filesystem::path(test::fuzz_dir()) / "regressions" / c.file).string();
