@@ -36,7 +36,7 @@
     X(float4, float, env_texels, "environment map", FC_ARRAY_CONTENT)                                              \
     X(float, float, env_dist, "environment distribution", FC_ARRAY_CONTENT)                                        \
     X(FcTexture, FcTexture, textures, "texture table", FC_ARRAY_CONTENT)                                           \
-    X(fc_uint, fc_uint, texels, "texels", FC_ARRAY_CONTENT)                                                        \
+    X(fc_uint, fc_uint, texels, "textures (texels)", FC_ARRAY_CONTENT)                                             \
     X(FcMaterialTextures, FcMaterialTextures, material_textures, "material texture bindings", FC_ARRAY_CONTENT)    \
     X(FcTriTexcoords, FcTriTexcoords, texcoords, "texture uvs", FC_ARRAY_CONTENT)                                  \
     X(FcSphere, FcSphere, spheres, "spheres", FC_ARRAY_CONTENT)                                                    \
