@@ -36,6 +36,30 @@ expect info 0 "triangles" -- "$FACET" info "$SCENES/cornell_box.json"
 # A bare OBJ renders with a default camera and light.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$tmp/tet.obj"
 expect render-obj 0 "wrote" -- "$FACET" render "$tmp/tet.obj" "${small[@]}" --out "$tmp/tet.exr"
+# With no light in the file: a key light and a white environment, said on stdout; --env replaces it.
+lit=(--width 24 --height 24 --spp 2)
+expect obj-default-lighting 0 "light +the file has no lights: .*white environment of radiance 0\.5 \(--env" -- \
+    "$FACET" render "$tmp/tet.obj" "${lit[@]}" --out "$tmp/tet.exr"
+expect obj-env-none 0 "light +.*environment: none" -- "$FACET" render "$tmp/tet.obj" "${lit[@]}" --env none --out "$tmp/tet.exr"
+expect obj-env-sky 0 "environment: the generated sun and sky .* scaled by 0\.03125, turned 90 degrees" -- \
+    "$FACET" render "$tmp/tet.obj" "${lit[@]}" --env sky --env-rotation 90 --out "$tmp/tet.exr"
+"$FACET" sky --width 16 "$tmp/sky16.exr" >/dev/null 2>&1
+expect obj-env-file 0 "environment: the map .*sky16\.exr scaled by 2" -- \
+    "$FACET" render "$tmp/tet.obj" "${lit[@]}" --env "$tmp/sky16.exr" --env-strength 2 --out "$tmp/tet.exr"
+expect json-env-white 0 "environment: uniform white of radiance 0\.5" -- \
+    "$FACET" render "$SCENES/cornell_box.json" "${lit[@]}" --env white --env-strength 0.5 --out "$tmp/cb.exr"
+printf '{"shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}], "environment": {"constant": [1, 1, 1]}}\n' >"$tmp/envlit.json"
+expect json-env-none-warns 0 "warning: .*envlit\.json: the scene has no emitters; the image will be black" -- \
+    "$FACET" render "$tmp/envlit.json" "${small[@]}" --env none --out "$tmp/envnone.exr"
+expect env-unknown 1 "--env skye: expected an \.exr or \.hdr environment map, sky, white or none" -- \
+    "$FACET" render "$tmp/tet.obj" "${small[@]}" --env skye
+expect env-missing-file 1 "--env .*nope\.exr: no such file" -- "$FACET" render "$tmp/tet.obj" "${small[@]}" --env "$tmp/nope.exr"
+expect env-strength-needs-env 2 "--env-strength requires --env" -- "$FACET" render "$tmp/tet.obj" "${small[@]}" --env-strength 2
+expect env-strength-negative 2 "--env-strength" -- "$FACET" render "$tmp/tet.obj" "${small[@]}" --env white --env-strength -1
+printf 'newmtl glow\nKe 1 1 1\n' >"$tmp/glow.mtl"
+{ printf 'mtllib glow.mtl\nusemtl glow\n'; cat "$tmp/tet.obj"; } >"$tmp/glow.obj"
+expect obj-emissive-only-noted 0 "light +the file's only light is its emissive surfaces: .*--env sky" -- \
+    "$FACET" render "$tmp/glow.obj" "${lit[@]}" --out "$tmp/glow.exr"
 expect info-obj-normals 0 "normals +.*tet\.obj: normals: 12 flat" -- "$FACET" info "$tmp/tet.obj"
 # PLY and glTF 2.0 on their own; other renderers' scene files named for what they are.
 printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >"$tmp/tet.ply"

@@ -101,7 +101,7 @@ TEST(SceneFormats, PlyOnItsOwnAndInJson) {
     d.write("mesh.ply", ascii_ply());
     const Scene alone = load_scene(d.path("mesh.ply"));
     EXPECT_EQ(alone.triangle_count(), 3u + 2u);  // and the default light's quad
-    EXPECT_EQ(alone.lights.size(), 2u);
+    EXPECT_EQ(alone.lights.size(), 3u);          // the quad's two triangles and the white environment
     EXPECT_EQ(alone.camera.target, glm::vec3(0.5f));
     const Scene json = load_scene(test::scene(d, "s.json", R"("meshes": [{"file": "mesh.ply",
         "transform": {"scale": [-1, 1, 1]}, "normals": "flat"}])"));

@@ -190,7 +190,7 @@ TEST(Scene, ObjWithoutEmittersGetsDefaultLightAndCamera) {
     const std::string obj = dir.write("tri.obj", "v -1 0 0\nv 1 0 0\nv 0 2 0\nf 1 2 3\n");
     const Scene s = load_scene(obj);
     EXPECT_EQ(s.triangle_count(), 3u);  // the mesh and the two-sided light quad
-    EXPECT_EQ(s.lights.size(), 2u);
+    EXPECT_EQ(s.lights.size(), 3u);     // the quad's two triangles and the white environment
     EXPECT_TRUE(s.materials.back().two_sided_emission);
     EXPECT_EQ(s.camera.target, glm::vec3(0, 1, 0));
     EXPECT_GT(s.camera.eye.z, 2.0f);

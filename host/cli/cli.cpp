@@ -218,6 +218,26 @@ int run_cli(int argc, char** argv) {
         ->option_text("compensated|plain")
         ->transform(choice("an environment sampling", {{"compensated", 0}, {"plain", 1}}));
     render
+        ->add_option(
+            "--env", opt.env,
+            "Environment light, replacing the scene's: an equirectangular .exr or .hdr map, sky (the generated "
+            "sun and sky), white (uniform) or none (default: the scene's; a bare model with no lights gets a "
+            "key light and a white environment of radiance 0.5)")
+        ->option_text("FILE|sky|white|none");
+    render
+        ->add_option("--env-rotation", opt.env_rotation,
+                     "With --env: turn the environment this many degrees about the vertical (+y) axis (default 0)")
+        ->option_text("DEGREES")
+        ->check(kFinite)
+        ->needs("--env");
+    render
+        ->add_option("--env-strength", opt.env_strength,
+                     "With --env: multiply its radiance by X, 0 to 1e6 (default 1; for sky 1/32, which brings a "
+                     "sunlit white surface near 1)")
+        ->option_text("X")
+        ->check(kFinite & CLI::Range(0.0, 1e6))
+        ->needs("--env");
+    render
         ->add_option("--sampler", opt.sampler,
                      "Sample generator: sobol (default; Owen-scrambled Sobol', Burley 2020) or independent (PCG32)")
         ->option_text("sobol|independent")

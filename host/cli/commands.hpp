@@ -20,6 +20,9 @@ struct RenderOptions {
     std::optional<float> filter_radius;
     // --env-sampling: 1 plain (no MIS compensation), 0 compensated
     std::optional<int> env_plain;
+    // --env, --env-rotation, --env-strength (host/readers/default_lighting.hpp)
+    std::string env;
+    std::optional<float> env_rotation, env_strength;
     std::optional<float> clamp;  // the largest contribution of one sample (biased; off by default)
     // The camera: --eye, --target, --up (3 numbers each), --fov, --aperture, --focus-distance.
     std::vector<float> eye, target, up;

@@ -17,7 +17,8 @@ namespace facet {
 namespace {
 
 // The camera line: where it is and what it sees, and, for a bare OBJ, that the camera
-// was framed and the default light added (load_scene.cpp), with how to choose.
+// was framed; then the light added to a bare model or chosen with --env
+// (default_lighting.hpp), with how to choose.
 std::string describe_camera(const RenderOptions& opt, const Scene& scene) {
     const CameraDesc& c = scene.camera;
     std::string line = fmt::format("camera   eye ({:g}, {:g}, {:g}), target ({:g}, {:g}, {:g}), ", c.eye.x, c.eye.y,
@@ -30,9 +31,7 @@ std::string describe_camera(const RenderOptions& opt, const Scene& scene) {
     const bool obj = lower(std::filesystem::path(opt.scene).extension().string()) == ".obj";
     if (obj && opt.eye.empty() && opt.target.empty()) line += " (framed to fit the model: --eye, --target to choose)";
     line += "\n";
-    if (obj && std::find(scene.material_names.begin(), scene.material_names.end(), "default_light") !=
-                   scene.material_names.end())
-        line += "light    the OBJ has no emitters: a default area light was added above and in front of it\n";
+    if (!scene.lighting_note.empty()) line += "light    " + scene.lighting_note + "\n";
     return line;
 }
 

@@ -8,6 +8,7 @@
 #include "host/util/console.hpp"
 #include "host/cli/render_parts.hpp"
 #include "host/error.hpp"
+#include "host/readers/default_lighting.hpp"
 #include "host/util/strings.hpp"
 
 namespace facet {
@@ -28,6 +29,7 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
     if (opt.env_plain)
         scene.environment.sampling =
             *opt.env_plain != 0 ? EnvironmentSampling::plain : EnvironmentSampling::compensated;
+    apply_environment_choice({opt.env, opt.env_rotation, opt.env_strength}, scene);
     if (opt.filter) s.filter = *opt.filter;
     if (opt.filter_radius) s.filter_radius = *opt.filter_radius;
     if (opt.clamp) s.clamp = *opt.clamp;

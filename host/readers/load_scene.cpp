@@ -1,6 +1,6 @@
 // load_scene: a JSON scene file, or a bare OBJ, PLY or glTF framed by a default camera
-// (glTF: its own first camera, if it has one) and lit by a default light when it has no
-// emitters of its own.
+// (glTF: its own first camera, if it has one) and lit by default when it brings no light of
+// its own (default_lighting.hpp).
 #include "host/readers/load_scene.hpp"
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "host/error.hpp"
+#include "host/readers/default_lighting.hpp"
 #include "host/readers/foreign_scene.hpp"
 #include "host/readers/gltf_reader.hpp"
 #include "host/readers/gzip_file.hpp"
@@ -23,37 +24,6 @@
 
 namespace facet {
 namespace {
-
-bool has_emitter(const Scene& scene) {
-    for (const FcTriShading& sh : scene.shading) {
-        const Material& m = scene.materials[static_cast<std::size_t>(sh.material)];
-        if (m.emission[0] > 0.0f || m.emission[1] > 0.0f || m.emission[2] > 0.0f) return true;
-    }
-    return false;
-}
-
-// The default light of a bare OBJ: a two-sided emissive square of side 2r (r the
-// radius of the bounding sphere) centred at centre + r * (0, 2, 1), i.e. above and in
-// front of the model, turned to face the centre, emitting radiance 4 (white). From
-// the default camera it lies above the top of the image. A white Lambertian surface
-// facing it receives about 0.8 x 4 x (solid angle) and so looks roughly mid-grey to white.
-void add_default_light(Scene& scene) {
-    const Bounds bounds = scene_bounds(scene);
-    const glm::vec3 center = bounds.center();
-    float r = bounds.radius();
-    if (!(r > 0.0f)) r = 1.0f;
-    const glm::vec3 p = center + r * glm::vec3(0.0f, 2.0f, 1.0f);
-    const glm::vec3 w = glm::normalize(center - p);  // facing the model
-    const glm::vec3 v(1.0f, 0.0f, 0.0f);
-    glm::vec3 u = glm::normalize(glm::cross(w, v));
-    if (glm::dot(glm::cross(u, v), w) < 0.0f) u = -u;  // cross(e1, e2) along w
-    Material m = default_material();
-    m.diffuse = glm::vec3(0.0f);
-    m.emission = glm::vec3(4.0f);
-    m.two_sided_emission = true;
-    const int material = add_material(scene, m, "default_light");
-    add_quad(scene, p - r * u - r * v, 2.0f * r * u, 2.0f * r * v, material);
-}
 
 // Every vertex finite and within +-kMaxCoordinate, so that edges, cross products
 // (areas, normals) and the bounding box stay finite in float arithmetic; transforms and
@@ -127,14 +97,14 @@ Scene load_scene(const std::string& path, const std::string& camera_name) {
         else load_ply(path, scene);
         check_geometry(scene, path);
         scene.camera = frame_camera(scene);
-        if (!has_emitter(scene)) add_default_light(scene);
+        add_default_lighting(scene);  // default_lighting.hpp
     } else if (ext == ".gltf" || ext == ".glb") {
         GltfLoadOptions options;
         options.camera_name = camera_name;
         const bool has_camera = load_gltf(path, scene, options);
         check_geometry(scene, path);
         if (!has_camera) scene.camera = frame_camera(scene);
-        if (!has_emitter(scene) && scene.punctual_lights.empty()) add_default_light(scene);
+        add_default_lighting(scene);
     } else if (ext == ".json") {
         const bool has_camera = load_json_scene(path, scene);
         check_geometry(scene, path);

@@ -90,6 +90,7 @@ struct Scene {
     RenderSettings settings;
     std::string source_path;            // the file it was loaded from
     std::vector<std::string> warnings;  // non-fatal problems met while loading
+    std::string lighting_note;          // the light added or chosen (host/readers/default_lighting.hpp)
     // One line per mesh file: how its shading normals were obtained (`facet info` prints them).
     std::vector<std::string> normal_sources;
     // Image textures (host/scene/texture.hpp) and per-triangle uvs: empty, or filled
