@@ -12,6 +12,7 @@
 #include "host/scene/texture.hpp"
 #include "tests/cl_test_env.hpp"
 #include "tests/temp_dir.hpp"
+#include "tests/texture_test_util.hpp"
 
 namespace facet {
 namespace {
@@ -19,31 +20,6 @@ namespace {
 float srgb_decode(int byte) {
     const float e = float(byte) / 255.0f;
     return e <= 0.04045f ? e / 12.92f : std::pow((e + 0.055f) / 1.055f, 2.4f);
-}
-
-// texture_sample of the kernels at each (u, v, lod) of scene texture 0.
-std::vector<cl_float4> lookup(const TextureImage& t, const std::vector<cl_float4>& uvl) {
-    Scene scene;
-    scene.textures.push_back(t);
-    Material m = default_material();
-    m.textures.base_color = 0;
-    scene.materials.push_back(m);
-    scene.shading.push_back(FcTriShading{});
-    const DeviceTextures d = compile_textures(scene);
-    ClContext& ctx = test::context();
-    cl::Kernel k(test::program("kernels/test/texture_kernels.cl"), "texture_lookup_batch");
-    cl::Buffer table(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, d.table.size() * sizeof(FcTexture),
-                     const_cast<FcTexture*>(d.table.data()));
-    cl::Buffer texels(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, d.texels.size() * sizeof(std::uint32_t),
-                      const_cast<std::uint32_t*>(d.texels.data()));
-    cl::Buffer in(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, uvl.size() * sizeof(cl_float4),
-                  const_cast<cl_float4*>(uvl.data()));
-    cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, uvl.size() * sizeof(cl_float4));
-    k.setArg(0, table), k.setArg(1, texels), k.setArg(2, 0), k.setArg(3, in), k.setArg(4, out);
-    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(uvl.size()));
-    std::vector<cl_float4> result(uvl.size());
-    ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(cl_float4), result.data());
-    return result;
 }
 
 // A 2 x 1 RGBA PNG: texel 0 of alpha 0, texel 1 of alpha 128. Each texel's colour comes back
@@ -63,7 +39,8 @@ TEST(TextureAlpha, RgbaColourReadAsStored) {
     }
     const TextureImage t = load_texture(png, TextureSpace::Color, "test");
     ASSERT_EQ(t.format, FC_TEXEL_RGBA8_SRGB);
-    const std::vector<cl_float4> got = lookup(t, {{{0.25f, 0.5f, 0.0f, 0.0f}}, {{0.75f, 0.5f, 0.0f, 0.0f}}});
+    const std::vector<cl_float4> got =
+        test::texture_lookup(t, {{{0.25f, 0.5f, 0.0f, 0.0f}}, {{0.75f, 0.5f, 0.0f, 0.0f}}});
     for (int texel = 0; texel < 2; ++texel)
         for (int c = 0; c < 3; ++c)
             EXPECT_NEAR(got[std::size_t(texel)].s[c], srgb_decode(bytes[4 * texel + c]), 1e-5f)

@@ -22,6 +22,7 @@
 #include "host/scene/texture.hpp"
 #include "kernels/shared/feature_flags.h"
 #include "tests/cl_test_env.hpp"
+#include "tests/texture_test_util.hpp"
 
 namespace facet {
 namespace {
@@ -49,36 +50,6 @@ std::vector<float> rgba_of(const std::vector<float>& rgb) {
     std::vector<float> out;
     for (std::size_t i = 0; i < rgb.size(); i += 3) out.insert(out.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 1.0f});
     return out;
-}
-
-// texture_sample on the kernels at each (u, v, lod).
-std::vector<cl_float4> lookup(const TextureImage& t, const std::vector<cl_float4>& uvl) {
-    Scene scene;
-    scene.textures.push_back(t);
-    Material m = default_material();
-    m.textures.base_color = 0;
-    scene.materials.push_back(m);
-    FcTriShading sh{};
-    scene.shading.push_back(sh);
-    DeviceTextures d = compile_textures(scene);
-    ClContext& ctx = test::context();
-    cl::Kernel k(test::program("kernels/test/texture_kernels.cl"), "texture_lookup_batch");
-    cl::Buffer table(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, d.table.size() * sizeof(FcTexture),
-                     d.table.data());
-    cl::Buffer texels(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, d.texels.size() * sizeof(float),
-                      d.texels.data());
-    cl::Buffer in(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, uvl.size() * sizeof(cl_float4),
-                  const_cast<cl_float4*>(uvl.data()));
-    cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, uvl.size() * sizeof(cl_float4));
-    k.setArg(0, table);
-    k.setArg(1, texels);
-    k.setArg(2, 0);
-    k.setArg(3, in);
-    k.setArg(4, out);
-    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(uvl.size()));
-    std::vector<cl_float4> result(uvl.size());
-    ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(cl_float4), result.data());
-    return result;
 }
 
 // The closed form: wrap an integer coordinate, then bilinear weights around uv * size - 0.5.
@@ -123,7 +94,7 @@ TEST(Texture, BilinearAndWrapModesMatchClosedForm) {
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) uvl.push_back({{(x + 0.5f) / w, (y + 0.5f) / h, 0.0f, 0.0f}});
         for (int i = 0; i < 400; ++i) uvl.push_back({{d(rng), d(rng), 0.0f, 0.0f}});
-        const std::vector<cl_float4> got = lookup(t, uvl);
+        const std::vector<cl_float4> got = test::texture_lookup(t, uvl);
         for (std::size_t i = 0; i < uvl.size(); ++i)
             for (int c = 0; c < 3; ++c) {
                 const float want = bilinear(rgb, w, h, mode, uvl[i].s[0], uvl[i].s[1], c);
@@ -143,8 +114,8 @@ TEST(Texture, MipLevelsAreBoxFilteredAndTrilinear) {
     double mean[3] = {0, 0, 0};
     for (std::size_t i = 0; i < rgb.size(); ++i) mean[i % 3] += double(rgb[i]) / double(w * h);
     // The last level is the image's mean; level 1's texel (0, 0) the mean of its 2x2 block.
-    const std::vector<cl_float4> got =
-        lookup(t, {{{0.3f, 0.6f, 3.0f, 0.0f}}, {{0.125f, 0.25f, 1.0f, 0.0f}}, {{0.3f, 0.6f, 2.5f, 0.0f}}});
+    const std::vector<cl_float4> got = test::texture_lookup(
+        t, {{{0.3f, 0.6f, 3.0f, 0.0f}}, {{0.125f, 0.25f, 1.0f, 0.0f}}, {{0.3f, 0.6f, 2.5f, 0.0f}}});
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(got[0].s[c], mean[c], 1e-5) << "1x1 level";
         const std::size_t c3 = std::size_t(c);
@@ -152,7 +123,7 @@ TEST(Texture, MipLevelsAreBoxFilteredAndTrilinear) {
         EXPECT_NEAR(got[1].s[c], block, 1e-5) << "level 1 texel centre";
     }
     // lod 2.5: halfway between level 2 (2x1) and level 3 (1x1).
-    const std::vector<cl_float4> l2 = lookup(t, {{{0.3f, 0.6f, 2.0f, 0.0f}}});
+    const std::vector<cl_float4> l2 = test::texture_lookup(t, {{{0.3f, 0.6f, 2.0f, 0.0f}}});
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[2].s[c], 0.5 * (double(l2[0].s[c]) + mean[c]), 1e-5);
 }
 
@@ -233,7 +204,7 @@ TEST(Texture, CompactFormatsAtTexelCentres) {
         std::vector<cl_float4> uvl;
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) uvl.push_back({{(x + 0.5f) / w, (y + 0.5f) / h, 0.0f, 0.0f}});
-        const std::vector<cl_float4> got = lookup(t, uvl);
+        const std::vector<cl_float4> got = test::texture_lookup(t, uvl);
         for (std::size_t i = 0; i < uvl.size(); ++i)
             for (int c = 0; c < 3; ++c) {
                 const float want = t.texels[4 * i + std::size_t(c)];
