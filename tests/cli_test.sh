@@ -56,6 +56,17 @@ expect env-unknown 1 "--env skye: expected an \.exr or \.hdr environment map, sk
 expect env-missing-file 1 "--env .*nope\.exr: no such file" -- "$FACET" render "$tmp/tet.obj" "${small[@]}" --env "$tmp/nope.exr"
 expect env-strength-needs-env 2 "--env-strength requires --env" -- "$FACET" render "$tmp/tet.obj" "${small[@]}" --env-strength 2
 expect env-strength-negative 2 "--env-strength" -- "$FACET" render "$tmp/tet.obj" "${small[@]}" --env white --env-strength -1
+# Issue 25's first image: a bare cube seen from behind is within 2x of its front view's brightness
+# (the mean of each image, from `facet compare`), where one +z light left the back a silhouette.
+printf 'v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n' >"$tmp/cube.obj"
+"$FACET" render "$tmp/cube.obj" --width 32 --height 32 --spp 8 --quiet --eye 0 2 6 --out "$tmp/front.exr" >/dev/null 2>&1
+"$FACET" render "$tmp/cube.obj" --width 32 --height 32 --spp 8 --quiet --eye 0 2 -6 --out "$tmp/behind.exr" >/dev/null 2>&1
+ratio=$("$FACET" compare "$tmp/behind.exr" "$tmp/front.exr" 2>/dev/null | awk '/mean \(/ {sub(/.*mean \(/, ""); split($0, v, ","); m[n++] = v[1]} END {if (n == 2 && m[1] > 0) print m[0] / m[1]}')
+if awk -v r="${ratio:-0}" 'BEGIN {exit !(r >= 0.5 && r <= 2)}'; then ok "obj-behind-within-2x-of-front ($ratio)"; else bad "obj-behind-within-2x-of-front (ratio '$ratio')"; fi
+# --smooth-normals: what it did is said on the header's normals line; out of range is refused.
+expect smooth-normals 0 "normals  --smooth-normals 30: [0-9]+ triangles given new normals" -- "$FACET" render "$tmp/cube.obj" "${lit[@]}" --smooth-normals --out "$tmp/smooth.exr"
+expect smooth-normals-angle 0 "wrote" -- "$FACET" render "$tmp/cube.obj" "${small[@]}" --smooth-normals=100 --out "$tmp/smooth.exr"
+expect smooth-normals-range 2 "--smooth-normals: Value 200 not in range" -- "$FACET" render "$tmp/cube.obj" "${small[@]}" --smooth-normals=200
 printf 'newmtl glow\nKe 1 1 1\n' >"$tmp/glow.mtl"
 { printf 'mtllib glow.mtl\nusemtl glow\n'; cat "$tmp/tet.obj"; } >"$tmp/glow.obj"
 expect obj-emissive-only-noted 0 "light +the file's only light is its emissive surfaces: .*--env sky" -- \

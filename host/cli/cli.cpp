@@ -13,6 +13,7 @@
 
 #include "host/cli/cli_words.hpp"
 #include "host/cli/commands.hpp"
+#include "host/scene/smooth_normals.hpp"
 #include "host/error.hpp"
 #include "host/scene/pixel_filter.hpp"
 #include "host/scene/scene.hpp"
@@ -237,6 +238,17 @@ int run_cli(int argc, char** argv) {
         ->option_text("X")
         ->check(kFinite & CLI::Range(0.0, 1e6))
         ->needs("--env");
+    std::string smooth_normals_text;  // CLI11 needs a target; the value is read in each()
+    render
+        ->add_flag(fmt::format("--smooth-normals{{{:g}}}", kDefaultSmoothAngle), smooth_normals_text,
+                   fmt::format("Recompute every triangle's shading normals, smooth across edges where faces meet at "
+                               "less than ANGLE degrees, 0 to 180, and sharp where they meet at more (replaces the "
+                               "file's normals; a bare --smooth-normals uses {:g}, Blender's auto-smooth angle; give "
+                               "another as --smooth-normals=ANGLE)",
+                               kDefaultSmoothAngle))
+        ->option_text("[=ANGLE]")
+        ->check(kFinite & CLI::Range(0.0, 180.0))
+        ->each([&opt](const std::string& v) { opt.smooth_normals = std::stof(v); });
     render
         ->add_option("--sampler", opt.sampler,
                      "Sample generator: sobol (default; Owen-scrambled Sobol', Burley 2020) or independent (PCG32)")

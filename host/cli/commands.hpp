@@ -23,7 +23,8 @@ struct RenderOptions {
     // --env, --env-rotation, --env-strength (host/readers/default_lighting.hpp)
     std::string env;
     std::optional<float> env_rotation, env_strength;
-    std::optional<float> clamp;  // the largest contribution of one sample (biased; off by default)
+    std::optional<float> smooth_normals;  // --smooth-normals [ANGLE]: crease angle (host/scene/smooth_normals.hpp)
+    std::optional<float> clamp;           // the largest contribution of one sample (biased; off by default)
     // The camera: --eye, --target, --up (3 numbers each), --fov, --aperture, --focus-distance.
     std::vector<float> eye, target, up;
     std::string camera;  // --camera NAME: a glTF file's camera by name

@@ -1,7 +1,6 @@
 // `facet render`: what it prints before and after the session, and the report's summary.
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
@@ -28,10 +27,11 @@ std::string describe_camera(const RenderOptions& opt, const Scene& scene) {
     if (c.projection == FC_PROJECTION_PERSPECTIVE && c.aperture > 0.0f)
         line += fmt::format(", lens radius {:g} focused at {:g}", c.aperture,
                             c.focus_distance > 0.0f ? c.focus_distance : glm::length(c.target - c.eye));
-    const bool obj = lower(std::filesystem::path(opt.scene).extension().string()) == ".obj";
-    if (obj && opt.eye.empty() && opt.target.empty()) line += " (framed to fit the model: --eye, --target to choose)";
+    if (!scene.camera_note.empty() && opt.eye.empty() && opt.target.empty())
+        line += fmt::format(" ({}: --eye, --target to choose)", scene.camera_note);
     line += "\n";
     if (!scene.lighting_note.empty()) line += "light    " + scene.lighting_note + "\n";
+    if (opt.smooth_normals) line += "normals  " + scene.normal_sources.back() + "\n";  // smooth_normals.hpp
     return line;
 }
 

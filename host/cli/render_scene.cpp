@@ -9,6 +9,7 @@
 #include "host/cli/render_parts.hpp"
 #include "host/error.hpp"
 #include "host/readers/default_lighting.hpp"
+#include "host/scene/smooth_normals.hpp"
 #include "host/util/strings.hpp"
 
 namespace facet {
@@ -30,6 +31,7 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
         scene.environment.sampling =
             *opt.env_plain != 0 ? EnvironmentSampling::plain : EnvironmentSampling::compensated;
     apply_environment_choice({opt.env, opt.env_rotation, opt.env_strength}, scene);
+    if (opt.smooth_normals) smooth_normals(scene, *opt.smooth_normals);
     if (opt.filter) s.filter = *opt.filter;
     if (opt.filter_radius) s.filter_radius = *opt.filter_radius;
     if (opt.clamp) s.clamp = *opt.clamp;

@@ -17,18 +17,22 @@ namespace facet {
 namespace {
 
 // The key light: a two-sided emissive square of side 2r (r the radius of the bounding
-// sphere) centred at centre + r * (0, 2, 1), i.e. above and in front of the model, turned
-// to face the centre, emitting radiance 4 (white). From the default camera it lies above
-// the top of the image. A white Lambertian surface facing it receives about
+// sphere) centred at centre + r * (2 up + h), h the horizontal direction towards the
+// camera (+z for a camera straight above or below), i.e. above the model and on the
+// camera's side, turned to face the centre, emitting radiance 4 (white). From the framed
+// camera (frame_camera) it lies above the top of the image. A white Lambertian surface facing it receives about
 // 0.8 x 4 x (solid angle) and so looks roughly mid-grey to white.
 void add_key_light(Scene& scene) {
     const Bounds bounds = scene_bounds(scene);
     const glm::vec3 center = bounds.center();
     float r = bounds.radius();
     if (!(r > 0.0f)) r = 1.0f;
-    const glm::vec3 p = center + r * glm::vec3(0.0f, 2.0f, 1.0f);
-    const glm::vec3 w = glm::normalize(center - p);  // facing the model
-    const glm::vec3 v(1.0f, 0.0f, 0.0f);
+    glm::vec3 h = scene.camera.eye - scene.camera.target;
+    h.y = 0.0f;
+    h = glm::length(h) > 0.0f ? glm::normalize(h) : glm::vec3(0.0f, 0.0f, 1.0f);
+    const glm::vec3 p = center + r * (glm::vec3(0.0f, 2.0f, 0.0f) + h);
+    const glm::vec3 w = glm::normalize(center - p);                                  // facing the model
+    const glm::vec3 v = glm::normalize(glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), h));  // horizontal, across w
     glm::vec3 u = glm::normalize(glm::cross(w, v));
     if (glm::dot(glm::cross(u, v), w) < 0.0f) u = -u;  // cross(e1, e2) along w
     Material m = default_material();

@@ -96,14 +96,18 @@ Scene load_scene(const std::string& path, const std::string& camera_name) {
         if (ext == ".obj") load_obj(path, scene);
         else load_ply(path, scene);
         check_geometry(scene, path);
-        scene.camera = frame_camera(scene);
+        scene.camera = frame_camera(scene, Framing::Broadside);
+        scene.camera_note = framing_note(scene, Framing::Broadside);
         add_default_lighting(scene);  // default_lighting.hpp
     } else if (ext == ".gltf" || ext == ".glb") {
         GltfLoadOptions options;
         options.camera_name = camera_name;
         const bool has_camera = load_gltf(path, scene, options);
         check_geometry(scene, path);
-        if (!has_camera) scene.camera = frame_camera(scene);
+        if (!has_camera) {
+            scene.camera = frame_camera(scene);
+            scene.camera_note = framing_note(scene, Framing::Front);
+        }
         add_default_lighting(scene);
     } else if (ext == ".json") {
         const bool has_camera = load_json_scene(path, scene);

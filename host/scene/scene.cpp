@@ -133,7 +133,24 @@ std::size_t Scene::placed_triangle_count() const {
     return n;
 }
 
-CameraDesc frame_camera(const Scene& scene) {
+namespace {
+
+// Whether a broadside framing looks from +x (the model is longer along z than along x).
+bool broadside_from_x(const Scene& scene, Framing framing) {
+    if (framing != Framing::Broadside) return false;
+    const Bounds b = scene_bounds(scene);
+    return !b.empty() && b.hi.z - b.lo.z > b.hi.x - b.lo.x;
+}
+
+}  // namespace
+
+std::string framing_note(const Scene& scene, Framing framing) {
+    if (framing == Framing::Front) return "framed to fit the model, seen from +z (glTF's front)";
+    return broadside_from_x(scene, framing) ? "framed to fit the model, seen from +x (its longer side)"
+                                            : "framed to fit the model, seen from +z (its longer side)";
+}
+
+CameraDesc frame_camera(const Scene& scene, Framing framing) {
     constexpr float fov = 40.0f;
     CameraDesc cam;
     cam.fov_y_degrees = fov;
@@ -145,7 +162,9 @@ CameraDesc frame_camera(const Scene& scene) {
     // The bounding sphere fits the vertical fov at this distance.
     const float distance = radius / std::sin(0.5f * glm::radians(fov));
     cam.target = center;
-    cam.eye = center + distance * glm::normalize(glm::vec3(0.0f, 0.25f, 1.0f));
+    const glm::vec3 view =
+        broadside_from_x(scene, framing) ? glm::vec3(1.0f, 0.25f, 0.0f) : glm::vec3(0.0f, 0.25f, 1.0f);
+    cam.eye = center + distance * glm::normalize(view);
     cam.up = glm::vec3(0.0f, 1.0f, 0.0f);
     return cam;
 }

@@ -91,6 +91,7 @@ struct Scene {
     std::string source_path;            // the file it was loaded from
     std::vector<std::string> warnings;  // non-fatal problems met while loading
     std::string lighting_note;          // the light added or chosen (host/readers/default_lighting.hpp)
+    std::string camera_note;            // how a camera was placed for a file without one (frame_camera)
     // One line per mesh file: how its shading normals were obtained (`facet info` prints them).
     std::vector<std::string> normal_sources;
     // Image textures (host/scene/texture.hpp) and per-triangle uvs: empty, or filled
@@ -161,7 +162,14 @@ void mark_triangle_materials(const Scene& scene, std::vector<bool>& used);
 
 // A camera that frames the scene's bounding box: looking at its centre from +z and
 // slightly above, far enough that the bounding sphere fits a 40 degree vertical fov.
-CameraDesc frame_camera(const Scene& scene);
+// glTF's front faces +z; a format with no convention (OBJ, PLY, ...) is `broadside`: seen
+// from +x instead when the model is longer along z than along x, so that the view takes in
+// its largest extent (a cow modelled along z is seen from the side, not from behind).
+enum class Framing { Front, Broadside };
+CameraDesc frame_camera(const Scene& scene, Framing framing = Framing::Front);
+// The note frame_camera's view gets in Scene::camera_note: "framed to fit the model,
+// seen from +x (its longer side)".
+std::string framing_note(const Scene& scene, Framing framing);
 
 // Appends a material (with its name) and returns its index.
 int add_material(Scene& scene, const Material& material, const std::string& name);
