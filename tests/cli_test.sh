@@ -75,6 +75,15 @@ expect info-obj-normals 0 "normals +.*tet\.obj: normals: 12 flat" -- "$FACET" in
 # PLY and glTF 2.0 on their own; other renderers' scene files named for what they are.
 printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >"$tmp/tet.ply"
 expect render-ply 0 "wrote" -- "$FACET" render "$tmp/tet.ply" "${small[@]}" --out "$tmp/tetply.exr"
+# An emissive-only glTF (one glowing triangle, nothing else): the header says why the image is dark.
+printf '%s' '{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+ "materials": [{"emissiveFactor": [1, 1, 1]}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}],
+ "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]}' >"$tmp/glow.gltf"
+expect gltf-emissive-only-noted 0 "light +the file's only light is its emissive surfaces: .*--env white" -- \
+    "$FACET" render "$tmp/glow.gltf" "${lit[@]}" --out "$tmp/glowgltf.exr"
 expect render-gltf 0 "wrote" -- "$FACET" render "$SCENES/gltf_materials.gltf" "${small[@]}" --out "$tmp/gltf.exr"
 printf 'LookAt 0 0 5 0 0 0 0 1 0\nCamera "perspective"\nWorldBegin\nShape "sphere"\n' >"$tmp/scene.pbrt"
 expect foreign-pbrt 1 "not a facet scene: this looks like a pbrt-v4 file" -- "$FACET" render "$tmp/scene.pbrt" "${small[@]}"
