@@ -123,6 +123,7 @@ TextureImage load_texture(const std::string& path, TextureSpace space, const std
     if (img.bits == 8)
         t.format = img.decoded_srgb && space == TextureSpace::Color ? FC_TEXEL_RGBA8_SRGB : FC_TEXEL_RGBA8;
     else if (img.bits == 16) t.format = FC_TEXEL_RGBA16F;
+    if (img.bits == 8 || img.bits == 16) t.mip_format = FC_TEXEL_RGBA16F;  // averages of 8 bits kept to 11
     return t;
 }
 
@@ -198,7 +199,9 @@ DeviceTextures compile_textures(const Scene& scene) {
     }
     for (const TextureImage& t : scene.textures) {
         FcTexture e{};
-        const std::uint64_t words = t.texels.size() / 4u * texel_words(t.format);
+        const std::size_t level0 = std::size_t(t.width) * std::size_t(t.height);
+        const std::uint64_t words =
+            level0 * texel_words(t.format) + (t.texels.size() / 4u - level0) * texel_words(t.mip_format);
         if (words > 0xffffffffull || d.texels.size() > 0xffffffffull - words)
             throw Error(fmt::format("textures: more than 16 GiB of texels in all (at {})", t.path));
         e.offset = std::uint32_t(d.texels.size());
@@ -208,9 +211,11 @@ DeviceTextures compile_textures(const Scene& scene) {
         e.wrap_u = t.wrap_u;
         e.wrap_v = t.wrap_v;
         e.format = t.format;
+        e.mip_format = t.mip_format;
         d.table.push_back(e);
         d.texels.reserve(d.texels.size() + words);
-        for (std::size_t i = 0; i + 3 < t.texels.size(); i += 4) append_texel(d.texels, t.format, &t.texels[i]);
+        for (std::size_t i = 0; i + 3 < t.texels.size(); i += 4)
+            append_texel(d.texels, i < 4u * level0 ? t.format : t.mip_format, &t.texels[i]);
     }
     d.texcoords = scene.texcoords;
     d.texcoords.resize(scene.shading.size(), FcTriTexcoords{});

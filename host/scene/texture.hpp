@@ -25,9 +25,11 @@ enum class TextureSpace { Color, Data };
 
 // A decoded texture with its mip pyramid: `texels` holds 4 floats (RGBA, A = 1) a texel,
 // level 0 (width x height, top row first) then each smaller level down to 1 x 1.
-// `format` is how the device stores it (FC_TEXEL_*, kernels/shared/texture_layout.h):
+// `format` is how the device stores level 0 (FC_TEXEL_*, kernels/shared/texture_layout.h):
 // as precise as the file, no more (8-bit files in 4 bytes a texel, sRGB colours decoded
-// on the device; 16-bit ones as half floats; float files as floats).
+// on the device; 16-bit ones as half floats; float files as floats). `mip_format` is that
+// of the smaller levels, whose averages are kept to half precision at least (an average
+// of 8-bit texels re-quantised to 8 bits would be off by up to half a step).
 struct TextureImage {
     std::string path;
     TextureSpace space = TextureSpace::Color;
@@ -37,6 +39,7 @@ struct TextureImage {
     int wrap_u = FC_WRAP_REPEAT;
     int wrap_v = FC_WRAP_REPEAT;
     int format = FC_TEXEL_RGBA32F;
+    int mip_format = FC_TEXEL_RGBA32F;
     std::vector<float> texels;
 };
 

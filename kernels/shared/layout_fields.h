@@ -55,7 +55,7 @@
     F(FcEnvironment, width) F(FcEnvironment, height) F(FcEnvironment, enabled) F(FcEnvironment, scale)                      \
     F(FcEnvironment, total) F(FcEnvironment, to_map)                                                                        \
     F(FcTexture, offset) F(FcTexture, width) F(FcTexture, height) F(FcTexture, levels) F(FcTexture, wrap_u)                 \
-    F(FcTexture, wrap_v) F(FcTexture, format) F(FcMaterialTextures, base_color) F(FcMaterialTextures, normal)               \
+    F(FcTexture, wrap_v) F(FcTexture, format) F(FcTexture, mip_format) F(FcMaterialTextures, base_color) F(FcMaterialTextures, normal)               \
     F(FcMaterialTextures, base_factor) F(FcMaterialTextures, flags) F(FcMaterialTextures, uv_transform)                     \
     F(FcTriTexcoords, uv) F(FcTriTexcoords, tangent_flags) F(FcTriTexcoords, tangent)                                       \
     F(FcSphere, center) F(FcSphere, radius) F(FcSphere, material) F(FcSphere, light) F(FcSphere, flags)                     \

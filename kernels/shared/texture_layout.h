@@ -11,7 +11,9 @@
  *   FC_TEXEL_RGBA8_SRGB  8-bit RGB in sRGB, decoded through the table, and linear A
  * A texture is a box-filtered mip pyramid: level 0 of width x
  * height texels, top row first, then each level of max(1, w/2) x max(1, h/2) texels
- * until 1 x 1, all from `offset` in the pool. Texel (x, y) of a level covers
+ * until 1 x 1, all from `offset` in the pool. Level 0 is in `format`, the levels after it in
+ * `mip_format`: an average of 8-bit texels is no 8-bit value, so those levels are half
+ * floats rather than re-quantised (which biased dark sRGB gradients by up to +5 %). Texel (x, y) of a level covers
  * [x/w, (x+1)/w) x [y/h, (y+1)/h) of the (u, v) square; v = 0 is the image's top row
  * (glTF's and facet's convention; OBJ/MTL's v runs upward and its reader flips it). */
 #ifndef FACET_SHARED_TEXTURE_LAYOUT_H
@@ -40,8 +42,8 @@ typedef struct FcTexture {
     fc_int levels; /* mip levels, >= 1 */
     fc_int wrap_u;
     fc_int wrap_v;
-    fc_int format; /* FC_TEXEL_* */
-    fc_int pad0;
+    fc_int format;     /* FC_TEXEL_* of level 0 */
+    fc_int mip_format; /* FC_TEXEL_* of levels 1 and up */
 } FcTexture;
 
 /* How a material's roughness texture is read (FcMaterialTextures.roughness_mode). */

@@ -42,25 +42,26 @@ inline float4 texel_fetch(__global const uint* pool, int format, uint base, uint
     return (float4)((float)r / 255.0f, (float)g / 255.0f, (float)b / 255.0f, a);
 }
 
-/* First word of `level` in the pool, and its size. */
-inline uint texture_level(__global const FcTexture* t, int level, int* w, int* h) {
+/* First word of `level` in the pool, its size and its texel format (level 0 in `format`,
+ * the others in `mip_format`). */
+inline uint texture_level(__global const FcTexture* t, int level, int* w, int* h, int* format) {
     uint offset = t->offset;
-    uint words = texel_words(t->format);
     int lw = t->width, lh = t->height;
     for (int l = 0; l < level; ++l) {
-        offset += (uint)(lw * lh) * words;
+        offset += (uint)(lw * lh) * texel_words(l == 0 ? t->format : t->mip_format);
         lw = max(lw / 2, 1);
         lh = max(lh / 2, 1);
     }
     *w = lw;
     *h = lh;
+    *format = level == 0 ? t->format : t->mip_format;
     return offset;
 }
 
 /* Bilinear lookup in one level: texel centres sit at ((x + 0.5) / w, (y + 0.5) / h). */
 inline float4 texture_bilinear(__global const FcTexture* t, __global const uint* texels, int level, float2 uv) {
-    int w, h;
-    uint base = texture_level(t, level, &w, &h);
+    int w, h, f;
+    uint base = texture_level(t, level, &w, &h, &f);
     /* Large |uv| (a far repeat) would lose the fraction in float: keep it in [0, 2) periods
      * for repeat and mirror; clamp reads the edge anyway. */
     if (t->wrap_u != FC_WRAP_CLAMP) uv.x -= 2.0f * floor(0.5f * uv.x);
@@ -71,7 +72,6 @@ inline float4 texture_bilinear(__global const FcTexture* t, __global const uint*
     float ax = x - fx, ay = y - fy;
     int x0 = texture_wrap((int)fx, w, t->wrap_u), x1 = texture_wrap((int)fx + 1, w, t->wrap_u);
     int y0 = texture_wrap((int)fy, h, t->wrap_v), y1 = texture_wrap((int)fy + 1, h, t->wrap_v);
-    int f = t->format;
     float4 a = texel_fetch(texels, f, base, (uint)(y0 * w + x0)), b = texel_fetch(texels, f, base, (uint)(y0 * w + x1));
     float4 c = texel_fetch(texels, f, base, (uint)(y1 * w + x0)), d = texel_fetch(texels, f, base, (uint)(y1 * w + x1));
     return mix(mix(a, b, ax), mix(c, d, ax), ay);
