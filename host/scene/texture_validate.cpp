@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "host/scene/normal_map_pyramid.hpp"
 #include "host/scene/texture.hpp"
 
 namespace facet {
@@ -86,12 +87,15 @@ void sanitise_textures(Scene& scene) {
         if (roles[i] == 0 || t.width < 1 || t.height < 1) continue;
         Changes ch;
         sanitise(t, roles[i], ch);
+        if (roles[i] & kNormal) build_normal_map_pyramid(t);  // the bumps' spread in alpha
         if (ch.texels == 0) continue;
-        std::vector<float> level0(t.texels.begin(),
-                                  t.texels.begin() + std::ptrdiff_t(4 * std::size_t(t.width) * std::size_t(t.height)));
-        TextureImage rebuilt = make_texture(t.width, t.height, std::move(level0), t.wrap_u, t.wrap_v);
-        t.texels = std::move(rebuilt.texels);
-        t.levels = rebuilt.levels;
+        if (!(roles[i] & kNormal)) {
+            std::vector<float> level0(
+                t.texels.begin(), t.texels.begin() + std::ptrdiff_t(4 * std::size_t(t.width) * std::size_t(t.height)));
+            TextureImage rebuilt = make_texture(t.width, t.height, std::move(level0), t.wrap_u, t.wrap_v);
+            t.texels = std::move(rebuilt.texels);
+            t.levels = rebuilt.levels;
+        }
         scene.warnings.push_back(
             fmt::format("{}: {} of its {} texels were outside what the texture is read as, {} (values or lengths "
                         "from {:g} to {:g}), and were clamped to it",

@@ -24,6 +24,16 @@ __kernel void normal_map_batch(__global const float4* in, __global float4* out) 
     out[i] = (float4)(normal_mapped((float3)(0.0f, 0.0f, 1.0f), &p, in[i].xyz, in[i].w), 0.0f);
 }
 
+/* add_normal_spread for each (alpha_x, alpha_y, len, scale) of `in`: the roughened
+ * (alpha_x, alpha_y, exponent_x, exponent_y). */
+__kernel void normal_spread_batch(__global const float4* in, __global float4* out) {
+    uint i = (uint)get_global_id(0);
+    FcMaterial m;
+    set_roughness(&m, in[i].x, in[i].y);
+    add_normal_spread(&m, in[i].z, in[i].w);
+    out[i] = (float4)(m.alpha_x, m.alpha_y, m.exponent_x, m.exponent_y);
+}
+
 /* tex_tangent (the frame normal_mapped reads) for each query (x: the scene triangle,
  * y, z: the barycentrics of its v1 and v2): the interpolated vertex tangent (xyz) and
  * the handedness (w; 0 where the triangle has no tangents). */

@@ -135,6 +135,32 @@ inline float3 normal_mapped(float3 ns, const TexPoint* p, float3 texel, float sc
     return normalize_or(m.x * t + m.y * b + m.z * ns, ns);
 }
 
+/* Sets the microfacet roughness (and the Phong-style exponents that follow from it,
+ * e = 2 / alpha^2 - 2). */
+inline void set_roughness(FcMaterial* mat, float alpha_x, float alpha_y) {
+    mat->alpha_x = alpha_x;
+    mat->alpha_y = alpha_y;
+    mat->exponent_x = clamp(2.0f / fmax(alpha_x * alpha_x, 1e-12f) - 2.0f, 0.0f, FC_PHONG_EXPONENT_MAX);
+    mat->exponent_y = clamp(2.0f / fmax(alpha_y * alpha_y, 1e-12f) - 2.0f, 0.0f, FC_PHONG_EXPONENT_MAX);
+}
+
+/* The spread of the normals a minified normal-map texel averages, added to the roughness so
+ * that bumps seen from afar keep their look instead of flattening into a mirror (Toksvig
+ * 2005; here in the von Mises-Fisher form of Han et al. 2007, "Frequency Domain Normal Map
+ * Filtering"). `len` is the length of the mean of the unit normals under the texel (the
+ * alpha of a normal map's smaller levels, host/scene/normal_map_pyramid.cpp; 1 at level 0).
+ * A vMF lobe of that mean length has concentration kappa = (3 len - len^3) / (1 - len^2)
+ * (Banerjee et al. 2005), and exp(kappa cos t) ~ exp(-kappa t^2 / 2) matches a microfacet
+ * distribution exp(-t^2 / alpha^2) of alpha^2 = 2 / kappa; slope variances add. The map's
+ * scale scales the slopes, so their variance by scale^2. */
+inline void add_normal_spread(FcMaterial* mat, float len, float scale) {
+    if (!(len < 1.0f)) return;
+    float r = fmax(len, 1e-3f);
+    float spread = 2.0f * (1.0f - r * r) / (3.0f * r - r * r * r) * scale * scale;
+    set_roughness(mat, sqrt(fmin(mat->alpha_x * mat->alpha_x + spread, 1.0f)),
+                  sqrt(fmin(mat->alpha_y * mat->alpha_y + spread, 1.0f)));
+}
+
 /* Writes the textures of material `material` at hit `hit` into `mat` and the shading
  * normal `ns`. `cone` is the ray cone's width at the hit, `d` the ray's direction. */
 inline void apply_textures(const SceneView* sc, const Hit* hit, int material, float3 d, float cone, float3* ns,
@@ -189,20 +215,18 @@ inline void apply_textures(const SceneView* sc, const Hit* hit, int material, fl
             mat->alpha_x = mat->alpha_y = sqrt(2.0f / (e + 2.0f));
         } else {
             float s = r * r;
-            mat->alpha_x *= s;
-            mat->alpha_y *= s;
-            mat->exponent_x =
-                clamp(2.0f / fmax(mat->alpha_x * mat->alpha_x, 1e-12f) - 2.0f, 0.0f, FC_PHONG_EXPONENT_MAX);
-            mat->exponent_y =
-                clamp(2.0f / fmax(mat->alpha_y * mat->alpha_y, 1e-12f) - 2.0f, 0.0f, FC_PHONG_EXPONENT_MAX);
+            set_roughness(mat, mat->alpha_x * s, mat->alpha_y * s);
         }
     }
     /* Sphere lights are sampled with their untextured emission (sphere_light.cl): an
      * emission texture on a sphere is left out on both sides, so the two estimates agree. */
     if (mt->emission >= 0 && hit->tri != FC_HIT_SPHERE)
         tex_store3(mat->emission, load3p(mat->emission) * tex_lookup(sc, mt->emission, uv, &p, cone, cos_hit).xyz);
-    if (mt->normal >= 0)
-        *ns = normal_mapped(*ns, &p, tex_lookup(sc, mt->normal, uv, &p, cone, cos_hit).xyz, mt->normal_scale);
+    if (mt->normal >= 0) {
+        float4 n = tex_lookup(sc, mt->normal, uv, &p, cone, cos_hit);
+        *ns = normal_mapped(*ns, &p, n.xyz, mt->normal_scale);
+        add_normal_spread(mat, n.w, mt->normal_scale);
+    }
 }
 
 /* The emission of scene triangle `prim` (material `material`) at a light sample's
