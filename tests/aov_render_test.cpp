@@ -8,6 +8,7 @@
 
 #include "host/bvh/bvh.hpp"
 #include "host/render/aov.hpp"
+#include "host/scene/material.hpp"
 #include "host/scene/scene.hpp"
 #include "tests/cl_test_env.hpp"
 
@@ -68,6 +69,22 @@ TEST(AovRender, TentFilterBlendsTheEdge) {
     }
     EXPECT_NEAR(left, 0.2 * 0.875, 0.005);
     EXPECT_NEAR(right, 0.2 * 0.125, 0.005);
+}
+
+// glTF's metallic mix (kernels/bsdf/metallic.cl): the albedo is (1 - M) times the
+// dielectric's (base + F0 0.04 head-on) plus M times the metal's (F = base head-on), here
+// base + 0.02 at M = 0.5. The albedo had left the mix out and read base + 0.04, the
+// dielectric's alone (issue 28).
+TEST(AovRender, MetallicMixAlbedo) {
+    Scene scene = quad_scene();
+    Material& m = scene.materials[0];
+    m.specular_model = FC_SPECULAR_MICROFACET;  // GGX, Schlick's Fresnel, as glTF's reader sets it
+    set_metallic_roughness(m, glm::vec3(0.2f, 0.5f, 0.7f), 0.5f, 0.04f);
+    const AovImages a = render_aovs(test::context(), scene, build_bvh(scene.vertices), 4);
+    const std::size_t on = std::size_t(8) * kSize + 3;
+    EXPECT_NEAR(a.albedo[3 * on + 0], 0.22f, 1e-4f);
+    EXPECT_NEAR(a.albedo[3 * on + 1], 0.52f, 1e-4f);
+    EXPECT_NEAR(a.albedo[3 * on + 2], 0.72f, 1e-4f);
 }
 
 }  // namespace

@@ -27,13 +27,19 @@
 /* Delta surfaces followed at most this many times before a sample counts as escaped. */
 #define FC_AOV_MAX_DELTA_BOUNCES 16u
 
-/* The reflectance a denoiser sees at a non-delta surface, seen from wo_local. */
+/* The reflectance a denoiser sees at a non-delta surface, seen from wo_local. A metallic
+ * material's is the mix of its dielectric's (diffuse base plus F at 0.04) and its metal's
+ * (F from the base colour) by M, as the BRDF mixes them (metallic.cl). */
 inline float3 aov_albedo(const FcMaterial* m, float3 wo_local) {
     float3 a = (float3)(0.0f);
     if (m->diffuse_model != FC_DIFFUSE_NONE) a += load3p(m->diffuse);
     if (m->specular_model == FC_SPECULAR_BLINN_PHONG || m->specular_model == FC_SPECULAR_BLINN_PHONG_NORMALIZED)
         a += load3p(m->specular);
     else if (m->specular_model != FC_SPECULAR_NONE) a += fresnel_eval(m, fabs(wo_local.z));
+    if (metallic_mixed(m)) {
+        FcMaterial metal = metallic_lobe(m);
+        a = mix(a, fresnel_eval(&metal, fabs(wo_local.z)), metallic_weight(m));
+    }
     return clamp(a, 0.0f, 1.0f);
 }
 
