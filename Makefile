@@ -26,7 +26,7 @@ PACKAGES := build-essential cmake pkg-config \
 	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
 	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
 	libgtest-dev clang libclang-rt-14-dev clang-format \
-	libtinygltf-dev libassimp-dev zlib1g-dev assimp-testmodels \
+	libtinygltf-dev libdraco-dev libassimp-dev zlib1g-dev assimp-testmodels \
 	libembree-dev \
 	fiu-utils oclgrind \
 	libopenmpi-dev openmpi-bin
@@ -37,7 +37,7 @@ PACKAGES := build-essential cmake pkg-config \
 DEMO_PACKAGES := build-essential cmake pkg-config \
 	pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo \
 	libglm-dev libopenimageio-dev libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libfmt-dev \
-	libtinygltf-dev libassimp-dev zlib1g-dev
+	libtinygltf-dev libdraco-dev libassimp-dev zlib1g-dev
 DEMO_BUILD ?= build-demo
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)

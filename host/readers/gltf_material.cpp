@@ -206,7 +206,8 @@ void Ignored::warn(const std::string& file, std::vector<std::string>& warnings) 
 
 bool supported_extension(const std::string& name) {
     return name == "KHR_lights_punctual" || name == "KHR_materials_ior" || name == "KHR_materials_transmission" ||
-           name == "KHR_materials_emissive_strength" || name == "KHR_texture_transform";
+           name == "KHR_materials_emissive_strength" || name == "KHR_texture_transform" ||
+           name == "KHR_draco_mesh_compression";
 }
 
 Material default_gltf_material() {

@@ -23,6 +23,7 @@
 
 #include "host/error.hpp"
 #include "host/readers/gltf_accessor.hpp"
+#include "host/readers/gltf_draco.hpp"
 #include "host/readers/gltf_material.hpp"
 #include "host/readers/text_parse.hpp"
 #include "host/util/input_file.hpp"
@@ -114,8 +115,14 @@ void parse(const std::string& path, tinygltf::Model& model, Scene& scene) {
     const bool binary = lower(std::filesystem::path(path).extension().string()) == ".glb";
     bool ok = false;
     try {
-        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                    : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+        // Draco primitives: their indices removed first (gltf_draco.hpp), the rest as the file says.
+        const std::string bytes = read_input_file(path, "glTF file", 0xffffffffu);  // tinygltf takes 32-bit sizes
+        const std::string base = std::filesystem::path(path).parent_path().string();
+        const std::optional<std::string> stripped = gltf::without_draco_indices(bytes, binary);
+        const std::string& text = stripped ? *stripped : bytes;
+        const auto* data = reinterpret_cast<const unsigned char*>(text.data());
+        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, unsigned(text.size()), base)
+                    : loader.LoadASCIIFromString(&model, &err, &warn, text.data(), unsigned(text.size()), base);
     } catch (const std::exception& e) {  // tinygltf reports its own errors; this is for allocation failures
         err = e.what();
     }
@@ -130,7 +137,7 @@ void parse(const std::string& path, tinygltf::Model& model, Scene& scene) {
             throw Error(
                 fmt::format("{}: the file requires the extension {}, which facet does not support "
                             "(supported: KHR_lights_punctual, KHR_materials_ior, KHR_materials_transmission, "
-                            "KHR_materials_emissive_strength)",
+                            "KHR_materials_emissive_strength, KHR_texture_transform, KHR_draco_mesh_compression)",
                             path, required));
 }
 
@@ -340,7 +347,16 @@ private:
                 if (name != "POSITION" && name != "NORMAL" && name != "TEXCOORD_0" && name != "TANGENT")
                     ignored_.add("attribute " + name, place);
             if (!prim.targets.empty()) ignored_.add("morph targets", place);
-            for (const auto& [name, value] : prim.extensions) ignored_.add("primitive extension " + name, place);
+            for (const auto& [name, value] : prim.extensions)
+                if (name != gltf::kDracoExtension) ignored_.add("primitive extension " + name, place);
+            if (gltf::is_draco(prim)) {  // decoded by Draco; the accessors only describe the result
+                if (mode != TINYGLTF_MODE_TRIANGLES)
+                    throw Error(fmt::format("{}: {}: a Draco-compressed primitive must be of triangles (mode 4)", path_,
+                                            place));
+                IndexedMesh m = gltf::decode_draco(model_, prim, path_, place);
+                out.push_back(Primitive{std::move(m), material(prim.material, place)});
+                continue;
+            }
             const auto position = prim.attributes.find("POSITION");
             if (position == prim.attributes.end())
                 throw Error(fmt::format("{}: {}: no POSITION attribute", path_, place));
