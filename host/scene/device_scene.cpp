@@ -92,6 +92,11 @@ FcMaterial device_material(const Material& m) {
     d.fresnel = m.fresnel;
     d.sampling = m.sampling;
     d.metallic = m.metallic;
+    store(d.attenuation, m.attenuation);
+    d.clearcoat = m.clearcoat;
+    d.clearcoat_alpha = m.clearcoat_alpha;
+    store(d.sheen, m.sheen);
+    d.sheen_roughness = m.sheen_roughness;
     d.alpha_x = m.alpha_x;
     d.alpha_y = m.alpha_y;
     d.exponent_x = m.exponent_x;
@@ -117,6 +122,11 @@ Material host_material(const FcMaterial& d) {
     m.fresnel = d.fresnel;
     m.sampling = d.sampling;
     m.metallic = d.metallic;
+    m.attenuation = load(d.attenuation);
+    m.clearcoat = d.clearcoat;
+    m.clearcoat_alpha = d.clearcoat_alpha;
+    m.sheen = load(d.sheen);
+    m.sheen_roughness = d.sheen_roughness;
     m.alpha_x = d.alpha_x;
     m.alpha_y = d.alpha_y;
     m.exponent_x = d.exponent_x;

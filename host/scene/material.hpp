@@ -63,6 +63,15 @@ struct Material {
     // glTF's metallic M in [0, 1] (microfacet lobes): f = (1 - M) f + M f_metal, f_metal the
     // microfacet lobe with Schlick F0 = diffuse, the base colour (kernels/bsdf/metallic.cl).
     float metallic = 0.0f;
+    // glTF's KHR_materials_* (FcMaterial's last block; 0: none). attenuation: Beer-Lambert
+    // coefficient per unit length inside a transmissive material (KHR_materials_volume);
+    // clearcoat weight and GGX alpha (KHR_materials_clearcoat); sheen colour and roughness
+    // (KHR_materials_sheen).
+    glm::vec3 attenuation{0.0f};
+    float clearcoat = 0.0f;
+    float clearcoat_alpha = 0.0f;
+    glm::vec3 sheen{0.0f};
+    float sheen_roughness = 0.0f;
     // Image textures bound to the parameters above (docs/textures.md).
     MaterialTextures textures;
 };

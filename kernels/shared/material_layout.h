@@ -119,11 +119,24 @@ typedef struct FcMaterial {
     fc_int sampling;
     float metallic;
     fc_uint pad0[3];
+    /* glTF's KHR_materials_* layers and volume (docs/brdf.md); all 0 leaves the material as
+     * it is. `attenuation` is the Beer-Lambert coefficient (per unit length, per channel)
+     * inside a transmissive material (KHR_materials_volume: -ln(attenuationColor) /
+     * attenuationDistance). `clearcoat` weights a clear GGX layer of roughness alpha
+     * `clearcoat_alpha` over the material (KHR_materials_clearcoat); `sheen` is the sheen
+     * layer's colour and `sheen_roughness` its roughness (KHR_materials_sheen). */
+    float attenuation[3];
+    float clearcoat;
+    float sheen[3];
+    float clearcoat_alpha;
+    float sheen_roughness;
+    fc_uint pad1[3];
 } FcMaterial;
 
-FC_STATIC_ASSERT(sizeof(FcMaterial) == 128, "FcMaterial is 128 bytes");
+FC_STATIC_ASSERT(sizeof(FcMaterial) == 176, "FcMaterial is 176 bytes");
 FC_STATIC_ASSERT(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104 &&
-                     offsetof(FcMaterial, metallic) == 112,
+                     offsetof(FcMaterial, metallic) == 112 && offsetof(FcMaterial, attenuation) == 128 &&
+                     offsetof(FcMaterial, sheen) == 144 && offsetof(FcMaterial, sheen_roughness) == 160,
                  "FcMaterial offsets");
 
 #endif
