@@ -156,6 +156,9 @@ TEST(Features, EveryFlagIsExercised) {
     Material half_metal = make_material("ggx");
     set_metallic_roughness(half_metal, glm::vec3(0.9f, 0.6f, 0.3f), 0.5f, 0.04f);
     with_material("metallic", half_metal);
+    Material tinted_glass = make_material("dielectric");
+    tinted_glass.attenuation = glm::vec3(0.5f, 1.0f, 2.0f);  // Beer-Lambert inside (KHR_materials_volume)
+    with_material("absorbing dielectric (volume)", tinted_glass);
     Material textured = make_material("ggx");
     textured.textures.base_color = textured.textures.roughness = textured.textures.normal = 0;
     with_material("textured", textured);

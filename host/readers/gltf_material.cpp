@@ -34,6 +34,34 @@ float in_range(double v, double lo, double hi, const std::string& file, const st
     return static_cast<float>(v);
 }
 
+// KHR_materials_volume on a transmissive material: Beer-Lambert absorption inside, from
+// attenuationColor (default white: none) and attenuationDistance (default infinite: none);
+// thicknessFactor is for rasterisers (a path tracer follows the ray through the mesh).
+void read_volume(const tinygltf::Material& g, Material& m, const std::string& file, const std::string& place,
+                 const std::string& where, Ignored& ignored) {
+    const auto it = g.extensions.find("KHR_materials_volume");
+    if (it == g.extensions.end() || !it->second.IsObject()) return;
+    const tinygltf::Value& v = it->second;
+    if (m.specular_model != FC_SPECULAR_DIELECTRIC) {
+        ignored.add("KHR_materials_volume on a material that does not transmit", where);
+        return;
+    }
+    glm::vec3 colour(1.0f);
+    if (v.Has("attenuationColor")) {
+        const tinygltf::Value& c = v.Get("attenuationColor");
+        if (!c.IsArray() || c.ArrayLen() != 3)
+            throw Error(fmt::format("{}: {}: KHR_materials_volume.attenuationColor must have 3 numbers", file, place));
+        for (int i = 0; i < 3; ++i)
+            colour[i] = in_range(c.Get(i).IsNumber() ? c.Get(i).GetNumberAsDouble() : std::nan(""), 0, 1, file, place,
+                                 "KHR_materials_volume.attenuationColor");
+    }
+    const double distance = extension_number(g, "KHR_materials_volume", "attenuationDistance", INFINITY);
+    if (!(distance > 0.0))
+        throw Error(fmt::format("{}: {}: KHR_materials_volume.attenuationDistance must be > 0, got {:g}", file, place,
+                                distance));
+    if (std::isfinite(distance)) m.attenuation = attenuation_coefficient(colour, float(distance));
+}
+
 // --- textures ----------------------------------------------------------------------------
 
 int wrap_mode(int gl) {
@@ -207,7 +235,7 @@ void Ignored::warn(const std::string& file, std::vector<std::string>& warnings) 
 bool supported_extension(const std::string& name) {
     return name == "KHR_lights_punctual" || name == "KHR_materials_ior" || name == "KHR_materials_transmission" ||
            name == "KHR_materials_emissive_strength" || name == "KHR_texture_transform" ||
-           name == "KHR_draco_mesh_compression";
+           name == "KHR_draco_mesh_compression" || name == "KHR_materials_volume";
 }
 
 Material default_gltf_material() {
@@ -268,6 +296,7 @@ Material convert_material(const tinygltf::Material& g, const std::string& file, 
 
     bind_textures(g, m, base, metallic, ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f)), file, where,
                   ignored, model, scene);
+    read_volume(g, m, file, place, where, ignored);
     if (g.occlusionTexture.index >= 0) ignored.add("occlusionTexture (a path tracer computes occlusion itself)", where);
     if (g.alphaMode != "OPAQUE") ignored.add(fmt::format("alphaMode {} (rendered opaque)", g.alphaMode), where);
     for (const auto& [name, value] : g.extensions) {

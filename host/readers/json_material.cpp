@@ -112,6 +112,22 @@ void conductor(const MaterialKeys& k, Material& m, SpecularColour& specular) {
 
 // The lobe choices by name: "diffuse_model", "specular_model", "ndf", "geometry",
 // "fresnel", "sampling".
+// "attenuation_color" (each 0 to 1) and "attenuation_distance" (> 0), together: glTF's
+// KHR_materials_volume, Beer-Lambert absorption inside a dielectric (docs/scene-format.md).
+void volume(const MaterialKeys& k, Material& m) {
+    if (!k.has("attenuation_color") || !k.has("attenuation_distance"))
+        k.r.fail(k.key(k.has("attenuation_color") ? "attenuation_color" : "attenuation_distance"),
+                 "needs both attenuation_color and attenuation_distance (the colour white light keeps after that "
+                 "distance inside)");
+    if (m.specular_model != FC_SPECULAR_DIELECTRIC)
+        k.r.fail(k.key("attenuation_color"), "absorbs inside a transmissive material only (model \"dielectric\")");
+    const glm::vec3 colour = k.color("attenuation_color");
+    for (int c = 0; c < 3; ++c)
+        if (colour[c] > 1.0f) k.r.fail(k.key("attenuation_color"), "each component must be at most 1");
+    const float distance = k.number("attenuation_distance", 1e-30, 1e30);
+    m.attenuation = attenuation_coefficient(colour, distance);
+}
+
 void lobe_choices(const MaterialKeys& k, Material& m) {
     auto choice = [&](const char* key, MaterialEnum kind, int& field) {
         if (!k.has(key)) return;
@@ -244,6 +260,8 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
               "transmittance",
               "energy_compensation",
               "metallic",
+              "attenuation_color",
+              "attenuation_distance",
               "textures"});
     const MaterialKeys k{r, v, path};
     Material m = preset(k);
@@ -266,6 +284,7 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
         if (m.metallic > 0.0f && m.specular_model != FC_SPECULAR_MICROFACET)
             r.fail(k.key("metallic"), "needs a microfacet specular lobe (model \"ggx\" or \"microfacet\")");
     }
+    if (k.has("attenuation_color") || k.has("attenuation_distance")) volume(k, m);
     if (std::string warning = clamp_reflectance(m); !warning.empty())
         scene.warnings.push_back(fmt::format("{}: {}: {}", r.file(), path, warning));
     if (std::string problem = validate_material(m); !problem.empty()) r.fail(path, problem);

@@ -65,6 +65,9 @@ FeatureMask scene_features(const Scene& scene) {
         }
         if (m.textures.any()) mask |= kTEXTURES;
         if (m.metallic > 0.0f || m.textures.metallic_workflow) mask |= kMETALLIC;
+        if (m.specular_model == FC_SPECULAR_DIELECTRIC &&
+            (m.attenuation.x > 0.0f || m.attenuation.y > 0.0f || m.attenuation.z > 0.0f))
+            mask |= kVOLUME;
     }
     return mask;
 }

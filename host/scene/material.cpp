@@ -399,4 +399,10 @@ std::string describe_material(const Material& m) {
     return s;
 }
 
+glm::vec3 attenuation_coefficient(glm::vec3 colour, float distance) {
+    glm::vec3 sigma;
+    for (int c = 0; c < 3; ++c) sigma[c] = -std::log(std::max(colour[c], 1e-6f)) / distance;
+    return sigma;
+}
+
 }  // namespace facet

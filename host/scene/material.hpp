@@ -152,6 +152,13 @@ float srgb_to_linear(float c);
 // the dielectric alone, at 1 the metal alone (no diffuse lobe), in between the mix.
 void set_metallic_roughness(Material& m, glm::vec3 base, float metallic, float dielectric_f0);
 
+// --- volume ------------------------------------------------------------------------------
+// The Beer-Lambert coefficient (per unit length, per channel) of a medium through which
+// white light keeps `colour` (each in [0, 1]) after `distance` (> 0): -ln(colour) / distance,
+// KHR_materials_volume's attenuationColor and attenuationDistance. A channel of 0 absorbs as
+// if it kept 1e-6 (finite).
+glm::vec3 attenuation_coefficient(glm::vec3 colour, float distance);
+
 // --- validation -----------------------------------------------------------------------
 // Empty when every field is usable, else a message naming the first bad field, e.g.
 // "alpha_x must be a finite number >= 0 (got nan)". Checks: colours finite and >= 0

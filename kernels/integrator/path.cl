@@ -108,6 +108,14 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         }
         Surface s = scene_surface_at(sc, &hit, o, d);
         FcMaterial mat = sc->materials[s.material];
+#if FC_HAS_VOLUME
+        /* Met from behind: the segment ran inside the closed mesh this surface bounds, which
+         * absorbs by Beer-Lambert, exp(-sigma t) per channel (KHR_materials_volume; its
+         * thickness is for rasterisers and not needed here). Shadow rays never run inside a
+         * dielectric (it blocks them), so only this path is attenuated. */
+        if (mat.specular_model == FC_SPECULAR_DIELECTRIC && dot(s.ng, d) > 0.0f)
+            throughput *= exp(-load3p(mat.attenuation) * hit.t);
+#endif
 #if FC_HAS_TEXTURES
         path_length += hit.t;
         apply_textures(sc, &hit, s.material, d, ray_cone_width(P, path_length), &s.ns, &mat);

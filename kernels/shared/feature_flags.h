@@ -21,7 +21,8 @@
     X(TEXTURES, 9)          \
     X(SPHERES, 10)          \
     X(INSTANCES, 11)        \
-    X(METALLIC, 12)
+    X(METALLIC, 12)         \
+    X(VOLUME, 14)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -61,6 +62,11 @@
 #endif
 #ifndef FC_HAS_METALLIC
 #define FC_HAS_METALLIC 1
+#endif
+/* Beer-Lambert absorption inside transmissive materials (FcMaterial.attenuation,
+ * kernels/integrator/path.cl). */
+#ifndef FC_HAS_VOLUME
+#define FC_HAS_VOLUME 1
 #endif
 
 #endif
