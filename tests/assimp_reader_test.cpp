@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <assimp/IOStream.hpp>
+
+#include "host/readers/assimp_io.hpp"
 #include "host/readers/assimp_reader.hpp"
 #include "host/readers/load_scene.hpp"
 #include "tests/scene_test_util.hpp"
@@ -112,6 +115,32 @@ TEST(AssimpReader, MalformedFilesAreErrorsNamingTheFile) {
     expect_error([&] { load_scene(d.path("absent.dae")); }, {"absent.dae", "no such file"});
     ASSERT_EQ(::mkfifo(d.path("pipe.stl").c_str(), 0600), 0);
     expect_error([&] { load_scene(d.path("pipe.stl")); }, {"pipe.stl", "not a regular file"});
+}
+
+// The files Assimp opens itself: regular files inside the model's folder only, read-only.
+TEST(AssimpReader, FilesAssimpOpensPassTheInputChecks) {
+    TempDir d;
+    fs::create_directories(d.path("model"));
+    d.write("model/part.bin", "abcdef");
+    d.write("secret.txt", "outside");
+    ASSERT_EQ(::mkfifo(d.path("model/pipe.bin").c_str(), 0600), 0);
+    AssimpFiles files(d.path("model"));
+    EXPECT_TRUE(files.Exists(d.path("model/part.bin").c_str()));
+    EXPECT_FALSE(files.Exists(d.path("model/../secret.txt").c_str())) << "outside the model's folder";
+    EXPECT_FALSE(files.Exists(d.path("model/pipe.bin").c_str()));
+    Assimp::IOStream* in = files.Open(d.path("model/part.bin").c_str());
+    ASSERT_NE(in, nullptr);
+    char buf[4] = {};
+    EXPECT_EQ(in->FileSize(), 6u);
+    EXPECT_EQ(in->Read(buf, 1, 4), 4u);
+    EXPECT_EQ(std::string(buf, 4), "abcd");
+    EXPECT_EQ(in->Read(buf, 4, 1), 0u) << "2 bytes left: no whole item of 4";
+    files.Close(in);
+    EXPECT_EQ(files.Open(d.path("model/../secret.txt").c_str()), nullptr);
+    EXPECT_NE(files.refusal().find("outside the model's folder"), std::string::npos) << files.refusal();
+    EXPECT_EQ(files.Open(d.path("model/pipe.bin").c_str()), nullptr);
+    EXPECT_NE(files.refusal().find("not a regular file"), std::string::npos) << files.refusal();
+    EXPECT_EQ(files.Open(d.path("model/part.bin").c_str(), "wb"), nullptr) << "never written";
 }
 
 TEST(AssimpReader, FormatsAreListedOnce) {
