@@ -16,8 +16,9 @@ CLANG_FORMAT ?= $(shell command -v clang-format-14 || echo clang-format)
 CMAKE_FLAGS ?=
 
 # Debian 12 packages facet needs to build, test and run on the CPU (PoCL).
-# libtinygltf-dev (glTF), libassimp-dev (PLY) and zlib1g-dev (gzip'd meshes) read users' assets;
-# assimp-testmodels holds the malformed glTF files of SceneGltf.AssimpTestModels (skipped without it);
+# libtinygltf-dev (glTF), libassimp-dev (PLY, STL, FBX, Collada, 3DS, ...) and zlib1g-dev (gzip'd meshes) read users' assets;
+# assimp-testmodels holds the malformed glTF files of SceneGltf.AssimpTestModels and the STL, FBX,
+# Collada and 3DS models of AssimpReader.* and tests/cli_test.sh (skipped without it);
 # libembree-dev is for the bench only (it skips its part without it);
 # fiu-utils (libfiu) injects write failures in tests/faults/disk_full.sh (skipped without it);
 # oclgrind for the Oclgrind tier (ctest -L oclgrind, skipped without it).

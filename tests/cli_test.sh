@@ -85,6 +85,25 @@ printf '%s' '{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}
 expect gltf-emissive-only-noted 0 "light +the file's only light is its emissive surfaces: .*--env white" -- \
     "$FACET" render "$tmp/glow.gltf" "${lit[@]}" --out "$tmp/glowgltf.exr"
 expect render-gltf 0 "wrote" -- "$FACET" render "$SCENES/gltf_materials.gltf" "${small[@]}" --out "$tmp/gltf.exr"
+# Models through Assimp (Debian's assimp-testmodels; skipped without it): an STL and an FBX;
+# an OBJ written on Windows (map_Kd .\\SpiderTex.jpg) renders with its textures, no warning.
+models=/usr/share/assimp/models
+if [ -d "$models" ]; then
+    expect render-stl 0 "wrote" -- "$FACET" render "$models/STL/Spider_binary.stl" "${small[@]}" --out "$tmp/stl.exr"
+    expect render-fbx 0 "wrote" -- "$FACET" render "$models/FBX/spider.fbx" "${small[@]}" --out "$tmp/fbx.exr"
+    expect render-obj-windows-paths 0 "wrote" -- "$FACET" render "$models/OBJ/spider.obj" "${lit[@]}" --out "$tmp/sp.exr"
+    grep -qi "warning:.*\.jpg" "$tmp/err" && bad "obj-windows-paths-no-texture-warning" ||
+        ok "obj-windows-paths-no-texture-warning"
+else
+    echo "SKIP render-stl render-fbx render-obj-windows-paths: $models is missing (Debian's assimp-testmodels)"
+fi
+# A missing texture is a warning naming it and its material, drawn as a checker; --strict refuses it.
+printf 'newmtl red\nKd 1 0 0\nmap_Kd gone.png\n' >"$tmp/gone.mtl"
+printf 'mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl red\nf 1/1 2/2 3/3\n' >"$tmp/gone.obj"
+expect missing-texture-warns 0 "warning: .*material 'red' \(map_Kd at .*gone\.mtl:3\).*gone\.png.*checker" -- \
+    "$FACET" render "$tmp/gone.obj" "${lit[@]}" --out "$tmp/gone_render.exr"
+expect missing-texture-strict 1 "gone\.png.*--strict" -- "$FACET" render "$tmp/gone.obj" "${small[@]}" --strict \
+    --out "$tmp/gone_render.exr"
 printf 'LookAt 0 0 5 0 0 0 0 1 0\nCamera "perspective"\nWorldBegin\nShape "sphere"\n' >"$tmp/scene.pbrt"
 expect foreign-pbrt 1 "not a facet scene: this looks like a pbrt-v4 file" -- "$FACET" render "$tmp/scene.pbrt" "${small[@]}"
 

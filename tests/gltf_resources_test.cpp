@@ -104,6 +104,38 @@ TEST(GltfResources, FifoFolderAndParentPathAreRefused) {
     EXPECT_NE(warnings.find("pipe.bin': is not a regular file"), std::string::npos) << warnings;
 }
 
+// URIs written on Windows ("sub\\tri.bin", ".\\tex.pfm") name the files with '/' in
+// their place, as an MTL's texture names do; a missing image is a warning and a checker.
+TEST(GltfResources, WindowsUrisAreNormalisedAndMissingImagesWarn) {
+    TempDir d;
+    std::filesystem::create_directories(d.path("sub"));
+    const float p[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    d.write("sub/tri.bin", std::string(reinterpret_cast<const char*>(p), sizeof p));
+    d.write("tex.pfm", std::string("PF\n1 1\n-1.0\n") + std::string(12, '\0'));
+    auto gltf = [&](const std::string& name, const std::string& image) {
+        std::string text = R"({"asset": {"version": "2.0"},
+            "buffers": [{"uri": "sub\\tri.bin", "byteLength": 36}],
+            "bufferViews": [{"buffer": 0, "byteLength": 36}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [0, 0, 0], "max": [1, 1, 0]}],
+            "images": [{"uri": "IMAGE"}], "textures": [{"source": 0}],
+            "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+            "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})";
+        return d.write(name, text.replace(text.find("IMAGE"), 5, image));
+    };
+    const Scene s = load_scene(gltf("win.gltf", ".\\\\tex.pfm"));
+    EXPECT_GE(s.triangle_count(), 1u);
+    ASSERT_EQ(s.textures.size(), 1u);
+    EXPECT_EQ(s.textures[0].path, d.path("tex.pfm"));
+    const Scene missing = load_scene(gltf("missing.gltf", "gone.png"));
+    ASSERT_EQ(missing.textures.size(), 1u) << "the checker";
+    std::string warnings;
+    for (const std::string& w : missing.warnings) warnings += w + "\n";
+    EXPECT_NE(warnings.find("gone.png"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find("checker"), std::string::npos) << warnings;
+}
+
 TEST(GltfResources, LongAcyclicNodeChainIsNotACycle) {
     TempDir d;
     const Scene s = load_scene(node_chain(d, "chain.gltf", 1002));

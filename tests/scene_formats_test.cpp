@@ -171,8 +171,9 @@ TEST(SceneFormats, TungstenSceneIsNamed) {
 
 TEST(SceneFormats, UnknownExtensionNamesTheFormats) {
     TempDir d;
-    expect_error([&] { load_scene(d.write("model.fbx", "Kaydara FBX Binary")); },
-                 {"model.fbx", "unknown scene format '.fbx'"});
+    expect_error([&] { load_scene(d.write("model.abc", "Ogawa")); },
+                 {"model.abc", "unknown scene format '.abc'", ".obj", ".ply", ".gltf", ".stl (STL)", ".fbx (FBX)",
+                  ".dae (Collada)", ".3ds (3DS)"});
 }
 
 // `facet render scenes/`: the error says it is a folder, not "unknown scene format ''".

@@ -212,11 +212,16 @@ TEST(SceneObj, MissingMtlIsWarning) {
 }
 
 // A texture facet reads must exist (docs/textures.md); one it does not read is a warning.
-TEST(SceneObj, MissingTextureIsError) {
+// A missing texture is a warning and a checker (docs/textures.md), an error with --strict.
+TEST(SceneObj, MissingTextureIsWarningOrStrictError) {
     TempDir d;
     d.write("t.mtl", "newmtl a\nKd 1 1 1\nmap_Kd -bm 1 textures/wood.png\n");
     const auto p = d.write("t.obj", "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
-    expect_error([&] { load(p); }, {"t.mtl:3", "wood.png", "material 'a'"});
+    const Scene checker = load(p);
+    EXPECT_EQ(checker.textures.size(), 1u) << "the checker";
+    for (const char* part : {"t.mtl:3", "wood.png", "material 'a'", "checker"})
+        EXPECT_TRUE(test::contains(checker.warnings, part)) << part;
+    expect_error([&] { load_scene(p, "", true); }, {"t.mtl:3", "wood.png", "material 'a'", "--strict"});
     d.write("t.mtl", "newmtl a\nKd 1 1 1\ndecal textures/wood.png\n");
     const Scene s = load(p);
     ASSERT_EQ(s.triangle_count(), 1u);

@@ -467,7 +467,7 @@ TEST(Texture, GltfBoxTexturedRendersWithItsTexture) {
             }
 }
 
-TEST(Texture, JsonTexturesAndMissingImages) {
+TEST(Texture, JsonTexturesAndMissingImagesAreCheckersOrStrictErrors) {
     const fs::path dir = temp_dir("json");
     write_pfm(dir / "grey.pfm", 1, 1, {0.25f, 0.5f, 0.75f});
     auto scene_with = [&](const std::string& textures) {
@@ -483,31 +483,54 @@ TEST(Texture, JsonTexturesAndMissingImages) {
     EXPECT_EQ(ok.materials[0].textures.roughness_channel, 1);
     EXPECT_EQ(ok.textures[1].wrap_u, FC_WRAP_MIRROR);
     EXPECT_EQ(scene_features(ok) & (1u << 9), 1u << 9) << "the textures feature";
+    // A missing or corrupt image is a warning naming it and its material: a colour shows
+    // the magenta and black checker, data (a normal map) is left out; --strict refuses both.
+    auto warnings_of = [](const Scene& s) {
+        std::string all;
+        for (const std::string& w : s.warnings) all += w + "\n";
+        return all;
+    };
+    const Scene missing = load_scene(scene_with(R"({"diffuse": "no_such.png"})"));
+    ASSERT_EQ(missing.textures.size(), 1u);
+    EXPECT_EQ(missing.materials[0].textures.base_color, 0);
+    EXPECT_EQ(missing.textures[0].texels[0], 1.0f) << "magenta";
+    EXPECT_EQ(missing.textures[0].texels[1], 0.0f);
+    std::string w = warnings_of(missing);
+    EXPECT_NE(w.find("no_such.png"), std::string::npos) << w;
+    EXPECT_NE(w.find("wood"), std::string::npos) << w;
+    EXPECT_NE(w.find("checker"), std::string::npos) << w;
     try {
-        load_scene(scene_with(R"({"diffuse": "no_such.png"})"));
-        FAIL() << "a missing image must fail";
+        load_scene(scene_with(R"({"diffuse": "no_such.png"})"), "", true);
+        FAIL() << "a missing image must fail with --strict";
     } catch (const Error& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find("no_such.png"), std::string::npos) << what;
-        EXPECT_NE(what.find("wood"), std::string::npos) << what;
+        EXPECT_NE(what.find("--strict"), std::string::npos) << what;
     }
     std::ofstream(dir / "corrupt.pfm") << "PF\n4 4\n-1.0\nshort";
-    try {
-        load_scene(scene_with(R"({"normal": "corrupt.pfm"})"));
-        FAIL() << "a corrupt image must fail";
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("corrupt.pfm"), std::string::npos) << e.what();
-    }
+    const Scene corrupt = load_scene(scene_with(R"({"normal": "corrupt.pfm"})"));
+    EXPECT_EQ(corrupt.materials[0].textures.normal, -1) << "left out";
+    EXPECT_NE(warnings_of(corrupt).find("corrupt.pfm"), std::string::npos) << warnings_of(corrupt);
     std::ofstream(dir / "m.mtl") << "newmtl cow\nmap_Kd missing.png\n";
     std::ofstream(dir / "m.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl cow\nf 1 2 3\n";
+    w = warnings_of(load_scene((dir / "m.obj").string()));
+    EXPECT_NE(w.find("missing.png"), std::string::npos) << w;
+    EXPECT_NE(w.find("cow"), std::string::npos) << w;
+    EXPECT_NE(w.find("m.mtl:2"), std::string::npos) << w;
     try {
-        load_scene((dir / "m.obj").string());
-        FAIL() << "a missing map_Kd must fail";
+        load_scene((dir / "m.obj").string(), "", true);
+        FAIL() << "a missing map_Kd must fail with --strict";
     } catch (const Error& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find("missing.png"), std::string::npos) << what;
-        EXPECT_NE(what.find("cow"), std::string::npos) << what;
-        EXPECT_NE(what.find("m.mtl:2"), std::string::npos) << what;
+        EXPECT_NE(std::string(e.what()).find("missing.png"), std::string::npos) << e.what();
+    }
+    // A missing material library, only a warning before, is refused too.
+    std::ofstream(dir / "nolib.obj") << "mtllib absent.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    EXPECT_NE(warnings_of(load_scene((dir / "nolib.obj").string())).find("absent.mtl"), std::string::npos);
+    try {
+        load_scene((dir / "nolib.obj").string(), "", true);
+        FAIL() << "a missing MTL must fail with --strict";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("absent.mtl"), std::string::npos) << e.what();
     }
     fs::remove_all(dir);
 }

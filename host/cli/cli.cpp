@@ -381,6 +381,10 @@ int run_cli(int argc, char** argv) {
         "--generic", opt.generic,
         "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
     render->add_flag("--quiet,-q", opt.quiet, "Print only errors and the final summary");
+    render->add_flag("--strict", opt.strict,
+                     "Refuse a scene whose assets are missing or unreadable (a texture, an OBJ's material library) "
+                     "instead of warning and rendering without them (a missing colour texture shows as a magenta "
+                     "and black checker)");
 
     MergeOptions merge;
     CLI::App* merge_cmd = app.add_subcommand(

@@ -47,6 +47,7 @@ struct RenderOptions {
     std::vector<std::string> aov;     // --aov: extra EXR layers (albedo, normal, depth)
     bool quiet = false;
     bool generic = false;  // build every kernel feature, not only the scene's
+    bool strict = false;   // --strict: a missing or unreadable asset is an error, not a warning
 };
 
 struct CompareOptions {

@@ -70,7 +70,7 @@ void warn_slow_first_pass(const RenderOptions& opt, double first_pass_s) {
 int run_render(const RenderOptions& opt) {
     const auto start = std::chrono::steady_clock::now();
     const SigpipeIgnored sigpipe_ignored;  // `facet render ... | head -1` renders on
-    Scene scene = load_scene(opt.scene, opt.camera);
+    Scene scene = load_scene(opt.scene, opt.camera, opt.strict);
     apply_overrides(opt, scene);
     settle_focus(scene);  // a target nearer than anything in view: focus at the image centre (camera_focus.hpp)
     for (const std::string& w : scene.warnings) say(stderr, "facet: warning: {}\n", w);

@@ -53,7 +53,7 @@ std::string foreign_json_kind(const Json& root) {
 void refuse_foreign_scene(const std::string& path, const std::string& kind) {
     throw Error(
         fmt::format("{}: not a facet scene: this looks like {} (facet reads its own JSON scenes, "
-                    "OBJ, PLY and glTF 2.0 files; docs/scene-format.md)",
+                    "OBJ, PLY, glTF 2.0, STL, FBX, Collada, 3DS and other models; docs/scene-format.md)",
                     path, kind));
 }
 

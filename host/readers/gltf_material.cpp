@@ -82,27 +82,10 @@ std::string uri_decode(const std::string& uri) {
     return out;
 }
 
-// An image held in the file (a data URI or a buffer view), decoded through a temporary
-// file: host/film's reader reads files.
+// An image held in the file (a data URI or a buffer view).
 TextureImage embedded_texture(const tinygltf::Image& image, TextureSpace space, const std::string& owner) {
-    if (image.image.empty()) throw Error(fmt::format("texture of {}: the image has no data", owner));
     const std::string ext = image.mimeType == "image/jpeg" ? ".jpg" : ".png";
-    std::string name = (std::filesystem::temp_directory_path() / ("facet-gltf-XXXXXX" + ext)).string();
-    const int fd = mkstemps(name.data(), int(ext.size()));
-    if (fd < 0) throw Error(fmt::format("texture of {}: cannot create a temporary file for the image", owner));
-    close(fd);
-    {
-        std::ofstream out(name, std::ios::binary);
-        out.write(reinterpret_cast<const char*>(image.image.data()), std::streamsize(image.image.size()));
-    }
-    try {
-        TextureImage t = load_texture(name, space, owner);
-        std::remove(name.c_str());
-        return t;
-    } catch (...) {
-        std::remove(name.c_str());
-        throw;
-    }
+    return load_texture_bytes(image.image.data(), image.image.size(), ext, space, owner);
 }
 
 // What the glTF texture `index` of a material slot is bound from.
@@ -136,8 +119,8 @@ int bind_texture(const TextureSlot& slot, const tinygltf::Model& model, const st
     const tinygltf::Image& image = model.images[std::size_t(tex.source)];
     const std::string owner = fmt::format("{} of {} in {} (images[{}])", slot.name, where, file, tex.source);
     if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0)
-        return add_texture(scene, text::join_path(text::directory_of(file), uri_decode(image.uri)), slot.space, owner,
-                           wrap_u, wrap_v);
+        return add_texture(scene, text::join_asset_path(text::directory_of(file), uri_decode(image.uri)), slot.space,
+                           owner, wrap_u, wrap_v);
     // Embedded images: one key per image of this file.
     const std::string key = fmt::format("{}#images[{}]", file, tex.source);
     for (std::size_t i = 0; i < scene.textures.size(); ++i) {

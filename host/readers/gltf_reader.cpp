@@ -88,7 +88,15 @@ bool resource_exists(const std::string& path, void*) {
     return ::stat(path.c_str(), &st) == 0;
 }
 
-std::string resource_path(const std::string& path, void*) { return path; }
+// A URI written on Windows (".\\textures\\wood.png") has its backslashes read as
+// separators when no file has the name as written (text::join_asset_path, as for MTL).
+std::string resource_path(const std::string& path, void*) {
+    struct stat st {};
+    if (path.find('\\') == std::string::npos || ::stat(path.c_str(), &st) == 0) return path;
+    std::string slashed = path;
+    std::replace(slashed.begin(), slashed.end(), '\\', '/');
+    return std::filesystem::path(slashed).lexically_normal().string();
+}
 
 bool read_resource(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
     try {

@@ -1,4 +1,4 @@
-// JSON scene files: meshes (OBJ, PLY and glTF files, chosen by extension), shapes (spheres, quads) and their
+// JSON scene files: meshes (OBJ, PLY, glTF and Assimp files, chosen by extension), shapes (spheres, quads) and their
 // transforms.
 #include <optional>
 #include <string>
@@ -12,6 +12,7 @@
 #include "host/readers/gltf_reader.hpp"
 #include "host/readers/gzip_file.hpp"
 #include "host/readers/obj_reader.hpp"
+#include "host/readers/assimp_reader.hpp"
 #include "host/readers/ply_reader.hpp"
 #include "host/util/wide_vector.hpp"
 
@@ -83,12 +84,14 @@ void JsonLoader::mesh(const Json& v, const std::string& path) {
     mesh_options.transform = options.transform;
     mesh_options.material_override = options.material_override;
     mesh_options.normals = options.normals;
-    if ((ext == ".ply" || ext == ".gltf" || ext == ".glb") && !options.material_map.empty())
+    if ((ext == ".ply" || ext == ".gltf" || ext == ".glb" || is_assimp_format(ext)) && !options.material_map.empty())
         r.fail(JsonReader::key(path, "materials"),
                "maps MTL material names, which only an OBJ has (use 'material' to replace every material)");
     try {
         if (ext == ".ply") {
             load_ply(full, scene, mesh_options);
+        } else if (is_assimp_format(ext)) {
+            load_assimp(full, scene, mesh_options);
         } else if (ext == ".gltf" || ext == ".glb") {
             GltfLoadOptions gltf_options;
             gltf_options.mesh = mesh_options;

@@ -1,6 +1,6 @@
-// load_scene: a JSON scene file, or a bare OBJ, PLY or glTF framed by a default camera
-// (glTF: its own first camera, if it has one) and lit by default when it brings no light of
-// its own (default_lighting.hpp).
+// load_scene: a JSON scene file, or a bare OBJ, PLY, glTF or Assimp model (STL, FBX, ...)
+// framed by a default camera (glTF: its own first camera, if it has one) and lit by default
+// when it brings no light of its own (default_lighting.hpp).
 #include "host/readers/load_scene.hpp"
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "host/error.hpp"
+#include "host/readers/assimp_reader.hpp"
 #include "host/readers/default_lighting.hpp"
 #include "host/readers/foreign_scene.hpp"
 #include "host/readers/gltf_reader.hpp"
@@ -76,25 +77,34 @@ std::string file_head(const std::string& path) {
     return head;
 }
 
+// ".obj, .ply, .stl (STL), ...": the model formats read, for the messages.
+std::string model_formats() {
+    std::string list = ".obj, .ply";
+    for (const AssimpFormat& f : assimp_formats()) list += fmt::format(", {} ({})", f.extension, f.name);
+    return list;
+}
+
 }  // namespace
 
-Scene load_scene(const std::string& path, const std::string& camera_name) {
+Scene load_scene(const std::string& path, const std::string& camera_name, bool strict_assets) {
     Scene scene;
+    scene.strict_assets = strict_assets;
     scene.source_path = path;
     if (std::error_code ec; std::filesystem::is_directory(path, ec))
         throw Error(
-            fmt::format("{}: is a folder, not a scene file (give a .json scene, an .obj or .ply mesh, or a "
-                        ".gltf or .glb file)",
-                        path));
+            fmt::format("{}: is a folder, not a scene file (give a .json scene, a model ({}) or a .gltf or "
+                        ".glb file)",
+                        path, model_formats()));
     const std::string ext = extension_under_gz(path);
     if (!camera_name.empty() && ext != ".gltf" && ext != ".glb")
         throw Error(
             fmt::format("{}: --camera {}: only glTF files name their cameras (use --eye, --target, --up "
                         "and --fov to place the camera)",
                         path, camera_name));
-    if (ext == ".obj" || ext == ".ply") {
+    if (ext == ".obj" || ext == ".ply" || is_assimp_format(ext)) {
         if (ext == ".obj") load_obj(path, scene);
-        else load_ply(path, scene);
+        else if (ext == ".ply") load_ply(path, scene);
+        else load_assimp(path, scene);
         check_geometry(scene, path);
         scene.camera = frame_camera(scene, Framing::Broadside);
         scene.camera_note = framing_note(scene, Framing::Broadside);
@@ -117,8 +127,8 @@ Scene load_scene(const std::string& path, const std::string& camera_name) {
         if (std::string kind = foreign_scene_kind(ext, file_head(path)); !kind.empty())
             refuse_foreign_scene(path, kind);
         throw Error(fmt::format(
-            "{}: unknown scene format '{}' (expected a .json scene, an .obj or .ply mesh, or a .gltf or .glb file)",
-            path, ext));
+            "{}: unknown scene format '{}' (facet reads a .json scene, a .gltf or .glb file, or a model: {})", path,
+            ext, model_formats()));
     }
     sanitise_textures(scene);  // texels clamped to what the materials read them as (texture_validate.hpp)
     build_lights(scene);

@@ -252,6 +252,7 @@ void bind_mtl_textures(const MtlMaterial& mtl, Material& m, Scene& scene) {
         const int wrap = t.clamp ? FC_WRAP_CLAMP : FC_WRAP_REPEAT;
         const int index = add_texture(scene, t.file, data ? TextureSpace::Data : TextureSpace::Color,
                                       fmt::format("material '{}' ({} at {})", mtl.name, s, t.where), wrap, wrap);
+        if (index < 0) continue;  // unreadable data texture: left out with its warning
         if (s == "map_Kd") b.base_color = index;
         else if (s == "map_Ks") b.specular = index;
         else if (s == "map_Ke") b.emission = index;

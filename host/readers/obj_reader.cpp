@@ -37,10 +37,9 @@ std::vector<MtlMaterial> read_mtllibs(const std::string& path, const ObjScan& sc
         const std::string mtl_path = text::join_path(dir, lib.name);
         std::error_code ec;
         if (!std::filesystem::exists(mtl_path, ec)) {  // a non-regular one: read_file says so
-            scene.warnings.push_back(
-                fmt::format("{}:{}: material library '{}' not found (looked for '{}'); its materials "
-                            "get the default material",
-                            path, lib.line, lib.name, mtl_path));
+            asset_warning(scene, fmt::format("{}:{}: material library '{}' not found (looked for '{}'); its "
+                                             "materials get the default material",
+                                             path, lib.line, lib.name, mtl_path));
             continue;
         }
         const std::string mtl_text = text::read_file(mtl_path, "MTL file");

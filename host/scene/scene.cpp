@@ -16,6 +16,11 @@
 
 namespace facet {
 
+void asset_warning(Scene& scene, const std::string& message) {
+    if (scene.strict_assets) throw Error(message + " (--strict: a missing asset is an error)");
+    scene.warnings.push_back(message);
+}
+
 Material default_material() {
     Material m = make_material("lambert");
     m.diffuse = glm::vec3(0.8f);

@@ -100,6 +100,9 @@ struct Scene {
     std::vector<FcTriTexcoords> texcoords;
     std::vector<SharedMesh> meshes;   // instanced meshes, each stored once
     std::vector<Instance> instances;  // their uses
+    // --strict: a missing or unreadable asset (texture, material library) is an error,
+    // not a warning (asset_warning).
+    bool strict_assets = false;
 
     // The world-space triangles (not counting instanced meshes).
     std::size_t triangle_count() const { return shading.size(); }
@@ -108,6 +111,10 @@ struct Scene {
     // The triangles the image shows: the world's plus each instance's mesh.
     std::size_t placed_triangle_count() const;
 };
+
+// A missing or unreadable asset the scene can be rendered without: a warning, or with
+// scene.strict_assets a facet::Error of the same message.
+void asset_warning(Scene& scene, const std::string& message);
 
 // A material with Lambertian defaults (diffuse 0.8 grey, no emission).
 Material default_material();

@@ -2,7 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
 #include <glm/gtc/packing.hpp>
@@ -127,13 +133,60 @@ TextureImage load_texture(const std::string& path, TextureSpace space, const std
     return t;
 }
 
+TextureImage missing_texture() {
+    constexpr int kSize = 8, kCheck = 2;  // 4 x 4 checks over the uv square
+    std::vector<float> rgba(kSize * kSize * 4);
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const float on = ((x / kCheck + y / kCheck) % 2 == 0) ? 1.0f : 0.0f;
+            float* t = &rgba[std::size_t(y * kSize + x) * 4u];
+            t[0] = on, t[1] = 0.0f, t[2] = on, t[3] = 1.0f;
+        }
+    return make_texture(kSize, kSize, std::move(rgba));
+}
+
+TextureImage load_texture_bytes(const void* data, std::size_t size, const std::string& ext, TextureSpace space,
+                                const std::string& owner) {
+    if (size == 0) throw Error(fmt::format("texture of {}: the image has no data", owner));
+    std::string name = (std::filesystem::temp_directory_path() / ("facet-texture-XXXXXX" + ext)).string();
+    const int fd = mkstemps(name.data(), int(ext.size()));
+    if (fd < 0) throw Error(fmt::format("texture of {}: cannot create a temporary file for the image", owner));
+    close(fd);
+    {
+        std::ofstream out(name, std::ios::binary);
+        out.write(static_cast<const char*>(data), std::streamsize(size));
+    }
+    try {
+        TextureImage t = load_texture(name, space, owner);
+        std::remove(name.c_str());
+        t.path.clear();
+        return t;
+    } catch (...) {
+        std::remove(name.c_str());
+        throw;
+    }
+}
+
 int add_texture(Scene& scene, const std::string& path, TextureSpace space, const std::string& owner, int wrap_u,
                 int wrap_v) {
     for (std::size_t i = 0; i < scene.textures.size(); ++i) {
         const TextureImage& t = scene.textures[i];
         if (t.path == path && t.space == space && t.wrap_u == wrap_u && t.wrap_v == wrap_v) return int(i);
     }
-    TextureImage t = load_texture(path, space, owner);
+    TextureImage t;
+    try {
+        t = load_texture(path, space, owner);
+    } catch (const Error& e) {
+        if (scene.strict_assets) throw Error(fmt::format("{} (--strict: a missing asset is an error)", e.what()));
+        if (space == TextureSpace::Data) {  // a checker would be noise as roughness or normals
+            scene.warnings.push_back(fmt::format("{}; the texture is left out", e.what()));
+            return -1;
+        }
+        scene.warnings.push_back(fmt::format("{}; rendered as a magenta and black checker in its place", e.what()));
+        t = missing_texture();
+        t.path = path;  // found again by the loop above: one warning per file
+        t.space = space;
+    }
     t.wrap_u = wrap_u;
     t.wrap_v = wrap_v;
     scene.textures.push_back(std::move(t));

@@ -53,8 +53,20 @@ TextureImage make_texture(int width, int height, std::vector<float> rgba, int wr
 // (e.g. "material 'wood' (map_Kd)") when it is missing, unreadable or corrupt.
 TextureImage load_texture(const std::string& path, TextureSpace space, const std::string& owner);
 
+// An image file held in memory (embedded in a model: glTF's data URIs and buffer views,
+// FBX's aiTexture), decoded through a temporary file named with `ext` (".png", ".jpg"):
+// host/image's reader reads files. Errors as load_texture's; the path is left empty.
+TextureImage load_texture_bytes(const void* data, std::size_t size, const std::string& ext, TextureSpace space,
+                                const std::string& owner);
+
+// What stands in for a texture that cannot be read: a magenta and black checker, 4 x 4
+// checks over the uv square (as other tools show a missing texture).
+TextureImage missing_texture();
+
 // The index in scene.textures of the image at `path` read as `space` with these wrap
-// modes, loading it on first use.
+// modes, loading it on first use. An image that cannot be read (missing, unreadable,
+// corrupt) is a warning naming it and its owner, and stands in as missing_texture() for a
+// colour, or is left out (-1) as data; with scene.strict_assets it is load_texture's error.
 int add_texture(Scene& scene, const std::string& path, TextureSpace space, const std::string& owner,
                 int wrap_u = FC_WRAP_REPEAT, int wrap_v = FC_WRAP_REPEAT);
 
