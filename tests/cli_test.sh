@@ -199,6 +199,19 @@ for ch in albedo.R normal.X depth.Z; do
     grep -aq "$ch" "$tmp/aov.exr" && ok "aov-channel-$ch" || bad "aov-channel-$ch"
 done
 expect aov-reads-back-as-rgb 0 "rmse" -- "$FACET" compare "$tmp/aov.exr" "$tmp/aov.exr"
+# --denoise: the denoised image and its PNG beside the noisy one, which is kept; the denoiser named.
+expect denoise-facet 0 "denoised .*dn\.denoised\.exr and .*dn\.denoised\.png \(facet's denoiser" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 4 --denoise facet --out "$tmp/dn.exr"
+[ -s "$tmp/dn.exr" ] && [ -s "$tmp/dn.png" ] && [ -s "$tmp/dn.denoised.exr" ] && [ -s "$tmp/dn.denoised.png" ] &&
+    grep -aq "facet:denoiser" "$tmp/dn.denoised.exr" && ok "denoise-files" || bad "denoise-files"
+expect denoise-alone-is-auto 0 "denoised .*dn2\.denoised\.exr" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 4 --out "$tmp/dn2.exr" --denoise
+expect denoise-unknown 2 "--denoise: bogus is not a denoiser" -- "$FACET" render "$SCENES/cornell_box.json" --denoise bogus
+expect denoise-one-sample 1 "denoise: needs at least 2 samples" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 1 --denoise facet --out "$tmp/dn1.exr"
+[ -s "$tmp/dn1.exr" ] && ok "denoise-failure-keeps-the-image" || bad "denoise-failure-keeps-the-image"
+expect denoise-not-with-tiles 1 "--denoise: .*--adaptive tiles" -- "$FACET" render "$SCENES/cornell_box.json" \
+    "${small[@]}" --adaptive tiles --noise-threshold 0.1 --denoise facet --out "$tmp/dnt.exr"
 expect aov-unknown 2 "--aov" -- "$FACET" render "$SCENES/cornell_box.json" --aov albedo,motion
 expect aov-needs-exr 1 "--aov: .*aov\.hdr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --aov depth \
     --out "$tmp/aov.hdr"

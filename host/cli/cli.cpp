@@ -365,6 +365,15 @@ int run_cli(int argc, char** argv) {
         ->option_text("LAYERS")
         ->delimiter(',')
         ->check(one_of("a layer", {"albedo", "normal", "depth"}));
+    render
+        ->add_option("--denoise", opt.denoise,
+                     "Also write the image denoised, as NAME.denoised.exr and its PNG beside --out (the noisy image "
+                     "is kept): facet (its own feature-guided denoiser, on the render's device), oidn (Intel Open "
+                     "Image Denoise, when installed), auto (OIDN when found, else facet; the value when --denoise is "
+                     "given alone) or none (default)")
+        ->option_text("auto|facet|oidn|none")
+        ->expected(0, 1)
+        ->check(one_of("a denoiser", {"auto", "facet", "oidn", "none"}));
     render->add_flag(
         "--generic", opt.generic,
         "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
@@ -437,7 +446,10 @@ int run_cli(int argc, char** argv) {
     try {
         if (*devices) return run_devices();
         if (*info) return run_info(info_opt);
-        if (*render) return run_render(opt);
+        if (*render) {
+            if (opt.denoise.empty()) opt.denoise = "auto";  // --denoise alone
+            return run_render(opt);
+        }
         if (*merge_cmd) return run_merge(merge);
         if (*compare) return run_compare(cmp);
         if (*plot_cmd) return run_plot(plot);

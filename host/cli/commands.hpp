@@ -44,6 +44,7 @@ struct RenderOptions {
     float exposure = 0.0f;
     ToneMap tonemap = ToneMap::Clip;  // of the PNG
     std::vector<std::string> aov;     // --aov: extra EXR layers (albedo, normal, depth)
+    std::string denoise = "none";     // --denoise: auto, facet, oidn or none (host/denoise/)
     bool quiet = false;
     bool generic = false;  // build every kernel feature, not only the scene's
 };

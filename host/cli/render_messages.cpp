@@ -126,7 +126,8 @@ int finish_render(const RenderJob& job, const SessionOutcome& outcome, std::vect
         extra.floats.push_back({"facet:mean_spp", float(outcome.mean_spp)});
         extra.ints.push_back({"facet:max_spp", int(*std::max_element(bands.begin(), bands.end()))});
     }
-    const bool written = write_final(job, rgb, outcome.interrupted, extra);
+    bool written = write_final(job, rgb, outcome.interrupted, extra);
+    if (!job.plan.denoised.empty()) written = write_denoised(job, extra) && written;
     film_on_error.disarm();
     ReportSummary summary = summarise(job, outcome, final_spp, rejected);
     fit_convergence(passes, summary);
