@@ -20,7 +20,7 @@ struct DenoiseSettings {
     std::uint32_t patch_radius = 1;     // the colour distance's patch
     std::uint32_t variance_radius = 2;  // the box smoothing the variance estimate
     std::uint32_t guides = FC_DENOISE_GUIDE_ALL;
-    float k_color = 0.7f;        // colour distances in standard deviations (larger: smoother)
+    float k_color = 1.2f;        // colour distances in standard deviations (larger: smoother)
     float sigma_albedo = 0.05f;  // albedo difference (RGB, Euclidean) at one standard deviation
     float sigma_normal = 0.15f;  // normal difference (Euclidean) at one standard deviation
     float sigma_depth = 0.05f;   // depth difference relative to the larger depth
