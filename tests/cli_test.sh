@@ -204,6 +204,9 @@ expect denoise-facet 0 "denoised .*dn\.denoised\.exr and .*dn\.denoised\.png \(f
     "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 4 --denoise facet --out "$tmp/dn.exr"
 [ -s "$tmp/dn.exr" ] && [ -s "$tmp/dn.png" ] && [ -s "$tmp/dn.denoised.exr" ] && [ -s "$tmp/dn.denoised.png" ] &&
     grep -aq "facet:denoiser" "$tmp/dn.denoised.exr" && ok "denoise-files" || bad "denoise-files"
+# The report's last row holds the denoised image's estimated RMSE (column 13), the earlier rows none.
+awk -F, 'NR > 1 { last = $13; if (NR > 2 && prev != "") bad = 1; prev = $13 } END { exit !(last > 0 && !bad) }' \
+    "$tmp/dn.csv" && ok "denoise-report-row" || bad "denoise-report-row"
 expect denoise-alone-is-auto 0 "denoised .*dn2\.denoised\.exr" -- \
     "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 4 --out "$tmp/dn2.exr" --denoise
 expect denoise-unknown 2 "--denoise: bogus is not a denoiser" -- "$FACET" render "$SCENES/cornell_box.json" --denoise bogus
