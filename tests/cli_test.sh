@@ -209,6 +209,11 @@ awk -F, 'NR > 1 { last = $13; if (NR > 2 && prev != "") bad = 1; prev = $13 } EN
     "$tmp/dn.csv" && ok "denoise-report-row" || bad "denoise-report-row"
 expect denoise-alone-is-auto 0 "denoised .*dn2\.denoised\.exr" -- \
     "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 4 --out "$tmp/dn2.exr" --denoise
+# OIDN is loaded at run time: a library that cannot be loaded is named, the noisy image still written.
+expect denoise-oidn-missing 1 "nope\.so: cannot load Intel Open Image Denoise" -- "$FACET" render \
+    "$SCENES/cornell_box.json" "${small[@]}" --denoise oidn --oidn "$tmp/nope.so" --out "$tmp/dno.exr"
+[ -s "$tmp/dno.exr" ] && [ ! -e "$tmp/dno.denoised.exr" ] && ok "denoise-oidn-missing-keeps-the-image" ||
+    bad "denoise-oidn-missing-keeps-the-image"
 expect denoise-unknown 2 "--denoise: bogus is not a denoiser" -- "$FACET" render "$SCENES/cornell_box.json" --denoise bogus
 expect denoise-one-sample 1 "denoise: needs at least 2 samples" -- \
     "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 1 --denoise facet --out "$tmp/dn1.exr"

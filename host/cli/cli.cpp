@@ -374,6 +374,12 @@ int run_cli(int argc, char** argv) {
         ->option_text("auto|facet|oidn|none")
         ->expected(0, 1)
         ->check(one_of("a denoiser", {"auto", "facet", "oidn", "none"}));
+    render
+        ->add_option("--oidn", opt.oidn,
+                     "The Intel Open Image Denoise library for --denoise oidn or auto (default: $FACET_OIDN, else "
+                     "the one of an installed pyoidn (pip install pyoidn), else libOpenImageDenoise.so.2 on the "
+                     "loader's path)")
+        ->option_text("LIBRARY");
     render->add_flag(
         "--generic", opt.generic,
         "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");

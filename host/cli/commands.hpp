@@ -45,6 +45,7 @@ struct RenderOptions {
     ToneMap tonemap = ToneMap::Clip;  // of the PNG
     std::vector<std::string> aov;     // --aov: extra EXR layers (albedo, normal, depth)
     std::string denoise = "none";     // --denoise: auto, facet, oidn or none (host/denoise/)
+    std::string oidn;                 // --oidn: libOpenImageDenoise.so.2 to load (denoise/oidn.hpp)
     bool quiet = false;
     bool generic = false;  // build every kernel feature, not only the scene's
 };

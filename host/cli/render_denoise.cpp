@@ -1,39 +1,73 @@
-// `facet render --denoise`: the film at the end denoised and written beside the image,
-// its error estimated from the half-images (denoise/denoise_error.hpp) and measured
-// against --reference.
+// `facet render --denoise`: the film at the end denoised (OIDN or facet's denoiser, as
+// asked and found) and written beside the image, its error estimated from the
+// half-images (denoise/denoise_error.hpp) and measured against --reference.
 #include <fmt/format.h>
 
 #include "host/cli/render_parts.hpp"
 #include "host/denoise/denoise_error.hpp"
+#include "host/denoise/oidn.hpp"
 #include "host/error.hpp"
 #include "host/util/console.hpp"
 
 namespace facet {
+namespace {
+
+struct Denoised {
+    DenoisedImage image;
+    std::string denoiser;  // "facet" or "oidn"
+    std::string words;     // for stdout
+};
+
+// OIDN for oidn, and for auto when it is found (facet's denoiser when it fails there);
+// facet's denoiser otherwise.
+Denoised run_denoiser(const RenderJob& job, const FilmState& film, const FilmHalves& halves) {
+    const std::string& asked = job.opt.denoise;
+    if (asked != "facet") {
+        std::string looked;
+        const std::string library = find_oidn(job.opt.oidn, &looked);
+        if (library.empty() && asked == "oidn")
+            throw Error(
+                fmt::format("--denoise oidn: Intel Open Image Denoise not found (looked at {}); give --oidn LIBRARY or "
+                            "`pip install pyoidn`",
+                            looked));
+        if (!library.empty() && job.session.aovs()) {
+            try {
+                return {denoise_oidn(library, std::uint32_t(film.width), std::uint32_t(film.height), halves,
+                                     *job.session.aovs()),
+                        "oidn", fmt::format("Intel Open Image Denoise, {}", library)};
+            } catch (const Error& e) {
+                if (asked == "oidn") throw;
+                say(stderr, "facet: warning: {}; denoising with facet's denoiser instead\n", e.what());
+            }
+        }
+    }
+    return {job.session.denoised(), "facet", "facet's denoiser"};
+}
+
+}  // namespace
 
 std::string write_denoised(const RenderJob& job, PassRecord& row, const ImageMetadata& extra) {
     try {
-        if (job.opt.denoise == "oidn")
-            throw Error("--denoise oidn: Intel Open Image Denoise is not supported by this build");
-        const DenoisedImage d = job.session.denoised();
         const FilmState film = job.session.film();
         const FilmHalves halves =
             film_halves(film.sums, std::size_t(film.width) * std::size_t(film.height), film.samples);
-        row.denoised_estimate = estimate_denoised_error(halves, d);
-        if (job.reference) row.denoised_reference = compare_images(d.rgb, job.reference->rgb, job.opt.reference);
+        const Denoised d = run_denoiser(job, film, halves);
+        row.denoised_estimate = estimate_denoised_error(halves, d.image);
+        if (job.reference) row.denoised_reference = compare_images(d.image.rgb, job.reference->rgb, job.opt.reference);
         ImageMetadata meta = extra;
-        meta.strings.push_back({"facet:denoiser", "facet"});
+        meta.strings.push_back({"facet:denoiser", d.denoiser});
         meta.floats.push_back({"facet:denoised_rmse_estimate", float(row.denoised_estimate->rmse)});
-        write_image(job, job.plan.denoised, d.rgb, true, meta);
+        write_image(job, job.plan.denoised, d.image.rgb, true, meta);
         if (!job.opt.quiet) {
             std::string against;
             if (row.denoised_reference)
                 against = fmt::format("; against the reference {:.4g}, noisy {:.4g}", row.denoised_reference->rmse,
                                       row.reference ? row.reference->rmse : std::nan(""));
-            say(stdout, "denoised {} and {} (facet's denoiser, {:.2f} s; RMSE ~{:.4g} estimated, noisy ~{:.4g}{})\n",
-                job.plan.denoised, job.plan.denoised_png, d.seconds, row.denoised_estimate->rmse, row.estimate.rmse,
-                against);
+            say(stdout, "denoised {} and {} ({}, {:.2f} s; RMSE ~{:.4g} estimated, noisy ~{:.4g}{})\n",
+                job.plan.denoised, job.plan.denoised_png, d.words, d.image.seconds, row.denoised_estimate->rmse,
+                row.estimate.rmse, against);
         }
-        return "facet";
+        return d.denoiser;
     } catch (const Error& e) {
         say(stderr, "facet: error: {}\n", e.what());
         return "";
