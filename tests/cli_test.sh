@@ -220,6 +220,21 @@ expect denoise-one-sample 1 "denoise: needs at least 2 samples" -- \
 [ -s "$tmp/dn1.exr" ] && ok "denoise-failure-keeps-the-image" || bad "denoise-failure-keeps-the-image"
 expect denoise-not-with-tiles 1 "--denoise: .*--adaptive tiles" -- "$FACET" render "$SCENES/cornell_box.json" \
     "${small[@]}" --adaptive tiles --noise-threshold 0.1 --denoise facet --out "$tmp/dnt.exr"
+# facet denoise IMAGE.exr --film FILM: the EXR's AOV layers and the film's half-images.
+"$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 4 --quiet --aov albedo,normal,depth \
+    --film "$tmp/dsub.film" --out "$tmp/dsub.exr" >/dev/null 2>&1
+expect denoise-command 0 "estimate rmse .* denoised, .* noisy" -- \
+    "$FACET" denoise "$tmp/dsub.exr" --film "$tmp/dsub.film" --denoiser facet
+[ -s "$tmp/dsub.denoised.exr" ] && [ -s "$tmp/dsub.denoised.png" ] && ok "denoise-command-files" ||
+    bad "denoise-command-files"
+expect denoise-command-facet-needs-film 1 "dsub\.exr: facet's denoiser reads .*give --film" -- \
+    "$FACET" denoise "$tmp/dsub.exr" --denoiser facet
+expect denoise-command-no-layers 1 "cb\.exr: has no albedo layer .*--aov" -- \
+    "$FACET" denoise "$tmp/cb.exr" --film "$tmp/dsub.film"
+"$FACET" render "$SCENES/cornell_box.json" --width 48 --height 48 --spp 1 --quiet --aov albedo,normal \
+    --out "$tmp/aov48.exr" >/dev/null 2>&1
+expect denoise-command-film-size 1 "--film .*: is 24x24, the image .* is 48x48" -- \
+    "$FACET" denoise "$tmp/aov48.exr" --film "$tmp/dsub.film"
 expect aov-unknown 2 "--aov" -- "$FACET" render "$SCENES/cornell_box.json" --aov albedo,motion
 expect aov-needs-exr 1 "--aov: .*aov\.hdr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --aov depth \
     --out "$tmp/aov.hdr"

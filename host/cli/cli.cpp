@@ -385,6 +385,27 @@ int run_cli(int argc, char** argv) {
         "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
     render->add_flag("--quiet,-q", opt.quiet, "Print only errors and the final summary");
 
+    DenoiseOptions denoise;
+    CLI::App* denoise_cmd =
+        app.add_subcommand("denoise", "Denoise an EXR rendered with --aov albedo,normal[,depth] (docs/denoising.md)");
+    denoise_cmd->add_option("image", denoise.image, "The EXR, with its albedo and normal layers")->required();
+    denoise_cmd->add_option("--film", denoise.film,
+                            "The render's film (--film): its two half-images, which facet's denoiser and the error "
+                            "estimate need");
+    denoise_cmd->add_option("--out", denoise.out,
+                            "The denoised image (default: IMAGE's name with .denoised; the PNG is written beside it)");
+    denoise_cmd
+        ->add_option("--denoiser", denoise.denoiser,
+                     "facet, oidn or auto (default: OIDN when found, else facet's denoiser)")
+        ->option_text("auto|facet|oidn")
+        ->check(one_of("a denoiser", {"auto", "facet", "oidn"}));
+    denoise_cmd->add_option("--oidn", denoise.oidn, "The Intel Open Image Denoise library (as facet render --oidn)")
+        ->option_text("LIBRARY");
+    denoise_cmd->add_option("--device", denoise.device, "The OpenCL device of facet's denoiser (as facet render)");
+    denoise_cmd->add_option("--exposure", denoise.exposure, "Exposure of the PNG in stops, -30 to 30 (default: 0)")
+        ->option_text("STOPS")
+        ->check(kFinite & between(-30.0, 30.0));
+
     MergeOptions merge;
     CLI::App* merge_cmd = app.add_subcommand(
         "merge", "Add up films of one scene holding disjoint sample ranges (docs/film-format.md) into one image");
@@ -457,6 +478,7 @@ int run_cli(int argc, char** argv) {
             return run_render(opt);
         }
         if (*merge_cmd) return run_merge(merge);
+        if (*denoise_cmd) return run_denoise(denoise);
         if (*compare) return run_compare(cmp);
         if (*plot_cmd) return run_plot(plot);
         if (*sky_cmd) return run_sky(sky);

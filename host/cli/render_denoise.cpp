@@ -5,53 +5,22 @@
 
 #include "host/cli/render_parts.hpp"
 #include "host/denoise/denoise_error.hpp"
-#include "host/denoise/oidn.hpp"
+#include "host/denoise/denoise_choice.hpp"
 #include "host/error.hpp"
 #include "host/util/console.hpp"
 
 namespace facet {
-namespace {
-
-struct Denoised {
-    DenoisedImage image;
-    std::string denoiser;  // "facet" or "oidn"
-    std::string words;     // for stdout
-};
-
-// OIDN for oidn, and for auto when it is found (facet's denoiser when it fails there);
-// facet's denoiser otherwise.
-Denoised run_denoiser(const RenderJob& job, const FilmState& film, const FilmHalves& halves) {
-    const std::string& asked = job.opt.denoise;
-    if (asked != "facet") {
-        std::string looked;
-        const std::string library = find_oidn(job.opt.oidn, &looked);
-        if (library.empty() && asked == "oidn")
-            throw Error(
-                fmt::format("--denoise oidn: Intel Open Image Denoise not found (looked at {}); give --oidn LIBRARY or "
-                            "`pip install pyoidn`",
-                            looked));
-        if (!library.empty() && job.session.aovs()) {
-            try {
-                return {denoise_oidn(library, std::uint32_t(film.width), std::uint32_t(film.height), halves,
-                                     *job.session.aovs()),
-                        "oidn", fmt::format("Intel Open Image Denoise, {}", library)};
-            } catch (const Error& e) {
-                if (asked == "oidn") throw;
-                say(stderr, "facet: warning: {}; denoising with facet's denoiser instead\n", e.what());
-            }
-        }
-    }
-    return {job.session.denoised(), "facet", "facet's denoiser"};
-}
-
-}  // namespace
 
 std::string write_denoised(const RenderJob& job, PassRecord& row, const ImageMetadata& extra) {
     try {
         const FilmState film = job.session.film();
         const FilmHalves halves =
             film_halves(film.sums, std::size_t(film.width) * std::size_t(film.height), film.samples);
-        const Denoised d = run_denoiser(job, film, halves);
+        if (!job.session.aovs()) throw Error("denoise: the render has no AOVs");
+        const DenoiseRun d = run_denoiser(
+            job.opt.denoise, job.opt.oidn, std::uint32_t(film.width), std::uint32_t(film.height), halves,
+            *job.session.aovs(), [&] { return job.session.denoised(); },
+            [](const std::string& w) { say(stderr, "facet: warning: {}\n", w); });
         row.denoised_estimate = estimate_denoised_error(halves, d.image);
         if (job.reference) row.denoised_reference = compare_images(d.image.rgb, job.reference->rgb, job.opt.reference);
         ImageMetadata meta = extra;
