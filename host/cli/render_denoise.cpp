@@ -11,7 +11,7 @@
 
 namespace facet {
 
-std::string write_denoised(const RenderJob& job, PassRecord& row, const ImageMetadata& extra) {
+std::string write_denoised(const RenderJob& job, PassRecord& row, const ImageMetadata& extra, bool announce) {
     try {
         const FilmState film = job.session.film();
         const FilmHalves halves =
@@ -27,7 +27,7 @@ std::string write_denoised(const RenderJob& job, PassRecord& row, const ImageMet
         meta.strings.push_back({"facet:denoiser", d.denoiser});
         meta.floats.push_back({"facet:denoised_rmse_estimate", float(row.denoised_estimate->rmse)});
         write_image(job, job.plan.denoised, d.image.rgb, true, meta);
-        if (!job.opt.quiet) {
+        if (announce && !job.opt.quiet) {
             std::string against;
             if (row.denoised_reference)
                 against = fmt::format("; against the reference {:.4g}, noisy {:.4g}", row.denoised_reference->rmse,

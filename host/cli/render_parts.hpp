@@ -52,7 +52,9 @@ bool write_final(const RenderJob& job, const std::vector<float>& rgb, bool inter
 // its metadata and on stdout, and its error (estimated; against --reference when given)
 // in `row`, the report's last row. Returns the denoiser that ran; empty, with the message
 // printed, when it could not be made or written (the noisy image is written already).
-std::string write_denoised(const RenderJob& job, PassRecord& row, const ImageMetadata& extra = {});
+// `announce`: say it on stdout (not for snapshots).
+std::string write_denoised(const RenderJob& job, PassRecord& row, const ImageMetadata& extra = {},
+                           bool announce = true);
 // At rank 0, when the job lost a rank: the image and film of the last pass end, the
 // samples missing and how to add them; the exit status.
 int write_on_rank_lost(const RenderJob& job, const DeviceGroupWatch::Lost& lost);

@@ -1,6 +1,5 @@
 #include "host/denoise/denoise_error.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -28,8 +27,10 @@ ErrorMetrics estimate_denoised_error(const FilmHalves& halves, const DenoisedIma
         m.mse += mse;
         m.relmse += mse / (f * f);
     }
-    m.mse = std::max(m.mse / double(size), 0.0);
-    m.relmse = std::max(m.relmse / double(size), 0.0);
+    m.mse /= double(size);
+    m.relmse /= double(size);
+    // Negative: the halves were not independent (docs/denoising.md), not a perfect image
+    if (!(m.mse > 0.0)) m.mse = m.relmse = std::numeric_limits<double>::quiet_NaN();
     m.rmse = std::sqrt(m.mse);
     return m;
 }

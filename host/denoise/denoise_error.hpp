@@ -9,7 +9,8 @@
 //     mse_hat(F) = 1/2 [(D(a) - b)^2 - Var(b) + (D(b) - a)^2 - Var(a)] - (D(a) - D(b))^2 / 4
 // is unbiased for the denoised image's MSE, pixel by pixel, as long as each denoised half
 // is independent of the other half. For D = identity it is the noisy image's estimate
-// (error_metrics.hpp). A pixel's term can be negative; the image's mean is clamped at 0.
+// (error_metrics.hpp). A pixel's term can be negative; an image mean that is not positive
+// is NaN (unknown): it means the halves were not independent (docs/denoising.md).
 #pragma once
 
 #include "host/denoise/denoiser.hpp"
