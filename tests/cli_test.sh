@@ -238,6 +238,42 @@ for ch in albedo.R normal.X depth.Z; do
     grep -aq "$ch" "$tmp/aov.exr" && ok "aov-channel-$ch" || bad "aov-channel-$ch"
 done
 expect aov-reads-back-as-rgb 0 "rmse" -- "$FACET" compare "$tmp/aov.exr" "$tmp/aov.exr"
+# --denoise: the denoised image and its PNG beside the noisy one, which is kept; the denoiser named.
+expect denoise-facet 0 "denoised .*dn\.denoised\.exr and .*dn\.denoised\.png \(facet's denoiser" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 4 --denoise facet --out "$tmp/dn.exr"
+[ -s "$tmp/dn.exr" ] && [ -s "$tmp/dn.png" ] && [ -s "$tmp/dn.denoised.exr" ] && [ -s "$tmp/dn.denoised.png" ] &&
+    grep -aq "facet:denoiser" "$tmp/dn.denoised.exr" && ok "denoise-files" || bad "denoise-files"
+# The report's last row holds the denoised image's estimated RMSE (column 13), the earlier rows none.
+awk -F, 'NR > 1 { last = $13; if (NR > 2 && prev != "") bad = 1; prev = $13 } END { exit !(last > 0 && !bad) }' \
+    "$tmp/dn.csv" && ok "denoise-report-row" || bad "denoise-report-row"
+expect denoise-alone-is-auto 0 "denoised .*dn2\.denoised\.exr" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 4 --out "$tmp/dn2.exr" --denoise
+# OIDN is loaded at run time: a library that cannot be loaded is named, the noisy image still written.
+expect denoise-oidn-missing 1 "nope\.so: cannot load Intel Open Image Denoise" -- "$FACET" render \
+    "$SCENES/cornell_box.json" "${small[@]}" --denoise oidn --oidn "$tmp/nope.so" --out "$tmp/dno.exr"
+[ -s "$tmp/dno.exr" ] && [ ! -e "$tmp/dno.denoised.exr" ] && ok "denoise-oidn-missing-keeps-the-image" ||
+    bad "denoise-oidn-missing-keeps-the-image"
+expect denoise-unknown 2 "--denoise: bogus is not a denoiser" -- "$FACET" render "$SCENES/cornell_box.json" --denoise bogus
+expect denoise-one-sample 1 "denoise: needs at least 2 samples" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 1 --denoise facet --out "$tmp/dn1.exr"
+[ -s "$tmp/dn1.exr" ] && ok "denoise-failure-keeps-the-image" || bad "denoise-failure-keeps-the-image"
+expect denoise-not-with-tiles 1 "--denoise: .*--adaptive tiles" -- "$FACET" render "$SCENES/cornell_box.json" \
+    "${small[@]}" --adaptive tiles --noise-threshold 0.1 --denoise facet --out "$tmp/dnt.exr"
+# facet denoise IMAGE.exr --film FILM: the EXR's AOV layers and the film's half-images.
+"$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 4 --quiet --aov albedo,normal,depth \
+    --film "$tmp/dsub.film" --out "$tmp/dsub.exr" >/dev/null 2>&1
+expect denoise-command 0 "estimate rmse .* denoised, .* noisy" -- \
+    "$FACET" denoise "$tmp/dsub.exr" --film "$tmp/dsub.film" --denoiser facet
+[ -s "$tmp/dsub.denoised.exr" ] && [ -s "$tmp/dsub.denoised.png" ] && ok "denoise-command-files" ||
+    bad "denoise-command-files"
+expect denoise-command-facet-needs-film 1 "dsub\.exr: facet's denoiser reads .*give --film" -- \
+    "$FACET" denoise "$tmp/dsub.exr" --denoiser facet
+expect denoise-command-no-layers 1 "cb\.exr: has no albedo layer .*--aov" -- \
+    "$FACET" denoise "$tmp/cb.exr" --film "$tmp/dsub.film"
+"$FACET" render "$SCENES/cornell_box.json" --width 48 --height 48 --spp 1 --quiet --aov albedo,normal \
+    --out "$tmp/aov48.exr" >/dev/null 2>&1
+expect denoise-command-film-size 1 "--film .*: is 24x24, the image .* is 48x48" -- \
+    "$FACET" denoise "$tmp/aov48.exr" --film "$tmp/dsub.film"
 expect aov-unknown 2 "--aov" -- "$FACET" render "$SCENES/cornell_box.json" --aov albedo,motion
 expect aov-needs-exr 1 "--aov: .*aov\.hdr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --aov depth \
     --out "$tmp/aov.hdr"

@@ -185,6 +185,8 @@ TEST(Report, CsvRoundTripAndPlot) {
         passes[i].estimate = ErrorMetrics{0.25, 0.5, 0.1};
     }
     passes[2].reference = ErrorMetrics{0.04, 0.2, 0.3};
+    passes[2].denoised_estimate = ErrorMetrics{0.01, 0.1, 0.0};
+    passes[2].denoised_reference = ErrorMetrics{0.0121, 0.11, 0.0};
     std::string csv = (dir / "r.csv").string();
     write_report_csv(csv, passes);
     std::vector<PassRecord> back = read_report_csv(csv);
@@ -193,6 +195,10 @@ TEST(Report, CsvRoundTripAndPlot) {
     EXPECT_FALSE(back[0].reference.has_value());
     ASSERT_TRUE(back[2].reference.has_value());
     EXPECT_DOUBLE_EQ(back[2].reference->rmse, 0.2);
+    EXPECT_FALSE(back[1].denoised_estimate.has_value());
+    ASSERT_TRUE(back[2].denoised_estimate.has_value() && back[2].denoised_reference.has_value());
+    EXPECT_DOUBLE_EQ(back[2].denoised_estimate->rmse, 0.1);
+    EXPECT_DOUBLE_EQ(back[2].denoised_reference->rmse, 0.11);
     write_error_plot_svg((dir / "r.svg").string(), back, "test");
     EXPECT_GT(fs::file_size(dir / "r.svg"), 500u);
     std::ofstream(dir / "bad.csv") << "pass,spp,wall_s\n1,x,2\n";

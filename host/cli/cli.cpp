@@ -377,6 +377,21 @@ int run_cli(int argc, char** argv) {
         ->option_text("LAYERS")
         ->delimiter(',')
         ->check(one_of("a layer", {"albedo", "normal", "depth"}));
+    render
+        ->add_option("--denoise", opt.denoise,
+                     "Also write the image denoised, as NAME.denoised.exr and its PNG beside --out (the noisy image "
+                     "is kept): facet (its own feature-guided denoiser, on the render's device), oidn (Intel Open "
+                     "Image Denoise, when installed), auto (OIDN when found, else facet; the value when --denoise is "
+                     "given alone) or none (default)")
+        ->option_text("auto|facet|oidn|none")
+        ->expected(0, 1)
+        ->check(one_of("a denoiser", {"auto", "facet", "oidn", "none"}));
+    render
+        ->add_option("--oidn", opt.oidn,
+                     "The Intel Open Image Denoise library for --denoise oidn or auto (default: $FACET_OIDN, else "
+                     "the one of an installed pyoidn (pip install pyoidn), else libOpenImageDenoise.so.2 on the "
+                     "loader's path)")
+        ->option_text("LIBRARY");
     render->add_flag(
         "--generic", opt.generic,
         "Build the generic program (every feature, chosen at run time) instead of one specialised to the scene");
@@ -385,6 +400,27 @@ int run_cli(int argc, char** argv) {
                      "Refuse a scene whose assets are missing or unreadable (a texture, an OBJ's material library) "
                      "instead of warning and rendering without them (a missing colour texture shows as a magenta "
                      "and black checker)");
+
+    DenoiseOptions denoise;
+    CLI::App* denoise_cmd =
+        app.add_subcommand("denoise", "Denoise an EXR rendered with --aov albedo,normal[,depth] (docs/denoising.md)");
+    denoise_cmd->add_option("image", denoise.image, "The EXR, with its albedo and normal layers")->required();
+    denoise_cmd->add_option("--film", denoise.film,
+                            "The render's film (--film): its two half-images, which facet's denoiser and the error "
+                            "estimate need");
+    denoise_cmd->add_option("--out", denoise.out,
+                            "The denoised image (default: IMAGE's name with .denoised; the PNG is written beside it)");
+    denoise_cmd
+        ->add_option("--denoiser", denoise.denoiser,
+                     "facet, oidn or auto (default: OIDN when found, else facet's denoiser)")
+        ->option_text("auto|facet|oidn")
+        ->check(one_of("a denoiser", {"auto", "facet", "oidn"}));
+    denoise_cmd->add_option("--oidn", denoise.oidn, "The Intel Open Image Denoise library (as facet render --oidn)")
+        ->option_text("LIBRARY");
+    denoise_cmd->add_option("--device", denoise.device, "The OpenCL device of facet's denoiser (as facet render)");
+    denoise_cmd->add_option("--exposure", denoise.exposure, "Exposure of the PNG in stops, -30 to 30 (default: 0)")
+        ->option_text("STOPS")
+        ->check(kFinite & between(-30.0, 30.0));
 
     MergeOptions merge;
     CLI::App* merge_cmd = app.add_subcommand(
@@ -453,8 +489,12 @@ int run_cli(int argc, char** argv) {
     try {
         if (*devices) return run_devices();
         if (*info) return run_info(info_opt);
-        if (*render) return run_render(opt);
+        if (*render) {
+            if (opt.denoise.empty()) opt.denoise = "auto";  // --denoise alone
+            return run_render(opt);
+        }
         if (*merge_cmd) return run_merge(merge);
+        if (*denoise_cmd) return run_denoise(denoise);
         if (*compare) return run_compare(cmp);
         if (*plot_cmd) return run_plot(plot);
         if (*sky_cmd) return run_sky(sky);

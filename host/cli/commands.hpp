@@ -45,6 +45,8 @@ struct RenderOptions {
     float exposure = 0.0f;
     ToneMap tonemap = ToneMap::Clip;  // of the PNG
     std::vector<std::string> aov;     // --aov: extra EXR layers (albedo, normal, depth)
+    std::string denoise = "none";     // --denoise: auto, facet, oidn or none (host/denoise/)
+    std::string oidn;                 // --oidn: libOpenImageDenoise.so.2 to load (denoise/oidn.hpp)
     bool quiet = false;
     bool generic = false;  // build every kernel feature, not only the scene's
     bool strict = false;   // --strict: a missing or unreadable asset is an error, not a warning
@@ -81,10 +83,23 @@ struct MergeOptions {
     float exposure = 0.0f;
 };
 
+// `facet denoise IMAGE.exr`: an EXR with the albedo and normal layers (--aov), and its film
+// for the half-images.
+struct DenoiseOptions {
+    std::string image;
+    std::string film;               // --film: the render's film (the half-images)
+    std::string out;                // default: IMAGE's stem + ".denoised.exr"
+    std::string denoiser = "auto";  // --denoiser: auto, facet or oidn
+    std::string oidn;               // --oidn LIBRARY
+    std::string device;             // --device, for facet's denoiser
+    float exposure = 0.0f;
+};
+
 int run_devices();
 int run_info(const InfoOptions& opt);
 int run_render(const RenderOptions& opt);
 int run_merge(const MergeOptions& opt);
+int run_denoise(const DenoiseOptions& opt);
 int run_compare(const CompareOptions& opt);
 int run_plot(const PlotOptions& opt);
 int run_sky(const SkyOptions& opt);

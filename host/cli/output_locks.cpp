@@ -116,6 +116,7 @@ OutputLocks lock_outputs(const OutputPlan& plan) {
         }
     locks.lock(plan.image, "--out");
     locks.lock(plan.report, "--report");
+    if (!plan.denoised.empty()) locks.lock(plan.denoised, "the denoised image beside --out");
     locks.lock(plan.film, plan.film_requested ? "--film" : "the film beside --out");
     return locks;
 }

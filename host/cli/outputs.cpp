@@ -70,6 +70,11 @@ OutputPlan plan_outputs(const RenderOptions& opt) {
     plan.report_svg = replace_extension(plan.report, ".svg");
     plan.film_requested = !opt.film.empty();
     plan.film = plan.film_requested ? opt.film : implicit_film(plan.image, opt.resume);
+    if (opt.denoise != "none") {
+        const fs::path img(plan.image);
+        plan.denoised = (img.parent_path() / img.stem()).string() + ".denoised" + img.extension().string();
+        plan.denoised_png = replace_extension(plan.denoised, ".png");
+    }
     return plan;
 }
 
@@ -79,12 +84,16 @@ void check_outputs(const OutputPlan& plan, const RenderOptions& opt) {
     std::string why;
     if (!can_write_float_image(plan.image, &why)) throw Error(fmt::format("--out {}: {}", plan.image, why));
     const std::string film_label = plan.film_requested ? "--film" : "the film beside --out";
-    const std::vector<Named> outputs = {{"--out", plan.image},
-                                        {"the PNG beside --out", plan.png},
-                                        {"--report", plan.report},
-                                        {"the .json summary beside --report", plan.report_json},
-                                        {"the .svg plot beside --report", plan.report_svg},
-                                        {film_label, plan.film}};
+    std::vector<Named> outputs = {{"--out", plan.image},
+                                  {"the PNG beside --out", plan.png},
+                                  {"--report", plan.report},
+                                  {"the .json summary beside --report", plan.report_json},
+                                  {"the .svg plot beside --report", plan.report_svg}};
+    if (!plan.denoised.empty()) {
+        outputs.push_back({"the denoised image beside --out", plan.denoised});
+        outputs.push_back({"the denoised PNG beside --out", plan.denoised_png});
+    }
+    outputs.push_back({film_label, plan.film});  // last (the --resume exception below)
     std::vector<Named> inputs = {{"the scene", opt.scene}};
     if (!opt.reference.empty()) inputs.push_back({"--reference", opt.reference});
     if (!opt.resume.empty()) inputs.push_back({"--resume", opt.resume});

@@ -18,6 +18,8 @@ struct OutputPlan {
     std::string report_json;      // summary beside the CSV
     std::string report_svg;       // plot beside the CSV
     std::string film;             // --film, else beside --out, never over an older film
+    std::string denoised;         // --denoise: NAME.denoised.EXT beside --out ("" without)
+    std::string denoised_png;     // its PNG
     bool film_requested = false;  // --film given: written at every end, not only on interrupt or failure
 };
 

@@ -1,9 +1,9 @@
 // `facet render SCENE`: load, render through the render session (render/session.hpp:
 // devices, the progressive driver and its stop rules, the tile mode, MPI ranks), write.
 // After every pass: the progress line, the error against a reference and the CSV report;
-// snapshots on request (best effort). On SIGINT, SIGTERM or SIGHUP the current pass ends
-// (the first is dropped) and everything is written (exit 130); SIGPIPE is ignored
-// (cli/stop_signals.hpp, util/console.hpp). Files and messages: cli/render_parts.hpp.
+// snapshots on request (best effort; denoised too with --denoise). On SIGINT, SIGTERM or
+// SIGHUP the current pass ends (the first is dropped) and everything is written (exit
+// 130); SIGPIPE is ignored (cli/stop_signals.hpp, util/console.hpp). Files and messages: cli/render_parts.hpp.
 #include <fmt/format.h>
 
 #include "host/cli/commands.hpp"
@@ -42,6 +42,8 @@ public:
             last_snapshot_ = p.wall_s;
             try {
                 write_image(job_, job_.plan.image, job_.session.image());
+                // With --denoise the snapshot is denoised too, and its row gets the denoised error
+                if (!job_.plan.denoised.empty() && p.spp >= 2) write_denoised(job_, passes_.back(), {}, false);
             } catch (const Error& e) {
                 say(stderr, "facet: warning: snapshot not written ({}); rendering goes on\n", e.what());
             }

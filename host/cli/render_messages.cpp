@@ -126,9 +126,15 @@ int finish_render(const RenderJob& job, const SessionOutcome& outcome, std::vect
         extra.floats.push_back({"facet:mean_spp", float(outcome.mean_spp)});
         extra.ints.push_back({"facet:max_spp", int(*std::max_element(bands.begin(), bands.end()))});
     }
-    const bool written = write_final(job, rgb, outcome.interrupted, extra);
+    bool written = write_final(job, rgb, outcome.interrupted, extra);
+    std::string denoiser;
+    if (!job.plan.denoised.empty() && !passes.empty()) {
+        denoiser = write_denoised(job, passes.back(), extra);
+        written = written && !denoiser.empty();
+    }
     film_on_error.disarm();
     ReportSummary summary = summarise(job, outcome, final_spp, rejected);
+    summary.denoiser = denoiser;
     fit_convergence(passes, summary);
     write_report_csv(job.plan.report, passes);
     write_report_json(job.plan.report_json, summary, passes);

@@ -48,6 +48,13 @@ void write_image(const RenderJob& job, const std::string& out, const std::vector
 // asked goes to a rescue path (cli/outputs.hpp), said on stderr, and false is returned.
 bool write_final(const RenderJob& job, const std::vector<float>& rgb, bool interrupted,
                  const ImageMetadata& extra = {});
+// --denoise: the denoised image and its PNG (plan.denoised), with the denoiser named in
+// its metadata and on stdout, and its error (estimated; against --reference when given)
+// in `row`, the report's last row. Returns the denoiser that ran; empty, with the message
+// printed, when it could not be made or written (the noisy image is written already).
+// `announce`: say it on stdout (not for snapshots).
+std::string write_denoised(const RenderJob& job, PassRecord& row, const ImageMetadata& extra = {},
+                           bool announce = true);
 // At rank 0, when the job lost a rank: the image and film of the last pass end, the
 // samples missing and how to add them; the exit status.
 int write_on_rank_lost(const RenderJob& job, const DeviceGroupWatch::Lost& lost);

@@ -55,6 +55,8 @@ void check_render_options(const RenderOptions& opt, const OutputPlan& plan) {
         throw Error(
             "--adaptive tiles: its bands of rows hold different sample counts, which a film cannot hold: "
             "no --film or --resume");
+    if (opt.adaptive_tiles() && opt.denoise != "none")
+        throw Error("--denoise: the denoiser reads the film's two half-images, which --adaptive tiles does not keep");
     if (!opt.aov.empty() && lower(std::filesystem::path(plan.image).extension().string()) != ".exr")
         throw Error(fmt::format("--aov: the layers go into the EXR, but --out {} is not one", plan.image));
 }
@@ -69,6 +71,7 @@ SessionOptions session_options(const RenderOptions& opt, std::chrono::steady_clo
     s.generic = opt.generic;
     s.samples_from = opt.samples_from;
     s.aovs = !opt.aov.empty();
+    s.denoise = opt.denoise != "none";
     if (!opt.resume.empty()) s.resume = read_film(opt.resume);
     s.resume_path = opt.resume;
     s.start = start;

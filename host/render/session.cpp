@@ -54,8 +54,9 @@ RenderSession::RenderSession(const Scene& scene, SessionOptions options) : scene
     if (options_.resume) check_film_matches(*options_.resume, options_.resume_path, scene, film_identity_);
     // The AOVs first (rank 0's first device), their buffers released before the path
     // tracer uploads the scene.
-    if (options_.aovs && Ranks::world().leads())
+    if ((options_.aovs || options_.denoise) && Ranks::world().leads())
         aovs_ = render_aovs(contexts.front(), scene, bvh_, *device_scene_, aov_spp());
+    if (options_.denoise && Ranks::world().leads()) denoise_device_ = contexts.front();
     group_ = std::make_unique<DeviceGroup>(std::move(contexts), scene, bvh_, *device_scene_, options_.generic,
                                            options_.samples_from, options_.warn);
     if (options_.resume)
@@ -83,6 +84,13 @@ std::vector<float> RenderSession::image(double* rejected_samples) const {
 FilmState RenderSession::film() const {
     if (!has_film()) throw Error("the tile mode's bands hold different sample counts, which a film cannot hold");
     return make_film(scene_, film_identity_, group_->samples(), group_->stats().render_seconds, group_->accumulation());
+}
+
+DenoisedImage RenderSession::denoised(const DenoiseSettings& settings) const {
+    if (!denoise_device_ || !aovs_) throw Error("denoise: the render session was not opened for denoising");
+    const FilmState f = film();
+    const FilmHalves halves = film_halves(f.sums, std::size_t(f.width) * std::size_t(f.height), f.samples);
+    return denoise(*denoise_device_, std::uint32_t(f.width), std::uint32_t(f.height), halves, *aovs_, settings);
 }
 
 // PoCL and other drivers compile a kernel for its launch geometry at its first launch:

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "host/bvh/bvh.hpp"
+#include "host/denoise/denoiser.hpp"
 #include "host/film/film_state.hpp"
 #include "host/render/aov.hpp"
 #include "host/render/device_group.hpp"
@@ -36,6 +37,7 @@ struct SessionOptions {
     bool generic = false;             // the generic program, not one specialised to the scene
     std::uint64_t samples_from = 0;   // the first sample index
     bool aovs = false;                // render the AOVs (render/aov.hpp) before the image
+    bool denoise = false;             // keep the first device for denoise() (the AOVs are rendered too)
     std::optional<FilmState> resume;  // a film to continue (checked against the scene)
     std::string resume_path;          // its file, for messages
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();  // for wall_s
@@ -96,6 +98,10 @@ public:
     std::vector<float> image(double* rejected_samples = nullptr) const;
     bool has_film() const { return !tiles_started_; }
     FilmState film() const;
+    // The film so far denoised by facet's denoiser (denoise/denoiser.hpp) on the first
+    // device, guided by the AOVs. Throws facet::Error when the session was not opened
+    // with `denoise`, has no film (the tile mode) or a half holds no sample.
+    DenoisedImage denoised(const DenoiseSettings& settings = {}) const;
 
 private:
     void warm_up();
@@ -108,6 +114,7 @@ private:
     Bvh bvh_;
     std::unique_ptr<DeviceScene> device_scene_;  // what every device and the AOV pass read
     std::optional<AovImages> aovs_;
+    mutable std::optional<ClContext> denoise_device_;  // the first device, for denoised()
     std::unique_ptr<DeviceGroup> group_;
     double warmup_s_ = 0.0;
     bool tiles_started_ = false;

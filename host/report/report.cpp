@@ -19,7 +19,9 @@ namespace {
 
 std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.9g}", v) : std::string(); }
 
-const char* kHeader = "pass,spp,wall_s,render_s,compile_s,mse,rmse,relmse,est_mse,est_rmse,est_relmse";
+const char* kHeader =
+    "pass,spp,wall_s,render_s,compile_s,mse,rmse,relmse,est_mse,est_rmse,est_relmse,denoised_est_mse,"
+    "denoised_est_rmse,denoised_mse,denoised_rmse";
 
 // Runs `write`; a facet::Error is a warning naming `path`, said once per path.
 bool side_output(const std::string& path, const std::function<void()>& write) {
@@ -130,9 +132,12 @@ bool write_report_csv(const std::string& path, const std::vector<PassRecord>& pa
     for (const PassRecord& p : passes) {
         const double nan = std::nan("");
         ErrorMetrics r = p.reference.value_or(ErrorMetrics{nan, nan, nan});
-        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", p.pass, p.spp, num(p.wall_s), num(p.render_s),
-                            num(p.compile_s), num(r.mse), num(r.rmse), num(r.relmse), num(p.estimate.mse),
-                            num(p.estimate.rmse), num(p.estimate.relmse));
+        ErrorMetrics de = p.denoised_estimate.value_or(ErrorMetrics{nan, nan, nan});
+        ErrorMetrics dr = p.denoised_reference.value_or(ErrorMetrics{nan, nan, nan});
+        text += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", p.pass, p.spp, num(p.wall_s),
+                            num(p.render_s), num(p.compile_s), num(r.mse), num(r.rmse), num(r.relmse),
+                            num(p.estimate.mse), num(p.estimate.rmse), num(p.estimate.relmse), num(de.mse),
+                            num(de.rmse), num(dr.mse), num(dr.rmse));
     }
     return side_output(path, [&] { write_text_atomically(path, text); });
 }
@@ -162,7 +167,10 @@ bool write_report_json(const std::string& path, const ReportSummary& s, const st
     if (!passes.empty()) {
         if (passes.back().reference) j["final_error"] = metrics(*passes.back().reference);
         j["final_estimate"] = metrics(passes.back().estimate);
+        if (passes.back().denoised_estimate) j["final_denoised_estimate"] = metrics(*passes.back().denoised_estimate);
+        if (passes.back().denoised_reference) j["final_denoised_error"] = metrics(*passes.back().denoised_reference);
     }
+    if (!s.denoiser.empty()) j["denoiser"] = s.denoiser;
     j["rmse_time_slope"] = std::isfinite(s.slope) ? nlohmann::json(s.slope) : nlohmann::json();
     j["rmse_time_slope_source"] = s.slope_source;
     j["rmse_time_slope_judged"] = s.slope_judged;
@@ -195,7 +203,7 @@ std::vector<PassRecord> read_report_csv(const std::string& path) {
         std::stringstream ss(line);
         std::string cell;
         while (std::getline(ss, cell, ',')) f.push_back(cell);
-        while (f.size() < 11) f.push_back("");
+        while (f.size() < 15) f.push_back("");
         auto val = [&](int i) {
             if (f[i].empty()) return std::nan("");
             try {
@@ -213,6 +221,8 @@ std::vector<PassRecord> read_report_csv(const std::string& path) {
         p.wall_s = val(2), p.render_s = val(3), p.compile_s = val(4);
         if (!f[6].empty()) p.reference = ErrorMetrics{val(5), val(6), val(7)};
         p.estimate = ErrorMetrics{val(8), val(9), val(10)};
+        if (!f[12].empty()) p.denoised_estimate = ErrorMetrics{val(11), val(12), std::nan("")};
+        if (!f[14].empty()) p.denoised_reference = ErrorMetrics{val(13), val(14), std::nan("")};
         out.push_back(p);
     }
     return out;

@@ -20,6 +20,10 @@ struct PassRecord {
     double compile_s = 0.0;                 // the kernel build
     std::optional<ErrorMetrics> reference;  // against --reference
     ErrorMetrics estimate;                  // from the two half-buffers
+    // With --denoise, on the row of the image denoised (the last): the denoised image's
+    // error estimated from the half-buffers (denoise/denoise_error.hpp) and against --reference.
+    std::optional<ErrorMetrics> denoised_estimate;
+    std::optional<ErrorMetrics> denoised_reference;
 };
 
 struct ReportSummary {
@@ -47,6 +51,7 @@ struct ReportSummary {
     double noise_threshold = 0.0;  // --noise-threshold (relMSE) when > 0
     bool converged = false;        // ended by reaching it
     std::string adaptive;          // "global" or "tiles" with a threshold, else empty
+    std::string denoiser;          // the denoiser that ran ("facet", "oidn"), else empty
 };
 
 // The fitted slope of RMSE against render time over the passes (reference RMSE when

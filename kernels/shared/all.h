@@ -11,4 +11,5 @@
 #include "kernels/shared/environment_layout.h"
 #include "kernels/shared/texture_layout.h"
 #include "kernels/shared/feature_flags.h"
+#include "kernels/shared/denoise_layout.h"
 #endif

@@ -21,7 +21,8 @@
     S(FcTriTexcoords)        \
     S(FcSphere)              \
     S(FcBinaryNode)          \
-    S(FcInstance)
+    S(FcInstance)            \
+    S(FcDenoiseParams)
 
 // clang-format off
 #define FC_LAYOUT_FIELDS(F)                                                                                                 \
@@ -63,7 +64,11 @@
     F(FcSphere, prim) F(FcBinaryNode, a_lo) F(FcBinaryNode, a_index) F(FcBinaryNode, a_hi) F(FcBinaryNode, a_count)         \
     F(FcBinaryNode, b_lo) F(FcBinaryNode, b_index) F(FcBinaryNode, b_hi) F(FcBinaryNode, b_count)                           \
     F(FcInstance, world_to_object) F(FcInstance, object_to_world) F(FcInstance, lo) F(FcInstance, root)                     \
-    F(FcInstance, hi) F(FcInstance, tri_offset)
+    F(FcInstance, hi) F(FcInstance, tri_offset)                                                                             \
+    F(FcDenoiseParams, width) F(FcDenoiseParams, height) F(FcDenoiseParams, radius) F(FcDenoiseParams, patch_radius)        \
+    F(FcDenoiseParams, guides) F(FcDenoiseParams, variance_radius) F(FcDenoiseParams, variance_scale)                       \
+    F(FcDenoiseParams, k_color) F(FcDenoiseParams, sigma_albedo) F(FcDenoiseParams, sigma_normal)                           \
+    F(FcDenoiseParams, sigma_depth)
 // clang-format on
 
 #endif

@@ -1,0 +1,41 @@
+// facet's own denoiser (kernels/denoise/denoise.cl), run on the render's OpenCL device:
+// each half-image of the film is denoised on its own, guided by its colour, its variance
+// (from the two halves) and the AOV features, and the denoised image is the mean of the
+// two denoised halves. Keeping the halves apart is what lets the error of the denoised
+// image be estimated without a reference (host/denoise/denoise_error.hpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "host/cl/runtime.hpp"
+#include "host/film/film_halves.hpp"
+#include "host/render/aov.hpp"
+#include "kernels/shared/denoise_layout.h"
+
+namespace facet {
+
+struct DenoiseSettings {
+    std::uint32_t radius = 6;           // the window: (2 radius + 1)^2 pixels
+    std::uint32_t patch_radius = 1;     // the colour distance's patch
+    std::uint32_t variance_radius = 2;  // the box smoothing the variance estimate
+    std::uint32_t guides = FC_DENOISE_GUIDE_ALL;
+    float k_color = 1.2f;        // colour distances in standard deviations (larger: smoother)
+    float sigma_albedo = 0.05f;  // albedo difference (RGB, Euclidean) at one standard deviation
+    float sigma_normal = 0.15f;  // normal difference (Euclidean) at one standard deviation
+    float sigma_depth = 0.05f;   // depth difference relative to the larger depth
+};
+
+struct DenoisedImage {
+    std::vector<float> rgb;      // the mean of the two denoised halves, 3 floats a pixel
+    std::vector<float> half[2];  // each half denoised on its own
+    double seconds = 0.0;        // building the program, uploading, filtering, reading back
+};
+
+// Denoises the film's halves (`halves`, `width` x `height`) with the AOV `features`
+// (albedo, normal, depth: as render/aov.hpp). Throws facet::Error when a half holds no
+// sample, when the sizes disagree, or on an OpenCL failure.
+DenoisedImage denoise(ClContext& ctx, std::uint32_t width, std::uint32_t height, const FilmHalves& halves,
+                      const AovImages& features, const DenoiseSettings& settings = {});
+
+}  // namespace facet

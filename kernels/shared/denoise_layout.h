@@ -1,0 +1,34 @@
+/* Parameters of the feature-guided denoiser (kernels/denoise/denoise.cl), passed as one
+ * __constant struct. */
+#ifndef FACET_SHARED_DENOISE_H
+#define FACET_SHARED_DENOISE_H
+
+#include "kernels/shared/types.h"
+
+/* The guides a weight reads, as bits of FcDenoiseParams.guides; all on by default. The
+ * tests turn them off one by one to show what each keeps. */
+#define FC_DENOISE_GUIDE_ALBEDO 1u
+#define FC_DENOISE_GUIDE_NORMAL 2u
+#define FC_DENOISE_GUIDE_DEPTH 4u
+#define FC_DENOISE_GUIDE_COLOR 8u /* the variance-normalised patch distance of the colour */
+#define FC_DENOISE_GUIDE_ALL 15u
+
+typedef struct FcDenoiseParams {
+    fc_uint width;
+    fc_uint height;
+    fc_uint radius;          /* the window: (2 radius + 1)^2 pixels */
+    fc_uint patch_radius;    /* the colour distance's patch: (2 patch_radius + 1)^2 pixels */
+    fc_uint guides;          /* FC_DENOISE_GUIDE_* bits */
+    fc_uint variance_radius; /* the box that smooths the half's variance estimate */
+    float variance_scale;    /* the half's variance over E[(a - b)^2]: n_other / (n_a + n_b) */
+    float k_color;           /* the colour distance's scale, in standard deviations (Rousselle et al. 2012's k) */
+    float sigma_albedo;      /* albedo difference (Euclidean, RGB) at one standard deviation of the weight */
+    float sigma_normal;      /* normal difference (Euclidean) at one standard deviation */
+    float sigma_depth;       /* depth difference relative to the larger depth, at one standard deviation */
+    float pad;
+} FcDenoiseParams;
+FC_STATIC_ASSERT(sizeof(FcDenoiseParams) == 48, "FcDenoiseParams layout");
+FC_STATIC_ASSERT(offsetof(FcDenoiseParams, variance_scale) == 24, "FcDenoiseParams layout");
+FC_STATIC_ASSERT(offsetof(FcDenoiseParams, sigma_depth) == 40, "FcDenoiseParams layout");
+
+#endif

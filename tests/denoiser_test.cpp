@@ -1,0 +1,149 @@
+// facet's denoiser on the real kernels (kernels/denoise/denoise.cl through
+// host/denoise/denoiser.hpp), on synthetic half-images with known truth: a constant image
+// comes out exactly; white noise on a flat albedo falls to the variance of the window's
+// mean; a step in albedo or in normal that the colour alone cannot tell from the noise
+// stays sharp with the feature guides and blurs without them. Suite Denoiser.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "host/denoise/denoiser.hpp"
+#include "host/error.hpp"
+#include "tests/cl_test_env.hpp"
+
+namespace facet {
+namespace {
+
+constexpr std::uint32_t kWidth = 32, kHeight = 64;
+constexpr std::size_t kPixels = std::size_t(kWidth) * kHeight;
+
+// Flat features: albedo 0.5, normal +z, depth 1.
+AovImages flat_features() {
+    AovImages f;
+    f.albedo.assign(3 * kPixels, 0.5f);
+    f.normal.assign(3 * kPixels, 0.0f);
+    for (std::size_t i = 0; i < kPixels; ++i) f.normal[3 * i + 2] = 1.0f;
+    f.depth.assign(kPixels, 1.0f);
+    return f;
+}
+
+// Two halves of `spp_half` samples each: truth(x, y) plus Gaussian noise of standard
+// deviation `sigma` in every channel, independent between the halves.
+template <typename Truth>
+FilmHalves noisy_halves(Truth truth, float sigma, std::uint64_t spp_half, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<float> noise(0.0f, sigma);
+    FilmHalves h;
+    h.samples[0] = h.samples[1] = spp_half;
+    for (int k = 0; k < 2; ++k) {
+        h.rgb[k].resize(3 * kPixels);
+        for (std::size_t i = 0; i < kPixels; ++i)
+            for (int c = 0; c < 3; ++c)
+                h.rgb[k][3 * i + std::size_t(c)] =
+                    truth(std::uint32_t(i % kWidth)) + (sigma > 0.0f ? noise(rng) : 0.0f);
+    }
+    return h;
+}
+
+// The mean over the rows of column x of the denoised image's first channel.
+double column_mean(const std::vector<float>& rgb, std::uint32_t x) {
+    double sum = 0.0;
+    for (std::uint32_t y = 0; y < kHeight; ++y) sum += double(rgb[3 * (std::size_t(y) * kWidth + x)]);
+    return sum / kHeight;
+}
+
+TEST(Denoiser, ConstantImageIsKeptExactly) {
+    FilmHalves h;
+    h.samples[0] = h.samples[1] = 4;
+    for (int k = 0; k < 2; ++k) {
+        h.rgb[k].resize(3 * kPixels);
+        for (std::size_t i = 0; i < kPixels; ++i)
+            h.rgb[k][3 * i] = 0.3f, h.rgb[k][3 * i + 1] = 0.7f, h.rgb[k][3 * i + 2] = 1.9f;
+    }
+    // Features that vary from pixel to pixel change the weights, never the result
+    AovImages f = flat_features();
+    for (std::size_t i = 0; i < kPixels; ++i) f.albedo[3 * i] = float(i % 7) * 0.1f, f.depth[i] = 1.0f + float(i % 5);
+    const DenoisedImage d = denoise(test::context(), kWidth, kHeight, h, f);
+    for (std::size_t i = 0; i < kPixels; ++i) {
+        ASSERT_EQ(d.rgb[3 * i], 0.3f) << "pixel " << i;
+        ASSERT_EQ(d.rgb[3 * i + 1], 0.7f) << "pixel " << i;
+        ASSERT_EQ(d.rgb[3 * i + 2], 1.9f) << "pixel " << i;
+    }
+}
+
+// Each half: 0.5 plus noise of sigma 0.2. Away from the border the window holds
+// N = (2 radius + 1)^2 pixels of equal features, so a filter that weighs them evenly
+// leaves sigma^2 / N in a half; the colour term weighs some neighbours less, which
+// leaves a little more, at most 1.5x.
+TEST(Denoiser, WhiteNoiseOnFlatAlbedoFallsToTheWindowVariance) {
+    const float sigma = 0.2f;
+    const FilmHalves h = noisy_halves([](std::uint32_t) { return 0.5f; }, sigma, 8, 11);
+    const DenoiseSettings s;
+    const DenoisedImage d = denoise(test::context(), kWidth, kHeight, h, flat_features(), s);
+    const int r = int(s.radius);
+    double sum = 0.0, sum2 = 0.0;
+    int n = 0;
+    for (int y = r; y < int(kHeight) - r; ++y)
+        for (int x = r; x < int(kWidth) - r; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const double v = double(d.half[0][3 * (std::size_t(y) * kWidth + std::size_t(x)) + std::size_t(c)]);
+                sum += v, sum2 += v * v, ++n;
+            }
+    const double mean = sum / n, var = sum2 / n - mean * mean;
+    const double window = double((2 * r + 1) * (2 * r + 1));
+    const double expected = double(sigma) * double(sigma) / window;
+    EXPECT_NEAR(mean, 0.5, 0.01);
+    EXPECT_GT(var, 0.8 * expected) << "expected about " << expected;
+    EXPECT_LT(var, 1.5 * expected) << "expected about " << expected;
+}
+
+// A step of 0.3 under noise of 0.5 a pixel: the colour term alone weighs the other
+// side at about exp(-0.3^2 / (k^2 2 0.5^2)) ~ 0.7, so the columns beside the step are
+// pulled about 0.1 toward the other side; a feature guide that sees the step cuts the
+// other side off.
+void expect_step_kept(const AovImages& features, std::uint32_t guide) {
+    auto truth = [](std::uint32_t x) { return x < kWidth / 2 ? 0.2f : 0.5f; };
+    const FilmHalves h = noisy_halves(truth, 0.5f, 8, 23);
+    DenoiseSettings with;
+    const DenoisedImage sharp = denoise(test::context(), kWidth, kHeight, h, features, with);
+    DenoiseSettings without;
+    without.guides = FC_DENOISE_GUIDE_ALL & ~guide;
+    const DenoisedImage blurred = denoise(test::context(), kWidth, kHeight, h, features, without);
+    for (std::uint32_t x : {kWidth / 2 - 1, kWidth / 2}) {
+        EXPECT_NEAR(column_mean(sharp.rgb, x), double(truth(x)), 0.03) << "column " << x << " with the guide";
+        EXPECT_GT(std::abs(column_mean(blurred.rgb, x) - double(truth(x))), 0.06)
+            << "column " << x << " without the guide";
+    }
+}
+
+TEST(Denoiser, AlbedoStepStaysSharp) {
+    AovImages f = flat_features();
+    for (std::size_t i = 0; i < kPixels; ++i)
+        if (i % kWidth < kWidth / 2)
+            for (int c = 0; c < 3; ++c) f.albedo[3 * i + std::size_t(c)] = 0.2f;
+    expect_step_kept(f, FC_DENOISE_GUIDE_ALBEDO);
+}
+
+TEST(Denoiser, NormalStepStaysSharp) {
+    AovImages f = flat_features();
+    for (std::size_t i = 0; i < kPixels; ++i)
+        if (i % kWidth < kWidth / 2) f.normal[3 * i + 1] = 1.0f, f.normal[3 * i + 2] = 0.0f;
+    expect_step_kept(f, FC_DENOISE_GUIDE_NORMAL);
+}
+
+TEST(Denoiser, DepthStepStaysSharp) {
+    AovImages f = flat_features();
+    for (std::size_t i = 0; i < kPixels; ++i)
+        if (i % kWidth < kWidth / 2) f.depth[i] = 2.0f;
+    expect_step_kept(f, FC_DENOISE_GUIDE_DEPTH);
+}
+
+TEST(Denoiser, HalfWithoutSamplesIsRefused) {
+    FilmHalves h = noisy_halves([](std::uint32_t) { return 0.5f; }, 0.0f, 1, 1);
+    h.samples[1] = 0;
+    EXPECT_THROW(denoise(test::context(), kWidth, kHeight, h, flat_features()), Error);
+}
+
+}  // namespace
+}  // namespace facet
