@@ -65,6 +65,7 @@ FeatureMask scene_features(const Scene& scene) {
         }
         if (m.textures.any()) mask |= kTEXTURES;
         if (m.metallic > 0.0f || m.textures.metallic_workflow) mask |= kMETALLIC;
+        if (m.alpha_mode != FC_ALPHA_OPAQUE) mask |= kALPHA;
     }
     return mask;
 }

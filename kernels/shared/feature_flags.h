@@ -21,7 +21,8 @@
     X(TEXTURES, 9)          \
     X(SPHERES, 10)          \
     X(INSTANCES, 11)        \
-    X(METALLIC, 12)
+    X(METALLIC, 12)         \
+    X(ALPHA, 13)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -61,6 +62,11 @@
 #endif
 #ifndef FC_HAS_METALLIC
 #define FC_HAS_METALLIC 1
+#endif
+/* Alpha cut-outs and stochastic transparency: the any-hit test in traversal
+ * (kernels/trace/alpha_test.cl). */
+#ifndef FC_HAS_ALPHA
+#define FC_HAS_ALPHA 1
 #endif
 
 #endif

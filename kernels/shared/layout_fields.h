@@ -41,7 +41,8 @@
     F(FcMaterial, emission) F(FcMaterial, ndf) F(FcMaterial, eta) F(FcMaterial, geometry)                                   \
     F(FcMaterial, k) F(FcMaterial, fresnel) F(FcMaterial, alpha_x) F(FcMaterial, alpha_y)                                   \
     F(FcMaterial, exponent_x) F(FcMaterial, exponent_y) F(FcMaterial, ior) F(FcMaterial, sigma)                             \
-    F(FcMaterial, flags) F(FcMaterial, sampling) F(FcMaterial, metallic)                                                                            \
+    F(FcMaterial, flags) F(FcMaterial, sampling) F(FcMaterial, metallic) F(FcMaterial, alpha) F(FcMaterial, alpha_cutoff)   \
+    F(FcMaterial, alpha_texture)                                                                                            \
     F(FcLight, p0) F(FcLight, type) F(FcLight, e1) F(FcLight, prim)                                                         \
     F(FcLight, e2) F(FcLight, area) F(FcLight, color) F(FcLight, pick_pdf)                                                  \
     F(FcLight, cos_inner) F(FcLight, cos_outer)                                                                             \
