@@ -116,8 +116,8 @@ TEST(AlphaRender, BlendShadowTransmitsOneMinusAlpha) {
     veil.alpha = 0.3f;
     const std::vector<float> img = render(shadow_scene(veil), 64);
     expect_region(
-        img, [](float x, float z) { return x > 0.08f && x < 0.92f && std::fabs(z) < 0.85f; }, ground_point,
-        0.7 * kLit, "ground in the shadow of the veil");
+        img, [](float x, float z) { return x > 0.08f && x < 0.92f && std::fabs(z) < 0.85f; }, ground_point, 0.7 * kLit,
+        "ground in the shadow of the veil");
 }
 
 // A black BLEND quad of alpha 0.3 in front of a two-sided emitter of radiance 1: the camera

@@ -288,8 +288,8 @@ TEST(SceneGltf, MaterialsMappedOntoFacetModels) {
     EXPECT_EQ(s.materials[3].alpha_mode, FC_ALPHA_MASK);
     EXPECT_NEAR(s.materials[3].alpha_cutoff, 0.25f, 1e-6f);
     // What is not read is named.
-    for (const char* ignored : {"occlusionTexture", "materials[3] 'lamp'",
-                                "material extension KHR_materials_clearcoat", "extension KHR_materials_clearcoat"})
+    for (const char* ignored : {"occlusionTexture", "materials[3] 'lamp'", "material extension KHR_materials_clearcoat",
+                                "extension KHR_materials_clearcoat"})
         EXPECT_TRUE(test::contains(s.warnings, ignored)) << ignored;
     EXPECT_FALSE(test::contains(s.warnings, "alphaMode")) << "MASK and BLEND are read";
     // An extension the file requires and facet does not read is an error.

@@ -133,7 +133,8 @@ TEST(TextureAlpha, JsonAlphaKeys) {
         dir, "a.json",
         R"("materials": {"cut": {"alpha_mode": "mask", "alpha_cutoff": 0.3, "textures": {"alpha": "rgba.png"}},
                          "veil": {"alpha": 0.4}, "red": {"textures": {"alpha": {"file": "rgba.png", "channel": "r"}}}},
-           "shapes": [)" + quad("cut") + ", " + quad("veil") + ", " + quad("red") + "]"));
+           "shapes": [)" +
+            quad("cut") + ", " + quad("veil") + ", " + quad("red") + "]"));
     auto mat = [&](std::size_t t) { return s.materials[std::size_t(s.shading[t].material)]; };
     EXPECT_EQ(mat(0).alpha_mode, FC_ALPHA_MASK);
     EXPECT_FLOAT_EQ(mat(0).alpha_cutoff, 0.3f);
@@ -154,9 +155,9 @@ TEST(TextureAlpha, JsonAlphaKeys) {
         const std::string name = "bad" + std::to_string(i++) + ".json";
         test::expect_error(
             [&] {
-                load_scene(test::scene(dir, name,
-                                       std::string(R"("materials": {"m": )") + b.material + "}, \"shapes\": [" +
-                                           quad("m") + "]"));
+                load_scene(test::scene(
+                    dir, name,
+                    std::string(R"("materials": {"m": )") + b.material + "}, \"shapes\": [" + quad("m") + "]"));
             },
             {name + ": " + b.path});
     }

@@ -157,8 +157,9 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
                                 spec.width, spec.height, kMaxImageSide));
     // R, G, B (or grey), then the alpha channel where the file has one (RGBA, grey + alpha);
     // the rest unused.
-    const int alpha_at =
-        spec.alpha_channel >= 1 && spec.alpha_channel <= 3 && spec.alpha_channel < spec.nchannels ? spec.alpha_channel : -1;
+    const int alpha_at = spec.alpha_channel >= 1 && spec.alpha_channel <= 3 && spec.alpha_channel < spec.nchannels
+                             ? spec.alpha_channel
+                             : -1;
     const int channels = alpha_at >= 0 ? alpha_at : std::min(spec.nchannels, 3);
     const int stride = alpha_at >= 0 ? alpha_at + 1 : channels;
     const std::uint64_t decoded = std::uint64_t(spec.width) * std::uint64_t(spec.height) * 3u * sizeof(float);
@@ -194,7 +195,8 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
     }
     if (alpha_at >= 0) {
         img.alpha.resize(std::size_t(spec.width) * spec.height);
-        for (std::size_t i = 0; i < img.alpha.size(); ++i) img.alpha[i] = all[i * std::size_t(stride) + std::size_t(alpha_at)];
+        for (std::size_t i = 0; i < img.alpha.size(); ++i)
+            img.alpha[i] = all[i * std::size_t(stride) + std::size_t(alpha_at)];
     }
     if (stride == 3) {  // already RGB: no second copy
         img.rgb = std::move(all);

@@ -44,7 +44,7 @@ struct ImageRGB {
     // The alpha channel as stored (unassociated, linear; 1 float a pixel), empty when the
     // file has none: what texture cut-outs read (docs/textures.md).
     std::vector<float> alpha;
-    int spp = -1;            // facet:spp metadata, when the file has it
+    int spp = -1;  // facet:spp metadata, when the file has it
     // An 8-bit or 16-bit integer image in sRGB (PNG, JPEG...): its values were decoded to
     // linear, and `note` says so (such an image stops at 1: no sun, no highlights).
     bool decoded_srgb = false;

@@ -272,12 +272,12 @@ Material convert_material(const tinygltf::Material& g, const std::string& file, 
     // stochastic transparency; alpha = baseColorFactor's A x the base colour texture's A.
     if (g.alphaMode == "MASK" || g.alphaMode == "BLEND") {
         m.alpha_mode = g.alphaMode == "MASK" ? FC_ALPHA_MASK : FC_ALPHA_BLEND;
-        m.alpha = float(g.pbrMetallicRoughness.baseColorFactor.size() == 4 ? g.pbrMetallicRoughness.baseColorFactor[3]
-                                                                            : 1.0);
+        m.alpha =
+            float(g.pbrMetallicRoughness.baseColorFactor.size() == 4 ? g.pbrMetallicRoughness.baseColorFactor[3] : 1.0);
         m.alpha_cutoff = float(g.alphaCutoff);
         if (!(m.alpha_cutoff >= 0.0f) || !std::isfinite(m.alpha_cutoff))
-            throw Error(fmt::format("{}: {}: alphaCutoff must be a finite number >= 0 (got {:g})", file, place,
-                                    g.alphaCutoff));
+            throw Error(
+                fmt::format("{}: {}: alphaCutoff must be a finite number >= 0 (got {:g})", file, place, g.alphaCutoff));
         m.textures.alpha = m.specular_model == FC_SPECULAR_DIELECTRIC ? m.textures.specular : m.textures.base_color;
         m.textures.alpha_channel = 3;
     } else if (g.alphaMode != "OPAQUE") {

@@ -273,8 +273,7 @@ void bind_mtl_textures(const MtlMaterial& mtl, Material& m, Scene& scene) {
                 b.alpha_channel = scene.textures[std::size_t(index)].has_alpha ? 3 : 0;
                 m.alpha_mode = FC_ALPHA_BLEND;
             }
-        }
-        else if (s == "map_Ks") b.specular = index;
+        } else if (s == "map_Ks") b.specular = index;
         else if (s == "map_Ke") b.emission = index;
         else if (s == "map_Pr") b.roughness = index, b.roughness_mode = FC_ROUGHNESS_PERCEPTUAL;
         else if (s == "map_Pm") b.metalness = index;

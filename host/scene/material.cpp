@@ -307,7 +307,8 @@ std::string validate_material(const Material& m) {
         return fmt::format("metallic must be a finite number in [0, 1] (got {:g})", m.metallic);
     if (bad(m.alpha, m.alpha >= 0.0f && m.alpha <= 1.0f))
         return fmt::format("alpha must be a finite number in [0, 1] (got {:g})", m.alpha);
-    if (bad(m.alpha_cutoff, true)) return fmt::format("alpha_cutoff must be a finite number (got {:g})", m.alpha_cutoff);
+    if (bad(m.alpha_cutoff, true))
+        return fmt::format("alpha_cutoff must be a finite number (got {:g})", m.alpha_cutoff);
     if (m.alpha_mode < 0 || m.alpha_mode >= FC_ALPHA_MODE_COUNT)
         return fmt::format("alpha mode {} is out of range", m.alpha_mode);
     if (bad(m.ior, m.ior > 0.0f)) return fmt::format("ior must be a finite number > 0 (got {:g})", m.ior);

@@ -116,7 +116,8 @@ TextureImage load_texture(const std::string& path, TextureSpace space, const std
         }
         // Alpha as stored (unassociated, linear), 1 where the file has none.
         const float a = img.alpha.empty() ? 1.0f : img.alpha[i];
-        if (!std::isfinite(a)) throw Error(fmt::format("texture of {}: {}: texel {}'s alpha is not finite", owner, path, i));
+        if (!std::isfinite(a))
+            throw Error(fmt::format("texture of {}: {}: texel {}'s alpha is not finite", owner, path, i));
         rgba[4 * i + 3] = std::clamp(a, 0.0f, 1.0f);
     }
     TextureImage t = make_texture(img.width, img.height, std::move(rgba));

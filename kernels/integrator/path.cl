@@ -138,7 +138,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         if (!bsdf_is_delta(m)) {
             float4 ul = sampler_get4(sampler, sampler_set_light(depth));
             radiance += throughput * sample_direct(sc, &s, &frame, m, wo_local, ul.xyz,
-                                                    alpha_ray_seed(sampler->seed, sampler->index_reversed, depth, 1u));
+                                                   alpha_ray_seed(sampler->seed, sampler->index_reversed, depth, 1u));
         }
 
         float4 ub = sampler_get4(sampler, sampler_set_bsdf(depth));

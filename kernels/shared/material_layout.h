@@ -65,8 +65,8 @@
 
 /* Alpha modes (host Material.alpha_mode; the kernels read FC_MAT_ALPHA_* flags), glTF's
  * alphaMode names in lower case. */
-#define FC_ALPHA_MODE_LIST(X)          \
-    X(FC_ALPHA_OPAQUE, "opaque") /* alpha ignored */ \
+#define FC_ALPHA_MODE_LIST(X)                                             \
+    X(FC_ALPHA_OPAQUE, "opaque") /* alpha ignored */                      \
     X(FC_ALPHA_MASK, "mask")     /* cut out where alpha < alpha_cutoff */ \
     X(FC_ALPHA_BLEND, "blend")   /* stochastic transparency: there with probability alpha */
 

@@ -38,8 +38,7 @@ inline float alpha_coverage(const SceneView* sc, __global const FcMaterial* m, i
     if (m->alpha_texture < 0) return a;
     __global const FcTriTexcoords* t = &sc->texcoords[prim];
     float2 uv0 = (float2)(t->uv[0][0], t->uv[0][1]);
-    float2 uv =
-        uv0 + b1 * ((float2)(t->uv[1][0], t->uv[1][1]) - uv0) + b2 * ((float2)(t->uv[2][0], t->uv[2][1]) - uv0);
+    float2 uv = uv0 + b1 * ((float2)(t->uv[1][0], t->uv[1][1]) - uv0) + b2 * ((float2)(t->uv[2][0], t->uv[2][1]) - uv0);
     float4 texel = texture_sample(sc->textures, sc->texels, m->alpha_texture,
                                   tex_transform(&sc->material_textures[material], uv), 0.0f);
     return a * ((m->flags & FC_MAT_ALPHA_RED) ? texel.x : texel.w);

@@ -16,11 +16,11 @@
 /* The alpha test of the world's triangles for a ray of seed `alpha_seed`, or none in
  * programs without FC_HAS_ALPHA. */
 #if FC_HAS_ALPHA
-#define FC_WORLD_ALPHA(seed)                  \
+#define FC_WORLD_ALPHA(seed)                     \
     const AlphaTest world_alpha = {sc, 0, seed}; \
     const AlphaTest* alpha = &world_alpha
 #else
-#define FC_WORLD_ALPHA(seed)      \
+#define FC_WORLD_ALPHA(seed)    \
     const AlphaTest* alpha = 0; \
     (void)(seed)
 #endif
