@@ -402,6 +402,11 @@ std::string describe_material(const Material& m) {
             if (m.specular_model != FC_SPECULAR_NONE) s += fmt::format(" specular invalid({})", m.specular_model);
     }
     if (m.emission[0] > 0.0f || m.emission[1] > 0.0f || m.emission[2] > 0.0f) s += " emission=" + rgb(m.emission);
+    if (m.alpha_mode == FC_ALPHA_MASK)
+        s += fmt::format(" alpha_mode=mask alpha={:g} cutoff={:g}", m.alpha, m.alpha_cutoff);
+    else if (m.alpha_mode == FC_ALPHA_BLEND) s += fmt::format(" alpha_mode=blend alpha={:g}", m.alpha);
+    if (m.alpha_mode != FC_ALPHA_OPAQUE && m.textures.alpha >= 0)
+        s += m.textures.alpha_channel == 0 ? " x texture R" : " x texture A";
     return s;
 }
 
