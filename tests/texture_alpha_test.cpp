@@ -7,6 +7,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -161,6 +162,34 @@ TEST(TextureAlpha, JsonAlphaKeys) {
             },
             {name + ": " + b.path});
     }
+}
+
+// glTF BLEND with a base colour texture: Debian's assimp-testmodels ClearCoatTest.gltf has one
+// (Partial_Coating, whose PartialCoating_Alpha.png is the coverage): the texture is bound as the
+// alpha texture, read from A, and its alpha reaches the texels.
+TEST(TextureAlpha, GltfBlendReadsTheBaseColourAlpha) {
+    const std::string file = "/usr/share/assimp/models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf";
+    if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " is missing (Debian's assimp-testmodels)";
+    const Scene s = load_scene(file);
+    for (const std::string& w : s.warnings) EXPECT_EQ(w.find("alphaMode"), std::string::npos) << w;
+    int blend = 0;
+    for (std::size_t i = 0; i < s.materials.size(); ++i) {
+        const Material& m = s.materials[i];
+        if (m.alpha_mode == FC_ALPHA_OPAQUE) continue;
+        ++blend;
+        EXPECT_EQ(s.material_names[i], "Partial_Coating");
+        EXPECT_EQ(m.alpha_mode, FC_ALPHA_BLEND);
+        ASSERT_GE(m.textures.alpha, 0);
+        EXPECT_EQ(m.textures.alpha, m.textures.base_color);
+        EXPECT_EQ(m.textures.alpha_channel, 3);
+        const TextureImage& t = s.textures[std::size_t(m.textures.alpha)];
+        float lo = 1.0f, hi = 0.0f;
+        for (std::size_t k = 0; k < std::size_t(t.width) * std::size_t(t.height); ++k)
+            lo = std::min(lo, t.texels[4 * k + 3]), hi = std::max(hi, t.texels[4 * k + 3]);
+        EXPECT_LT(lo, 0.5f) << t.path << ": some texels are cut away";
+        EXPECT_GT(hi, 0.5f) << t.path;
+    }
+    EXPECT_EQ(blend, 1);
 }
 
 }  // namespace
