@@ -147,5 +147,51 @@ TEST(AlphaRender, BlendQuadTransmitsOneMinusAlphaOfTheBackground) {
         "emitter seen through the veil");
 }
 
+// An emitting MASK quad whose far half (x < 0) is cut away, facing down onto a Lambertian
+// ground seen where the quad is not: light sampling (which picks points on the whole card) and
+// BSDF sampling (whose rays pass the cut-away half) must see the same light. Without the
+// coverage weight of light samples the light-sampled image is brighter by the far half's light.
+TEST(AlphaRender, EmittingCutOutLightsAlikeByBothStrategies) {
+    Scene s;
+    Material ground = make_material("lambert");
+    ground.diffuse = glm::vec3(0.5f);
+    Material lamp = make_material("lambert");
+    lamp.diffuse = glm::vec3(0.0f);
+    lamp.emission = glm::vec3(4.0f);
+    lamp.alpha_mode = FC_ALPHA_MASK;
+    lamp.textures.alpha = 0;
+    add_material(s, ground, "ground");
+    add_material(s, lamp, "lamp");
+    add_quad(s, glm::vec3(-3, 0, 3), glm::vec3(6, 0, 0), glm::vec3(0, 0, -6), 0);
+    add_quad(s, glm::vec3(-0.5f, 1.0f, -0.5f), glm::vec3(1, 0, 0), glm::vec3(0, 0, 1), 1);  // faces down, u = x + 0.5
+    std::vector<float> rgba;
+    for (int x = 0; x < 16; ++x) rgba.insert(rgba.end(), {1.0f, 1.0f, 1.0f, x < 8 ? 0.0f : 1.0f});
+    s.textures.push_back(make_texture(16, 1, rgba, FC_WRAP_CLAMP, FC_WRAP_CLAMP));
+    build_lights(s);
+    s.camera.eye = glm::vec3(1.5f, 5.0f, 0.0f);
+    s.camera.target = glm::vec3(1.5f, 0.0f, 0.0f);
+    s.camera.up = glm::vec3(0, 0, -1);
+    s.camera.projection = FC_PROJECTION_ORTHOGRAPHIC;
+    s.camera.ortho_height = 1.8f;  // x in [0.6, 2.4]: the lamp (x <= 0.5) is out of view
+    s.settings.width = s.settings.height = kSize;
+    s.settings.max_depth = 1;
+    double mean[2], se2[2];
+    for (int k = 0; k < 2; ++k) {
+        s.settings.strategy = k == 0 ? FC_STRATEGY_LIGHT : FC_STRATEGY_BSDF;
+        const std::vector<float> img = render(s, k == 0 ? 16 : 256);
+        double sum = 0.0, sum2 = 0.0;
+        const int n = kSize * kSize;
+        for (int i = 0; i < n; ++i) {
+            const double v = img[3 * std::size_t(i)];
+            sum += v, sum2 += v * v;
+        }
+        mean[k] = sum / n;
+        se2[k] = std::max(0.0, (sum2 - sum * mean[k]) / (n - 1)) / n;
+    }
+    EXPECT_GT(mean[1], 0.0) << "the ground is lit";
+    EXPECT_LT(std::fabs(mean[0] - mean[1]), 4.0 * std::sqrt(se2[0] + se2[1]) + 1e-4)
+        << "light sampling " << mean[0] << ", BSDF sampling " << mean[1];
+}
+
 }  // namespace
 }  // namespace facet

@@ -65,6 +65,21 @@ inline bool alpha_keeps(const AlphaTest* at, int tri, float t, float b1, float b
     return alpha_random(at->seed, scene_tri, t) < a;
 }
 
+/* The expected coverage of emitting scene triangle `prim` at a light sample's barycentrics b
+ * along the light's edges (FcLight e1, e2): MASK's 0 or 1, BLEND's alpha. Light sampling
+ * weighs the card's emission by it, as BSDF sampling meets the card's hits with that
+ * probability, so that the two strategies estimate the same light. */
+inline float alpha_light_coverage(const SceneView* sc, int prim, float2 b) {
+    const int material = sc->shading[prim].material;
+    __global const FcMaterial* m = &sc->materials[material];
+    const uint mode = m->flags & (FC_MAT_ALPHA_MASK | FC_MAT_ALPHA_BLEND);
+    if (!mode) return 1.0f;
+    if (m->alpha_texture >= 0 && sc->texcoords[prim].light_swapped) b = b.yx;
+    const float a = alpha_coverage(sc, m, material, prim, b.x, b.y);
+    if (mode & FC_MAT_ALPHA_MASK) return a >= m->alpha_cutoff ? 1.0f : 0.0f;
+    return a;
+}
+
 /* The seed of one ray of a path: per sample (the sampler's pixel seed and index), bounce
  * `depth` and `kind` (0: the bounce's closest-hit ray, 1: its shadow ray). */
 inline uint alpha_ray_seed(uint sample_seed, uint sample_index, uint depth, uint kind) {
