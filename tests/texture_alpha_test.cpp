@@ -144,6 +144,11 @@ TEST(TextureAlpha, JsonAlphaKeys) {
     EXPECT_FLOAT_EQ(mat(2).alpha, 0.4f);
     EXPECT_EQ(mat(4).alpha_mode, FC_ALPHA_BLEND) << "an alpha texture alone is blend";
     EXPECT_EQ(mat(4).textures.alpha_channel, 0);
+    EXPECT_FALSE(test::contains(s.warnings, "spheres do not read")) << "no sphere, no warning";
+    const Scene ball = load_scene(test::scene(dir, "ball.json",
+                                              R"("materials": {"veil": {"alpha": 0.4}},
+           "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "veil"}])"));
+    EXPECT_TRUE(test::contains(ball.warnings, "material 'veil' has an alpha mode, which spheres do not read"));
     const struct {
         const char* material;
         const char* path;
