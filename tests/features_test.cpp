@@ -163,6 +163,15 @@ TEST(Features, EveryFlagIsExercised) {
     textured.textures.base_color = textured.textures.roughness = textured.textures.normal = 0;
     with_material("textured", textured);
     cases.back().second.textures.push_back(make_texture(2, 1, {0.2f, 0.4f, 0.6f, 1.0f, 0.9f, 0.5f, 0.7f, 1.0f}));
+    Material cutout = make_material("lambert");  // alpha: a texture's cut-out, and a constant's veil
+    cutout.alpha_mode = FC_ALPHA_MASK;
+    cutout.textures.alpha = 0;
+    with_material("alpha mask", cutout);
+    cases.back().second.textures.push_back(make_texture(2, 1, {1.0f, 1.0f, 1.0f, 0.0f, 1.0f, 1.0f, 1.0f, 1.0f}));
+    Material veil = make_material("lambert");
+    veil.alpha_mode = FC_ALPHA_BLEND;
+    veil.alpha = 0.5f;
+    with_material("alpha blend", veil);
     {
         Scene s = base();  // analytic spheres, one of them a sphere light
         add_material(s, make_material("lambert"), "white");

@@ -430,6 +430,30 @@ TEST(Instancing, TexturedMeshKeepsItsUvs) {
     expect_same_render(p.instanced, p.flat, 16, false);
 }
 
+// Alpha on the shared mesh (kernels/trace/alpha_test.cl): the instances' triangles are
+// tested with their place in the whole triangle array (the instance's offset), so their
+// cut-outs fall where the copies' do: a MASK checker of alpha 0 / 1 matches per pixel, and
+// BLEND (whose random numbers are the triangle's own, so not the copies') matches in mean.
+TEST(Instancing, AlphaCutOutMatchesFlattened) {
+    Pair p = load_pair();
+    std::vector<float> rgba;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) rgba.insert(rgba.end(), {0.8f, 0.8f, 0.8f, (x + y) % 2 ? 1.0f : 0.0f});
+    for (Scene* s : {&p.instanced, &p.flat}) {
+        s->textures.push_back(make_texture(8, 8, rgba, FC_WRAP_CLAMP, FC_WRAP_CLAMP));
+        ASSERT_EQ(s->materials.size(), 1u);
+        s->materials[0].alpha_mode = FC_ALPHA_MASK;
+        s->materials[0].textures.alpha = 0;
+    }
+    expect_same_render(p.instanced, p.flat, 16);
+    for (Scene* s : {&p.instanced, &p.flat}) {
+        s->materials[0].alpha_mode = FC_ALPHA_BLEND;
+        s->materials[0].textures.alpha = -1;
+        s->materials[0].alpha = 0.5f;
+    }
+    expect_same_render(p.instanced, p.flat, 16, false);
+}
+
 TEST(Instancing, FeatureBitOnlyWithInstances) {
     const Pair p = load_pair();
     const FeatureMask bit = 1u << 11;

@@ -185,6 +185,13 @@ TEST(Material, DescribeMaterial) {
     EXPECT_NE(s.find("sigma=0.3"), std::string::npos) << s;
     EXPECT_EQ(s.find("specular"), std::string::npos) << s;
     EXPECT_EQ(s.find('\n'), std::string::npos);
+    EXPECT_EQ(s.find("alpha_mode"), std::string::npos) << "opaque says nothing of alpha: " << s;
+    Material cutout = make_material("lambert");
+    cutout.alpha_mode = FC_ALPHA_MASK;
+    cutout.alpha_cutoff = 0.25f;
+    cutout.textures.alpha = 0;
+    s = describe_material(cutout);
+    EXPECT_NE(s.find("alpha_mode=mask alpha=1 cutoff=0.25 x texture A"), std::string::npos) << s;
 }
 
 }  // namespace

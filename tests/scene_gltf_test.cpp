@@ -241,7 +241,7 @@ TEST(SceneGltf, MaterialsMappedOntoFacetModels) {
         return &b.m.materials.back();
     };
     material("gold", {1, 0.7, 0.3, 1}, 1, 0.2);
-    material("plastic", {0.8, 0.1, 0.1, 1}, 0, 0.5);
+    material("plastic", {0.8, 0.1, 0.1, 0.4}, 0, 0.5)->alphaMode = "BLEND";
     tinygltf::Value::Object ior, transmission, strength, clearcoat;
     ior["ior"] = tinygltf::Value(1.33);
     transmission["transmissionFactor"] = tinygltf::Value(1.0);
@@ -256,6 +256,7 @@ TEST(SceneGltf, MaterialsMappedOntoFacetModels) {
     lamp->extensions["KHR_materials_clearcoat"] = tinygltf::Value(clearcoat);
     lamp->occlusionTexture.index = 0;
     lamp->alphaMode = "MASK";
+    lamp->alphaCutoff = 0.25;
     b.m.extensionsUsed = {"KHR_materials_ior", "KHR_materials_transmission", "KHR_materials_emissive_strength",
                           "KHR_materials_clearcoat"};
     Scene s;
@@ -279,10 +280,18 @@ TEST(SceneGltf, MaterialsMappedOntoFacetModels) {
     EXPECT_NEAR(glm::length(water.transmittance - glm::vec3(0.9f, 1, 1)), 0.0f, 1e-6f);
     EXPECT_NEAR(glm::length(s.materials[3].emission - glm::vec3(10, 5, 0)), 0.0f, 1e-5f);
     EXPECT_EQ(s.material_names[3], "lamp");
+    // alphaMode: OPAQUE ignores the base colour's alpha, MASK cuts at alphaCutoff, BLEND is
+    // stochastic transparency of the base colour's alpha.
+    EXPECT_EQ(gold.alpha_mode, FC_ALPHA_OPAQUE);
+    EXPECT_EQ(plastic.alpha_mode, FC_ALPHA_BLEND);
+    EXPECT_NEAR(plastic.alpha, 0.4f, 1e-6f);
+    EXPECT_EQ(s.materials[3].alpha_mode, FC_ALPHA_MASK);
+    EXPECT_NEAR(s.materials[3].alpha_cutoff, 0.25f, 1e-6f);
     // What is not read is named.
-    for (const char* ignored : {"occlusionTexture", "materials[3] 'lamp'", "alphaMode MASK",
-                                "material extension KHR_materials_clearcoat", "extension KHR_materials_clearcoat"})
+    for (const char* ignored : {"occlusionTexture", "materials[3] 'lamp'", "material extension KHR_materials_clearcoat",
+                                "extension KHR_materials_clearcoat"})
         EXPECT_TRUE(test::contains(s.warnings, ignored)) << ignored;
+    EXPECT_FALSE(test::contains(s.warnings, "alphaMode")) << "MASK and BLEND are read";
     // An extension the file requires and facet does not read is an error.
     b.m.extensionsRequired = {"KHR_materials_clearcoat"};
     expect_error([&] { load_scene(b.write(d, "req.gltf")); },

@@ -185,6 +185,10 @@ TEST(SceneObj, MtlMaterialsMapped) {
     EXPECT_FLOAT_EQ(b.alpha_x, 0.0625f);
     EXPECT_FLOAT_EQ(b.emission[2], 3.0f);
     EXPECT_FLOAT_EQ(b.ior, 1.5f);
+    // d 0.5: stochastic transparency of alpha 0.5; no d: opaque.
+    EXPECT_EQ(a.alpha_mode, FC_ALPHA_OPAQUE);
+    EXPECT_EQ(b.alpha_mode, FC_ALPHA_BLEND);
+    EXPECT_FLOAT_EQ(b.alpha, 0.5f);
 }
 
 TEST(SceneObj, MtlBadNumberNamesLine) {

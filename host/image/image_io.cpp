@@ -155,7 +155,13 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
     if (spec.width > kMaxImageSide || spec.height > kMaxImageSide)
         throw Error(fmt::format("{}: the image claims {}x{} pixels: at most {} pixels a side are supported", path,
                                 spec.width, spec.height, kMaxImageSide));
-    const int channels = std::min(spec.nchannels, 3);  // R, G, B (or grey); alpha and the rest unused
+    // R, G, B (or grey), then the alpha channel where the file has one (RGBA, grey + alpha);
+    // the rest unused.
+    const int alpha_at = spec.alpha_channel >= 1 && spec.alpha_channel <= 3 && spec.alpha_channel < spec.nchannels
+                             ? spec.alpha_channel
+                             : -1;
+    const int channels = alpha_at >= 0 ? alpha_at : std::min(spec.nchannels, 3);
+    const int stride = alpha_at >= 0 ? alpha_at + 1 : channels;
     const std::uint64_t decoded = std::uint64_t(spec.width) * std::uint64_t(spec.height) * 3u * sizeof(float);
     if (decoded > kSmallImageBytes && decoded / kMaxDecodedPerFileByte > file_size)
         throw Error(
@@ -167,8 +173,8 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
             fmt::format("{}: the image claims {}x{} pixels, {} MiB decoded as float RGB: at most {} MiB "
                         "(about 13000x13000 pixels) are read",
                         path, spec.width, spec.height, decoded >> 20, kMaxDecodedImageBytes >> 20));
-    std::vector<float> all(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(channels));
-    if (!in->read_image(0, 0, 0, channels, TypeDesc::FLOAT, all.data()))
+    std::vector<float> all(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(stride));
+    if (!in->read_image(0, 0, 0, stride, TypeDesc::FLOAT, all.data()))
         throw Error(fmt::format("{}: cannot read pixels: {}", path, in->geterror()));
     ImageRGB img;
     img.width = spec.width;
@@ -184,16 +190,22 @@ static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_s
             "{}: an {}-bit sRGB image, decoded to linear radiance; it stops at 1 (no sun, no highlights): "
             "an EXR or HDR image holds the light itself",
             path, spec.format.basetype == TypeDesc::UINT8 ? 8 : 16);
-        for (float& v : all) v = srgb_decode(v);
+        for (std::size_t i = 0; i < all.size(); ++i)
+            if (int(i % std::size_t(stride)) != alpha_at) all[i] = srgb_decode(all[i]);  // alpha is linear
     }
-    if (channels == 3) {  // already RGB: no second copy
+    if (alpha_at >= 0) {
+        img.alpha.resize(std::size_t(spec.width) * spec.height);
+        for (std::size_t i = 0; i < img.alpha.size(); ++i)
+            img.alpha[i] = all[i * std::size_t(stride) + std::size_t(alpha_at)];
+    }
+    if (stride == 3) {  // already RGB: no second copy
         img.rgb = std::move(all);
         return img;
     }
     img.rgb.resize(std::size_t(spec.width) * spec.height * 3);
     for (std::size_t i = 0; i < std::size_t(spec.width) * spec.height; ++i)
         for (int c = 0; c < 3; ++c)
-            img.rgb[3 * i + c] = all[i * std::size_t(channels) + std::size_t(std::min(c, channels - 1))];
+            img.rgb[3 * i + c] = all[i * std::size_t(stride) + std::size_t(std::min(c, channels - 1))];
     return img;
 }
 

@@ -41,7 +41,10 @@ struct ImageRGB {
     int width = 0;
     int height = 0;
     std::vector<float> rgb;  // 3 floats a pixel, top row first
-    int spp = -1;            // facet:spp metadata, when the file has it
+    // The alpha channel as stored (unassociated, linear; 1 float a pixel), empty when the
+    // file has none: what texture cut-outs read (docs/textures.md).
+    std::vector<float> alpha;
+    int spp = -1;  // facet:spp metadata, when the file has it
     // An 8-bit or 16-bit integer image in sRGB (PNG, JPEG...): its values were decoded to
     // linear, and `note` says so (such an image stops at 1: no sun, no highlights).
     bool decoded_srgb = false;
@@ -52,7 +55,7 @@ struct ImageRGB {
 // Reads any image OpenImageIO can (EXR, HDR, PNG...) as linear RGB floats: EXR and HDR
 // as stored, integer images in sRGB (8-bit PNG, JPEG) decoded to linear with a note
 // (ImageRGB::note). A one-channel image is
-// replicated to grey. Alpha is not read, nor multiplied into the colour (an RGBA PNG's
+// replicated to grey. Alpha is read apart (ImageRGB::alpha), never multiplied into the colour (an RGBA PNG's
 // texel of alpha 0 keeps its stored colour). Throws facet::Error naming the file on failure, and for images
 // of more than 2^28 pixels (checked on the header, before reading).
 ImageRGB read_image(const std::string& path);

@@ -281,7 +281,21 @@ Material convert_material(const tinygltf::Material& g, const std::string& file, 
                   ignored, model, scene);
     read_volume(g, m, file, place, where, ignored);
     if (g.occlusionTexture.index >= 0) ignored.add("occlusionTexture (a path tracer computes occlusion itself)", where);
-    if (g.alphaMode != "OPAQUE") ignored.add(fmt::format("alphaMode {} (rendered opaque)", g.alphaMode), where);
+    // alphaMode: OPAQUE ignores alpha; MASK cuts out where alpha < alphaCutoff, BLEND is
+    // stochastic transparency; alpha = baseColorFactor's A x the base colour texture's A.
+    if (g.alphaMode == "MASK" || g.alphaMode == "BLEND") {
+        m.alpha_mode = g.alphaMode == "MASK" ? FC_ALPHA_MASK : FC_ALPHA_BLEND;
+        m.alpha =
+            float(g.pbrMetallicRoughness.baseColorFactor.size() == 4 ? g.pbrMetallicRoughness.baseColorFactor[3] : 1.0);
+        m.alpha_cutoff = float(g.alphaCutoff);
+        if (!(m.alpha_cutoff >= 0.0f) || !std::isfinite(m.alpha_cutoff))
+            throw Error(
+                fmt::format("{}: {}: alphaCutoff must be a finite number >= 0 (got {:g})", file, place, g.alphaCutoff));
+        m.textures.alpha = m.specular_model == FC_SPECULAR_DIELECTRIC ? m.textures.specular : m.textures.base_color;
+        m.textures.alpha_channel = 3;
+    } else if (g.alphaMode != "OPAQUE") {
+        ignored.add(fmt::format("alphaMode {} (rendered opaque)", g.alphaMode), where);
+    }
     for (const auto& [name, value] : g.extensions) {
         if (name == "KHR_materials_transmission" && value.IsObject() && value.Has("transmissionTexture"))
             ignored.add("transmissionTexture", where);

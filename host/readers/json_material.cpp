@@ -182,14 +182,14 @@ int texture_entry(const MaterialKeys& k, const Json& e, const std::string& path,
 }
 
 // "textures": {"diffuse", "specular", "roughness", "shininess", "metalness", "emission",
-// "normal", "normal_scale", "metallic", "uv_scale", "uv_offset"} (docs/textures.md).
+// "normal", "normal_scale", "metallic", "uv_scale", "uv_offset", "alpha"} (docs/textures.md).
 void textures(const MaterialKeys& k, Material& m, const std::string& name, Scene& scene) {
     const std::string path = k.key("textures");
     const Json& t = k.v["textures"];
     const JsonReader& r = k.r;
     r.object(t, path,
              {"diffuse", "specular", "roughness", "shininess", "metalness", "emission", "normal", "normal_scale",
-              "metallic", "uv_scale", "uv_offset"});
+              "metallic", "uv_scale", "uv_offset", "alpha"});
     MaterialTextures& b = m.textures;
     auto slot = [&](const char* key, TextureSpace space, int* channel = nullptr) {
         if (!t.contains(key)) return -1;
@@ -207,6 +207,15 @@ void textures(const MaterialKeys& k, Material& m, const std::string& name, Scene
     b.metalness = slot("metalness", TextureSpace::Data, &b.metal_channel);
     b.emission = slot("emission", TextureSpace::Color);
     b.normal = slot("normal", TextureSpace::Data);
+    // Coverage: channel "a" by default, "r" for an image without alpha (a grey mask).
+    b.alpha_channel = -1;
+    b.alpha = slot("alpha", TextureSpace::Data, &b.alpha_channel);
+    if (b.alpha >= 0 && b.alpha_channel < 0) b.alpha_channel = scene.textures[std::size_t(b.alpha)].has_alpha ? 3 : 0;
+    if (b.alpha_channel != 0 && b.alpha_channel != 3) {
+        if (b.alpha >= 0) r.fail(JsonReader::key(path, "alpha"), "the alpha texture's channel must be \"r\" or \"a\"");
+        b.alpha_channel = 3;
+    }
+    if (b.alpha >= 0 && !k.has("alpha_mode")) m.alpha_mode = FC_ALPHA_BLEND;
     if (t.contains("normal_scale"))
         b.normal_scale = r.number_in(t["normal_scale"], JsonReader::key(path, "normal_scale"), 0, 100);
     if (b.metalness >= 0 || t.contains("metallic")) {
@@ -228,6 +237,28 @@ void textures(const MaterialKeys& k, Material& m, const std::string& name, Scene
     };
     const glm::vec2 scale = pair("uv_scale", -1e6, 1e6, 1.0f), offset = pair("uv_offset", -1e6, 1e6, 0.0f);
     b.uv_transform = {scale.x, 0.0f, offset.x, 0.0f, scale.y, offset.y};
+}
+
+// Coverage (docs/scene-format.md): "alpha_mode" "opaque", "mask" or "blend" ("blend" when
+// only "alpha" or an alpha texture is given), "alpha" in [0, 1], "alpha_cutoff" (mask only).
+void alpha(const MaterialKeys& k, Material& m) {
+    if (k.has("alpha")) {
+        m.alpha = k.number("alpha", 0, 1);
+        m.alpha_mode = FC_ALPHA_BLEND;
+    }
+    if (k.has("alpha_mode")) {
+        const std::string mode = k.string("alpha_mode");
+        bool found = false;
+#define FC_ALPHA_NAME(value, text) \
+    if (mode == text) m.alpha_mode = value, found = true;
+        FC_ALPHA_MODE_LIST(FC_ALPHA_NAME)
+#undef FC_ALPHA_NAME
+        if (!found) k.r.fail(k.key("alpha_mode"), unknown_name("alpha mode", mode, "opaque, mask or blend"));
+    }
+    if (k.has("alpha_cutoff")) {
+        if (m.alpha_mode != FC_ALPHA_MASK) k.r.fail(k.key("alpha_cutoff"), "needs \"alpha_mode\": \"mask\"");
+        m.alpha_cutoff = k.number("alpha_cutoff", 0, 1);
+    }
 }
 
 }  // namespace
@@ -262,6 +293,9 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
               "metallic",
               "attenuation_color",
               "attenuation_distance",
+              "alpha_mode",
+              "alpha",
+              "alpha_cutoff",
               "textures"});
     const MaterialKeys k{r, v, path};
     Material m = preset(k);
@@ -285,6 +319,7 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
             r.fail(k.key("metallic"), "needs a microfacet specular lobe (model \"ggx\" or \"microfacet\")");
     }
     if (k.has("attenuation_color") || k.has("attenuation_distance")) volume(k, m);
+    alpha(k, m);
     if (std::string warning = clamp_reflectance(m); !warning.empty())
         scene.warnings.push_back(fmt::format("{}: {}: {}", r.file(), path, warning));
     if (std::string problem = validate_material(m); !problem.empty()) r.fail(path, problem);

@@ -135,6 +135,16 @@ Scene load_scene(const std::string& path, const std::string& camera_name, bool s
     if (scene.lights.empty()) {
         scene.warnings.push_back(fmt::format("{}: the scene has no emitters; the image will be black", path));
     }
+    // Spheres have no uvs: their materials' alpha (docs/textures.md) is not applied to them.
+    for (const FcSphere& sp : scene.spheres) {
+        const std::size_t m = std::size_t(sp.material);
+        if (m < scene.materials.size() && scene.materials[m].alpha_mode != FC_ALPHA_OPAQUE) {
+            scene.warnings.push_back(
+                fmt::format("{}: material '{}' has an alpha mode, which spheres do not read: its spheres are opaque",
+                            path, m < scene.material_names.size() ? scene.material_names[m] : std::to_string(m)));
+            break;
+        }
+    }
     return scene;
 }
 

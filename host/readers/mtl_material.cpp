@@ -61,7 +61,7 @@ bool is_texture_statement(std::string_view kw) {
 
 bool is_read_texture(std::string_view kw) {
     return kw == "map_Kd" || kw == "map_Ks" || kw == "map_Ns" || kw == "map_Pr" || kw == "map_Pm" || kw == "map_Ke" ||
-           kw == "norm" || kw == "map_Bump" || kw == "map_bump" || kw == "bump";
+           kw == "norm" || kw == "map_Bump" || kw == "map_bump" || kw == "bump" || kw == "map_d";
 }
 
 // A texture statement's options (-bm, -s, -o, -clamp; others skipped with their
@@ -102,6 +102,8 @@ struct Pending {
     bool has_ns = false;
     float ns = 0.0f;
     glm::vec3 tf{1.0f};
+    bool has_d = false;
+    float tr = 0.0f;  // Tr, the transparency 1 - d, read when no d is given
 };
 
 // Chooses the model from what the MTL gives (docs/scene-format.md, "MTL materials"):
@@ -167,6 +169,14 @@ MtlMaterial finish(Pending& p) {
     for (int c = 0; c < 3; ++c) mat.emission[c] = base.emission[c];
     mat.ior = base.ior;
     mat.two_sided_emission = base.two_sided_emission;
+    // Dissolve d (or 1 - Tr without d) below 1: stochastic transparency, the surface there
+    // with probability d (map_d multiplies it in bind_mtl_textures). Glass (illum 7) is
+    // transparent by refraction and keeps d = 1.
+    if (!p.has_d) m.dissolve = 1.0f - p.tr;
+    if (m.dissolve < 1.0f && mat.specular_model != FC_SPECULAR_DIELECTRIC) {
+        mat.alpha_mode = FC_ALPHA_BLEND;
+        mat.alpha = m.dissolve;
+    }
     return m;
 }
 
@@ -196,8 +206,8 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             continue;
         }
         const bool known = kw == "Kd" || kw == "Ks" || kw == "Ke" || kw == "Ns" || kw == "Ni" || kw == "d" ||
-                           kw == "illum" || kw == "Pr" || kw == "Pm" || kw == "Tf";
-        if (!known && !is_texture_statement(kw)) continue;  // Ka, Tr, ...: not used
+                           kw == "Tr" || kw == "illum" || kw == "Pr" || kw == "Pm" || kw == "Tf";
+        if (!known && !is_texture_statement(kw)) continue;  // Ka, ...: not used
         if (list.empty()) l.fail(fmt::format("'{}' before any 'newmtl'", kw));
         Pending& p = list.back();
         Material& mat = p.m.material;
@@ -211,7 +221,10 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             p.ns = l.scalar(0.0f, 1e9f);
             p.has_ns = true;
         } else if (kw == "Ni") mat.ior = l.scalar(1e-3f, 100.0f);
-        else if (kw == "d") p.m.dissolve = l.scalar(0.0f, 1.0f);
+        else if (kw == "d") {
+            p.m.dissolve = l.scalar(0.0f, 1.0f);
+            p.has_d = true;
+        } else if (kw == "Tr") p.tr = l.scalar(0.0f, 1.0f);
         else if (kw == "Pr") {
             p.pr = l.scalar(0.0f, 1.0f);
             p.has_pr = true;
@@ -248,13 +261,20 @@ void bind_mtl_textures(const MtlMaterial& mtl, Material& m, Scene& scene) {
     for (const MtlTexture& t : mtl.textures) {
         const std::string& s = t.statement;
         const bool normal = s == "norm" || s == "map_Bump" || s == "map_bump" || s == "bump";
-        const bool data = normal || s == "map_Ns" || s == "map_Pr" || s == "map_Pm";
+        const bool data = normal || s == "map_Ns" || s == "map_Pr" || s == "map_Pm" || s == "map_d";
         const int wrap = t.clamp ? FC_WRAP_CLAMP : FC_WRAP_REPEAT;
         const int index = add_texture(scene, t.file, data ? TextureSpace::Data : TextureSpace::Color,
                                       fmt::format("material '{}' ({} at {})", mtl.name, s, t.where), wrap, wrap);
         if (index < 0) continue;  // unreadable data texture: left out with its warning
         if (s == "map_Kd") b.base_color = index;
-        else if (s == "map_Ks") b.specular = index;
+        else if (s == "map_d") {
+            // Coverage: the image's alpha channel, or its grey (R) value when it has none.
+            if (m.specular_model != FC_SPECULAR_DIELECTRIC) {
+                b.alpha = index;
+                b.alpha_channel = scene.textures[std::size_t(index)].has_alpha ? 3 : 0;
+                m.alpha_mode = FC_ALPHA_BLEND;
+            }
+        } else if (s == "map_Ks") b.specular = index;
         else if (s == "map_Ke") b.emission = index;
         else if (s == "map_Pr") b.roughness = index, b.roughness_mode = FC_ROUGHNESS_PERCEPTUAL;
         else if (s == "map_Pm") b.metalness = index;

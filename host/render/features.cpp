@@ -68,6 +68,7 @@ FeatureMask scene_features(const Scene& scene) {
         if (m.specular_model == FC_SPECULAR_DIELECTRIC &&
             (m.attenuation.x > 0.0f || m.attenuation.y > 0.0f || m.attenuation.z > 0.0f))
             mask |= kVOLUME;
+        if (m.alpha_mode != FC_ALPHA_OPAQUE) mask |= kALPHA;
     }
     return mask;
 }

@@ -105,6 +105,14 @@ FcMaterial device_material(const Material& m) {
     d.sigma = m.diffuse_model == FC_DIFFUSE_EON ? m.eon_roughness : m.sigma;  // one field, by diffuse model
     d.flags = (m.two_sided_emission ? FC_MAT_TWO_SIDED_EMISSION : 0u) |
               (m.energy_compensation ? FC_MAT_ENERGY_COMPENSATION : 0u);
+    d.alpha = m.alpha;
+    d.alpha_cutoff = m.alpha_cutoff;
+    d.alpha_texture = -1;
+    if (m.alpha_mode != FC_ALPHA_OPAQUE) {
+        d.flags |= m.alpha_mode == FC_ALPHA_MASK ? FC_MAT_ALPHA_MASK : FC_MAT_ALPHA_BLEND;
+        d.alpha_texture = m.textures.alpha;
+        if (m.textures.alpha >= 0 && m.textures.alpha_channel == 0) d.flags |= FC_MAT_ALPHA_RED;
+    }
     return d;
 }
 
@@ -135,6 +143,13 @@ Material host_material(const FcMaterial& d) {
     m.sigma = m.eon_roughness = d.sigma;
     m.two_sided_emission = (d.flags & FC_MAT_TWO_SIDED_EMISSION) != 0;
     m.energy_compensation = (d.flags & FC_MAT_ENERGY_COMPENSATION) != 0;
+    m.alpha_mode = (d.flags & FC_MAT_ALPHA_MASK)    ? FC_ALPHA_MASK
+                   : (d.flags & FC_MAT_ALPHA_BLEND) ? FC_ALPHA_BLEND
+                                                    : FC_ALPHA_OPAQUE;
+    m.alpha = d.alpha;
+    m.alpha_cutoff = d.alpha_cutoff;
+    m.textures.alpha = d.alpha_texture;
+    m.textures.alpha_channel = (d.flags & FC_MAT_ALPHA_RED) ? 0 : 3;
     return m;
 }
 

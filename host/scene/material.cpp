@@ -305,6 +305,12 @@ std::string validate_material(const Material& m) {
         if (bad(s.v, s.v >= 0.0f)) return fmt::format("{} must be a finite number >= 0 (got {:g})", s.name, s.v);
     if (bad(m.metallic, m.metallic >= 0.0f && m.metallic <= 1.0f))
         return fmt::format("metallic must be a finite number in [0, 1] (got {:g})", m.metallic);
+    if (bad(m.alpha, m.alpha >= 0.0f && m.alpha <= 1.0f))
+        return fmt::format("alpha must be a finite number in [0, 1] (got {:g})", m.alpha);
+    if (bad(m.alpha_cutoff, true))
+        return fmt::format("alpha_cutoff must be a finite number (got {:g})", m.alpha_cutoff);
+    if (m.alpha_mode < 0 || m.alpha_mode >= FC_ALPHA_MODE_COUNT)
+        return fmt::format("alpha mode {} is out of range", m.alpha_mode);
     if (bad(m.ior, m.ior > 0.0f)) return fmt::format("ior must be a finite number > 0 (got {:g})", m.ior);
     const struct {
         MaterialEnum kind;
@@ -396,6 +402,11 @@ std::string describe_material(const Material& m) {
             if (m.specular_model != FC_SPECULAR_NONE) s += fmt::format(" specular invalid({})", m.specular_model);
     }
     if (m.emission[0] > 0.0f || m.emission[1] > 0.0f || m.emission[2] > 0.0f) s += " emission=" + rgb(m.emission);
+    if (m.alpha_mode == FC_ALPHA_MASK)
+        s += fmt::format(" alpha_mode=mask alpha={:g} cutoff={:g}", m.alpha, m.alpha_cutoff);
+    else if (m.alpha_mode == FC_ALPHA_BLEND) s += fmt::format(" alpha_mode=blend alpha={:g}", m.alpha);
+    if (m.alpha_mode != FC_ALPHA_OPAQUE && m.textures.alpha >= 0)
+        s += m.textures.alpha_channel == 0 ? " x texture R" : " x texture A";
     return s;
 }
 

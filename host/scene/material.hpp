@@ -63,6 +63,12 @@ struct Material {
     // glTF's metallic M in [0, 1] (microfacet lobes): f = (1 - M) f + M f_metal, f_metal the
     // microfacet lobe with Schlick F0 = diffuse, the base colour (kernels/bsdf/metallic.cl).
     float metallic = 0.0f;
+    // Coverage (glTF's alphaMode, OBJ's d / map_d; kernels/trace/alpha_test.cl): FC_ALPHA_OPAQUE
+    // ignores it; MASK cuts the surface away where alpha (x the alpha texture) < alpha_cutoff;
+    // BLEND keeps it with probability alpha (stochastic transparency).
+    int alpha_mode = FC_ALPHA_OPAQUE;
+    float alpha = 1.0f;  // in [0, 1]
+    float alpha_cutoff = 0.5f;
     // glTF's KHR_materials_* (FcMaterial's last block; 0: none). attenuation: Beer-Lambert
     // coefficient per unit length inside a transmissive material (KHR_materials_volume);
     // clearcoat weight and GGX alpha (KHR_materials_clearcoat); sheen colour and roughness

@@ -120,9 +120,14 @@ TextureImage load_texture(const std::string& path, TextureSpace space, const std
                 throw Error(fmt::format("texture of {}: {}: texel {} is not finite", owner, path, i));
             rgba[4 * i + std::size_t(c)] = v;
         }
-        rgba[4 * i + 3] = 1.0f;
+        // Alpha as stored (unassociated, linear), 1 where the file has none.
+        const float a = img.alpha.empty() ? 1.0f : img.alpha[i];
+        if (!std::isfinite(a))
+            throw Error(fmt::format("texture of {}: {}: texel {}'s alpha is not finite", owner, path, i));
+        rgba[4 * i + 3] = std::clamp(a, 0.0f, 1.0f);
     }
     TextureImage t = make_texture(img.width, img.height, std::move(rgba));
+    t.has_alpha = !img.alpha.empty();
     t.path = path;
     t.space = space;
     // As precise as the file: sRGB bytes decoded on the device, 16 bits as half floats.

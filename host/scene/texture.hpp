@@ -23,7 +23,8 @@ struct Scene;
 // normals) as stored. Float images (EXR, HDR, PFM) are linear either way.
 enum class TextureSpace { Color, Data };
 
-// A decoded texture with its mip pyramid: `texels` holds 4 floats (RGBA, A = 1) a texel,
+// A decoded texture with its mip pyramid: `texels` holds 4 floats (RGBA; A = 1 unless the
+// file has an alpha channel, `has_alpha`) a texel,
 // level 0 (width x height, top row first) then each smaller level down to 1 x 1.
 // `format` is how the device stores level 0 (FC_TEXEL_*, kernels/shared/texture_layout.h):
 // as precise as the file, no more (8-bit files in 4 bytes a texel, sRGB colours decoded
@@ -40,6 +41,7 @@ struct TextureImage {
     int wrap_v = FC_WRAP_REPEAT;
     int format = FC_TEXEL_RGBA32F;
     int mip_format = FC_TEXEL_RGBA32F;
+    bool has_alpha = false;
     std::vector<float> texels;
 };
 

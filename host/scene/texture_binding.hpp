@@ -18,6 +18,8 @@ struct MaterialTextures {
     int metalness = -1;   // linear; the metallic workflow only
     int emission = -1;    // sRGB; multiplies the material's emission
     int normal = -1;      // linear, tangent space
+    int alpha = -1;       // linear coverage (Material::alpha_mode): channel alpha_channel (3: A, 0: R)
+    int alpha_channel = 3;
     int roughness_channel = 0;
     int metal_channel = 0;
     int roughness_mode = FC_ROUGHNESS_PERCEPTUAL;
@@ -31,7 +33,8 @@ struct MaterialTextures {
     std::array<float, 6> uv_transform{1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f};
 
     bool any() const {
-        return base_color >= 0 || specular >= 0 || roughness >= 0 || metalness >= 0 || emission >= 0 || normal >= 0;
+        return base_color >= 0 || specular >= 0 || roughness >= 0 || metalness >= 0 || emission >= 0 || normal >= 0 ||
+               alpha >= 0;
     }
 };
 

@@ -60,7 +60,9 @@ __kernel void aov_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         float distance = 0.0f;
         for (uint bounce = 0; bounce <= FC_AOV_MAX_DELTA_BOUNCES; ++bounce) {
             Hit hit;
-            if (!scene_trace_closest(&sc, o, d, INFINITY, &hit)) break;
+            if (!scene_trace_closest(&sc, o, d, INFINITY,
+                                     alpha_ray_seed(sampler.seed, sampler.index_reversed, bounce, 0u), &hit))
+                break;
             distance += hit.t;
             Surface s = scene_surface_at(&sc, &hit, o, d);
             FcMaterial mat = materials[s.material];

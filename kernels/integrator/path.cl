@@ -34,9 +34,10 @@
 
 /* Next-event estimation at surface `s` seen from direction wo: one light sample,
  * weighted against the BSDF's density by the power heuristic (delta lights: weight 1).
- * Returns its contribution before throughput. */
+ * `alpha_seed` is the shadow ray's (kernels/trace/alpha_test.cl). Returns its
+ * contribution before throughput. */
 inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* frame, const FcMaterial* m,
-                            float3 wo_local, float3 u_light) {
+                            float3 wo_local, float3 u_light, uint alpha_seed) {
     float u_pick = u_light.x;
     float2 u = u_light.yz;
     LightSample ls;
@@ -65,7 +66,7 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
     } else if (isfinite(ls.dist)) {
         tmax = ls.dist * (1.0f - 1e-5f); /* stop short of a point light */
     }
-    if (scene_trace_any(sc, o, dir, tmax)) return (float3)(0.0f);
+    if (scene_trace_any(sc, o, dir, tmax, alpha_seed)) return (float3)(0.0f);
 
     if (ls.delta) return f * ls.li * (cos_i / ls.pdf);
     uint strategy = sc->params->strategy;
@@ -93,7 +94,8 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
 #endif
     for (uint depth = 0;; ++depth) {
         Hit hit;
-        if (!scene_trace_closest(sc, o, d, INFINITY, &hit)) {
+        if (!scene_trace_closest(sc, o, d, INFINITY, alpha_ray_seed(sampler->seed, sampler->index_reversed, depth, 0u),
+                                 &hit)) {
 #if FC_HAS_ENVIRONMENT
             /* The ray escapes: the environment, MIS-weighted against light sampling. */
             float env_pdf_d;
@@ -143,7 +145,8 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
 
         if (!bsdf_is_delta(m)) {
             float4 ul = sampler_get4(sampler, sampler_set_light(depth));
-            radiance += throughput * sample_direct(sc, &s, &frame, m, wo_local, ul.xyz);
+            radiance += throughput * sample_direct(sc, &s, &frame, m, wo_local, ul.xyz,
+                                                   alpha_ray_seed(sampler->seed, sampler->index_reversed, depth, 1u));
         }
 
         float4 ub = sampler_get4(sampler, sampler_set_bsdf(depth));

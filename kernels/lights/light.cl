@@ -13,6 +13,9 @@
 #include "kernels/texture/material_textures.cl"
 #endif
 #include "kernels/lights/sphere_light.cl"
+#if FC_HAS_ALPHA
+#include "kernels/trace/alpha_test.cl"
+#endif
 
 typedef struct {
     float3 wi;    /* unit direction from the shading point to the light */
@@ -57,6 +60,9 @@ inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, 
         ls->li = area_light_radiance(load3(m->emission), m->flags, ls->normal, -ls->wi);
 #if FC_HAS_TEXTURES
         ls->li *= emission_texture_at(sc, l->prim, sc->shading[l->prim].material, square_to_triangle(u));
+#endif
+#if FC_HAS_ALPHA
+        ls->li *= alpha_light_coverage(sc, l->prim, square_to_triangle(u));
 #endif
 #endif
 #if FC_HAS_AREA_LIGHTS && FC_HAS_SPHERES

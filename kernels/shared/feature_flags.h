@@ -22,6 +22,7 @@
     X(SPHERES, 10)          \
     X(INSTANCES, 11)        \
     X(METALLIC, 12)         \
+    X(ALPHA, 13)            \
     X(VOLUME, 14)
 
 #ifndef FC_HAS_AREA_LIGHTS
@@ -62,6 +63,11 @@
 #endif
 #ifndef FC_HAS_METALLIC
 #define FC_HAS_METALLIC 1
+#endif
+/* Alpha cut-outs and stochastic transparency: the any-hit test in traversal
+ * (kernels/trace/alpha_test.cl). */
+#ifndef FC_HAS_ALPHA
+#define FC_HAS_ALPHA 1
 #endif
 /* Beer-Lambert absorption inside transmissive materials (FcMaterial.attenuation,
  * kernels/integrator/path.cl). */

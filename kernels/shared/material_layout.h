@@ -63,6 +63,13 @@
     X(FC_SAMPLE_SPHERICAL_CAP, "spherical_cap") /* visible normals by spherical caps (Dupuy 2023) */   \
     X(FC_SAMPLE_BOUNDED, "bounded")             /* bounded visible normals (Eto & Tokuyoshi 2023) */
 
+/* Alpha modes (host Material.alpha_mode; the kernels read FC_MAT_ALPHA_* flags), glTF's
+ * alphaMode names in lower case. */
+#define FC_ALPHA_MODE_LIST(X)                                             \
+    X(FC_ALPHA_OPAQUE, "opaque") /* alpha ignored */                      \
+    X(FC_ALPHA_MASK, "mask")     /* cut out where alpha < alpha_cutoff */ \
+    X(FC_ALPHA_BLEND, "blend")   /* stochastic transparency: there with probability alpha */
+
 /* The constants: 0, 1, ... in list order, and FC_*_COUNT after each list. */
 #define FC_MATERIAL_ENUM_VALUE(value, name) value,
 enum { FC_DIFFUSE_LIST(FC_MATERIAL_ENUM_VALUE) FC_DIFFUSE_COUNT };
@@ -71,6 +78,7 @@ enum { FC_NDF_LIST(FC_MATERIAL_ENUM_VALUE) FC_NDF_COUNT };
 enum { FC_G_LIST(FC_MATERIAL_ENUM_VALUE) FC_G_COUNT };
 enum { FC_FRESNEL_LIST(FC_MATERIAL_ENUM_VALUE) FC_FRESNEL_COUNT };
 enum { FC_SAMPLE_LIST(FC_MATERIAL_ENUM_VALUE) FC_SAMPLE_COUNT };
+enum { FC_ALPHA_MODE_LIST(FC_MATERIAL_ENUM_VALUE) FC_ALPHA_MODE_COUNT };
 #undef FC_MATERIAL_ENUM_VALUE
 
 /* Material flags (FcMaterial.flags). */
@@ -79,6 +87,16 @@ enum { FC_SAMPLE_LIST(FC_MATERIAL_ENUM_VALUE) FC_SAMPLE_COUNT };
  * 2017; kernels/bsdf/energy_compensation.cl), and the diffuse base weighted by
  * 1 - E_spec instead of 1 - F0. The host sets it per material ("energy_compensation"). */
 #define FC_MAT_ENERGY_COMPENSATION 2u
+/* Alpha (coverage) modes, glTF's alphaMode (kernels/trace/alpha_test.cl): the material's
+ * coverage a = `alpha` x the alpha texture's channel (none: 1). MASK: the surface is there
+ * where a >= alpha_cutoff, cut away elsewhere; BLEND: there with probability a (stochastic
+ * transparency). Neither set: opaque, alpha ignored. Cut-outs hold for every ray (camera,
+ * bounce and shadow rays), on triangles; spheres have no alpha. */
+#define FC_MAT_ALPHA_MASK 4u
+#define FC_MAT_ALPHA_BLEND 8u
+/* The alpha texture's coverage is its R channel (a grey image, MTL's map_d without an
+ * alpha channel) instead of A. */
+#define FC_MAT_ALPHA_RED 16u
 
 /* Phong-style exponents are clamped to [0, FC_PHONG_EXPONENT_MAX] (the kernels'
  * fc_phong_exponent, the host's shininess conversions and its clamp_material). */
@@ -97,7 +115,8 @@ enum { FC_SAMPLE_LIST(FC_MATERIAL_ENUM_VALUE) FC_SAMPLE_COUNT };
  * Material names the two apart). `metallic` M in [0, 1] mixes in a metal lobe, glTF's
  * metallic-roughness BRDF (kernels/bsdf/metallic.cl): f = (1 - M) f + M f_metal, f_metal the
  * microfacet lobe with Schlick's F0 = `diffuse` (the base colour); 0 leaves the material as
- * it is. */
+ * it is. alpha, alpha_cutoff and alpha_texture (an index of the texture table, -1 for none)
+ * are the coverage of the FC_MAT_ALPHA_* flags. */
 typedef struct FcMaterial {
     float diffuse[3];
     fc_int diffuse_model;
@@ -118,7 +137,9 @@ typedef struct FcMaterial {
     fc_uint flags;
     fc_int sampling;
     float metallic;
-    fc_uint pad0[3];
+    float alpha;
+    float alpha_cutoff;
+    fc_int alpha_texture;
     /* glTF's KHR_materials_* layers and volume (docs/brdf.md); all 0 leaves the material as
      * it is. `attenuation` is the Beer-Lambert coefficient (per unit length, per channel)
      * inside a transmissive material (KHR_materials_volume: -ln(attenuationColor) /
@@ -135,8 +156,9 @@ typedef struct FcMaterial {
 
 FC_STATIC_ASSERT(sizeof(FcMaterial) == 176, "FcMaterial is 176 bytes");
 FC_STATIC_ASSERT(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104 &&
-                     offsetof(FcMaterial, metallic) == 112 && offsetof(FcMaterial, attenuation) == 128 &&
-                     offsetof(FcMaterial, sheen) == 144 && offsetof(FcMaterial, sheen_roughness) == 160,
+                     offsetof(FcMaterial, metallic) == 112 && offsetof(FcMaterial, alpha_texture) == 124 &&
+                     offsetof(FcMaterial, attenuation) == 128 && offsetof(FcMaterial, sheen) == 144 &&
+                     offsetof(FcMaterial, sheen_roughness) == 160,
                  "FcMaterial offsets");
 
 #endif

@@ -4,6 +4,9 @@
 #ifndef FACET_TEST_INSTANCE_KERNELS_CL
 #define FACET_TEST_INSTANCE_KERNELS_CL
 
+/* The kernel binds no materials: no alpha test (kernels/trace/alpha_test.cl). */
+#define FC_HAS_ALPHA 0
+
 #include "kernels/integrator/surface.cl"
 
 /* origins[i].xyz, dirs[i].xyz, dirs[i].w = tmax. Closest hit: hit_out[i] = (t, p), on a miss
@@ -26,7 +29,7 @@ __kernel void trace_scene_batch(__global const FcBvhNode* nodes, __global const 
     const float3 o = origins[i].xyz, d = dirs[i].xyz;
     const float tmax = dirs[i].w;
     Hit hit;
-    if (scene_trace_closest(&sc, o, d, tmax, &hit)) {
+    if (scene_trace_closest(&sc, o, d, tmax, 0u, &hit)) {
         const Surface s = scene_surface_at(&sc, &hit, o, d);
         hit_out[i] = (float4)(hit.t, s.p);
         ng_out[i] = (float4)(s.ng, as_float(s.prim));
@@ -35,7 +38,7 @@ __kernel void trace_scene_batch(__global const FcBvhNode* nodes, __global const 
         hit_out[i] = (float4)(-1.0f, 0.0f, 0.0f, 0.0f);
         ng_out[i] = ns_out[i] = (float4)(0.0f);
     }
-    any_out[i] = scene_trace_any(&sc, o, d, tmax) ? 1 : 0;
+    any_out[i] = scene_trace_any(&sc, o, d, tmax, 0u) ? 1 : 0;
 }
 
 #endif

@@ -100,12 +100,6 @@ inline void tex_store3(float* p, float3 v) {
     p[2] = v.z;
 }
 
-/* uv' = the material's KHR_texture_transform of uv. */
-inline float2 tex_transform(__global const FcMaterialTextures* mt, float2 uv) {
-    return (float2)(mt->uv_transform[0][0] * uv.x + mt->uv_transform[0][1] * uv.y + mt->uv_transform[0][2],
-                    mt->uv_transform[1][0] * uv.x + mt->uv_transform[1][1] * uv.y + mt->uv_transform[1][2]);
-}
-
 /* Channel i (0: R ... 3: A) of a texel; OpenCL C has no run-time subscript of vectors. */
 inline float tex_channel(float4 v, int i) { return i == 0 ? v.x : i == 1 ? v.y : i == 2 ? v.z : v.w; }
 

@@ -77,6 +77,12 @@ inline float4 texture_bilinear(__global const FcTexture* t, __global const uint*
     return mix(mix(a, b, ax), mix(c, d, ax), ay);
 }
 
+/* uv' = the material's KHR_texture_transform of uv. */
+inline float2 tex_transform(__global const FcMaterialTextures* mt, float2 uv) {
+    return (float2)(mt->uv_transform[0][0] * uv.x + mt->uv_transform[0][1] * uv.y + mt->uv_transform[0][2],
+                    mt->uv_transform[1][0] * uv.x + mt->uv_transform[1][1] * uv.y + mt->uv_transform[1][2]);
+}
+
 /* Trilinear lookup at level of detail `lod` (0: level 0; clamped to the pyramid). */
 inline float4 texture_sample(__global const FcTexture* textures, __global const uint* texels, int index, float2 uv,
                              float lod) {

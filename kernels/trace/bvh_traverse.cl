@@ -12,6 +12,7 @@
 #define FACET_TRACE_BVH_CL
 
 #include "kernels/shared/bvh_layout.h"
+#include "kernels/trace/alpha_test.cl"
 #include "kernels/trace/ray.cl"
 #include "kernels/trace/triangle.cl"
 
@@ -68,21 +69,47 @@ inline bool box_hit(const BoxRay* r, __global const float* lo, __global const fl
     return tn <= tf;
 }
 
+#if FC_HAS_ALPHA
+/* The hit lanes of a block whose triangles' alpha tests keep them. */
+inline int4 alpha_lanes(const AlphaTest* alpha, int4 mask, int4 tri, float4 t, float4 v, float4 w, float4 det) {
+    const int ms[4] = {mask.x, mask.y, mask.z, mask.w}, tris[4] = {tri.x, tri.y, tri.z, tri.w};
+    const float ts[4] = {t.x, t.y, t.z, t.w};
+    int keep[4];
+    for (uint lane = 0; lane < 4u; ++lane) {
+        keep[lane] = 0;
+        if (!ms[lane]) continue;
+        float b1, b2;
+        tri4_weights(v, w, det, lane, &b1, &b2);
+        keep[lane] = alpha_keeps(alpha, tris[lane], ts[lane], b1, b2) ? -1 : 0;
+    }
+    return (int4)(keep[0], keep[1], keep[2], keep[3]);
+}
+#endif
+
 /* Intersects the leaf of `blocks` blocks from row `row` of the node buffer, a block of
  * four lanes at a time; with `any_hit`, stops at the first hit. Within a block the
  * nearest hit lane wins (the lowest on a tie), and a later block's hit must be strictly
- * nearer: the hit a loop over the triangles in order would keep. */
+ * nearer: the hit a loop over the triangles in order would keep. With `alpha` (programs
+ * with FC_HAS_ALPHA), hit lanes whose alpha test fails (alpha_test.cl) are dropped first. */
 /* Inlined by force, with tri4_hit: PoCL's LLVM called both out of line, the block's nine
  * rows spilled between them (docs/performance.md: 7-9% fewer trace instructions inlined). */
 __attribute__((always_inline)) inline bool leaf_hit(__global const float4* rows, int row, int blocks, const TriRay* tr,
-                                                    Hit* hit, bool any_hit) {
+                                                    Hit* hit, bool any_hit, const AlphaTest* alpha) {
     bool found = false;
     for (; blocks > 0; --blocks, row += 10) {
         __global const float4* b = rows + row;
         const Tri4 p = tri4_load(b, tr);
         float4 t, v, w, det;
-        const int4 mask = tri4_hit(tr, &p, hit->t, &t, &v, &w, &det);
+        int4 mask = tri4_hit(tr, &p, hit->t, &t, &v, &w, &det);
         if (!any(mask)) continue;
+#if FC_HAS_ALPHA
+        if (alpha) {
+            mask = alpha_lanes(alpha, mask, vload4(0, (__global const int*)(b + 9)), t, v, w, det);
+            if (!any(mask)) continue;
+        }
+#else
+        (void)alpha;
+#endif
         if (any_hit) return true;
         const uint lane = tri4_nearest(mask, t);
         const int4 tri = vload4(0, (__global const int*)(b + 9));
@@ -215,7 +242,8 @@ inline intW children_hit(__global const FcNode* n, float3 o, float3 inv_d, int3 
  * two one comparison, with more an insertion sort. The others go on the stack with
  * their entry distance, and an entry farther than the nearest hit found since is
  * dropped when popped, without fetching its node. */
-inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit* hit, bool any) {
+inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit* hit, bool any,
+                      const AlphaTest* alpha) {
     const BoxRay br = box_ray_setup(o, d);
     const TriRay tr = tri_ray_setup(o, d);
     __global const FcNode* nodes = (__global const FcNode*)buffer;
@@ -265,7 +293,7 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
 #else
                 const int row = idx[c], blocks = (cnt[c] + 3) >> 2;
 #endif
-                if (leaf_hit(rows, row, blocks, &tr, hit, any)) {
+                if (leaf_hit(rows, row, blocks, &tr, hit, any, alpha)) {
                     found = true;
                     if (any) return true;
                 }
@@ -337,34 +365,47 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
 /* trace_bvh on the tree whose buffer starts `root` FcBvhNode units into `buffer` (an
  * instanced mesh's BLAS, kernels/shared/instance_layout.h): its node and row indices count
  * from there; hit->tri is then its own triangle index. */
-inline bool trace_bvh_from(__global const FcBvhNode* buffer, int root, float3 o, float3 d, Hit* hit, bool any) {
-    return trace_bvh(buffer + root, o, d, hit, any);
+inline bool trace_bvh_from(__global const FcBvhNode* buffer, int root, float3 o, float3 d, Hit* hit, bool any,
+                           const AlphaTest* alpha) {
+    return trace_bvh(buffer + root, o, d, hit, any, alpha);
 }
 
-/* Nearest hit with 0 < t < tmax. */
-inline bool trace_closest(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,
-                          float tmax, Hit* hit) {
+/* Nearest hit with 0 < t < tmax whose alpha test (if any) keeps it. */
+inline bool trace_closest_alpha(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,
+                                float tmax, Hit* hit, const AlphaTest* alpha) {
     hit->t = tmax;
     hit->u = 0.0f;
     hit->v = 0.0f;
     hit->prim = -1;
     hit->tri = -1;
     hit->inst = -1;
-    if (!trace_bvh(nodes, o, d, hit, false)) return false;
+    if (!trace_bvh(nodes, o, d, hit, false, alpha)) return false;
     hit->prim = tris[hit->tri].prim;
     return true;
 }
 
-/* Whether anything is hit with 0 < t < tmax (shadow rays). */
-inline bool trace_any(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,
-                      float tmax) {
+/* Nearest hit with 0 < t < tmax. */
+inline bool trace_closest(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,
+                          float tmax, Hit* hit) {
+    return trace_closest_alpha(nodes, tris, o, d, tmax, hit, 0);
+}
+
+/* Whether anything that the alpha test (if any) keeps is hit with 0 < t < tmax (shadow rays). */
+inline bool trace_any_alpha(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,
+                            float tmax, const AlphaTest* alpha) {
     (void)tris; /* the leaves' blocks hold the vertices */
     Hit hit;
     hit.t = tmax;
     hit.prim = -1;
     hit.tri = -1;
     hit.inst = -1;
-    return trace_bvh(nodes, o, d, &hit, true);
+    return trace_bvh(nodes, o, d, &hit, true, alpha);
+}
+
+/* Whether anything is hit with 0 < t < tmax (shadow rays). */
+inline bool trace_any(__global const FcBvhNode* nodes, __global const FcTriangle* tris, float3 o, float3 d,
+                      float tmax) {
+    return trace_any_alpha(nodes, tris, o, d, tmax, 0);
 }
 
 #endif

@@ -14,14 +14,23 @@
 #include "kernels/trace/bvh_traverse.cl"
 
 /* The instances [first, first + count) of a leaf, shortening hit->t: a hit sets hit->inst
- * and hit->tri to the triangle's index in the whole FcTriangle array. */
-inline bool instance_leaf_hit(const SceneView* sc, int first, int count, float3 o, float3 d, Hit* hit, bool any_hit) {
+ * and hit->tri to the triangle's index in the whole FcTriangle array. `alpha_seed` is the
+ * ray's seed for the alpha test (alpha_test.cl). */
+inline bool instance_leaf_hit(const SceneView* sc, int first, int count, float3 o, float3 d, Hit* hit, bool any_hit,
+                              uint alpha_seed) {
     bool found = false;
     for (int i = first; i < first + count; ++i) {
         __global const FcInstance* in = &sc->instances[i];
         const float3 oo = instance_point_to_object(in, o);
         const float3 od = instance_vector_to_object(in, d);
-        if (!trace_bvh_from(sc->nodes, in->root, oo, od, hit, any_hit)) continue;
+#if FC_HAS_ALPHA
+        const AlphaTest alpha = {sc, in->tri_offset, alpha_seed};
+        const AlphaTest* at = &alpha;
+#else
+        const AlphaTest* at = 0;
+        (void)alpha_seed;
+#endif
+        if (!trace_bvh_from(sc->nodes, in->root, oo, od, hit, any_hit, at)) continue;
         if (any_hit) return true;
         hit->tri += in->tri_offset;
         hit->inst = i;
@@ -32,9 +41,9 @@ inline bool instance_leaf_hit(const SceneView* sc, int first, int count, float3 
 
 /* Nearest instanced hit with 0 < t < hit->t (or, with `any_hit`, whether there is one). A
  * closest hit gets hit->prim (its triangle's index in the shading arrays). */
-inline bool trace_instances(const SceneView* sc, float3 o, float3 d, Hit* hit, bool any_hit) {
+inline bool trace_instances(const SceneView* sc, float3 o, float3 d, Hit* hit, bool any_hit, uint alpha_seed) {
     bool found = false;
-#define FC_INSTANCE_LEAF(first, count) instance_leaf_hit(sc, first, count, o, d, hit, any_hit)
+#define FC_INSTANCE_LEAF(first, count) instance_leaf_hit(sc, first, count, o, d, hit, any_hit, alpha_seed)
     FC_BINARY_TRAVERSE(sc->instance_nodes, o, d, hit, any_hit, found, FC_INSTANCE_LEAF);
 #undef FC_INSTANCE_LEAF
     if (found) hit->prim = sc->tris[hit->tri].prim;

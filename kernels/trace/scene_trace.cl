@@ -13,12 +13,26 @@
 #include "kernels/trace/sphere.cl"
 #endif
 
-/* Nearest hit with 0 < t < tmax: a triangle (hit->tri >= 0; hit->inst >= 0 when met in an
+/* The alpha test of the world's triangles for a ray of seed `alpha_seed`, or none in
+ * programs without FC_HAS_ALPHA. */
+#if FC_HAS_ALPHA
+#define FC_WORLD_ALPHA(seed)                     \
+    const AlphaTest world_alpha = {sc, 0, seed}; \
+    const AlphaTest* alpha = &world_alpha
+#else
+#define FC_WORLD_ALPHA(seed)    \
+    const AlphaTest* alpha = 0; \
+    (void)(seed)
+#endif
+
+/* Nearest hit with 0 < t < tmax that the alpha test keeps (kernels/trace/alpha_test.cl;
+ * `alpha_seed` is the ray's seed): a triangle (hit->tri >= 0; hit->inst >= 0 when met in an
  * instance) or a sphere (FC_HIT_SPHERE). */
-inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float tmax, Hit* hit) {
-    bool found = trace_closest(sc->nodes, sc->tris, o, d, tmax, hit);
+inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed, Hit* hit) {
+    FC_WORLD_ALPHA(alpha_seed);
+    bool found = trace_closest_alpha(sc->nodes, sc->tris, o, d, tmax, hit, alpha);
 #if FC_HAS_INSTANCES
-    if (trace_instances(sc, o, d, hit, false)) found = true;
+    if (trace_instances(sc, o, d, hit, false, alpha_seed)) found = true;
 #endif
 #if FC_HAS_SPHERES
     if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, hit, false)) {
@@ -29,9 +43,10 @@ inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float t
     return found;
 }
 
-/* Whether anything is hit with 0 < t < tmax (shadow rays). */
-inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax) {
-    if (trace_any(sc->nodes, sc->tris, o, d, tmax)) return true;
+/* Whether anything that the alpha test keeps is hit with 0 < t < tmax (shadow rays). */
+inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
+    FC_WORLD_ALPHA(alpha_seed);
+    if (trace_any_alpha(sc->nodes, sc->tris, o, d, tmax, alpha)) return true;
 #if FC_HAS_INSTANCES || FC_HAS_SPHERES
     Hit hit;
     hit.t = tmax;
@@ -40,12 +55,14 @@ inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax)
     hit.inst = -1;
 #endif
 #if FC_HAS_INSTANCES
-    if (trace_instances(sc, o, d, &hit, true)) return true;
+    if (trace_instances(sc, o, d, &hit, true, alpha_seed)) return true;
 #endif
 #if FC_HAS_SPHERES
     if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, &hit, true)) return true;
 #endif
     return false;
 }
+
+#undef FC_WORLD_ALPHA
 
 #endif
