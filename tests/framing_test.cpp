@@ -58,5 +58,13 @@ TEST(Framing, LongAlongXIsSeenFromFront) {
     EXPECT_GT(key_light_centre(scene).z, 1.0f);
 }
 
+// A box about as deep as wide (McGuire's Cornell boxes: 2.02 wide, 2.03 deep, open towards
+// +z) keeps the +z view: from +x the camera saw a closed wall and a black image.
+TEST(Framing, RoomAboutAsDeepAsWideKeepsTheFront) {
+    test::TempDir d;
+    const Scene scene = load_scene(d.write("room.obj", box_obj(1.01f, 1.015f)));
+    EXPECT_GT(view_side(scene).z, 0.99f);
+}
+
 }  // namespace
 }  // namespace facet

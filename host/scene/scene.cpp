@@ -140,11 +140,13 @@ std::size_t Scene::placed_triangle_count() const {
 
 namespace {
 
-// Whether a broadside framing looks from +x (the model is longer along z than along x).
+// Whether a broadside framing looks from +x: the model is clearly longer along z than along
+// x (by a quarter; a room about as deep as wide, such as a Cornell box open towards +z,
+// keeps the +z view its author meant).
 bool broadside_from_x(const Scene& scene, Framing framing) {
     if (framing != Framing::Broadside) return false;
     const Bounds b = scene_bounds(scene);
-    return !b.empty() && b.hi.z - b.lo.z > b.hi.x - b.lo.x;
+    return !b.empty() && b.hi.z - b.lo.z > 1.25f * (b.hi.x - b.lo.x);
 }
 
 }  // namespace

@@ -170,8 +170,9 @@ void mark_triangle_materials(const Scene& scene, std::vector<bool>& used);
 // A camera that frames the scene's bounding box: looking at its centre from +z and
 // slightly above, far enough that the bounding sphere fits a 40 degree vertical fov.
 // glTF's front faces +z; a format with no convention (OBJ, PLY, ...) is `broadside`: seen
-// from +x instead when the model is longer along z than along x, so that the view takes in
-// its largest extent (a cow modelled along z is seen from the side, not from behind).
+// from +x instead when the model is longer along z than along x by more than a quarter, so
+// that the view takes in its largest extent (a cow modelled along z is seen from the side,
+// not from behind; a Cornell box about as deep as wide keeps its open +z side).
 enum class Framing { Front, Broadside };
 CameraDesc frame_camera(const Scene& scene, Framing framing = Framing::Front);
 // The note frame_camera's view gets in Scene::camera_note: "framed to fit the model,
