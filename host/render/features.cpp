@@ -65,6 +65,10 @@ FeatureMask scene_features(const Scene& scene) {
         }
         if (m.textures.any()) mask |= kTEXTURES;
         if (m.metallic > 0.0f || m.textures.metallic_workflow) mask |= kMETALLIC;
+        if (m.specular_model != FC_SPECULAR_DIELECTRIC) {  // the layers go over non-dielectrics only
+            if (m.clearcoat > 0.0f) mask |= kCLEARCOAT;
+            if (std::max(m.sheen.x, std::max(m.sheen.y, m.sheen.z)) > 0.0f) mask |= kSHEEN;
+        }
     }
     return mask;
 }

@@ -21,7 +21,9 @@
     X(TEXTURES, 9)          \
     X(SPHERES, 10)          \
     X(INSTANCES, 11)        \
-    X(METALLIC, 12)
+    X(METALLIC, 12)         \
+    X(CLEARCOAT, 13)        \
+    X(SHEEN, 14)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -61,6 +63,12 @@
 #endif
 #ifndef FC_HAS_METALLIC
 #define FC_HAS_METALLIC 1
+#endif
+#ifndef FC_HAS_CLEARCOAT
+#define FC_HAS_CLEARCOAT 1
+#endif
+#ifndef FC_HAS_SHEEN
+#define FC_HAS_SHEEN 1
 #endif
 
 #endif
