@@ -22,8 +22,8 @@
     X(SPHERES, 10)          \
     X(INSTANCES, 11)        \
     X(METALLIC, 12)         \
-    X(CLEARCOAT, 13)        \
-    X(SHEEN, 14)
+    X(CLEARCOAT, 15)        \
+    X(SHEEN, 16)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
