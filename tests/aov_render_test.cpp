@@ -87,5 +87,21 @@ TEST(AovRender, MetallicMixAlbedo) {
     EXPECT_NEAR(a.albedo[3 * on + 2], 0.72f, 1e-4f);
 }
 
+// A clearcoat (weight 1, a mirror coat) over the same dielectric seen head-on: the coat's
+// albedo 0.04 plus the rest, 0.96, of the base's (0.2, 0.5, 0.7) + 0.04, as the BRDF layers them.
+TEST(AovRender, ClearcoatAlbedo) {
+    Scene scene = quad_scene();
+    Material& m = scene.materials[0];
+    m.specular_model = FC_SPECULAR_MICROFACET;
+    set_metallic_roughness(m, glm::vec3(0.2f, 0.5f, 0.7f), 0.0f, 0.04f);
+    m.clearcoat = 1.0f;
+    m.clearcoat_alpha = 0.0f;
+    const AovImages a = render_aovs(test::context(), scene, build_bvh(scene.vertices), 4);
+    const std::size_t on = std::size_t(8) * kSize + 3;
+    EXPECT_NEAR(a.albedo[3 * on + 0], 0.04f + 0.96f * 0.24f, 1e-4f);
+    EXPECT_NEAR(a.albedo[3 * on + 1], 0.04f + 0.96f * 0.54f, 1e-4f);
+    EXPECT_NEAR(a.albedo[3 * on + 2], 0.04f + 0.96f * 0.74f, 1e-4f);
+}
+
 }  // namespace
 }  // namespace facet

@@ -91,7 +91,7 @@ TEST(Features, LambertCornellBoxLeavesOutEverythingElse) {
     Renderer r(test::context(), scene, bvh);
     EXPECT_TRUE(built_with(r, "AREA_LIGHTS", 1));
     for (const char* off : {"ENVIRONMENT", "PUNCTUAL_LIGHTS", "MICROFACET", "BECKMANN", "BLINN_PHONG",
-                            "ASHIKHMIN_SHIRLEY", "OREN_NAYAR", "DIELECTRIC"})
+                            "ASHIKHMIN_SHIRLEY", "OREN_NAYAR", "DIELECTRIC", "CLEARCOAT", "SHEEN"})
         EXPECT_TRUE(built_with(r, off, 0)) << off;
     Renderer g(test::context(), scene, bvh, true);
     EXPECT_TRUE(prelude(g).empty()) << "the generic program has no prelude";
@@ -159,6 +159,12 @@ TEST(Features, EveryFlagIsExercised) {
     Material tinted_glass = make_material("dielectric");
     tinted_glass.attenuation = glm::vec3(0.5f, 1.0f, 2.0f);  // Beer-Lambert inside (KHR_materials_volume)
     with_material("absorbing dielectric (volume)", tinted_glass);
+    Material layered = half_metal;  // glTF's clearcoat and sheen layers over it
+    layered.clearcoat = 0.8f;
+    layered.clearcoat_alpha = 0.05f;
+    layered.sheen = glm::vec3(0.6f, 0.3f, 0.9f);
+    layered.sheen_roughness = 0.5f;
+    with_material("clearcoat and sheen", layered);
     Material textured = make_material("ggx");
     textured.textures.base_color = textured.textures.roughness = textured.textures.normal = 0;
     with_material("textured", textured);

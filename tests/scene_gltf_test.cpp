@@ -242,23 +242,23 @@ TEST(SceneGltf, MaterialsMappedOntoFacetModels) {
     };
     material("gold", {1, 0.7, 0.3, 1}, 1, 0.2);
     material("plastic", {0.8, 0.1, 0.1, 0.4}, 0, 0.5)->alphaMode = "BLEND";
-    tinygltf::Value::Object ior, transmission, strength, clearcoat;
+    tinygltf::Value::Object ior, transmission, strength, iridescence;
     ior["ior"] = tinygltf::Value(1.33);
     transmission["transmissionFactor"] = tinygltf::Value(1.0);
     strength["emissiveStrength"] = tinygltf::Value(10.0);
-    clearcoat["clearcoatFactor"] = tinygltf::Value(1.0);
+    iridescence["iridescenceFactor"] = tinygltf::Value(1.0);
     tinygltf::Material* glass = material("water", {0.9, 1, 1, 1}, 0, 0.1);
     glass->extensions["KHR_materials_ior"] = tinygltf::Value(ior);
     glass->extensions["KHR_materials_transmission"] = tinygltf::Value(transmission);
     tinygltf::Material* lamp = material("lamp", {1, 1, 1, 1}, 0, 1);
     lamp->emissiveFactor = {1, 0.5, 0};
     lamp->extensions["KHR_materials_emissive_strength"] = tinygltf::Value(strength);
-    lamp->extensions["KHR_materials_clearcoat"] = tinygltf::Value(clearcoat);
+    lamp->extensions["KHR_materials_iridescence"] = tinygltf::Value(iridescence);
     lamp->occlusionTexture.index = 0;
     lamp->alphaMode = "MASK";
     lamp->alphaCutoff = 0.25;
     b.m.extensionsUsed = {"KHR_materials_ior", "KHR_materials_transmission", "KHR_materials_emissive_strength",
-                          "KHR_materials_clearcoat"};
+                          "KHR_materials_iridescence"};
     Scene s;
     load_gltf(b.write(d, "mat.gltf"), s);
     ASSERT_EQ(s.materials.size(), 4u);
@@ -288,14 +288,75 @@ TEST(SceneGltf, MaterialsMappedOntoFacetModels) {
     EXPECT_EQ(s.materials[3].alpha_mode, FC_ALPHA_MASK);
     EXPECT_NEAR(s.materials[3].alpha_cutoff, 0.25f, 1e-6f);
     // What is not read is named.
-    for (const char* ignored : {"occlusionTexture", "materials[3] 'lamp'", "material extension KHR_materials_clearcoat",
-                                "extension KHR_materials_clearcoat"})
+    for (const char* ignored : {"occlusionTexture", "materials[3] 'lamp'",
+                                "material extension KHR_materials_iridescence", "extension KHR_materials_iridescence"})
         EXPECT_TRUE(test::contains(s.warnings, ignored)) << ignored;
     EXPECT_FALSE(test::contains(s.warnings, "alphaMode")) << "MASK and BLEND are read";
     // An extension the file requires and facet does not read is an error.
-    b.m.extensionsRequired = {"KHR_materials_clearcoat"};
+    b.m.extensionsRequired = {"KHR_materials_iridescence"};
     expect_error([&] { load_scene(b.write(d, "req.gltf")); },
-                 {"req.gltf", "requires the extension KHR_materials_clearcoat"});
+                 {"req.gltf", "requires the extension KHR_materials_iridescence"});
+}
+
+// KHR_materials_clearcoat and KHR_materials_sheen onto the layers: alpha = roughness^2, the
+// sheen colour as written, textures warned about, the layers left off a transmissive
+// material, and a factor out of range named by its JSON path.
+TEST(SceneGltf, ClearcoatAndSheenLayers) {
+    TempDir d;
+    auto build = [](double clearcoat, std::vector<double> sheen) {
+        ModelBuilder b;
+        tinygltf::Value::Object cc, sh, tex;
+        cc["clearcoatFactor"] = tinygltf::Value(clearcoat);
+        cc["clearcoatRoughnessFactor"] = tinygltf::Value(0.5);
+        tex["index"] = tinygltf::Value(0);
+        cc["clearcoatNormalTexture"] = tinygltf::Value(tex);
+        tinygltf::Value::Array colour;
+        for (double c : sheen) colour.push_back(tinygltf::Value(c));
+        sh["sheenColorFactor"] = tinygltf::Value(colour);
+        sh["sheenRoughnessFactor"] = tinygltf::Value(0.25);
+        for (bool glass : {false, true}) {
+            tinygltf::Material m;
+            m.name = glass ? "glass" : "coated";
+            m.pbrMetallicRoughness.baseColorFactor = {0.5, 0.5, 0.5, 1};
+            m.pbrMetallicRoughness.metallicFactor = 0.0;
+            m.extensions["KHR_materials_clearcoat"] = tinygltf::Value(cc);
+            m.extensions["KHR_materials_sheen"] = tinygltf::Value(sh);
+            if (glass) {
+                tinygltf::Value::Object t;
+                t["transmissionFactor"] = tinygltf::Value(1.0);
+                m.extensions["KHR_materials_transmission"] = tinygltf::Value(t);
+            }
+            b.m.materials.push_back(m);
+            b.mesh_node(b.square(true, false, int(b.m.materials.size() - 1)));
+        }
+        b.m.extensionsUsed = {"KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_transmission"};
+        b.m.extensionsRequired = {"KHR_materials_clearcoat", "KHR_materials_sheen"};
+        return b;
+    };
+    Scene s;
+    load_gltf(build(0.75, {0.2, 0.4, 0.6}).write(d, "layers.gltf"), s);
+    ASSERT_EQ(s.materials.size(), 2u);
+    const Material& coated = s.materials[0];
+    EXPECT_FLOAT_EQ(coated.clearcoat, 0.75f);
+    EXPECT_FLOAT_EQ(coated.clearcoat_alpha, 0.25f);  // roughness^2
+    EXPECT_NEAR(glm::length(coated.sheen - glm::vec3(0.2f, 0.4f, 0.6f)), 0.0f, 1e-6f);
+    EXPECT_FLOAT_EQ(coated.sheen_roughness, 0.25f);
+    EXPECT_EQ(s.materials[1].clearcoat, 0.0f);
+    EXPECT_EQ(s.materials[1].sheen, glm::vec3(0.0f));
+    for (const char* warning : {"KHR_materials_clearcoat.clearcoatNormalTexture",
+                                "KHR_materials_sheen on a transmissive material", "materials[1] 'glass'"})
+        EXPECT_TRUE(test::contains(s.warnings, warning)) << warning;
+    EXPECT_FALSE(test::contains(s.warnings, "material extension KHR_materials_clearcoat"));
+    expect_error(
+        [&] {
+            load_scene(build(1.5, {0, 0, 0}).write(d, "coat.gltf"));
+        },
+        {"coat.gltf", "materials[0].extensions.KHR_materials_clearcoat.clearcoatFactor", "[0, 1]", "1.5"});
+    expect_error(
+        [&] {
+            load_scene(build(1, {0, 2, 0}).write(d, "sheen.gltf"));
+        },
+        {"sheen.gltf", "materials[0].extensions.KHR_materials_sheen.sheenColorFactor[1]", "[0, 1]"});
 }
 
 TEST(SceneGltf, InJsonScene) {

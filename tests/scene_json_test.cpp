@@ -128,6 +128,39 @@ TEST(SceneJson, JsonBadTypesAndValues) {
     expect_error([&] { load_scene(scene(d, "u.json", R"("render": {"spp": 4})")); }, {"u.json", "no geometry"});
 }
 
+// "clearcoat", "clearcoat_roughness", "sheen" and "sheen_roughness": glTF's layers, alpha =
+// roughness^2, each value checked with its path, and refused on a dielectric.
+TEST(SceneJson, ClearcoatAndSheenKeys) {
+    TempDir d;
+    const std::string shapes = R"(, "shapes": [)" + kQuadShape + "]";
+    const Scene s = load_scene(scene(d, "layers.json",
+                                     R"("materials": {"m": {"model": "ggx", "metallic": 0.5,
+        "clearcoat": 0.8, "clearcoat_roughness": 0.3, "sheen": [0.1, 0.2, 0.3], "sheen_roughness": 0.6}})" +
+                                         shapes));
+    ASSERT_FALSE(s.materials.empty());
+    const Material& m = s.materials[0];
+    EXPECT_FLOAT_EQ(m.clearcoat, 0.8f);
+    EXPECT_NEAR(m.clearcoat_alpha, 0.09f, 1e-6f);
+    EXPECT_NEAR(glm::length(m.sheen - glm::vec3(0.1f, 0.2f, 0.3f)), 0.0f, 1e-6f);
+    EXPECT_FLOAT_EQ(m.sheen_roughness, 0.6f);
+    struct Case {
+        std::string body, path, problem;
+    };
+    const Case cases[] = {
+        {R"("materials": {"m": {"clearcoat": 1.2}})", "materials.m.clearcoat", "1.2"},
+        {R"("materials": {"m": {"clearcoat_roughness": -0.1}})", "materials.m.clearcoat_roughness", "-0.1"},
+        {R"("materials": {"m": {"sheen": [0.5, 1.5, 0]}})", "materials.m.sheen", "at most 1"},
+        {R"("materials": {"m": {"sheen": 0.5}})", "materials.m.sheen", ""},
+        {R"("materials": {"m": {"sheen_roughness": "rough"}})", "materials.m.sheen_roughness", ""},
+        {R"("materials": {"m": {"model": "dielectric", "clearcoat": 1}})", "materials.m.clearcoat", "transmit"},
+    };
+    int i = 0;
+    for (const Case& c : cases) {
+        const std::string name = "layers" + std::to_string(i++) + ".json";
+        expect_error([&] { load_scene(scene(d, name, c.body + shapes)); }, {name + ": " + c.path, c.problem});
+    }
+}
+
 TEST(SceneJson, JsonUnknownMaterial) {
     TempDir d;
     d.write("tri.obj", kTri);

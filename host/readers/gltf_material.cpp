@@ -1,5 +1,5 @@
 // glTF materials onto facet's models (glTF 2.0 specification, appendix B; the KHR
-// extensions' own documents for ior, transmission and emissive strength).
+// extensions' own documents for ior, transmission, emissive strength, clearcoat and sheen).
 #include "host/readers/gltf_material.hpp"
 
 #include <algorithm>
@@ -204,6 +204,68 @@ void bind_textures(const tinygltf::Material& g, Material& m, glm::vec3 base, flo
     t.emission = bound[3];
 }
 
+// --- clearcoat and sheen -------------------------------------------------------------------
+
+// The layers' extensions (kernels/bsdf/clearcoat.cl, sheen.cl), each number checked with its
+// JSON path in the message. Their textures are not read (warned about and ignored).
+bool layer_extension(const std::string& name) {
+    return name == "KHR_materials_clearcoat" || name == "KHR_materials_sheen";
+}
+
+// A number of a layer extension's object `v` at `key` (its JSON path extensions.EXT.key after
+// `place`), `fallback` when absent, which must lie in [0, 1].
+float layer_factor(const tinygltf::Value& v, const char* extension, const char* key, double fallback,
+                   const std::string& file, const std::string& place) {
+    if (!v.Has(key)) return float(fallback);
+    const tinygltf::Value& x = v.Get(key);
+    const double d = x.IsNumber() ? x.GetNumberAsDouble() : std::nan("");
+    const std::string what = fmt::format("extensions.{}.{}", extension, key);
+    if (!(d >= 0.0 && d <= 1.0))
+        throw Error(fmt::format("{}: {}.{}: must be a number in [0, 1], got {}", file, place, what,
+                                x.IsNumber() ? fmt::format("{:g}", d) : std::string("no number")));
+    return float(d);
+}
+
+// KHR_materials_clearcoat (clearcoatFactor, clearcoatRoughnessFactor: alpha = roughness^2)
+// and KHR_materials_sheen (sheenColorFactor, sheenRoughnessFactor) onto the material's
+// layers. The layers go over non-transmissive materials only.
+void read_layers(const tinygltf::Material& g, Material& m, const std::string& file, const std::string& place,
+                 const std::string& where, Ignored& ignored) {
+    for (const char* extension : {"KHR_materials_clearcoat", "KHR_materials_sheen"}) {
+        const auto it = g.extensions.find(extension);
+        if (it == g.extensions.end()) continue;
+        const tinygltf::Value& v = it->second;
+        if (!v.IsObject()) throw Error(fmt::format("{}: {}.extensions.{}: must be an object", file, place, extension));
+        for (const std::string& key : v.Keys())
+            if (key.size() > 7 && key.compare(key.size() - 7, 7, "Texture") == 0)
+                ignored.add(fmt::format("{}.{}", extension, key), where);
+        if (m.specular_model == FC_SPECULAR_DIELECTRIC) {
+            ignored.add(fmt::format("{} on a transmissive material", extension), where);
+            continue;
+        }
+        if (std::string(extension) == "KHR_materials_clearcoat") {
+            m.clearcoat = layer_factor(v, extension, "clearcoatFactor", 0.0, file, place);
+            const float r = layer_factor(v, extension, "clearcoatRoughnessFactor", 0.0, file, place);
+            m.clearcoat_alpha = r * r;
+            continue;
+        }
+        if (v.Has("sheenColorFactor")) {
+            const tinygltf::Value& c = v.Get("sheenColorFactor");
+            if (!c.IsArray() || c.ArrayLen() != 3)
+                throw Error(
+                    fmt::format("{}: {}.extensions.{}.sheenColorFactor: must have 3 numbers", file, place, extension));
+            for (int i = 0; i < 3; ++i) {
+                const double x = c.Get(i).IsNumber() ? c.Get(i).GetNumberAsDouble() : std::nan("");
+                if (!(x >= 0.0 && x <= 1.0))
+                    throw Error(fmt::format("{}: {}.extensions.{}.sheenColorFactor[{}]: must be a number in [0, 1]",
+                                            file, place, extension, i));
+                m.sheen[i] = float(x);
+            }
+        }
+        m.sheen_roughness = layer_factor(v, extension, "sheenRoughnessFactor", 0.0, file, place);
+    }
+}
+
 }  // namespace
 
 void Ignored::warn(const std::string& file, std::vector<std::string>& warnings) const {
@@ -218,7 +280,7 @@ void Ignored::warn(const std::string& file, std::vector<std::string>& warnings) 
 bool supported_extension(const std::string& name) {
     return name == "KHR_lights_punctual" || name == "KHR_materials_ior" || name == "KHR_materials_transmission" ||
            name == "KHR_materials_emissive_strength" || name == "KHR_texture_transform" ||
-           name == "KHR_draco_mesh_compression" || name == "KHR_materials_volume";
+           name == "KHR_draco_mesh_compression" || name == "KHR_materials_volume" || layer_extension(name);
 }
 
 Material default_gltf_material() {
@@ -280,6 +342,7 @@ Material convert_material(const tinygltf::Material& g, const std::string& file, 
     bind_textures(g, m, base, metallic, ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f)), file, where,
                   ignored, model, scene);
     read_volume(g, m, file, place, where, ignored);
+    read_layers(g, m, file, place, where, ignored);
     if (g.occlusionTexture.index >= 0) ignored.add("occlusionTexture (a path tracer computes occlusion itself)", where);
     // alphaMode: OPAQUE ignores alpha; MASK cuts out where alpha < alphaCutoff, BLEND is
     // stochastic transparency; alpha = baseColorFactor's A x the base colour texture's A.

@@ -36,6 +36,27 @@ Material preset(const MaterialKeys& m) {
     return *preset;
 }
 
+// "clearcoat" (0 to 1) and "clearcoat_roughness" (0 to 1; alpha = roughness^2), "sheen" (a
+// colour, each 0 to 1) and "sheen_roughness" (0 to 1): glTF's KHR_materials_clearcoat and
+// KHR_materials_sheen layers (kernels/bsdf/clearcoat.cl, sheen.cl), over any material that
+// does not transmit (docs/scene-format.md).
+void layers(const MaterialKeys& k, Material& m) {
+    for (const char* key : {"clearcoat", "clearcoat_roughness", "sheen", "sheen_roughness"})
+        if (k.has(key) && m.specular_model == FC_SPECULAR_DIELECTRIC)
+            k.r.fail(k.key(key), "is a layer over a material that does not transmit (not model \"dielectric\")");
+    if (k.has("clearcoat")) m.clearcoat = k.number("clearcoat", 0, 1);
+    if (k.has("clearcoat_roughness")) {
+        const float r = k.number("clearcoat_roughness", 0, 1);
+        m.clearcoat_alpha = r * r;
+    }
+    if (k.has("sheen")) {
+        m.sheen = k.color("sheen");
+        for (int c = 0; c < 3; ++c)
+            if (m.sheen[c] > 1.0f) k.r.fail(k.key("sheen"), "each component must be at most 1");
+    }
+    if (k.has("sheen_roughness")) m.sheen_roughness = k.number("sheen_roughness", 0, 1);
+}
+
 // "specular", "f0" and "transmittance" all give the specular lobe's colour: F0 for the
 // Schlick Fresnel, Ks for the Blinn-Phong lobes, the dielectric's transmittance
 // (specular_colour in material.hpp). Whichever the file writes, the colour goes to the
@@ -290,6 +311,10 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
               "conductor",
               "transmittance",
               "energy_compensation",
+              "clearcoat",
+              "clearcoat_roughness",
+              "sheen",
+              "sheen_roughness",
               "metallic",
               "attenuation_color",
               "attenuation_distance",
@@ -320,6 +345,7 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
     }
     if (k.has("attenuation_color") || k.has("attenuation_distance")) volume(k, m);
     alpha(k, m);
+    layers(k, m);
     if (std::string warning = clamp_reflectance(m); !warning.empty())
         scene.warnings.push_back(fmt::format("{}: {}: {}", r.file(), path, warning));
     if (std::string problem = validate_material(m); !problem.empty()) r.fail(path, problem);

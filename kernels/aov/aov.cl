@@ -29,7 +29,9 @@
 
 /* The reflectance a denoiser sees at a non-delta surface, seen from wo_local. A metallic
  * material's is the mix of its dielectric's (diffuse base plus F at 0.04) and its metal's
- * (F from the base colour) by M, as the BRDF mixes them (metallic.cl). */
+ * (F from the base colour) by M, as the BRDF mixes them (metallic.cl). The clearcoat and
+ * sheen layers weigh it as the BRDF does (bsdf.cl): c E_coat + (1 - c E_coat) (S E_sheen +
+ * (1 - max(S) E_sheen) a). */
 inline float3 aov_albedo(const FcMaterial* m, float3 wo_local) {
     float3 a = (float3)(0.0f);
     if (m->diffuse_model != FC_DIFFUSE_NONE) a += load3p(m->diffuse);
@@ -39,6 +41,13 @@ inline float3 aov_albedo(const FcMaterial* m, float3 wo_local) {
     if (metallic_mixed(m)) {
         FcMaterial metal = metallic_lobe(m);
         a = mix(a, fresnel_eval(&metal, fabs(wo_local.z)), metallic_weight(m));
+    }
+    if (bsdf_layered(m)) {
+        float3 wo = (float3)(wo_local.xy, fabs(wo_local.z));
+        float4 w = bsdf_layer_weights(m, wo);
+        a *= w.y;
+        if (sheen_present(m)) a += sheen_color(m) * sheen_albedo(m->sheen_roughness, wo.z);
+        a = w.x + w.z * a;
     }
     return clamp(a, 0.0f, 1.0f);
 }

@@ -13,17 +13,29 @@
  * mixture's weight.
  *
  * A dielectric (FC_SPECULAR_DIELECTRIC) is the whole BSDF: it alone transmits, so wo
- * and wi may lie on either side (dielectric.cl), and any diffuse lobe is ignored. */
+ * and wi may lie on either side (dielectric.cl), and any diffuse lobe is ignored.
+ *
+ * glTF's layers go over the rest of a non-dielectric material, outermost first: the
+ * clearcoat (clearcoat.cl), then the sheen (sheen.cl), each weighting what lies below by
+ * one minus its own albedo seen from wo,
+ *     f = c f_coat + (1 - c E_coat(mu_o)) (f_sheen + (1 - max(S) E_sheen(mu_o)) f_base).
+ * sample() chooses the coat with probability p_c = c E_coat(mu_o), the sheen (cosine
+ * sampling) with p_s = (1 - p_c) lum(S) E_sheen(mu_o), else the base (both clamped so the
+ * base keeps a share), and the pdf is the same mixture. A material without layers takes
+ * the base's code path unchanged, bit for bit. */
 #ifndef FACET_BSDF_BSDF_CL
 #define FACET_BSDF_BSDF_CL
 
 #include "kernels/bsdf/bsdf_sample.cl"
 #include "kernels/bsdf/diffuse.cl"
+#include "kernels/bsdf/lambert.cl"
 #include "kernels/bsdf/metallic.cl"
 #include "kernels/bsdf/specular.cl"
 #if FC_HAS_DIELECTRIC
 #include "kernels/bsdf/dielectric.cl"
 #endif
+#include "kernels/bsdf/clearcoat.cl"
+#include "kernels/bsdf/sheen.cl"
 
 /* Whether the material is a dielectric (transmits; handled by dielectric.cl). */
 inline bool bsdf_is_dielectric(const FcMaterial* m) {
@@ -49,7 +61,7 @@ inline float specular_probability(const FcMaterial* m, float3 wo) {
     return (s + d > 0.0f) ? clamp(s / (s + d), 0.05f, 0.95f) : 0.5f;
 }
 
-inline float3 bsdf_eval(const FcMaterial* m, float3 wo, float3 wi) {
+inline float3 bsdf_base_eval(const FcMaterial* m, float3 wo, float3 wi) {
 #if FC_HAS_DIELECTRIC
     if (bsdf_is_dielectric(m)) return dielectric_eval(m, wo, wi);
 #endif
@@ -62,7 +74,7 @@ inline float3 bsdf_eval(const FcMaterial* m, float3 wo, float3 wi) {
     return f;
 }
 
-inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
+inline float bsdf_base_pdf(const FcMaterial* m, float3 wo, float3 wi) {
 #if FC_HAS_DIELECTRIC
     if (bsdf_is_dielectric(m)) return dielectric_pdf(m, wo, wi);
 #endif
@@ -75,7 +87,7 @@ inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
 }
 
 /* Whether every lobe of the BSDF is a delta (next-event estimation is useless). */
-inline bool bsdf_is_delta(const FcMaterial* m) {
+inline bool bsdf_base_is_delta(const FcMaterial* m) {
 #if FC_HAS_DIELECTRIC
     if (bsdf_is_dielectric(m)) return dielectric_is_smooth(m);
 #endif
@@ -83,7 +95,7 @@ inline bool bsdf_is_delta(const FcMaterial* m) {
 }
 
 /* u.z chooses the lobe, u.xy sample it. Returns false when no direction was made. */
-inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s) {
+inline bool bsdf_base_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s) {
     s->delta = 0;
 #if FC_HAS_DIELECTRIC
     if (bsdf_is_dielectric(m)) return dielectric_sample(m, wo, u, s);
@@ -104,6 +116,102 @@ inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s)
         return false;
     }
     if (s->wi.z <= 0.0f) return false;
+    return finish_sample(s, bsdf_base_eval(m, wo, s->wi), bsdf_base_pdf(m, wo, s->wi));
+}
+
+/* The layers' weights seen from wo: the coat's albedo share c E_coat (x), the sheen's weight
+ * over the base 1 - max(S) E_sheen (y), the layer below the coat 1 - c E_coat (z), and the
+ * sheen's albedo share lum(S) E_sheen (w). */
+inline float4 bsdf_layer_weights(const FcMaterial* m, float3 wo) {
+    float4 w = (float4)(0.0f, 1.0f, 1.0f, 0.0f);
+    if (clearcoat_present(m)) {
+        FcMaterial coat = clearcoat_lobe(m);
+        w.x = clearcoat_weight(m) * clearcoat_albedo(&coat, wo.z);
+        w.z = clamp(1.0f - w.x, 0.0f, 1.0f);
+    }
+    if (sheen_present(m)) {
+        w.y = sheen_below_weight(m, wo.z);
+        w.w = luminance(sheen_color(m)) * sheen_albedo(m->sheen_roughness, wo.z);
+    }
+    return w;
+}
+
+/* Whether the material has a clearcoat or sheen layer. */
+inline bool bsdf_layered(const FcMaterial* m) {
+    if (bsdf_is_dielectric(m)) return false;
+    if (clearcoat_present(m)) return true;
+    if (sheen_present(m)) return true;
+    return false;
+}
+
+/* The lobe choice of a layered material: (p_coat, p_sheen), p_base = 1 - both. */
+inline float2 bsdf_layer_probabilities(const FcMaterial* m, float4 w) {
+    float pc = clearcoat_present(m) ? clamp(w.x, 0.02f, 0.9f) : 0.0f;
+    float ps = sheen_present(m) ? (1.0f - pc) * clamp(w.w, 0.02f, 0.9f) : 0.0f;
+    return (float2)(pc, ps);
+}
+
+inline float3 bsdf_eval(const FcMaterial* m, float3 wo, float3 wi) {
+    if (!bsdf_layered(m)) return bsdf_base_eval(m, wo, wi);
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
+    float4 w = bsdf_layer_weights(m, wo);
+    float3 f = bsdf_base_eval(m, wo, wi) * w.y;
+    if (sheen_present(m)) f += sheen_eval(m, wo, wi);
+    f *= w.z;
+    if (clearcoat_present(m)) {
+        FcMaterial coat = clearcoat_lobe(m);
+        f += clearcoat_weight(m) * microfacet_eval(&coat, wo, wi);
+    }
+    return f;
+}
+
+inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
+    if (!bsdf_layered(m)) return bsdf_base_pdf(m, wo, wi);
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    float2 p = bsdf_layer_probabilities(m, bsdf_layer_weights(m, wo));
+    float pdf = (1.0f - p.x - p.y) * bsdf_base_pdf(m, wo, wi);
+    if (p.y > 0.0f) pdf += p.y * cosine_hemisphere_pdf(wo, wi);
+    if (p.x > 0.0f) {
+        FcMaterial coat = clearcoat_lobe(m);
+        pdf += p.x * microfacet_pdf(&coat, wo, wi);
+    }
+    return pdf;
+}
+
+/* Whether every lobe of the BSDF is a delta (next-event estimation is useless). */
+inline bool bsdf_is_delta(const FcMaterial* m) {
+    if (!bsdf_layered(m)) return bsdf_base_is_delta(m);
+    if (sheen_present(m)) return false;
+    FcMaterial coat = clearcoat_lobe(m);
+    return bsdf_base_is_delta(m) && microfacet_is_mirror(&coat);
+}
+
+/* u.z chooses the layer (and, rescaled, the base's lobe), u.xy sample it. */
+inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s) {
+    if (!bsdf_layered(m)) return bsdf_base_sample(m, wo, u, s);
+    s->delta = 0;
+    if (wo.z <= 0.0f) return false;
+    float4 w = bsdf_layer_weights(m, wo);
+    float2 p = bsdf_layer_probabilities(m, w);
+    float pb = 1.0f - p.x - p.y;
+    if (u.z < p.x) {
+        FcMaterial coat = clearcoat_lobe(m);
+        if (!microfacet_sample(&coat, wo, u.xy, s)) return false;
+        if (s->delta) { /* the coat's mirror: c F(mu_o), chosen with probability p_c */
+            s->weight *= clearcoat_weight(m) / p.x;
+            return all_finite(s->weight);
+        }
+    } else if (u.z < p.x + p.y) {
+        s->wi = square_to_cosine_hemisphere(u.xy);
+    } else {
+        u.z = fmin((u.z - p.x - p.y) / pb, FC_ONE_MINUS_EPSILON);
+        if (!bsdf_base_sample(m, wo, u, s)) return false;
+        if (s->delta) { /* the base's mirror under the layers */
+            s->weight *= w.y * w.z / pb;
+            return all_finite(s->weight);
+        }
+    }
+    if (!(s->wi.z > 0.0f)) return false;
     return finish_sample(s, bsdf_eval(m, wo, s->wi), bsdf_pdf(m, wo, s->wi));
 }
 

@@ -23,7 +23,9 @@
     X(INSTANCES, 11)        \
     X(METALLIC, 12)         \
     X(ALPHA, 13)            \
-    X(VOLUME, 14)
+    X(VOLUME, 14)           \
+    X(CLEARCOAT, 15)        \
+    X(SHEEN, 16)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -73,6 +75,12 @@
  * kernels/integrator/path.cl). */
 #ifndef FC_HAS_VOLUME
 #define FC_HAS_VOLUME 1
+#endif
+#ifndef FC_HAS_CLEARCOAT
+#define FC_HAS_CLEARCOAT 1
+#endif
+#ifndef FC_HAS_SHEEN
+#define FC_HAS_SHEEN 1
 #endif
 
 #endif

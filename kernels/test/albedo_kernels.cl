@@ -55,6 +55,30 @@ __kernel void albedo_table(int ndf, int n_mu, int n_r, uint samples, __global fl
     out[id] = e.sum.xy / (float)samples;
 }
 
+/* albedo_sheen_table: one work-item per (r, mu) node; E_sheen(mu) = int D V cos dwi of the
+ * sheen lobe (sheen.cl, S = 1) at roughness r = j / (n_r - 1) (clamped as the kernels clamp
+ * it), by cosine sampling on a Hammersley set (f cos / pdf = pi D V). */
+__kernel void albedo_sheen_table(int n_mu, int n_r, uint samples, __global float* out) {
+    int id = (int)get_global_id(0);
+    if (id >= n_mu * n_r) return;
+    int i = id % n_mu, j = id / n_mu;
+    float r = (float)j / (float)(n_r - 1);
+    float mu = fmax((float)i / (float)(n_mu - 1), 1e-3f);
+    float3 wo = (float3)(sqrt(1.0f - mu * mu), 0.0f, mu);
+    Rng rng = rng_init(0x534845u, (uint)id, 0u);
+    float2 shift = (float2)(rng_float(&rng), rng_float(&rng));
+    KahanSum3 e = {(float3)(0.0f), (float3)(0.0f)};
+    for (uint k = 0; k < samples; ++k) {
+        float2 u = (float2)(((float)k + 0.5f) / (float)samples, (float)(reverse_bits32(k) >> 8) * 0x1p-24f);
+        u = u + shift;
+        u -= floor(u);
+        float3 wi = square_to_cosine_hemisphere(u);
+        if (!(wi.z > 0.0f)) continue;
+        kahan_add(&e, (float3)(FC_PI * sheen_dv(r, wo, wi), 0.0f, 0.0f));
+    }
+    out[id] = e.sum.x / (float)samples;
+}
+
 /* albedo_dielectric_table: one work-item per (x, r, mu) node of one NDF and side. The
  * energy albedo E = E_R + E_T of the rough dielectric seen from wo (above the surface),
  * transmission weighted by etap^2 (the importance, not the radiance, that crosses),

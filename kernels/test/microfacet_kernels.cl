@@ -7,6 +7,9 @@
  *   1  the NDF's normals, h      (ndf_sample / ndf_pdf)
  *   2  the specular lobe, wi     (specular_sample / specular_pdf)
  *   3  the whole BSDF, wi        (bsdf_sample / bsdf_pdf) */
+#ifndef FACET_TEST_MICROFACET_KERNELS_CL
+#define FACET_TEST_MICROFACET_KERNELS_CL
+
 #include "kernels/bsdf/bsdf.cl"
 #include "kernels/bsdf/microfacet.cl"
 #include "kernels/util/rng.cl"
@@ -268,3 +271,5 @@ __kernel void mf_extreme_sweep(uint seed, __global uint* counters, __global FcMa
     checked += 2u;
     atomic_add(&counters[0], checked);
 }
+
+#endif

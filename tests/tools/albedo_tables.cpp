@@ -12,8 +12,12 @@
 // exact integrals of the piecewise-linear interpolant the kernels use, so the compensated
 // lobes' albedo integrates to exactly 1 at F = 1 whatever the table's resolution.
 //
+// - albedo_tables_sheen.cl: the directional albedo E_sheen(mu, r) of the Charlie sheen lobe
+//   (kernels/bsdf/sheen.cl), whose albedo scaling weights the layer below it.
+//
 // Usage (from the repository root, after building the target facet_albedo_tables):
-//   ./build/tests/facet_albedo_tables kernels/bsdf && make format
+//   ./build/tests/facet_albedo_tables kernels/bsdf [sheen] && make format
+// (`sheen`: only albedo_tables_sheen.cl).
 #include <cstdio>
 #include <exception>
 #include <stdexcept>
@@ -86,6 +90,26 @@ std::vector<float> integrate_dielectric(int ndf, int side, const std::vector<flo
     return v;
 }
 
+// The sheen lobe's albedo at every node, [r][mu].
+constexpr int kSMu = 32;
+constexpr int kSR = 32;
+constexpr unsigned kSSamples = 1u << 16;
+
+std::vector<double> integrate_sheen() {
+    using namespace facet::test;
+    const std::size_t n = std::size_t(kSMu) * kSR;
+    cl::Buffer out(context().context(), CL_MEM_WRITE_ONLY, n * sizeof(float));
+    cl::Kernel k(program("kernels/test/albedo_kernels.cl"), "albedo_sheen_table");
+    k.setArg(0, kSMu);
+    k.setArg(1, kSR);
+    k.setArg(2, kSSamples);
+    k.setArg(3, out);
+    context().queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n));
+    std::vector<float> v(n);
+    context().queue().enqueueReadBuffer(out, CL_TRUE, 0, n * sizeof(float), v.data());
+    return std::vector<double>(v.begin(), v.end());
+}
+
 // 2 int_0^1 E(mu) mu dmu of the piecewise-linear interpolant of row[0..kNMu).
 double average(const std::vector<double>& row) {
     const double h = 1.0 / (kNMu - 1);
@@ -131,12 +155,25 @@ void write_file(const std::string& dir, const char* name, Body body) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: facet_albedo_tables OUT_DIR  (from the repository root: kernels/bsdf)\n");
+    if (argc != 2 && !(argc == 3 && std::string(argv[2]) == "sheen")) {
+        std::fprintf(stderr, "usage: facet_albedo_tables OUT_DIR [sheen]  (from the repository root: kernels/bsdf)\n");
         return 2;
     }
     const std::string dir = argv[1];
     try {
+        const std::vector<double> sheen = integrate_sheen();
+        write_file(dir, "albedo_tables_sheen.cl", [&](std::FILE* f) {
+            std::fprintf(f,
+                         " * The directional albedo E_sheen(mu, r) of the Charlie sheen lobe (sheen.cl, colour 1),\n"
+                         " * integrated on the kernels with %u cosine samples per node: fc_albedo_sheen[r][mu] at\n"
+                         " * mu = i / %d and sheen roughness r = j / %d (clamped below as sheen.cl clamps it). */\n",
+                         kSSamples, kSMu - 1, kSR - 1);
+            std::fprintf(f, "#ifndef FACET_BSDF_ALBEDO_TABLES_SHEEN_CL\n#define FACET_BSDF_ALBEDO_TABLES_SHEEN_CL\n\n");
+            std::fprintf(f, "#define FC_SHEEN_N_MU %d\n#define FC_SHEEN_N_R %d\n\n", kSMu, kSR);
+            print_array(f, "fc_albedo_sheen", sheen, 8);
+            std::fprintf(f, "\n#endif\n");
+        });
+        if (argc == 3) return 0;
         // [ndf][r][mu] in FC_NDF order: Beckmann (0), GGX (1).
         static_assert(FC_NDF_BECKMANN == 0 && FC_NDF_GGX == 1, "albedo tables are indexed by ndf");
         std::vector<double> e, e5, e_avg, e5_avg;
