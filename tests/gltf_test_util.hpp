@@ -5,6 +5,7 @@
 #include <tiny_gltf.h>
 
 #include <cstddef>
+#include <string>
 
 namespace facet::test {
 
@@ -36,5 +37,17 @@ struct GltfBuilder {
         return int(m.accessors.size() - 1);
     }
 };
+
+// A one-triangle glTF whose material "glass" of metallicFactor `metallic` has `material_json`
+// (members after those two, e.g. "extensions").
+inline std::string one_triangle_gltf(const std::string& material_json, double metallic = 0.0) {
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+ "materials": [{"name": "glass", "pbrMetallicRoughness": {"metallicFactor": )" +
+           std::to_string(metallic) + "}, " + material_json + R"(}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}],
+ "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
+}
 
 }  // namespace facet::test

@@ -8,22 +8,11 @@
 
 #include "host/error.hpp"
 #include "host/readers/load_scene.hpp"
+#include "tests/gltf_test_util.hpp"
 #include "tests/temp_dir.hpp"
 
 namespace facet {
 namespace {
-
-// A one-triangle glTF whose material has `material_json` (the members after "name").
-std::string gltf_with_material(const std::string& material_json) {
-    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
- "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_volume"],
- "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
- "materials": [{"name": "glass", "pbrMetallicRoughness": {"metallicFactor": 0}, )" +
-           material_json + R"(}],
- "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}],
- "bufferViews": [{"buffer": 0, "byteLength": 36}],
- "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})";
-}
 
 const Material& material_named(const Scene& s, const std::string& name) {
     for (std::size_t i = 0; i < s.materials.size(); ++i)
@@ -34,7 +23,7 @@ const Material& material_named(const Scene& s, const std::string& name) {
 TEST(MaterialVolume, GltfVolumeGivesTheCoefficient) {
     test::TempDir d;
     const Scene s = load_scene(d.write(
-        "glass.gltf", gltf_with_material(R"("extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
+        "glass.gltf", test::one_triangle_gltf(R"("extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
         "KHR_materials_volume": {"thicknessFactor": 0.2, "attenuationColor": [0.5, 0.25, 1], "attenuationDistance": 2}})")));
     const Material& m = material_named(s, "glass");
     EXPECT_EQ(m.specular_model, FC_SPECULAR_DIELECTRIC);
@@ -46,7 +35,7 @@ TEST(MaterialVolume, GltfVolumeGivesTheCoefficient) {
 
 TEST(MaterialVolume, GltfVolumeWithoutTransmissionIsIgnoredWithAWarning) {
     test::TempDir d;
-    const Scene s = load_scene(d.write("paint.gltf", gltf_with_material(R"("extensions": {"KHR_materials_volume":
+    const Scene s = load_scene(d.write("paint.gltf", test::one_triangle_gltf(R"("extensions": {"KHR_materials_volume":
         {"attenuationColor": [0.5, 0.5, 0.5], "attenuationDistance": 1}})")));
     EXPECT_EQ(material_named(s, "glass").attenuation, glm::vec3(0.0f));
     bool warned = false;
@@ -62,8 +51,9 @@ TEST(MaterialVolume, GltfBadValuesNameTheKey) {
                                               "attenuationColor"},
           {R"({"attenuationColor": [1, 1], "attenuationDistance": 1})", "attenuationColor"},
           {R"({"attenuationDistance": -1})", "attenuationDistance"}}) {
-        const std::string path = d.write("bad.gltf", gltf_with_material(R"("extensions": {)" + transmit +
-                                                                        R"("KHR_materials_volume": )" + volume + "}"));
+        const std::string path = d.write(
+            "bad.gltf",
+            test::one_triangle_gltf(R"("extensions": {)" + transmit + R"("KHR_materials_volume": )" + volume + "}"));
         try {
             load_scene(path);
             ADD_FAILURE() << volume << " was accepted";

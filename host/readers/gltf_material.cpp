@@ -34,6 +34,44 @@ float in_range(double v, double lo, double hi, const std::string& file, const st
     return static_cast<float>(v);
 }
 
+// KHR_materials_specular on glTF's dielectric-metal mix: the dielectric's F0 becomes
+// min(F0(ior) specularColorFactor, 1) specularFactor (the extension's F0; its F90 =
+// specularFactor is not modelled: facet's Schlick Fresnel reaches 1 at grazing angles). A
+// textured material keeps one F0 for its texels (FcMaterialTextures.dielectric_f0): the
+// colour's mean, with a warning when the colour is not grey.
+void read_specular(const tinygltf::Material& g, Material& m, float ior, const std::string& file,
+                   const std::string& place, const std::string& where, Ignored& ignored) {
+    const auto it = g.extensions.find("KHR_materials_specular");
+    if (it == g.extensions.end() || !it->second.IsObject()) return;
+    const tinygltf::Value& v = it->second;
+    if (v.Has("specularTexture") || v.Has("specularColorTexture"))
+        ignored.add("KHR_materials_specular's textures (its factors are used)", where);
+    if (m.specular_model != FC_SPECULAR_MICROFACET) {
+        ignored.add("KHR_materials_specular on a transmissive material", where);
+        return;
+    }
+    const float factor = in_range(extension_number(g, "KHR_materials_specular", "specularFactor", 1.0), 0, 1, file,
+                                  place, "KHR_materials_specular.specularFactor");
+    glm::vec3 colour(1.0f);
+    if (v.Has("specularColorFactor")) {
+        const tinygltf::Value& c = v.Get("specularColorFactor");
+        if (!c.IsArray() || c.ArrayLen() != 3)
+            throw Error(
+                fmt::format("{}: {}: KHR_materials_specular.specularColorFactor must have 3 numbers", file, place));
+        for (int i = 0; i < 3; ++i)
+            colour[i] = in_range(c.Get(i).IsNumber() ? c.Get(i).GetNumberAsDouble() : std::nan(""), 0, 1e3, file, place,
+                                 "KHR_materials_specular.specularColorFactor");
+    }
+    const float f0_ior = ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
+    const glm::vec3 f0 = glm::min(f0_ior * colour, glm::vec3(1.0f)) * factor;
+    if (m.metallic > 0.0f || m.diffuse_model != FC_DIFFUSE_NONE) m.f0 = m.ks = m.transmittance = f0;  // not metal alone
+    if (m.textures.metallic_workflow) {
+        m.textures.dielectric_f0 = (f0.x + f0.y + f0.z) / 3.0f;
+        if (f0.x != f0.y || f0.y != f0.z)
+            ignored.add("KHR_materials_specular's colour on a textured material (its mean F0 is used)", where);
+    }
+}
+
 // KHR_materials_volume on a transmissive material: Beer-Lambert absorption inside, from
 // attenuationColor (default white: none) and attenuationDistance (default infinite: none);
 // thicknessFactor is for rasterisers (a path tracer follows the ray through the mesh).
@@ -280,7 +318,8 @@ void Ignored::warn(const std::string& file, std::vector<std::string>& warnings) 
 bool supported_extension(const std::string& name) {
     return name == "KHR_lights_punctual" || name == "KHR_materials_ior" || name == "KHR_materials_transmission" ||
            name == "KHR_materials_emissive_strength" || name == "KHR_texture_transform" ||
-           name == "KHR_draco_mesh_compression" || name == "KHR_materials_volume" || layer_extension(name);
+           name == "KHR_draco_mesh_compression" || name == "KHR_materials_volume" || name == "KHR_materials_specular" ||
+           layer_extension(name);
 }
 
 Material default_gltf_material() {
@@ -341,6 +380,7 @@ Material convert_material(const tinygltf::Material& g, const std::string& file, 
 
     bind_textures(g, m, base, metallic, ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f)), file, where,
                   ignored, model, scene);
+    read_specular(g, m, ior, file, place, where, ignored);
     read_volume(g, m, file, place, where, ignored);
     read_layers(g, m, file, place, where, ignored);
     if (g.occlusionTexture.index >= 0) ignored.add("occlusionTexture (a path tracer computes occlusion itself)", where);

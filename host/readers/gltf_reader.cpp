@@ -145,7 +145,9 @@ void parse(const std::string& path, tinygltf::Model& model, Scene& scene) {
             throw Error(
                 fmt::format("{}: the file requires the extension {}, which facet does not support "
                             "(supported: KHR_lights_punctual, KHR_materials_ior, KHR_materials_transmission, "
-                            "KHR_materials_emissive_strength, KHR_texture_transform, KHR_draco_mesh_compression)",
+                            "KHR_materials_emissive_strength, KHR_materials_volume, KHR_materials_specular, "
+                            "KHR_materials_clearcoat, KHR_materials_sheen, KHR_texture_transform, "
+                            "KHR_draco_mesh_compression)",
                             path, required));
 }
 
