@@ -118,8 +118,18 @@ inline float3 ec_specular_albedo(const FcMaterial* m, float mu, float3 f_ms) {
     return f0 * e + ((float3)(1.0f) - f0) * e5 + f_ms * (1.0f - e);
 }
 
-/* The coupled diffuse base's factor (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg). */
+/* The coupled diffuse base's factor (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg).
+ * Over a mirror (alpha below FC_ALPHA_MIRROR) E_s is the mirror's reflectance F(mu) itself
+ * and E_s,avg = F_avg: the diffuse base takes exactly what the delta lobe leaves, the smooth
+ * limit of the same coupling (Kulla & Conty 2017 with E = 1), where the rough lobe's
+ * tables would differ from the delta's exact F by their interpolation. */
 inline float3 ec_diffuse_coupling(const FcMaterial* m, float3 wo, float3 wi) {
+    if (!(fmax(m->alpha_x, m->alpha_y) >= FC_ALPHA_MIRROR)) {
+        float3 lo = (float3)(1.0f) - clamp(fresnel_eval(m, wo.z), 0.0f, 1.0f);
+        float3 li = (float3)(1.0f) - clamp(fresnel_eval(m, wi.z), 0.0f, 1.0f);
+        float3 den = fmax((float3)(1.0f) - clamp(ec_fresnel_avg(m), 0.0f, 1.0f), (float3)(1e-6f));
+        return lo * li / den;
+    }
     float e_avg = ec_E_avg(m);
     float3 f_ms = ec_fresnel_ms(m, e_avg);
     float3 f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
