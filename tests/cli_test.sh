@@ -207,6 +207,13 @@ expect adaptive-tiles 0 "wrote .* spp mean" -- "$FACET" render "$SCENES/cornell_
     --spp 256 --noise-threshold 0.02 --adaptive tiles --out "$tmp/tiles.exr"
 grep -q '"mode": "tiles"' "$tmp/tiles.json" && grep -aq "facet:mean_spp" "$tmp/tiles.exr" && ok "adaptive-tiles-recorded" ||
     bad "adaptive-tiles-recorded"
+# One sample per pixel leaves a half empty: no estimate, and the threshold is not claimed (issue 27).
+expect adaptive-tiles-one-spp 0 "adaptive no estimate: .*--noise-threshold 0\.02 not reached at 1 spp" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 1 --noise-threshold 0.02 --adaptive tiles \
+    --out "$tmp/tiles1.exr"
+if grep -qiE "nan|reached --noise" "$tmp/err" || ! grep -q '"reached": false' "$tmp/tiles1.json"; then
+    bad "adaptive-tiles-one-spp-no-nan"
+else ok "adaptive-tiles-one-spp-no-nan"; fi
 expect adaptive-tiles-needs-threshold 2 "--adaptive.*--noise-threshold" -- "$FACET" render "$SCENES/cornell_box.json" \
     --adaptive tiles
 expect adaptive-tiles-no-film 1 "--adaptive tiles: .*film" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" \
