@@ -200,6 +200,8 @@ for ch in albedo.R normal.X depth.Z; do
 done
 expect aov-reads-back-as-rgb 0 "rmse" -- "$FACET" compare "$tmp/aov.exr" "$tmp/aov.exr"
 expect aov-unknown 2 "--aov" -- "$FACET" render "$SCENES/cornell_box.json" --aov albedo,motion
+expect aov-twice 1 "--aov: depth is named twice" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" \
+    --aov depth,albedo,depth --out "$tmp/aov2.exr"
 expect aov-needs-exr 1 "--aov: .*aov\.hdr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --aov depth \
     --out "$tmp/aov.hdr"
 
