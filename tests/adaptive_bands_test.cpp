@@ -3,6 +3,8 @@
 // and the bands above the threshold (and below the sample limit) are the ones chosen.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "host/error.hpp"
 #include "host/render/adaptive_bands.hpp"
 
@@ -52,6 +54,20 @@ TEST(AdaptiveBands, ChoosesNoisyBandsBelowTheLimit) {
     EXPECT_EQ(bands_above(r, l, 0.1, 1024), std::vector<int>{0});
     EXPECT_TRUE(bands_above(r, l, 0.1, 4).empty()) << "band 0 is at the sample limit";
     EXPECT_EQ(bands_above(r, l, 0.001, 1024), (std::vector<int>{0, 1}));
+}
+
+// A band of 1 sample has an empty half: its estimate and the image's are unknown (NaN),
+// not 0 (which read as "threshold reached" at --spp 1), and it is sampled further while
+// below the limit.
+TEST(AdaptiveBands, OneSampleHasNoEstimate) {
+    BandLayout l = layout();
+    l.spp = {1, 16};
+    const ResolvedBands r = resolve_bands(sums_for(l, 1.0f, 3.0f), l);
+    EXPECT_TRUE(std::isnan(r.band_relmse[0]));
+    EXPECT_FALSE(std::isnan(r.band_relmse[1]));
+    EXPECT_TRUE(std::isnan(r.estimate.relmse));
+    EXPECT_EQ(bands_above(r, l, 10.0, 1024), std::vector<int>{0});
+    EXPECT_TRUE(bands_above(r, l, 10.0, 1).empty()) << "band 0 is at the sample limit";
 }
 
 TEST(AdaptiveBands, RefusesAMismatchedBuffer) {

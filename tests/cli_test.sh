@@ -275,6 +275,8 @@ expect denoise-command-no-layers 1 "cb\.exr: has no albedo layer .*--aov" -- \
 expect denoise-command-film-size 1 "--film .*: is 24x24, the image .* is 48x48" -- \
     "$FACET" denoise "$tmp/aov48.exr" --film "$tmp/dsub.film"
 expect aov-unknown 2 "--aov" -- "$FACET" render "$SCENES/cornell_box.json" --aov albedo,motion
+expect aov-twice 1 "--aov: depth is named twice" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" \
+    --aov depth,albedo,depth --out "$tmp/aov2.exr"
 expect aov-needs-exr 1 "--aov: .*aov\.hdr" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --aov depth \
     --out "$tmp/aov.hdr"
 
@@ -282,6 +284,13 @@ expect adaptive-tiles 0 "wrote .* spp mean" -- "$FACET" render "$SCENES/cornell_
     --spp 256 --noise-threshold 0.02 --adaptive tiles --out "$tmp/tiles.exr"
 grep -q '"mode": "tiles"' "$tmp/tiles.json" && grep -aq "facet:mean_spp" "$tmp/tiles.exr" && ok "adaptive-tiles-recorded" ||
     bad "adaptive-tiles-recorded"
+# One sample per pixel leaves a half empty: no estimate, and the threshold is not claimed (issue 27).
+expect adaptive-tiles-one-spp 0 "adaptive no estimate: .*--noise-threshold 0\.02 not reached at 1 spp" -- \
+    "$FACET" render "$SCENES/cornell_box.json" --width 24 --height 24 --spp 1 --noise-threshold 0.02 --adaptive tiles \
+    --out "$tmp/tiles1.exr"
+if grep -qiE "nan|reached --noise" "$tmp/err" || ! grep -q '"reached": false' "$tmp/tiles1.json"; then
+    bad "adaptive-tiles-one-spp-no-nan"
+else ok "adaptive-tiles-one-spp-no-nan"; fi
 expect adaptive-tiles-needs-threshold 2 "--adaptive.*--noise-threshold" -- "$FACET" render "$SCENES/cornell_box.json" \
     --adaptive tiles
 expect adaptive-tiles-no-film 1 "--adaptive tiles: .*film" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" \

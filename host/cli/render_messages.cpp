@@ -148,6 +148,12 @@ int finish_render(const RenderJob& job, const SessionOutcome& outcome, std::vect
             passes.back().estimate.relmse, *opt.noise_threshold, final_spp,
             outcome.tiles ? fmt::format(" (mean; every band of {} rows below it)", outcome.tiles->layout.band_rows)
                           : "");
+    else if (opt.noise_threshold && !summary.converged && !opt.quiet && !passes.empty() &&
+             !std::isfinite(passes.back().estimate.relmse))
+        say(stdout,
+            "adaptive no estimate: the error estimate needs at least 2 samples per pixel; --noise-threshold {} not "
+            "reached at {} spp\n",
+            *opt.noise_threshold, final_spp);
     if (std::none_of(rgb.begin(), rgb.end(), [](float v) { return v != 0.0f; }))
         say(stderr,
             "facet: warning: the image is black: no light reaches the camera (no emitters in view or lighting "

@@ -1,4 +1,5 @@
 // `facet render`: the command line applied to the scene and to the session's options.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -59,6 +60,11 @@ void check_render_options(const RenderOptions& opt, const OutputPlan& plan) {
         throw Error("--denoise: the denoiser reads the film's two half-images, which --adaptive tiles does not keep");
     if (!opt.aov.empty() && lower(std::filesystem::path(plan.image).extension().string()) != ".exr")
         throw Error(fmt::format("--aov: the layers go into the EXR, but --out {} is not one", plan.image));
+    for (std::size_t i = 0; i < opt.aov.size(); ++i)
+        if (std::find(opt.aov.begin(), opt.aov.begin() + std::ptrdiff_t(i), opt.aov[i]) !=
+            opt.aov.begin() + std::ptrdiff_t(i))
+            throw Error(
+                fmt::format("--aov: {} is named twice (each layer once: its channels would repeat)", opt.aov[i]));
 }
 
 SessionOptions session_options(const RenderOptions& opt, std::chrono::steady_clock::time_point start) {

@@ -41,11 +41,21 @@ ResolvedBands resolve_bands(const std::vector<float>& sums, const BandLayout& la
             r.mean_spp += double(spp) / double(n);
         }
     }
-    for (std::size_t b = 0; b < band_values.size(); ++b)
-        if (band_values[b] > 0) r.band_relmse[b] /= band_values[b], r.band_mse[b] /= band_values[b];
-    r.estimate.mse = mse / double(3 * n);
+    // A band of fewer than 2 samples has an empty half: no estimate (NaN), and then neither
+    // has the image, rather than a zero error that would read as converged.
+    bool estimated = true;
+    for (std::size_t b = 0; b < band_values.size(); ++b) {
+        if (layout.spp[b] < 2) {
+            r.band_relmse[b] = r.band_mse[b] = std::nan("");
+            estimated = false;
+        } else if (band_values[b] > 0) {
+            r.band_relmse[b] /= band_values[b], r.band_mse[b] /= band_values[b];
+        }
+    }
+    const double none = std::nan("");
+    r.estimate.mse = estimated ? mse / double(3 * n) : none;
     r.estimate.rmse = std::sqrt(r.estimate.mse);
-    r.estimate.relmse = relmse / double(3 * n);
+    r.estimate.relmse = estimated ? relmse / double(3 * n) : none;
     return r;
 }
 
@@ -53,7 +63,7 @@ std::vector<int> bands_above(const ResolvedBands& r, const BandLayout& layout, d
                              std::uint64_t max_spp) {
     std::vector<int> out;
     for (int b = 0; b < layout.bands(); ++b)
-        if (r.band_relmse[std::size_t(b)] > threshold && layout.spp[std::size_t(b)] < max_spp) out.push_back(b);
+        if (!(r.band_relmse[std::size_t(b)] <= threshold) && layout.spp[std::size_t(b)] < max_spp) out.push_back(b);
     return out;
 }
 

@@ -25,7 +25,7 @@ struct BandLayout {
 struct ResolvedBands {
     std::vector<float> rgb;           // the mean of each pixel's own samples, 3 floats a pixel
     ErrorMetrics estimate;            // of the whole image, from the half-images
-    std::vector<double> band_relmse;  // the estimate's relMSE, band by band
+    std::vector<double> band_relmse;  // the estimate's relMSE, band by band (NaN below 2 spp)
     std::vector<double> band_mse;     // and its MSE (the variance of a pixel channel)
     double mean_spp = 0.0;            // samples per pixel over the image
 };
@@ -35,7 +35,8 @@ struct ResolvedBands {
 // whose bands hold `layout.spp` samples.
 ResolvedBands resolve_bands(const std::vector<float>& sums, const BandLayout& layout);
 
-// The bands to sample further: relMSE above `threshold` and fewer than `max_spp` samples.
+// The bands to sample further: relMSE above `threshold` or unknown (a band of fewer than 2
+// samples has no estimate: NaN) and fewer than `max_spp` samples.
 std::vector<int> bands_above(const ResolvedBands& r, const BandLayout& layout, double threshold, std::uint64_t max_spp);
 
 }  // namespace facet

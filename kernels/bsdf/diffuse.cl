@@ -20,10 +20,11 @@
 
 inline float3 material_diffuse(const FcMaterial* m) { return load3p(m->diffuse); }
 
-/* Whether the Lambert x (1 - F0) base is coupled to a compensated specular lobe. */
+/* Whether the Lambert x (1 - F0) base is coupled to a compensated specular lobe, its
+ * mirror limit included (there 1 - F0 and the mirror's F(mu) together gain up to 37% at
+ * 80 degrees). */
 inline bool diffuse_coupled(const FcMaterial* m) {
-    return m->diffuse_model == FC_DIFFUSE_LAMBERT_1MF0 && m->specular_model == FC_SPECULAR_MICROFACET &&
-           ec_enabled(m) && fmax(m->alpha_x, m->alpha_y) >= FC_ALPHA_MIRROR;
+    return m->diffuse_model == FC_DIFFUSE_LAMBERT_1MF0 && m->specular_model == FC_SPECULAR_MICROFACET && ec_enabled(m);
 }
 
 inline float3 diffuse_eval(const FcMaterial* m, float3 wo, float3 wi) {

@@ -118,8 +118,18 @@ inline float3 ec_specular_albedo(const FcMaterial* m, float mu, float3 f_ms) {
     return f0 * e + ((float3)(1.0f) - f0) * e5 + f_ms * (1.0f - e);
 }
 
-/* The coupled diffuse base's factor (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg). */
+/* The coupled diffuse base's factor (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg).
+ * Over a mirror (alpha below FC_ALPHA_MIRROR) E_s is the mirror's reflectance F(mu) itself
+ * and E_s,avg = F_avg: the diffuse base takes exactly what the delta lobe leaves, the smooth
+ * limit of the same coupling (Kulla & Conty 2017 with E = 1), where the rough lobe's
+ * tables would differ from the delta's exact F by their interpolation. */
 inline float3 ec_diffuse_coupling(const FcMaterial* m, float3 wo, float3 wi) {
+    if (!(fmax(m->alpha_x, m->alpha_y) >= FC_ALPHA_MIRROR)) {
+        float3 lo = (float3)(1.0f) - clamp(fresnel_eval(m, wo.z), 0.0f, 1.0f);
+        float3 li = (float3)(1.0f) - clamp(fresnel_eval(m, wi.z), 0.0f, 1.0f);
+        float3 den = fmax((float3)(1.0f) - clamp(ec_fresnel_avg(m), 0.0f, 1.0f), (float3)(1e-6f));
+        return lo * li / den;
+    }
     float e_avg = ec_E_avg(m);
     float3 f_ms = ec_fresnel_ms(m, e_avg);
     float3 f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
@@ -137,10 +147,13 @@ inline float3 ec_diffuse_coupling(const FcMaterial* m, float3 wo, float3 wi) {
  * relative index seen from wo's side). The missing energy is returned in proportion to
  * the single-scattering lobes, reflection and transmission alike. Unlike f_ms above this is
  * not reciprocal (a known limit of albedo scaling; docs/brdf.md). */
-/* The dielectric table's bilinear (r, mu) value in the x slice whose node (j, i) is t[0]. */
-inline float ec_dielectric_slice(__constant const float* t, float ty, float tz) {
+/* The dielectric table's bilinear (r, mu) value in the x slice whose node (j, i) is t[0]
+ * (half floats). */
+inline float ec_dielectric_slice(__constant const half* t, float ty, float tz) {
     const int sr = FC_ALBEDO_D_N_MU;
-    return mix(mix(t[0], t[1], tz), mix(t[sr], t[sr + 1], tz), ty);
+    float a = mix(vload_half(0, t), vload_half(1, t), tz);
+    float b = mix(vload_half(sr, t), vload_half(sr + 1, t), tz);
+    return mix(a, b, ty);
 }
 
 inline float ec_dielectric_albedo(const FcMaterial* m, float3 wo) {
@@ -148,31 +161,30 @@ inline float ec_dielectric_albedo(const FcMaterial* m, float3 wo) {
     int side = e >= 1.0f ? 0 : 1;
     float ee = side == 0 ? e : 1.0f / e;
     float mu = clamp(fabs(wo.z), 0.0f, 1.0f);
-    float x =
-        clamp((ee - 1.0f) / (ee + 1.0f), 0.0f, FC_ALBEDO_D_X_MAX) * ((float)(FC_ALBEDO_D_N_X - 1) / FC_ALBEDO_D_X_MAX);
+    /* the index axis is uniform in sqrt(x), x = (eta - 1) / (eta + 1), up to eta = 100 */
+    float x = sqrt(clamp((ee - 1.0f) / (ee + 1.0f), 0.0f, FC_ALBEDO_D_X_MAX) / FC_ALBEDO_D_X_MAX) *
+              (float)(FC_ALBEDO_D_N_X - 1);
     float y = ec_r(m) * (float)(FC_ALBEDO_D_N_R - 1);
     float z = mu * (float)(FC_ALBEDO_D_N_MU - 1);
     int k = min((int)x, FC_ALBEDO_D_N_X - 2), j = min((int)y, FC_ALBEDO_D_N_R - 2),
         i = min((int)z, FC_ALBEDO_D_N_MU - 2);
     float tx = x - (float)k, ty = y - (float)j, tz = z - (float)i;
-    __constant const float* t =
-        fc_albedo_dielectric +
+    __constant const half* t =
+        (__constant const half*)fc_albedo_dielectric +
         (((ec_ndf(m) * 2 + side) * FC_ALBEDO_D_N_X + k) * FC_ALBEDO_D_N_R + j) * FC_ALBEDO_D_N_MU + i;
     const int sx = FC_ALBEDO_D_N_MU * FC_ALBEDO_D_N_R;
     float p1 = ec_dielectric_slice(t, ty, tz), p2 = ec_dielectric_slice(t + sx, ty, tz);
     /* Across the index, Catmull-Rom through the slices k - 1 .. k + 2: E bends strongly with
-     * the index, most from inside, where linear interpolation between the 8 slices left up to
-     * 2.3% in the furnace at ior 1.5 (docs/brdf.md). The first segment ends at the exact E = 1
-     * of eta = 1, a limit E does not approach (a rough interface of eta 1.03 already loses
-     * half), so it stays linear, and the neighbour beyond it or beyond the table's end is
-     * extrapolated linearly. */
-    float v = mix(p1, p2, tx);
-    if (k > 0) {
-        float p0 = k >= 2 ? ec_dielectric_slice(t - sx, ty, tz) : 2.0f * p1 - p2;
-        float p3 = k + 2 < FC_ALBEDO_D_N_X ? ec_dielectric_slice(t + 2 * sx, ty, tz) : 2.0f * p2 - p1;
-        v = p1 + 0.5f * tx *
-                     ((p2 - p0) + tx * ((2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) + tx * (3.0f * (p1 - p2) + p3 - p0)));
-    }
+     * the index, most from inside, where linear interpolation between slices left up to
+     * 2.3% in the furnace at ior 1.5 (docs/brdf.md). A neighbour beyond either end of the
+     * table is extrapolated linearly. Slice 0 is the limit eta -> 1 of a rough interface
+     * (below 1: light refracted straight on is still masked), not the exact E = 1 of an
+     * index-matched one, which dielectric.cl treats as smooth. */
+    float p0 = k >= 1 ? ec_dielectric_slice(t - sx, ty, tz) : 2.0f * p1 - p2;
+    float p3 = k + 2 < FC_ALBEDO_D_N_X ? ec_dielectric_slice(t + 2 * sx, ty, tz) : 2.0f * p2 - p1;
+    float v =
+        p1 +
+        0.5f * tx * ((p2 - p0) + tx * ((2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) + tx * (3.0f * (p1 - p2) + p3 - p0)));
     /* From inside the table holds E / E_c, E_c the F = 1 conductor's albedo (32 x 32 nodes):
      * beyond the critical angle every microfacet reflects totally, so near grazing, where
      * E_c falls steeply at small alpha (masking), E follows it, and the 16 x 12 nodes of E

@@ -85,8 +85,10 @@ __kernel void albedo_sheen_table(int n_mu, int n_r, uint samples, __global float
  * exact Fresnel, height-correlated Smith, no compensation, in out[id].x; in out[id].y the
  * F = 1 albedo E_c that ec_lookup reads from e_table (an [ndf][r][mu] table of the
  * fc_albedo_E layout) at the node's (mu, r), which the inside table divides out. The
- * relative index of node k is e = (1 + x) / (1 - x), x = x_max k / (n_x - 1); side 0
- * enters a denser medium (ior = e), side 1 leaves it (ior = 1 / e). */
+ * relative index of node k is e = (1 + x) / (1 - x), x = x_max (k / (n_x - 1))^2 (the
+ * axis is uniform in sqrt(x); node 0 at x = 1e-3, the limit eta -> 1 of a rough interface,
+ * not the exact E = 1 of eta = 1); side 0 enters a denser medium (ior = e), side 1 leaves
+ * it (ior = 1 / e). */
 __kernel void albedo_dielectric_table(int ndf, int side, int n_mu, int n_r, int n_x, float x_max, uint samples,
                                       __constant const float* e_table, __global float2* out) {
     int id = (int)get_global_id(0);
@@ -94,7 +96,8 @@ __kernel void albedo_dielectric_table(int ndf, int side, int n_mu, int n_r, int 
     int i = id % n_mu, j = (id / n_mu) % n_r, k = id / (n_mu * n_r);
     float r = (float)j / (float)(n_r - 1);
     float mu = fmax((float)i / (float)(n_mu - 1), 1e-3f);
-    float x = fmax(x_max * (float)k / (float)(n_x - 1), 1e-3f);
+    float sx = (float)k / (float)(n_x - 1);
+    float x = fmax(x_max * sx * sx, 1e-3f);
     float e = (1.0f + x) / (1.0f - x);
     FcMaterial m;
     m.diffuse_model = FC_DIFFUSE_NONE;

@@ -18,7 +18,10 @@
 // Usage (from the repository root, after building the target facet_albedo_tables):
 //   ./build/tests/facet_albedo_tables kernels/bsdf [sheen] && make format
 // (`sheen`: only albedo_tables_sheen.cl).
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <stdexcept>
 #include <string>
@@ -52,11 +55,14 @@ std::vector<cl_float2> integrate(int ndf) {
 
 // The rough dielectric's energy albedo E_R + E_T of one NDF and side, [x][r][mu]; from
 // inside (side 1) divided by the F = 1 albedo E_c that the kernels read from `e` (the
-// fc_albedo_E table) at the same (mu, r).
+// fc_albedo_E table) at the same (mu, r). The index axis is uniform in sqrt(x), x = (eta -
+// 1) / (eta + 1) up to eta = 100, the largest ior the readers accept: fine near eta = 1,
+// where the critical angle moves as sqrt(eta - 1), and as fine as the old uniform axis
+// over x in 1.2..2.5. Stored as half floats (vload_half) to stay in constant memory.
 constexpr int kDMu = 16;
 constexpr int kDR = 12;
-constexpr int kDX = 8;
-constexpr float kDXMax = 0.5f;  // x = (eta - 1) / (eta + 1): eta up to 3
+constexpr int kDX = 16;
+constexpr float kDXMax = 99.0f / 101.0f;
 constexpr unsigned kDSamples = 1u << 16;
 
 std::vector<float> integrate_dielectric(int ndf, int side, const std::vector<float>& e) {
@@ -83,8 +89,9 @@ std::vector<float> integrate_dielectric(int ndf, int side, const std::vector<flo
         for (int j = 0; j < kDR; ++j)
             for (int i = 0; i < kDMu; ++i) {
                 const std::size_t id = (std::size_t(x) * kDR + j) * kDMu + i;
-                // alpha = 0 and eta = 1 do not scatter: E = 1 exactly
-                const float ed = x == 0 || j == 0 ? 1.0f : t[id].s[0];
+                // alpha = 0 does not scatter: E = 1 exactly (eta -> 1 does: node x = 0 is
+                // integrated at x = 1e-3, the limit of a rough interface)
+                const float ed = j == 0 ? 1.0f : t[id].s[0];
                 v[id] = side == 1 ? ed / t[id].s[1] : ed;
             }
     return v;
@@ -128,6 +135,29 @@ std::string literal(double x) {
     std::string s = buf;
     if (s.find_first_of(".e") == std::string::npos) s += ".0";
     return s + "f";
+}
+
+// The IEEE 754 binary16 bits of a float of the normal half range (round to nearest even),
+// as vload_half reads them. Throws for a value it cannot hold.
+unsigned short half_bits(float v) {
+    if (v == 0.0f) return 0;
+    std::uint32_t b = 0;
+    std::memcpy(&b, &v, sizeof b);
+    const int e = int((b >> 23) & 0xffu) - 127 + 15;
+    if (!std::isfinite(v) || e <= 0 || e >= 31) throw std::runtime_error("table value out of half range");
+    const std::uint32_t m = b & 0x7fffffu;
+    std::uint32_t h = (std::uint32_t(e) << 10) | (m >> 13);
+    const std::uint32_t rest = m & 0x1fffu;
+    if (rest > 0x1000u || (rest == 0x1000u && (h & 1u))) ++h;  // a carry rounds into the exponent
+    return static_cast<unsigned short>(((b >> 16) & 0x8000u) | h);
+}
+
+void print_half_array(std::FILE* f, const char* name, const std::vector<double>& v, int per_line) {
+    std::fprintf(f, "__constant ushort %s[%zu] = {\n", name, v.size());
+    for (std::size_t i = 0; i < v.size(); ++i)
+        std::fprintf(f, "%s0x%04x,%s", i % per_line == 0 ? "    " : " ", unsigned(half_bits(float(v[i]))),
+                     (i + 1) % per_line == 0 ? "\n" : "");
+    std::fprintf(f, "};\n");
 }
 
 void print_array(std::FILE* f, const char* name, const std::vector<double>& v, int per_line) {
@@ -234,10 +264,10 @@ int main(int argc, char** argv) {
             std::fprintf(f,
                          " * The rough dielectric's energy albedo E_R + E_T (transmission times etap^2, exact\n"
                          " * Fresnel) seen from wo, %u samples per node: fc_albedo_dielectric[ndf][side][x][r][mu]\n"
-                         " * at mu = i / %d, r = j / %d and x = (eta - 1) / (eta + 1) = %g k / %d, eta the relative\n"
-                         " * index n_far / n_near (side 0) or its inverse (side 1, leaving the denser medium). Side\n"
-                         " * 1 holds E / E_c, E_c = fc_albedo_E (albedo_tables_conductor.cl) interpolated at the\n"
-                         " * node. */\n",
+                         " * at mu = i / %d, r = j / %d and x = (eta - 1) / (eta + 1) = %.6g (k / %d)^2 (k = 0 at x =\n"
+                         " * 1e-3), eta the relative index n_far / n_near (side 0) or its inverse (side 1, leaving\n"
+                         " * the denser medium), as IEEE half floats (read with vload_half). Side 1 holds E / E_c,\n"
+                         " * E_c = fc_albedo_E (albedo_tables_conductor.cl) interpolated at the node. */\n",
                          kDSamples, kDMu - 1, kDR - 1, double(kDXMax), kDX - 1);
             std::fprintf(
                 f,
@@ -245,7 +275,7 @@ int main(int argc, char** argv) {
             std::fprintf(f, "#define FC_ALBEDO_D_N_MU %d\n#define FC_ALBEDO_D_N_R %d\n#define FC_ALBEDO_D_N_X %d\n",
                          kDMu, kDR, kDX);
             std::fprintf(f, "#define FC_ALBEDO_D_X_MAX %s\n\n", literal(kDXMax).c_str());
-            print_array(f, "fc_albedo_dielectric", d, 8);
+            print_half_array(f, "fc_albedo_dielectric", d, 12);
             std::fprintf(f, "\n#endif\n");
         });
         return 0;
