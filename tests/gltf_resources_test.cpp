@@ -144,5 +144,28 @@ TEST(GltfResources, LongAcyclicNodeChainIsNotACycle) {
                        {"deep.gltf", "more than 4096 levels deep"});
 }
 
+// An image embedded in the glTF (a data URI here; a .glb's bufferView alike) is decoded from
+// memory: nothing is written to $TMPDIR, so a signal cannot leave a temporary behind, and a
+// missing $TMPDIR is no error (issue 27, item 11: it was "internal error" and left
+// facet-texture-* files on Ctrl-C).
+TEST(GltfResources, EmbeddedImagesNeedNoTemporaryFiles) {
+    const std::string box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Embedded/BoxTextured.gltf";
+    if (!std::filesystem::exists(box)) GTEST_SKIP() << "assimp-testmodels is not installed";
+    const char* old = std::getenv("TMPDIR");
+    const std::string saved = old ? old : "";
+    const std::filesystem::path empty =
+        std::filesystem::temp_directory_path() / ("facet-tmpdir-" + std::to_string(getpid()));
+    std::filesystem::create_directories(empty);
+    setenv("TMPDIR", empty.c_str(), 1);
+    Scene scene = load_scene(box);
+    EXPECT_EQ(scene.textures.size(), 1u);
+    EXPECT_TRUE(std::filesystem::is_empty(empty)) << "a temporary was written";
+    setenv("TMPDIR", (empty / "missing").c_str(), 1);
+    EXPECT_NO_THROW(scene = load_scene(box));
+    if (old) setenv("TMPDIR", saved.c_str(), 1);
+    else unsetenv("TMPDIR");
+    std::filesystem::remove_all(empty);
+}
+
 }  // namespace
 }  // namespace facet

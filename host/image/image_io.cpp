@@ -11,6 +11,7 @@
 #include <memory>
 #include <new>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
@@ -138,12 +139,17 @@ void write_png(const std::string& path, int width, int height, const std::vector
 }
 
 // read_image after the file's checks; the decoded size is checked against the file's.
-static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_size) {
+static ImageRGB read_image_checked(const std::string& path, std::uint64_t file_size,
+                                   OIIO::Filesystem::IOProxy* proxy = nullptr) {
     // Colours as stored: OpenImageIO multiplies an unassociated alpha (PNG, TGA, TIFF) into
     // the colour on read unless told not to, and facet reads R, G, B alone (alpha unused).
     ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
-    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path, &config);
+    if (proxy) {  // the plugins take the proxy from the configuration (OpenImageIO 2.4)
+        void* p = proxy;
+        config.attribute("oiio:ioproxy", TypeDesc::PTR, &p);
+    }
+    std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path, &config, proxy);
     if (!in) throw Error(fmt::format("{}: cannot read image: {}", path, OIIO::geterror()));
     const ImageSpec& spec = in->spec();
     if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
@@ -219,6 +225,16 @@ ImageRGB read_image(const std::string& path) {
     }
 }
 
+ImageRGB read_image_bytes(const std::string& name, const std::string& bytes) {
+    check_image_header_bytes(name, bytes.substr(0, std::size_t(1) << 16), bytes.size());
+    try {
+        OIIO::Filesystem::IOMemReader reader(const_cast<char*>(bytes.data()), bytes.size());
+        return read_image_checked(name, bytes.size(), &reader);
+    } catch (const std::bad_alloc&) {
+        throw Error(fmt::format("image '{}': not enough memory to read it", name));
+    }
+}
+
 // OpenEXR reads a file's whole chunk-offset table when it opens it, sized from the
 // header, and each header attribute at its declared size: a few hundred corrupt bytes
 // can claim a 1.7 GB attribute or 2^31 lines and take gigabytes and seconds before
@@ -231,10 +247,14 @@ void check_image_header(const std::string& path) {
     std::string head(1 << 16, '\0');
     file.read(head.data(), std::streamsize(head.size()));
     head.resize(std::size_t(file.gcount()));
-    if (head.size() < 8 || head.compare(0, 4, "\x76\x2f\x31\x01") != 0) return;
     std::error_code ec;
     const std::uintmax_t file_size = fs::file_size(path, ec);
     if (ec) return;
+    check_image_header_bytes(path, head, file_size);
+}
+
+void check_image_header_bytes(const std::string& path, const std::string& head, std::uintmax_t file_size) {
+    if (head.size() < 8 || head.compare(0, 4, "\x76\x2f\x31\x01") != 0) return;
     auto int32_at = [&](std::size_t at) {
         std::uint32_t v = 0;
         for (int i = 3; i >= 0; --i) v = (v << 8) | std::uint8_t(head[at + std::size_t(i)]);

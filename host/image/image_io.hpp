@@ -3,6 +3,7 @@
 // file or the complete, read-back new one, never a torn one.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,11 +60,18 @@ struct ImageRGB {
 // texel of alpha 0 keeps its stored colour). Throws facet::Error naming the file on failure, and for images
 // of more than 2^28 pixels (checked on the header, before reading).
 ImageRGB read_image(const std::string& path);
+// read_image of an image held in memory (an image embedded in a glTF or FBX file): `name`
+// says where it came from in messages, and its extension which format it is; nothing is
+// written to disk (so nothing is left behind by a signal, and no $TMPDIR is needed).
+ImageRGB read_image_bytes(const std::string& name, const std::string& bytes);
 
 // Cheap checks of a file's header before any reader allocates from it (read_image calls
 // it first). OpenEXR: every attribute and the chunk-offset table must fit in the file,
 // and the data window must hold at most 2^28 pixels. Throws facet::Error naming the file.
 void check_image_header(const std::string& path);
+// The same checks of a header held in memory: `head` the file's first bytes (64 KiB or all
+// of it), `file_size` the whole file's size; `path` names it in messages.
+void check_image_header_bytes(const std::string& path, const std::string& head, std::uintmax_t file_size);
 
 // Reads a reference image for a render of width x height: the size must match, every
 // texel must be finite and the file must hold linear radiance (an 8-bit sRGB image is

@@ -158,8 +158,13 @@ void check_image_header(const std::string& path) {
     parse_pfm_header(path, head);
 }
 
-ImageRGB read_image(const std::string& path) {
-    const std::string data = read_input_file(path, "image");
+void check_image_header_bytes(const std::string& path, const std::string& head, std::uintmax_t) {
+    parse_pfm_header(path, head.substr(0, 256));
+}
+
+ImageRGB read_image(const std::string& path) { return read_image_bytes(path, read_input_file(path, "image")); }
+
+ImageRGB read_image_bytes(const std::string& path, const std::string& data) {
     const PfmHeader h = parse_pfm_header(path, data);
     const std::size_t values = std::size_t(h.width) * std::size_t(h.height) * std::size_t(h.channels);
     if (data.size() - h.bytes < values * sizeof(float))

@@ -2,13 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-
-#include <unistd.h>
 
 #include <fmt/format.h>
 #include <glm/gtc/packing.hpp>
@@ -103,13 +99,11 @@ TextureImage make_texture(int width, int height, std::vector<float> rgba, int wr
     return t;
 }
 
-TextureImage load_texture(const std::string& path, TextureSpace space, const std::string& owner) {
-    ImageRGB img;
-    try {
-        img = read_image(path);
-    } catch (const Error& e) {
-        throw Error(fmt::format("texture of {}: {}", owner, e.what()));
-    }
+namespace {
+
+// The texture of a decoded image (`path` names it in messages).
+TextureImage texture_from_image(const ImageRGB& img, const std::string& path, TextureSpace space,
+                                const std::string& owner) {
     std::vector<float> rgba(std::size_t(img.width) * std::size_t(img.height) * 4u);
     for (std::size_t i = 0; i < std::size_t(img.width) * std::size_t(img.height); ++i) {
         for (int c = 0; c < 3; ++c) {
@@ -138,6 +132,18 @@ TextureImage load_texture(const std::string& path, TextureSpace space, const std
     return t;
 }
 
+}  // namespace
+
+TextureImage load_texture(const std::string& path, TextureSpace space, const std::string& owner) {
+    ImageRGB img;
+    try {
+        img = read_image(path);
+    } catch (const Error& e) {
+        throw Error(fmt::format("texture of {}: {}", owner, e.what()));
+    }
+    return texture_from_image(img, path, space, owner);
+}
+
 TextureImage missing_texture() {
     constexpr int kSize = 8, kCheck = 2;  // 4 x 4 checks over the uv square
     std::vector<float> rgba(kSize * kSize * 4);
@@ -153,23 +159,18 @@ TextureImage missing_texture() {
 TextureImage load_texture_bytes(const void* data, std::size_t size, const std::string& ext, TextureSpace space,
                                 const std::string& owner) {
     if (size == 0) throw Error(fmt::format("texture of {}: the image has no data", owner));
-    std::string name = (std::filesystem::temp_directory_path() / ("facet-texture-XXXXXX" + ext)).string();
-    const int fd = mkstemps(name.data(), int(ext.size()));
-    if (fd < 0) throw Error(fmt::format("texture of {}: cannot create a temporary file for the image", owner));
-    close(fd);
-    {
-        std::ofstream out(name, std::ios::binary);
-        out.write(static_cast<const char*>(data), std::streamsize(size));
-    }
+    // Decoded from memory (OpenImageIO's IOMemReader): no temporary file to leave behind on a
+    // signal, and no $TMPDIR needed. The name's extension tells the format.
+    const std::string name = "embedded image" + ext;
+    ImageRGB img;
     try {
-        TextureImage t = load_texture(name, space, owner);
-        std::remove(name.c_str());
-        t.path.clear();
-        return t;
-    } catch (...) {
-        std::remove(name.c_str());
-        throw;
+        img = read_image_bytes(name, std::string(static_cast<const char*>(data), size));
+    } catch (const Error& e) {
+        throw Error(fmt::format("texture of {}: {}", owner, e.what()));
     }
+    TextureImage t = texture_from_image(img, name, space, owner);
+    t.path.clear();
+    return t;
 }
 
 int add_texture(Scene& scene, const std::string& path, TextureSpace space, const std::string& owner, int wrap_u,
