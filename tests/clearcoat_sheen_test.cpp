@@ -62,29 +62,6 @@ FcMaterial layered_material(glm::vec3 base, float metallic, float alpha, const L
     return device_material(m);
 }
 
-struct Albedo {
-    double mean[3], error[3];
-    int bad;
-};
-
-// The directional albedo of mats[i] seen from wo[i] (albedo_kernels.cl's albedo_furnace).
-std::vector<Albedo> albedos(const std::vector<FcMaterial>& mats, const std::vector<Vec3>& wo, unsigned samples) {
-    std::vector<cl_float4> dirs;
-    for (const Vec3& v : wo) dirs.push_back(f4(v));
-    cl::Buffer bm = upload(mats), bd = upload(dirs);
-    cl::Buffer bo(test::context().context(), CL_MEM_WRITE_ONLY, 2 * mats.size() * sizeof(cl_float4));
-    cl::Kernel k(test::program("kernels/test/albedo_kernels.cl"), "albedo_furnace");
-    k.setArg(0, bm), k.setArg(1, bd), k.setArg(2, samples), k.setArg(3, bo);
-    test::context().queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(mats.size()));
-    std::vector<cl_float4> out = download<cl_float4>(bo, 2 * mats.size());
-    std::vector<Albedo> r(mats.size());
-    for (std::size_t i = 0; i < mats.size(); ++i) {
-        for (int c = 0; c < 3; ++c) r[i].mean[c] = out[2 * i].s[c], r[i].error[c] = out[2 * i + 1].s[c];
-        r[i].bad = int(out[2 * i + 1].s[3]);
-    }
-    return r;
-}
-
 // A white base under every layer configuration reflects 1 within 1% (plus 4 standard
 // errors) at every metallic, base alpha and angle, and never more than 1 (beyond 0.3% of
 // table interpolation and 4 standard errors). Prints the table of docs/brdf.md

@@ -11,6 +11,7 @@
 #include "host/denoise/denoiser.hpp"
 #include "host/error.hpp"
 #include "tests/cl_test_env.hpp"
+#include "tests/denoise_test_util.hpp"
 
 namespace facet {
 namespace {
@@ -18,15 +19,7 @@ namespace {
 constexpr std::uint32_t kWidth = 32, kHeight = 64;
 constexpr std::size_t kPixels = std::size_t(kWidth) * kHeight;
 
-// Flat features: albedo 0.5, normal +z, depth 1.
-AovImages flat_features() {
-    AovImages f;
-    f.albedo.assign(3 * kPixels, 0.5f);
-    f.normal.assign(3 * kPixels, 0.0f);
-    for (std::size_t i = 0; i < kPixels; ++i) f.normal[3 * i + 2] = 1.0f;
-    f.depth.assign(kPixels, 1.0f);
-    return f;
-}
+AovImages flat_features() { return test::flat_features(kPixels); }
 
 // Two halves of `spp_half` samples each: truth(x, y) plus Gaussian noise of standard
 // deviation `sigma` in every channel, independent between the halves.

@@ -27,35 +27,13 @@ using test::mf::direction;
 using test::mf::f4;
 using test::mf::lobe_material;
 using test::mf::Vec3;
+using test::mf::Albedo;
+using test::mf::albedos;
 
 const char* kKernels = "kernels/test/albedo_kernels.cl";
 constexpr float kAlphas[] = {0.05f, 0.1f, 0.25f, 0.5f, 0.75f, 1.0f};
 constexpr double kThetas[] = {0.0, 20.0, 40.0, 60.0, 70.0, 80.0};
 constexpr unsigned kSamples = 1u << 16;
-
-struct Albedo {
-    double mean[3], error[3];
-    int bad;
-};
-
-// The directional albedo of mats[i] seen from wo[i] (albedo_furnace).
-std::vector<Albedo> albedos(const std::vector<FcMaterial>& mats, const std::vector<Vec3>& wo, unsigned samples) {
-    using namespace test;
-    std::vector<cl_float4> dirs;
-    for (const Vec3& v : wo) dirs.push_back(f4(v));
-    cl::Buffer bm = mf::upload(mats), bd = mf::upload(dirs);
-    cl::Buffer bo(context().context(), CL_MEM_WRITE_ONLY, 2 * mats.size() * sizeof(cl_float4));
-    cl::Kernel k(program(kKernels), "albedo_furnace");
-    k.setArg(0, bm), k.setArg(1, bd), k.setArg(2, samples), k.setArg(3, bo);
-    context().queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(mats.size()));
-    std::vector<cl_float4> out = mf::download<cl_float4>(bo, 2 * mats.size());
-    std::vector<Albedo> r(mats.size());
-    for (std::size_t i = 0; i < mats.size(); ++i) {
-        for (int c = 0; c < 3; ++c) r[i].mean[c] = out[2 * i].s[c], r[i].error[c] = out[2 * i + 1].s[c];
-        r[i].bad = int(out[2 * i + 1].s[3]);
-    }
-    return r;
-}
 
 FcMaterial white_conductor(int ndf, float alpha) {
     FcMaterial m = lobe_material(FC_DIFFUSE_NONE, FC_SPECULAR_MICROFACET);

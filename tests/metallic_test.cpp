@@ -25,29 +25,6 @@ constexpr float kMetallic[] = {0.0f, 0.25f, 0.5f, 0.75f, 1.0f};
 constexpr float kAlphas[] = {0.05f, 0.25f, 0.5f, 1.0f};
 constexpr double kThetas[] = {0.0, 40.0, 70.0, 85.0};
 
-struct Albedo {
-    double mean[3], error[3];
-    int bad;
-};
-
-// The directional albedo of mats[i] seen from wo[i] (albedo_kernels.cl's albedo_furnace).
-std::vector<Albedo> albedos(const std::vector<FcMaterial>& mats, const std::vector<Vec3>& wo, unsigned samples) {
-    std::vector<cl_float4> dirs;
-    for (const Vec3& v : wo) dirs.push_back(f4(v));
-    cl::Buffer bm = upload(mats), bd = upload(dirs);
-    cl::Buffer bo(test::context().context(), CL_MEM_WRITE_ONLY, 2 * mats.size() * sizeof(cl_float4));
-    cl::Kernel k(test::program("kernels/test/albedo_kernels.cl"), "albedo_furnace");
-    k.setArg(0, bm), k.setArg(1, bd), k.setArg(2, samples), k.setArg(3, bo);
-    test::context().queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(mats.size()));
-    std::vector<cl_float4> out = download<cl_float4>(bo, 2 * mats.size());
-    std::vector<Albedo> r(mats.size());
-    for (std::size_t i = 0; i < mats.size(); ++i) {
-        for (int c = 0; c < 3; ++c) r[i].mean[c] = out[2 * i].s[c], r[i].error[c] = out[2 * i + 1].s[c];
-        r[i].bad = int(out[2 * i + 1].s[3]);
-    }
-    return r;
-}
-
 // glTF's material of base colour `base`, metallic M and GGX alpha, as the glTF reader makes it.
 FcMaterial gltf_material(glm::vec3 base, float metallic, float alpha) {
     Material m = make_material("ggx");

@@ -8,20 +8,15 @@
 #include "host/denoise/oidn.hpp"
 #include "host/error.hpp"
 
+#include "tests/denoise_test_util.hpp"
+
 namespace facet {
 namespace {
 
 constexpr std::uint32_t kSize = 64;
 constexpr std::size_t kPixels = std::size_t(kSize) * kSize;
 
-AovImages flat_features() {
-    AovImages f;
-    f.albedo.assign(3 * kPixels, 0.5f);
-    f.normal.assign(3 * kPixels, 0.0f);
-    for (std::size_t i = 0; i < kPixels; ++i) f.normal[3 * i + 2] = 1.0f;
-    f.depth.assign(kPixels, 1.0f);
-    return f;
-}
+AovImages flat_features() { return test::flat_features(kPixels); }
 
 FilmHalves noisy_flat(float sigma) {
     std::mt19937 rng(3);
