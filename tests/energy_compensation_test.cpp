@@ -23,12 +23,12 @@
 namespace facet {
 namespace {
 
+using test::mf::Albedo;
+using test::mf::albedos;
 using test::mf::direction;
 using test::mf::f4;
 using test::mf::lobe_material;
 using test::mf::Vec3;
-using test::mf::Albedo;
-using test::mf::albedos;
 
 const char* kKernels = "kernels/test/albedo_kernels.cl";
 constexpr float kAlphas[] = {0.05f, 0.1f, 0.25f, 0.5f, 0.75f, 1.0f};
