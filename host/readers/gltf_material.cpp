@@ -93,7 +93,7 @@ void read_volume(const tinygltf::Material& g, Material& m, const std::string& fi
             colour[i] = in_range(c.Get(i).IsNumber() ? c.Get(i).GetNumberAsDouble() : std::nan(""), 0, 1, file, place,
                                  "KHR_materials_volume.attenuationColor");
     }
-    const double distance = extension_number(g, "KHR_materials_volume", "attenuationDistance", INFINITY);
+    const double distance = extension_number(g, "KHR_materials_volume", "attenuationDistance", HUGE_VAL);
     if (!(distance > 0.0))
         throw Error(fmt::format("{}: {}: KHR_materials_volume.attenuationDistance must be > 0, got {:g}", file, place,
                                 distance));
