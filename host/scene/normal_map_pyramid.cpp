@@ -31,7 +31,8 @@ void build_normal_map_pyramid(TextureImage& t) {
     for (std::size_t i = 0; i < count; ++i) texels[4 * i + 3] = 1.0f;
     texels.resize(means.texels.size());
     for (std::size_t i = count; i < means.texels.size() / 4; ++i) {
-        const double m[3] = {means.texels[4 * i], means.texels[4 * i + 1], means.texels[4 * i + 2]};
+        const double m[3] = {double(means.texels[4 * i]), double(means.texels[4 * i + 1]),
+                             double(means.texels[4 * i + 2])};
         const double len = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
         for (int c = 0; c < 3; ++c)
             texels[4 * i + std::size_t(c)] = len > 1e-6 ? float(0.5 * m[c] / len + 0.5) : (c == 2 ? 1.0f : 0.5f);
