@@ -191,6 +191,29 @@ TEST(SceneObj, MtlMaterialsMapped) {
     EXPECT_FLOAT_EQ(b.alpha, 0.5f);
 }
 
+// The PBR extension's layers: Pc (clearcoat weight), Pcr (its roughness, alpha = Pcr^2)
+// and Ps (a grey sheen of roughness 0.5) map onto glTF's clearcoat and sheen; they make a
+// material a PBR one even without Pr or Pm; out of [0, 1] names the line.
+TEST(SceneObj, MtlClearcoatAndSheen) {
+    TempDir d;
+    d.write("m.mtl", "newmtl car\nKd 0.8 0.1 0.1\nPc 1\nPcr 0.3\nnewmtl velvet\nKd 0.2 0.2 0.6\nPr 0.8\nPs 0.5\n");
+    const auto p =
+        d.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl car\nf 1 2 3\nusemtl velvet\nf 1 2 3\n");
+    const Scene s = load(p);
+    const Material& car = s.materials[static_cast<std::size_t>(s.shading[0].material)];
+    const Material& velvet = s.materials[static_cast<std::size_t>(s.shading[1].material)];
+    EXPECT_EQ(car.specular_model, FC_SPECULAR_MICROFACET);
+    EXPECT_FLOAT_EQ(car.clearcoat, 1.0f);
+    EXPECT_FLOAT_EQ(car.clearcoat_alpha, 0.09f);
+    EXPECT_EQ(car.sheen, glm::vec3(0.0f));
+    EXPECT_FLOAT_EQ(velvet.clearcoat, 0.0f);
+    EXPECT_EQ(velvet.sheen, glm::vec3(0.5f));
+    EXPECT_FLOAT_EQ(velvet.sheen_roughness, 0.5f);
+    d.write("bad.mtl", "newmtl a\nPc 2\n");
+    const auto q = d.write("x.obj", "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    expect_error([&] { load(q); }, {"bad.mtl:2:"});
+}
+
 TEST(SceneObj, MtlBadNumberNamesLine) {
     TempDir d;
     d.write("bad.mtl", "newmtl a\nKd 0.5 abc 0.5\n");

@@ -104,6 +104,10 @@ struct Pending {
     glm::vec3 tf{1.0f};
     bool has_d = false;
     float tr = 0.0f;  // Tr, the transparency 1 - d, read when no d is given
+    // The PBR extension's layers: Pc (clearcoat weight), Pcr (its perceptual roughness),
+    // Ps (sheen, grey); any of them makes the material a PBR one.
+    bool has_layers = false;
+    float pc = 0.0f, pcr = 0.0f, ps = 0.0f;
 };
 
 // Chooses the model from what the MTL gives (docs/scene-format.md, "MTL materials"):
@@ -126,7 +130,7 @@ MtlMaterial finish(Pending& p) {
     MtlMaterial m = p.m;
     Material& mat = m.material;
     const float shininess = p.has_ns ? p.ns : 10.0f;
-    const bool pbr = p.has_pr || p.has_pm || p.has_pbr_map;
+    const bool pbr = p.has_pr || p.has_pm || p.has_pbr_map || p.has_layers;
     // A roughness or metalness map without its number: the map alone gives it (factor 1).
     auto has_map = [&](const char* s) {
         return std::any_of(p.m.textures.begin(), p.m.textures.end(),
@@ -155,6 +159,12 @@ MtlMaterial finish(Pending& p) {
         if (mat.diffuse_model != FC_DIFFUSE_NONE) mat.diffuse_model = FC_DIFFUSE_LAMBERT;
         mat.alpha_x = mat.alpha_y = alpha;
         mat.exponent_x = mat.exponent_y = shininess_from_roughness(alpha);
+        // glTF's clearcoat and sheen layers (kernels/bsdf/clearcoat.cl, sheen.cl): the MTL
+        // extension gives no sheen roughness, so Blender's default, 0.5.
+        mat.clearcoat = p.pc;
+        mat.clearcoat_alpha = p.pcr * p.pcr;
+        mat.sheen = glm::vec3(p.ps);
+        mat.sheen_roughness = p.ps > 0.0f ? 0.5f : 0.0f;
     } else if (has_ks && m.illum >= 2) {
         mat = make_material("blinn_phong_normalized");
         mat.diffuse = base.diffuse;
@@ -206,7 +216,8 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
             continue;
         }
         const bool known = kw == "Kd" || kw == "Ks" || kw == "Ke" || kw == "Ns" || kw == "Ni" || kw == "d" ||
-                           kw == "Tr" || kw == "illum" || kw == "Pr" || kw == "Pm" || kw == "Tf";
+                           kw == "Tr" || kw == "illum" || kw == "Pr" || kw == "Pm" || kw == "Tf" || kw == "Pc" ||
+                           kw == "Pcr" || kw == "Ps";
         if (!known && !is_texture_statement(kw)) continue;  // Ka, ...: not used
         if (list.empty()) l.fail(fmt::format("'{}' before any 'newmtl'", kw));
         Pending& p = list.back();
@@ -231,6 +242,9 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
         } else if (kw == "Pm") {
             p.m.metallic = l.scalar(0.0f, 1.0f);
             p.pm_given = true;
+        } else if (kw == "Pc" || kw == "Pcr" || kw == "Ps") {
+            (kw == "Pc" ? p.pc : kw == "Pcr" ? p.pcr : p.ps) = l.scalar(0.0f, 1.0f);
+            p.has_layers = true;
         } else if (kw == "illum") {
             const float v = l.scalar(0.0f, 10.0f);
             if (v != std::floor(v)) l.fail(fmt::format("'illum' must be an integer, got {}", v));
