@@ -253,6 +253,19 @@ void check_image_header(const std::string& path) {
     check_image_header_bytes(path, head, file_size);
 }
 
+// The size in bytes of an OpenEXR attribute type of fixed size (OpenEXR's file layout), or 0
+// for types of variable size (string, chlist, preview, ...) or unknown ones.
+static int exr_fixed_size(const std::string& type) {
+    static const std::pair<const char*, int> kSizes[] = {
+        {"box2i", 16}, {"box2f", 16},   {"compression", 1}, {"lineOrder", 1}, {"envmap", 1},   {"deepImageState", 1},
+        {"int", 4},    {"float", 4},    {"double", 8},      {"v2i", 8},       {"v2f", 8},      {"v2d", 16},
+        {"v3i", 12},   {"v3f", 12},     {"v3d", 24},        {"m33f", 36},     {"m33d", 72},    {"m44f", 64},
+        {"m44d", 128}, {"rational", 8}, {"timecode", 8},    {"keycode", 28},  {"tiledesc", 9}, {"chromaticities", 32}};
+    for (const auto& [name, size] : kSizes)
+        if (type == name) return size;
+    return 0;
+}
+
 void check_image_header_bytes(const std::string& path, const std::string& head, std::uintmax_t file_size) {
     if (head.size() < 8 || head.compare(0, 4, "\x76\x2f\x31\x01") != 0) return;
     auto int32_at = [&](std::size_t at) {
@@ -281,6 +294,14 @@ void check_image_header_bytes(const std::string& path, const std::string& head, 
                 fmt::format("{}: the EXR header's attribute '{}' claims {} bytes, but the file has {}: it is "
                             "truncated or corrupt",
                             path, name.substr(0, 64), size, file_size));
+        // OpenEXR reads a fixed-size type's own size whatever the header declares, and would
+        // go on reading at another place than this walk (where a string attribute could
+        // then claim gigabytes: found by fuzz_env_map).
+        if (const int fixed = exr_fixed_size(type); fixed > 0 && size != fixed)
+            throw Error(
+                fmt::format("{}: the EXR header's attribute '{}' of type {} declares {} bytes, where its "
+                            "type has {}: it is corrupt",
+                            path, name.substr(0, 64), type.substr(0, 32), size, fixed));
         if (value + std::size_t(size) > head.size()) return;  // a long header: left to OpenEXR
         if (name == "dataWindow" && type == "box2i" && size == 16) {
             width = std::int64_t(int32_at(value + 8)) - int32_at(value) + 1;
