@@ -25,6 +25,23 @@ __kernel void trace_spheres_batch(__global const FcBinaryNode* nodes, __global c
     out[i] = (float2)(hit.t, as_float(hit.prim));
 }
 
+/* Node nodes[i % n_nodes]'s two child boxes against ray i (dirs[i].w = tmax) by the binary
+ * traversal's box2_hit and by two scalar box_hit calls: out[2 i] = (tnear a, tnear b, hit a,
+ * hit b) of box2_hit, out[2 i + 1] the same of box_hit, hits as 1.0f or 0.0f. */
+__kernel void binary_boxes_batch(__global const FcBinaryNode* nodes, uint n_nodes, __global const float4* origins,
+                                 __global const float4* dirs, __global float4* out) {
+    const uint i = get_global_id(0);
+    __global const FcBinaryNode* n = &nodes[i % n_nodes];
+    const BoxRay r = box_ray_setup(origins[i].xyz, dirs[i].xyz);
+    float2 t2;
+    const int2 h2 = box2_hit(&r, n, dirs[i].w, &t2);
+    float ta, tb;
+    const bool ha = box_hit(&r, n->a_lo, n->a_hi, dirs[i].w, &ta);
+    const bool hb = box_hit(&r, n->b_lo, n->b_hi, dirs[i].w, &tb);
+    out[2 * i] = (float4)(t2.x, t2.y, h2.x ? 1.0f : 0.0f, h2.y ? 1.0f : 0.0f);
+    out[2 * i + 1] = (float4)(ta, tb, ha ? 1.0f : 0.0f, hb ? 1.0f : 0.0f);
+}
+
 /* A ray from outside (origins[i], dirs[i]) enters the sphere, bounces `bounces` times inside
  * along the directions bounce_dirs[i * bounces + k] (turned inward) and leaves along
  * exit_dirs[i] (turned outward), every new ray from the surface's offset origin. leaks[i]
