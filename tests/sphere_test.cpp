@@ -230,8 +230,9 @@ TEST(Sphere, TreeMatchesBruteForce) {
 // The binary traversal tests a node's two boxes as float2 lanes (box2_hit in
 // kernels/trace/binary_traverse.cl); its entry distances and answers must be those of the
 // scalar box_hit, bit for bit, so that the trees' hits, and images, stay as they were: on
-// the nodes of a real tree, on empty (inverted) boxes, and on rays whose origins lie on the
-// slab planes with zero direction components (0 * inf = NaN in the slab test).
+// the nodes of a real tree, on empty (inverted) boxes, on rays through a box's corner (where
+// only the exit's FC_SLAB_SCALE keeps the hit) and on rays whose origins lie on the slab
+// planes with zero direction components (0 * inf = NaN in the slab test).
 TEST(Sphere, NodeBoxesMatchScalarBoxTest) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> u(-10.0f, 10.0f), ur(0.05f, 1.5f);
@@ -252,6 +253,9 @@ TEST(Sphere, NodeBoxesMatchScalarBoxTest) {
                                   0.5 * (double(n.a_lo[2]) + double(n.a_hi[2])));
         if (i % 2 == 0 && n.a_count + n.a_index > 0 && glm::length(centre_a - o) > 0.0)
             d = glm::normalize(centre_a - o);  // toward child a (not for an empty child)
+        const glm::dvec3 corner_a(n.a_hi[0], n.a_hi[1], n.a_hi[2]);
+        if (i % 6 == 1 && n.a_count + n.a_index > 0 && glm::length(corner_a - o) > 0.0)
+            d = glm::normalize(corner_a - o);  // grazing: entry = exit, up to rounding
         if (i % 3 == 0) {                      // on a slab plane of child a, parallel to it
             const int axis = (i / 3) % 3;
             o[axis] = double(i % 2 ? n.a_lo[axis] : n.a_hi[axis]);
