@@ -27,7 +27,7 @@
  * albedo_tables_schlick.cl (32 x 32 in mu and in r = sqrt(alpha), bilinear), integrated on
  * these kernels by tests/tools/albedo_tables.cpp.
  * They hold for height-correlated Smith G, the only G compensated; an anisotropic
- * lobe reads them at alpha = sqrt(alpha_x alpha_y), alpha above 1 at 1. */
+ * lobe reads them at an effective alpha per direction (ec_r_dir), alpha above 1 at 1. */
 #ifndef FACET_BSDF_ENERGY_COMPENSATION_CL
 #define FACET_BSDF_ENERGY_COMPENSATION_CL
 
