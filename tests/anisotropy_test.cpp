@@ -15,6 +15,8 @@
 #include "host/readers/load_scene.hpp"
 #include "host/render/features.hpp"
 #include "host/scene/device_scene.hpp"
+#include "host/scene/texture.hpp"
+#include "host/scene/texture_tangents.hpp"
 #include "tests/cl_test_env.hpp"
 #include "tests/gltf_test_util.hpp"
 #include "tests/microfacet_test_util.hpp"
@@ -176,6 +178,32 @@ TEST(Anisotropy, FurnaceOfAnAnisotropicMetal) {
         "[ furnace ] anisotropic metal, strength 0.8: worst |albedo - 1| = %.4f at normal incidence, "
         "%.4f at 40 to 80 degrees\n",
         worst_normal, worst);
+}
+
+// A scene without textures whose triangles carry uvs and an anisotropic material: the uvs
+// and the tangents computed from them (dp/du) go to the device; an isotropic one sends the
+// one-element placeholder.
+TEST(Anisotropy, TangentsUploadedWithoutTextures) {
+    for (float strength : {0.0f, 0.8f}) {
+        Scene s;
+        Material m = make_material("ggx");
+        m.anisotropy = strength;
+        add_material(s, m, "brushed");
+        add_quad(s, glm::vec3(0.0f), glm::vec3(2, 0, 0), glm::vec3(0, 0, -1), 0);
+        auto uv = [&](std::size_t v) { return glm::vec2(s.vertices[v].x / 2.0f, -s.vertices[v].z); };
+        for (std::size_t t = 0; t < s.shading.size(); ++t)
+            set_triangle_texcoords(s, t, uv(3 * t), uv(3 * t + 1), uv(3 * t + 2));
+        const DeviceTextures d = compile_textures(s);
+        if (strength == 0.0f) {
+            EXPECT_EQ(d.texcoords.size(), 1u);
+            continue;
+        }
+        ASSERT_EQ(d.texcoords.size(), s.shading.size());
+        for (const FcTriTexcoords& t : d.texcoords) {
+            EXPECT_TRUE(t.tangent_flags & FC_TANGENTS_SET);
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(t.tangent[c], encode_octahedral(glm::vec3(1, 0, 0)));  // u along +x
+        }
+    }
 }
 
 // KHR_materials_anisotropy onto the material: strength and rotation as given, alpha_x =
