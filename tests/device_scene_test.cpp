@@ -35,6 +35,8 @@ void expect_same(const Material& a, const Material& b, std::string_view what) {
     EXPECT_EQ(a.sigma, b.sigma) << what;
     EXPECT_EQ(a.two_sided_emission, b.two_sided_emission) << what;
     EXPECT_EQ(a.energy_compensation, b.energy_compensation) << what;
+    EXPECT_EQ(a.anisotropy, b.anisotropy) << what;
+    EXPECT_NEAR(a.anisotropy_rotation, b.anisotropy_rotation, 1e-6f) << what;
 }
 
 TEST(DeviceScene, MaterialsRoundTrip) {
@@ -44,8 +46,11 @@ TEST(DeviceScene, MaterialsRoundTrip) {
         m.two_sided_emission = true;
         m.sigma = m.eon_roughness = 0.7f;  // one kernel field for both (EON's or Oren-Nayar's)
         m.alpha_y = 0.2f;
+        m.anisotropy = 0.5f;  // KHR_materials_anisotropy: strength, and the rotation as (cos, sin)
+        m.anisotropy_rotation = 0.75f;
         const FcMaterial d = device_material(m);
-        EXPECT_EQ(d.flags, FC_MAT_TWO_SIDED_EMISSION | (m.energy_compensation ? FC_MAT_ENERGY_COMPENSATION : 0u))
+        EXPECT_EQ(d.flags, FC_MAT_TWO_SIDED_EMISSION | FC_MAT_ANISOTROPIC |
+                               (m.energy_compensation ? FC_MAT_ENERGY_COMPENSATION : 0u))
             << name;
         EXPECT_EQ(d.emission[2], 3.0f) << name;
         EXPECT_EQ(d.alpha_y, 0.2f) << name;

@@ -91,7 +91,7 @@ TEST(Features, LambertCornellBoxLeavesOutEverythingElse) {
     Renderer r(test::context(), scene, bvh);
     EXPECT_TRUE(built_with(r, "AREA_LIGHTS", 1));
     for (const char* off : {"ENVIRONMENT", "PUNCTUAL_LIGHTS", "MICROFACET", "BECKMANN", "BLINN_PHONG",
-                            "ASHIKHMIN_SHIRLEY", "OREN_NAYAR", "DIELECTRIC", "CLEARCOAT", "SHEEN"})
+                            "ASHIKHMIN_SHIRLEY", "OREN_NAYAR", "DIELECTRIC", "CLEARCOAT", "SHEEN", "ANISOTROPY"})
         EXPECT_TRUE(built_with(r, off, 0)) << off;
     Renderer g(test::context(), scene, bvh, true);
     EXPECT_TRUE(prelude(g).empty()) << "the generic program has no prelude";
@@ -165,6 +165,10 @@ TEST(Features, EveryFlagIsExercised) {
     layered.sheen = glm::vec3(0.6f, 0.3f, 0.9f);
     layered.sheen_roughness = 0.5f;
     with_material("clearcoat and sheen", layered);
+    Material brushed = half_metal;  // KHR_materials_anisotropy: the frame follows the tangent
+    brushed.anisotropy = 0.8f;
+    brushed.anisotropy_rotation = 0.5f;
+    with_material("anisotropy", brushed);
     Material textured = make_material("ggx");
     textured.textures.base_color = textured.textures.roughness = textured.textures.normal = 0;
     with_material("textured", textured);

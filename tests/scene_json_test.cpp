@@ -161,6 +161,34 @@ TEST(SceneJson, ClearcoatAndSheenKeys) {
     }
 }
 
+// "anisotropy" and "anisotropy_rotation" (degrees): glTF's anisotropy strength and rotation
+// (radians on the Material), each value checked with its path.
+TEST(SceneJson, AnisotropyKeys) {
+    TempDir d;
+    const std::string shapes = R"(, "shapes": [)" + kQuadShape + "]";
+    const Scene s = load_scene(scene(d, "aniso.json",
+                                     R"("materials": {"m": {"model": "ggx", "metallic": 1,
+        "anisotropy": 0.7, "anisotropy_rotation": 90}})" +
+                                         shapes));
+    ASSERT_FALSE(s.materials.empty());
+    EXPECT_FLOAT_EQ(s.materials[0].anisotropy, 0.7f);
+    EXPECT_NEAR(s.materials[0].anisotropy_rotation, 1.5707963f, 1e-6f);
+    EXPECT_TRUE(material_is_anisotropic(s.materials[0]));
+    struct Case {
+        std::string body, path, problem;
+    };
+    const Case cases[] = {
+        {R"("materials": {"m": {"anisotropy": 1.5}})", "materials.m.anisotropy", "1.5"},
+        {R"("materials": {"m": {"anisotropy_rotation": "left"}})", "materials.m.anisotropy_rotation", ""},
+        {R"("materials": {"m": {"anisotropy_rotation": 720}})", "materials.m.anisotropy_rotation", "720"},
+    };
+    int i = 0;
+    for (const Case& c : cases) {
+        const std::string name = "aniso" + std::to_string(i++) + ".json";
+        expect_error([&] { load_scene(scene(d, name, c.body + shapes)); }, {name + ": " + c.path, c.problem});
+    }
+}
+
 TEST(SceneJson, JsonUnknownMaterial) {
     TempDir d;
     d.write("tri.obj", kTri);

@@ -214,6 +214,28 @@ TEST(SceneObj, MtlClearcoatAndSheen) {
     expect_error([&] { load(q); }, {"bad.mtl:2:"});
 }
 
+// The PBR extension's aniso (strength) and anisor (rotation, a fraction of a turn) map onto
+// glTF's anisotropy and make the material a PBR (GGX) one; out of [0, 1] names the line.
+TEST(SceneObj, MtlAnisotropy) {
+    TempDir d;
+    d.write("m.mtl",
+            "newmtl brushed\nKd 0.9 0.9 0.9\nPm 1\nPr 0.3\naniso 0.8\nanisor 0.25\n"
+            "newmtl plain\nKd 0.5 0.5 0.5\naniso 0.5\n");
+    const auto p =
+        d.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl brushed\nf 1 2 3\nusemtl plain\nf 1 2 3\n");
+    const Scene s = load(p);
+    const Material& brushed = s.materials[static_cast<std::size_t>(s.shading[0].material)];
+    const Material& plain = s.materials[static_cast<std::size_t>(s.shading[1].material)];
+    EXPECT_FLOAT_EQ(brushed.anisotropy, 0.8f);
+    EXPECT_NEAR(brushed.anisotropy_rotation, 1.5707963f, 1e-6f);
+    EXPECT_FLOAT_EQ(brushed.alpha_x, 0.09f);
+    EXPECT_EQ(plain.specular_model, FC_SPECULAR_MICROFACET);
+    EXPECT_FLOAT_EQ(plain.anisotropy, 0.5f);
+    d.write("bad.mtl", "newmtl a\nanisor 1.5\n");
+    const auto q = d.write("x.obj", "mtllib bad.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    expect_error([&] { load(q); }, {"bad.mtl:2:"});
+}
+
 TEST(SceneObj, MtlBadNumberNamesLine) {
     TempDir d;
     d.write("bad.mtl", "newmtl a\nKd 0.5 abc 0.5\n");

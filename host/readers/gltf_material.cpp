@@ -1,5 +1,6 @@
 // glTF materials onto facet's models (glTF 2.0 specification, appendix B; the KHR
-// extensions' own documents for ior, transmission, emissive strength, clearcoat and sheen).
+// extensions' own documents for ior, transmission, emissive strength, clearcoat, sheen and
+// anisotropy).
 #include "host/readers/gltf_material.hpp"
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include <unistd.h>
 
@@ -304,6 +306,33 @@ void read_layers(const tinygltf::Material& g, Material& m, const std::string& fi
     }
 }
 
+// --- anisotropy ------------------------------------------------------------------------------
+
+// KHR_materials_anisotropy (anisotropyStrength in [0, 1], anisotropyRotation in radians,
+// counter-clockwise from the tangent toward the bitangent) onto Material.anisotropy and
+// anisotropy_rotation; the kernels stretch alpha along that direction to mix(alpha, 1, s^2)
+// (kernels/bsdf/anisotropy.cl), for the metal and the dielectric's specular lobe alike.
+// anisotropyTexture is not read (warned about and ignored).
+void read_anisotropy(const tinygltf::Material& g, Material& m, const std::string& file, const std::string& place,
+                     const std::string& where, Ignored& ignored) {
+    const char* extension = "KHR_materials_anisotropy";
+    const auto it = g.extensions.find(extension);
+    if (it == g.extensions.end()) return;
+    const tinygltf::Value& v = it->second;
+    if (!v.IsObject()) throw Error(fmt::format("{}: {}.extensions.{}: must be an object", file, place, extension));
+    if (v.Has("anisotropyTexture")) ignored.add("KHR_materials_anisotropy.anisotropyTexture", where);
+    m.anisotropy = layer_factor(v, extension, "anisotropyStrength", 0.0, file, place);
+    if (v.Has("anisotropyRotation")) {
+        const tinygltf::Value& x = v.Get("anisotropyRotation");
+        const double r = x.IsNumber() ? x.GetNumberAsDouble() : std::nan("");
+        if (!std::isfinite(r) || std::fabs(r) > 1e6)
+            throw Error(fmt::format("{}: {}.extensions.{}.anisotropyRotation: must be a number of radians, got {}",
+                                    file, place, extension,
+                                    x.IsNumber() ? fmt::format("{:g}", r) : std::string("no number")));
+        m.anisotropy_rotation = float(std::remainder(r, 2.0 * std::numbers::pi));
+    }
+}
+
 }  // namespace
 
 void Ignored::warn(const std::string& file, std::vector<std::string>& warnings) const {
@@ -319,7 +348,7 @@ bool supported_extension(const std::string& name) {
     return name == "KHR_lights_punctual" || name == "KHR_materials_ior" || name == "KHR_materials_transmission" ||
            name == "KHR_materials_emissive_strength" || name == "KHR_texture_transform" ||
            name == "KHR_draco_mesh_compression" || name == "KHR_materials_volume" || name == "KHR_materials_specular" ||
-           layer_extension(name);
+           name == "KHR_materials_anisotropy" || layer_extension(name);
 }
 
 Material default_gltf_material() {
@@ -383,6 +412,7 @@ Material convert_material(const tinygltf::Material& g, const std::string& file, 
     read_specular(g, m, ior, file, place, where, ignored);
     read_volume(g, m, file, place, where, ignored);
     read_layers(g, m, file, place, where, ignored);
+    read_anisotropy(g, m, file, place, where, ignored);
     if (g.occlusionTexture.index >= 0) ignored.add("occlusionTexture (a path tracer computes occlusion itself)", where);
     // alphaMode: OPAQUE ignores alpha; MASK cuts out where alpha < alphaCutoff, BLEND is
     // stochastic transparency; alpha = baseColorFactor's A x the base colour texture's A.

@@ -142,13 +142,13 @@ void parse(const std::string& path, tinygltf::Model& model, Scene& scene) {
         throw Error(fmt::format("{}: asset.version is '{}': facet reads glTF 2.0", path, model.asset.version));
     for (const std::string& required : model.extensionsRequired)
         if (!gltf::supported_extension(required))
-            throw Error(
-                fmt::format("{}: the file requires the extension {}, which facet does not support "
-                            "(supported: KHR_lights_punctual, KHR_materials_ior, KHR_materials_transmission, "
-                            "KHR_materials_emissive_strength, KHR_materials_volume, KHR_materials_specular, "
-                            "KHR_materials_clearcoat, KHR_materials_sheen, KHR_texture_transform, "
-                            "KHR_draco_mesh_compression)",
-                            path, required));
+            throw Error(fmt::format(
+                "{}: the file requires the extension {}, which facet does not support "
+                "(supported: KHR_lights_punctual, KHR_materials_ior, KHR_materials_transmission, "
+                "KHR_materials_emissive_strength, KHR_materials_volume, KHR_materials_specular, "
+                "KHR_materials_clearcoat, KHR_materials_sheen, KHR_materials_anisotropy, KHR_texture_transform, "
+                "KHR_draco_mesh_compression)",
+                path, required));
 }
 
 glm::mat4 local_transform(const tinygltf::Node& n, const std::string& path, const std::string& place) {

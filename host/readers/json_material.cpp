@@ -2,6 +2,7 @@
 // preset (host/scene/material.hpp), then its parameters, and references to materials.
 #include <algorithm>
 #include <array>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -55,6 +56,15 @@ void layers(const MaterialKeys& k, Material& m) {
             if (m.sheen[c] > 1.0f) k.r.fail(k.key("sheen"), "each component must be at most 1");
     }
     if (k.has("sheen_roughness")) m.sheen_roughness = k.number("sheen_roughness", 0, 1);
+}
+
+// "anisotropy" (0 to 1) and "anisotropy_rotation" (degrees, counter-clockwise from the
+// tangent toward the bitangent): glTF's KHR_materials_anisotropy on the material's microfacet
+// lobes (kernels/bsdf/anisotropy.cl).
+void anisotropy(const MaterialKeys& k, Material& m) {
+    if (k.has("anisotropy")) m.anisotropy = k.number("anisotropy", 0, 1);
+    if (k.has("anisotropy_rotation"))
+        m.anisotropy_rotation = float(double(k.number("anisotropy_rotation", -360, 360)) * std::numbers::pi / 180.0);
 }
 
 // "specular", "f0" and "transmittance" all give the specular lobe's colour: F0 for the
@@ -315,6 +325,8 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
               "clearcoat_roughness",
               "sheen",
               "sheen_roughness",
+              "anisotropy",
+              "anisotropy_rotation",
               "metallic",
               "attenuation_color",
               "attenuation_distance",
@@ -346,6 +358,7 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
     if (k.has("attenuation_color") || k.has("attenuation_distance")) volume(k, m);
     alpha(k, m);
     layers(k, m);
+    anisotropy(k, m);
     if (std::string warning = clamp_reflectance(m); !warning.empty())
         scene.warnings.push_back(fmt::format("{}: {}: {}", r.file(), path, warning));
     if (std::string problem = validate_material(m); !problem.empty()) r.fail(path, problem);

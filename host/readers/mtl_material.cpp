@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <set>
 #include <string>
 
@@ -105,9 +106,10 @@ struct Pending {
     bool has_d = false;
     float tr = 0.0f;  // Tr, the transparency 1 - d, read when no d is given
     // The PBR extension's layers: Pc (clearcoat weight), Pcr (its perceptual roughness),
-    // Ps (sheen, grey); any of them makes the material a PBR one.
+    // Ps (sheen, grey), aniso and anisor (anisotropy and its rotation as a fraction of a
+    // turn, as Blender writes them); any of them makes the material a PBR one.
     bool has_layers = false;
-    float pc = 0.0f, pcr = 0.0f, ps = 0.0f;
+    float pc = 0.0f, pcr = 0.0f, ps = 0.0f, aniso = 0.0f, anisor = 0.0f;
 };
 
 // Chooses the model from what the MTL gives (docs/scene-format.md, "MTL materials"):
@@ -165,6 +167,9 @@ MtlMaterial finish(Pending& p) {
         mat.clearcoat_alpha = p.pcr * p.pcr;
         mat.sheen = glm::vec3(p.ps);
         mat.sheen_roughness = p.ps > 0.0f ? 0.5f : 0.0f;
+        // glTF's anisotropy (kernels/bsdf/anisotropy.cl): anisor turns of a full circle.
+        mat.anisotropy = p.aniso;
+        mat.anisotropy_rotation = float(2.0 * std::numbers::pi * double(p.anisor));
     } else if (has_ks && m.illum >= 2) {
         mat = make_material("blinn_phong_normalized");
         mat.diffuse = base.diffuse;
@@ -217,7 +222,7 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
         }
         const bool known = kw == "Kd" || kw == "Ks" || kw == "Ke" || kw == "Ns" || kw == "Ni" || kw == "d" ||
                            kw == "Tr" || kw == "illum" || kw == "Pr" || kw == "Pm" || kw == "Tf" || kw == "Pc" ||
-                           kw == "Pcr" || kw == "Ps";
+                           kw == "Pcr" || kw == "Ps" || kw == "aniso" || kw == "anisor";
         if (!known && !is_texture_statement(kw)) continue;  // Ka, ...: not used
         if (list.empty()) l.fail(fmt::format("'{}' before any 'newmtl'", kw));
         Pending& p = list.back();
@@ -242,8 +247,12 @@ std::vector<MtlMaterial> parse_mtl(const std::string& path, std::string_view con
         } else if (kw == "Pm") {
             p.m.metallic = l.scalar(0.0f, 1.0f);
             p.pm_given = true;
-        } else if (kw == "Pc" || kw == "Pcr" || kw == "Ps") {
-            (kw == "Pc" ? p.pc : kw == "Pcr" ? p.pcr : p.ps) = l.scalar(0.0f, 1.0f);
+        } else if (kw == "Pc" || kw == "Pcr" || kw == "Ps" || kw == "aniso" || kw == "anisor") {
+            (kw == "Pc"      ? p.pc
+             : kw == "Pcr"   ? p.pcr
+             : kw == "Ps"    ? p.ps
+             : kw == "aniso" ? p.aniso
+                             : p.anisor) = l.scalar(0.0f, 1.0f);
             p.has_layers = true;
         } else if (kw == "illum") {
             const float v = l.scalar(0.0f, 10.0f);

@@ -69,6 +69,7 @@ FeatureMask scene_features(const Scene& scene) {
             (m.attenuation.x > 0.0f || m.attenuation.y > 0.0f || m.attenuation.z > 0.0f))
             mask |= kVOLUME;
         if (m.alpha_mode != FC_ALPHA_OPAQUE) mask |= kALPHA;
+        if (material_is_anisotropic(m)) mask |= kANISOTROPY;
         if (m.specular_model != FC_SPECULAR_DIELECTRIC) {  // the layers go over non-dielectrics only
             if (m.clearcoat > 0.0f) mask |= kCLEARCOAT;
             if (std::max(m.sheen.x, std::max(m.sheen.y, m.sheen.z)) > 0.0f) mask |= kSHEEN;

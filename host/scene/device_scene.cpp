@@ -3,6 +3,7 @@
 #include "host/scene/texture_tangents.hpp"
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 
 #include "host/scene/pixel_filter.hpp"
@@ -56,8 +57,9 @@ void compile_instances(const Scene& scene, const Bvh& bvh, DeviceScene& d) {
     d.nodes = d.nodes_owned;
     d.tris = d.triangles_owned;
     d.shading = d.shading_owned;
-    // uvs (when the scene has textures): the world's padded to its triangles, then each mesh's
-    if (scene_uses_textures(scene)) {
+    // uvs (when the scene has textures or anisotropy): the world's padded to its triangles,
+    // then each mesh's
+    if (scene_uses_texcoords(scene)) {
         for (const SharedMesh& m : scene.meshes) {
             const std::size_t at = d.texture_data.texcoords.size();
             // The mesh's vertex tangents in object space, as for world triangles; the kernels
@@ -97,6 +99,9 @@ FcMaterial device_material(const Material& m) {
     d.clearcoat_alpha = m.clearcoat_alpha;
     store(d.sheen, m.sheen);
     d.sheen_roughness = m.sheen_roughness;
+    d.anisotropy = m.anisotropy;
+    d.anisotropy_direction[0] = std::cos(m.anisotropy_rotation);
+    d.anisotropy_direction[1] = std::sin(m.anisotropy_rotation);
     d.alpha_x = m.alpha_x;
     d.alpha_y = m.alpha_y;
     d.exponent_x = m.exponent_x;
@@ -104,7 +109,8 @@ FcMaterial device_material(const Material& m) {
     d.ior = m.ior;
     d.sigma = m.diffuse_model == FC_DIFFUSE_EON ? m.eon_roughness : m.sigma;  // one field, by diffuse model
     d.flags = (m.two_sided_emission ? FC_MAT_TWO_SIDED_EMISSION : 0u) |
-              (m.energy_compensation ? FC_MAT_ENERGY_COMPENSATION : 0u);
+              (m.energy_compensation ? FC_MAT_ENERGY_COMPENSATION : 0u) |
+              (material_is_anisotropic(m) ? FC_MAT_ANISOTROPIC : 0u);
     d.alpha = m.alpha;
     d.alpha_cutoff = m.alpha_cutoff;
     d.alpha_texture = -1;
@@ -135,6 +141,8 @@ Material host_material(const FcMaterial& d) {
     m.clearcoat_alpha = d.clearcoat_alpha;
     m.sheen = load(d.sheen);
     m.sheen_roughness = d.sheen_roughness;
+    m.anisotropy = d.anisotropy;
+    m.anisotropy_rotation = std::atan2(d.anisotropy_direction[1], d.anisotropy_direction[0]);
     m.alpha_x = d.alpha_x;
     m.alpha_y = d.alpha_y;
     m.exponent_x = d.exponent_x;

@@ -277,6 +277,13 @@ void set_metallic_roughness(Material& m, glm::vec3 base, float metallic, float d
     m.metallic = std::max(metallic, 0.0f);
 }
 
+bool material_is_anisotropic(const Material& m) {
+    if (m.anisotropy > 0.0f) return true;
+    if (m.specular_model == FC_SPECULAR_MICROFACET || m.specular_model == FC_SPECULAR_DIELECTRIC)
+        return m.alpha_x != m.alpha_y;
+    return m.specular_model == FC_SPECULAR_ASHIKHMIN_SHIRLEY && m.exponent_x != m.exponent_y;
+}
+
 std::string validate_material(const Material& m) {
     auto bad = [](float v, bool ok) { return !std::isfinite(v) || !ok; };
     const struct {
@@ -312,6 +319,10 @@ std::string validate_material(const Material& m) {
     if (m.alpha_mode < 0 || m.alpha_mode >= FC_ALPHA_MODE_COUNT)
         return fmt::format("alpha mode {} is out of range", m.alpha_mode);
     if (bad(m.ior, m.ior > 0.0f)) return fmt::format("ior must be a finite number > 0 (got {:g})", m.ior);
+    if (bad(m.anisotropy, m.anisotropy >= 0.0f && m.anisotropy <= 1.0f))
+        return fmt::format("anisotropy must be a finite number in [0, 1] (got {:g})", m.anisotropy);
+    if (bad(m.anisotropy_rotation, true))
+        return fmt::format("anisotropy_rotation must be a finite number (got {:g})", m.anisotropy_rotation);
     const struct {
         MaterialEnum kind;
         int v;
@@ -401,6 +412,8 @@ std::string describe_material(const Material& m) {
         default:
             if (m.specular_model != FC_SPECULAR_NONE) s += fmt::format(" specular invalid({})", m.specular_model);
     }
+    if (m.anisotropy > 0.0f)
+        s += fmt::format(" anisotropy={:g} rotation={:g} rad", m.anisotropy, m.anisotropy_rotation);
     if (m.emission[0] > 0.0f || m.emission[1] > 0.0f || m.emission[2] > 0.0f) s += " emission=" + rgb(m.emission);
     if (m.alpha_mode == FC_ALPHA_MASK)
         s += fmt::format(" alpha_mode=mask alpha={:g} cutoff={:g}", m.alpha, m.alpha_cutoff);

@@ -78,6 +78,12 @@ struct Material {
     float clearcoat_alpha = 0.0f;
     glm::vec3 sheen{0.0f};
     float sheen_roughness = 0.0f;
+    // KHR_materials_anisotropy (kernels/bsdf/anisotropy.cl): the strength s in [0, 1] stretches
+    // the roughness along the anisotropy direction to mix(alpha_x, 1, s^2) in the kernels (after
+    // the roughness texture); the direction is the surface's tangent turned by
+    // `anisotropy_rotation` (radians) toward the bitangent. Also orients alpha_x != alpha_y.
+    float anisotropy = 0.0f;
+    float anisotropy_rotation = 0.0f;
     // Image textures bound to the parameters above (docs/textures.md).
     MaterialTextures textures;
 };
@@ -165,11 +171,19 @@ void set_metallic_roughness(Material& m, glm::vec3 base, float metallic, float d
 // if it kept 1e-6 (finite).
 glm::vec3 attenuation_coefficient(glm::vec3 colour, float distance);
 
+// --- anisotropy ---------------------------------------------------------------------------
+// Whether the material's specular lobe depends on the direction around the normal (anisotropy
+// > 0, or a microfacet / dielectric lobe with alpha_x != alpha_y, or Ashikhmin-Shirley with
+// exponent_x != exponent_y): its shading frame then follows the surface's tangent
+// (FC_MAT_ANISOTROPIC), and the scene's triangles get tangents.
+bool material_is_anisotropic(const Material& m);
+
 // --- validation -----------------------------------------------------------------------
 // Empty when every field is usable, else a message naming the first bad field, e.g.
 // "alpha_x must be a finite number >= 0 (got nan)". Checks: colours finite and >= 0
 // (diffuse, f0, ks and transmittance also <= 1), enums in range, alpha_x/alpha_y/exponents/sigma
-// finite and >= 0, ior, eta finite and > 0, k finite and >= 0.
+// finite and >= 0, ior, eta finite and > 0, k finite and >= 0, anisotropy in [0, 1],
+// anisotropy_rotation finite.
 std::string validate_material(const Material& m);
 // Clamps the diffuse and specular colours (f0, ks, transmittance) to <= 1 (above 1 a surface creates energy);
 // the warning to give when it did ("a reflectance <names> above 1 creates energy;

@@ -217,6 +217,15 @@ bool scene_uses_textures(const Scene& scene) {
     return false;
 }
 
+bool scene_uses_texcoords(const Scene& scene) {
+    if (scene_uses_textures(scene)) return true;
+    std::vector<bool> used(scene.materials.size(), false);
+    mark_triangle_materials(scene, used);
+    for (std::size_t i = 0; i < scene.materials.size(); ++i)
+        if (used[i] && material_is_anisotropic(scene.materials[i])) return true;
+    return false;
+}
+
 FcMaterialTextures device_material_textures(const MaterialTextures& t) {
     FcMaterialTextures d{};
     d.base_color = t.base_color;
@@ -238,6 +247,24 @@ FcMaterialTextures device_material_textures(const MaterialTextures& t) {
     return d;
 }
 
+namespace {
+
+// The world triangles' uvs and tangents, and which area lights' corners run the other way.
+std::vector<FcTriTexcoords> triangle_texcoords(const Scene& scene) {
+    std::vector<FcTriTexcoords> tc = scene.texcoords;
+    tc.resize(scene.shading.size(), FcTriTexcoords{});
+    compute_tangents(scene, tc);
+    for (const FcLight& l : scene.lights) {
+        if (l.type != FC_LIGHT_AREA_TRIANGLE) continue;
+        const std::size_t t = std::size_t(l.prim);
+        const glm::vec3 e1 = scene.vertices[3 * t + 1] - scene.vertices[3 * t];
+        tc[t].light_swapped = !(l.e1[0] == e1.x && l.e1[1] == e1.y && l.e1[2] == e1.z);
+    }
+    return tc;
+}
+
+}  // namespace
+
 DeviceTextures compile_textures(const Scene& scene) {
     DeviceTextures d;
     // One binding a material even without textures: the generic program reads them.
@@ -247,7 +274,8 @@ DeviceTextures compile_textures(const Scene& scene) {
         for (FcMaterialTextures& m : d.materials) m = device_material_textures(MaterialTextures{});
         d.table.push_back(FcTexture{});
         d.texels.assign(4, 0u);
-        d.texcoords.push_back(FcTriTexcoords{});
+        if (scene_uses_texcoords(scene)) d.texcoords = triangle_texcoords(scene);  // anisotropic: the tangents
+        else d.texcoords.push_back(FcTriTexcoords{});
         return d;
     }
     for (std::uint32_t k = 0; k < FC_SRGB_TABLE_WORDS; ++k) {
@@ -276,15 +304,7 @@ DeviceTextures compile_textures(const Scene& scene) {
         for (std::size_t i = 0; i + 3 < t.texels.size(); i += 4)
             append_texel(d.texels, i < 4u * level0 ? t.format : t.mip_format, &t.texels[i]);
     }
-    d.texcoords = scene.texcoords;
-    d.texcoords.resize(scene.shading.size(), FcTriTexcoords{});
-    compute_tangents(scene, d.texcoords);
-    for (const FcLight& l : scene.lights) {
-        if (l.type != FC_LIGHT_AREA_TRIANGLE) continue;
-        const std::size_t t = std::size_t(l.prim);
-        const glm::vec3 e1 = scene.vertices[3 * t + 1] - scene.vertices[3 * t];
-        d.texcoords[t].light_swapped = !(l.e1[0] == e1.x && l.e1[1] == e1.y && l.e1[2] == e1.z);
-    }
+    d.texcoords = triangle_texcoords(scene);
     return d;
 }
 

@@ -78,10 +78,13 @@ void set_triangle_texcoords(Scene& scene, std::size_t tri, glm::vec2 uv0, glm::v
 
 // Whether any material that some triangle uses binds a texture.
 bool scene_uses_textures(const Scene& scene);
+// Whether the triangles' uvs and tangents go to the device: the scene uses textures, or some
+// material that a triangle uses is anisotropic (its frame follows the tangents).
+bool scene_uses_texcoords(const Scene& scene);
 
 // The device's texture arrays: one-element placeholders when the scene has no
-// textures, so the kernels' arguments are always bound; one (empty) binding per
-// material always, since the generic program reads them.
+// textures (and texcoords none unless scene_uses_texcoords), so the kernels' arguments are always bound; one (empty)
+// binding per material always, since the generic program reads them.
 struct DeviceTextures {
     std::vector<FcTexture> table;
     std::vector<std::uint32_t> texels;  // the pool: the sRGB table, then each texture in its format

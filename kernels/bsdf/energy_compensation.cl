@@ -27,7 +27,7 @@
  * albedo_tables_schlick.cl (32 x 32 in mu and in r = sqrt(alpha), bilinear), integrated on
  * these kernels by tests/tools/albedo_tables.cpp.
  * They hold for height-correlated Smith G, the only G compensated; an anisotropic
- * lobe reads them at alpha = sqrt(alpha_x alpha_y), alpha above 1 at 1. */
+ * lobe reads them at an effective alpha per direction (ec_r_dir), alpha above 1 at 1. */
 #ifndef FACET_BSDF_ENERGY_COMPENSATION_CL
 #define FACET_BSDF_ENERGY_COMPENSATION_CL
 
@@ -45,10 +45,26 @@ inline bool ec_enabled(const FcMaterial* m) {
            m->geometry == FC_G_SMITH_CORRELATED;
 }
 
-/* The table coordinate of the material's roughness: r = sqrt(alpha) in [0, 1]. */
+/* The table coordinate of the material's roughness: r = sqrt(alpha) in [0, 1]; an
+ * anisotropic lobe's alpha is the root mean square sqrt((alpha_x^2 + alpha_y^2) / 2). */
 inline float ec_r(const FcMaterial* m) {
-    float a = sqrt(fmax(m->alpha_x, 0.0f) * fmax(m->alpha_y, 0.0f));
+    float ax = fmax(m->alpha_x, 0.0f), ay = fmax(m->alpha_y, 0.0f);
+    float a = ax == ay ? sqrt(ax * ay) : sqrt(0.5f * (ax * ax + ay * ay));
     return clamp(sqrt(a), 0.0f, 1.0f); /* NaN -> 0 */
+}
+
+/* The same seen from unit direction w (local frame). An anisotropic lobe's albedo E(w)
+ * leans on the roughness across w's azimuth (measured on these kernels: seen along the rough
+ * axis at grazing angles it reflects more than seen along the smooth one), so its alpha^2
+ * moves from the mean square at normal incidence to that across w at grazing:
+ * alpha^2 = cos^2(theta) (alpha_x^2 + alpha_y^2) / 2 + w.y^2 alpha_x^2 + w.x^2 alpha_y^2
+ * (an empirical fit, docs/brdf.md "Anisotropy"). Symmetric in the two directions of f_ms. */
+inline float ec_r_dir(const FcMaterial* m, float3 w) {
+    float ax = fmax(m->alpha_x, 0.0f), ay = fmax(m->alpha_y, 0.0f);
+    if (ax == ay) return ec_r(m);
+    float ms = 0.5f * (ax * ax + ay * ay), s2 = fmax(1.0f - w.z * w.z, 0.0f);
+    float a2 = ms + s2 * (w.y * w.y * ax * ax + w.x * w.x * ay * ay - s2 * ms);
+    return clamp(sqrt(sqrt(a2)), 0.0f, 1.0f);
 }
 
 /* Bilinear lookup of a [ndf][r][mu] table at (mu, r). */
@@ -76,6 +92,7 @@ inline int ec_ndf(const FcMaterial* m) { return m->ndf == FC_NDF_GGX ? 1 : 0; }
 
 /* E(mu): the single-scattering albedo with F = 1. */
 inline float ec_E(const FcMaterial* m, float mu) { return ec_lookup(fc_albedo_E, ec_ndf(m), mu, ec_r(m)); }
+inline float ec_E_dir(const FcMaterial* m, float3 w) { return ec_lookup(fc_albedo_E, ec_ndf(m), w.z, ec_r_dir(m, w)); }
 inline float ec_E_avg(const FcMaterial* m) { return ec_lookup_avg(fc_albedo_E_avg, ec_ndf(m), ec_r(m)); }
 
 /* F_avg = 2 int F(mu) mu dmu by 8-point Gauss-Legendre on [0, 1]. */
@@ -102,13 +119,13 @@ inline float3 ec_ms_eval(const FcMaterial* m, float3 wo, float3 wi) {
     float e_avg = ec_E_avg(m);
     float loss = 1.0f - e_avg;
     if (!(loss > 1e-6f)) return (float3)(0.0f);
-    float k = fmax(1.0f - ec_E(m, wo.z), 0.0f) * fmax(1.0f - ec_E(m, wi.z), 0.0f) / (FC_PI * loss);
+    float k = fmax(1.0f - ec_E_dir(m, wo), 0.0f) * fmax(1.0f - ec_E_dir(m, wi), 0.0f) / (FC_PI * loss);
     return ec_fresnel_ms(m, e_avg) * k;
 }
 
 /* The probability with which the compensated lobe samples f_ms (cosine-weighted)
  * rather than f_ss: f_ms's share of the albedo at F = 1. */
-inline float ec_ms_probability(const FcMaterial* m, float3 wo) { return clamp(1.0f - ec_E(m, wo.z), 0.0f, 1.0f); }
+inline float ec_ms_probability(const FcMaterial* m, float3 wo) { return clamp(1.0f - ec_E_dir(m, wo), 0.0f, 1.0f); }
 
 /* E_s(mu): the Fresnel-weighted albedo of the compensated specular lobe, Schlick form. */
 inline float3 ec_specular_albedo(const FcMaterial* m, float mu, float3 f_ms) {

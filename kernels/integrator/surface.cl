@@ -5,7 +5,9 @@
 #define FACET_INTEGRATOR_SURFACE_CL
 
 #include "kernels/shared/all.h"
+#include "kernels/bsdf/anisotropy.cl"
 #include "kernels/bsdf/bsdf.cl"
+#include "kernels/scene/vertex_tangent.cl"
 #include "kernels/trace/bvh_traverse.cl"
 #include "kernels/trace/scene_trace.cl"
 #include "kernels/util/frame.cl"
@@ -18,6 +20,9 @@ typedef struct {
     int material;
     int light;      /* light index, or -1 */
     float3 p_error; /* spheres: bound on p's rounding error per axis; 0 for triangles */
+#if FC_HAS_ANISOTROPY
+    float4 tangent; /* anisotropic materials: the vertex tangent (xyz) and handedness (w); 0: none */
+#endif
 } Surface;
 
 /* The surface of triangle hit->tri at the hit, in world space: an instanced triangle's
@@ -49,6 +54,17 @@ inline Surface surface_at(const SceneView* sc, const Hit* hit) {
     s.material = sh->material;
     s.light = sh->light;
     s.p_error = (float3)(0.0f);
+#if FC_HAS_ANISOTROPY
+    /* The tangents are uploaded when the scene has an anisotropic material (host/scene/texture.cpp). */
+    s.tangent = (float4)(0.0f);
+    if (sc->materials[s.material].flags & FC_MAT_ANISOTROPIC) {
+        s.tangent = tex_tangent(&sc->texcoords[hit->prim], hit->u, hit->v);
+#if FC_HAS_INSTANCES
+        if (hit->inst >= 0 && s.tangent.w != 0.0f)
+            s.tangent = instance_tangent_to_world(&sc->instances[hit->inst], s.tangent);
+#endif
+    }
+#endif
     return s;
 }
 
@@ -64,6 +80,9 @@ inline Surface sphere_surface_at(__global const FcSphere* spheres, const Hit* hi
     s.prim = sp->prim;
     s.material = sp->material;
     s.light = sp->light;
+#if FC_HAS_ANISOTROPY
+    s.tangent = (float4)(0.0f); /* dp/dphi (kernels/bsdf/anisotropy.cl) */
+#endif
     return s;
 }
 #endif
@@ -90,18 +109,34 @@ inline float3 surface_offset(const Surface* s, float3 n) {
  * along it) and returns the shading frame there, with wo in it in *wo_local. A ray arriving
  * from behind the normals (the inside of a closed dielectric) flips ng and ns and sees the
  * relative index n_outside / n_inside = 1 / ior (docs/conventions.md). A shading normal
- * facing away from the viewer is replaced by the geometric one. */
+ * facing away from the viewer is replaced by the geometric one. An anisotropic material
+ * gets its roughness stretched and a frame whose x axis is its anisotropy direction
+ * (kernels/bsdf/anisotropy.cl), the same physical direction seen from either side. */
 inline Frame surface_orient(Surface* s, FcMaterial* mat, float3 wo, float3* wo_local) {
+#if FC_HAS_ANISOTROPY
+    const bool aniso = (mat->flags & FC_MAT_ANISOTROPIC) != 0u;
+    float3 axis = (float3)(0.0f);
+    if (aniso) {
+        anisotropy_apply(mat);
+        axis = anisotropy_axis(mat, s->ns, s->tangent);
+    }
+#endif
     if (dot(s->ng, wo) < 0.0f) {
         s->ng = -s->ng;
         s->ns = -s->ns;
         if (bsdf_is_dielectric(mat)) mat->ior = 1.0f / mat->ior;
     }
     Frame frame = frame_from_normal(s->ns);
+#if FC_HAS_ANISOTROPY
+    if (aniso) frame = frame_from_normal_axis(s->ns, axis);
+#endif
     *wo_local = frame_to_local(&frame, wo);
     if (wo_local->z <= 0.0f) {
         s->ns = s->ng;
         frame = frame_from_normal(s->ng);
+#if FC_HAS_ANISOTROPY
+        if (aniso) frame = frame_from_normal_axis(s->ng, axis);
+#endif
         *wo_local = frame_to_local(&frame, wo);
     }
     return frame;

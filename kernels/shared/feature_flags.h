@@ -25,7 +25,8 @@
     X(ALPHA, 13)            \
     X(VOLUME, 14)           \
     X(CLEARCOAT, 15)        \
-    X(SHEEN, 16)
+    X(SHEEN, 16)            \
+    X(ANISOTROPY, 17)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -81,6 +82,11 @@
 #endif
 #ifndef FC_HAS_SHEEN
 #define FC_HAS_SHEEN 1
+#endif
+/* Shading frames that follow the surface's tangent for FC_MAT_ANISOTROPIC materials
+ * (kernels/bsdf/anisotropy.cl, kernels/integrator/surface.cl). */
+#ifndef FC_HAS_ANISOTROPY
+#define FC_HAS_ANISOTROPY 1
 #endif
 
 #endif

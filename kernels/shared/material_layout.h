@@ -97,6 +97,11 @@ enum { FC_ALPHA_MODE_LIST(FC_MATERIAL_ENUM_VALUE) FC_ALPHA_MODE_COUNT };
 /* The alpha texture's coverage is its R channel (a grey image, MTL's map_d without an
  * alpha channel) instead of A. */
 #define FC_MAT_ALPHA_RED 16u
+/* The specular lobes are anisotropic (alpha_x != alpha_y, exponent_x != exponent_y, or
+ * `anisotropy` > 0): the shading frame's x axis follows the surface's tangent rotated by
+ * anisotropy_direction (kernels/bsdf/anisotropy.cl) instead of an arbitrary one. The host
+ * sets it (material_is_anisotropic); without it the frame is frame_from_normal's. */
+#define FC_MAT_ANISOTROPIC 32u
 
 /* Phong-style exponents are clamped to [0, FC_PHONG_EXPONENT_MAX] (the kernels'
  * fc_phong_exponent, the host's shininess conversions and its clamp_material). */
@@ -145,20 +150,26 @@ typedef struct FcMaterial {
      * inside a transmissive material (KHR_materials_volume: -ln(attenuationColor) /
      * attenuationDistance). `clearcoat` weights a clear GGX layer of roughness alpha
      * `clearcoat_alpha` over the material (KHR_materials_clearcoat); `sheen` is the sheen
-     * layer's colour and `sheen_roughness` its roughness (KHR_materials_sheen). */
+     * layer's colour and `sheen_roughness` its roughness (KHR_materials_sheen).
+     * `anisotropy` is KHR_materials_anisotropy's strength s in [0, 1]: the kernels stretch the
+     * (textured) roughness along the anisotropy direction, alpha_x = mix(alpha_x, 1, s^2),
+     * alpha_y kept; `anisotropy_direction` (cos, sin of the rotation) turns that direction
+     * from the tangent toward the bitangent (used with FC_MAT_ANISOTROPIC). */
     float attenuation[3];
     float clearcoat;
     float sheen[3];
     float clearcoat_alpha;
     float sheen_roughness;
-    fc_uint pad1[3];
+    float anisotropy;
+    float anisotropy_direction[2];
 } FcMaterial;
 
 FC_STATIC_ASSERT(sizeof(FcMaterial) == 176, "FcMaterial is 176 bytes");
 FC_STATIC_ASSERT(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104 &&
                      offsetof(FcMaterial, metallic) == 112 && offsetof(FcMaterial, alpha_texture) == 124 &&
                      offsetof(FcMaterial, attenuation) == 128 && offsetof(FcMaterial, sheen) == 144 &&
-                     offsetof(FcMaterial, sheen_roughness) == 160,
+                     offsetof(FcMaterial, sheen_roughness) == 160 && offsetof(FcMaterial, anisotropy) == 164 &&
+                     offsetof(FcMaterial, anisotropy_direction) == 168,
                  "FcMaterial offsets");
 
 #endif

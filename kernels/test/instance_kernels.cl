@@ -4,8 +4,10 @@
 #ifndef FACET_TEST_INSTANCE_KERNELS_CL
 #define FACET_TEST_INSTANCE_KERNELS_CL
 
-/* The kernel binds no materials: no alpha test (kernels/trace/alpha_test.cl). */
+/* The kernel binds no materials: no alpha test (kernels/trace/alpha_test.cl), and no
+ * anisotropic tangents (surface_at reads the material's flags). */
 #define FC_HAS_ALPHA 0
+#define FC_HAS_ANISOTROPY 0
 
 #include "kernels/integrator/surface.cl"
 
