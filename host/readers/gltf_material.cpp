@@ -35,8 +35,8 @@ float in_range(double v, double lo, double hi, const std::string& file, const st
 }
 
 // KHR_materials_specular on glTF's dielectric-metal mix: the dielectric's F0 becomes
-// min(F0(ior) specularColorFactor, 1) specularFactor (the extension's F0; its F90 =
-// specularFactor is not modelled: facet's Schlick Fresnel reaches 1 at grazing angles). A
+// min(F0(ior) specularColorFactor, 1) specularFactor and its F90 specularFactor (the
+// extension's fresnel_mix; Material::specular_f90, kernels/bsdf/fresnel.cl). A
 // textured material keeps one F0 for its texels (FcMaterialTextures.dielectric_f0): the
 // colour's mean, with a warning when the colour is not grey.
 void read_specular(const tinygltf::Material& g, Material& m, float ior, const std::string& file,
@@ -64,7 +64,10 @@ void read_specular(const tinygltf::Material& g, Material& m, float ior, const st
     }
     const float f0_ior = ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
     const glm::vec3 f0 = glm::min(f0_ior * colour, glm::vec3(1.0f)) * factor;
-    if (m.metallic > 0.0f || m.diffuse_model != FC_DIFFUSE_NONE) m.f0 = m.ks = m.transmittance = f0;  // not metal alone
+    if (m.metallic > 0.0f || m.diffuse_model != FC_DIFFUSE_NONE) {  // not the metal alone
+        m.f0 = m.ks = m.transmittance = f0;
+        m.specular_f90 = factor;
+    }
     if (m.textures.metallic_workflow) {
         m.textures.dielectric_f0 = (f0.x + f0.y + f0.z) / 3.0f;
         if (f0.x != f0.y || f0.y != f0.z)

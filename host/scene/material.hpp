@@ -78,6 +78,10 @@ struct Material {
     float clearcoat_alpha = 0.0f;
     glm::vec3 sheen{0.0f};
     float sheen_roughness = 0.0f;
+    // Schlick's reflectance at grazing incidence (FC_FRESNEL_SCHLICK) in [0, 1]: 1 is Schlick's
+    // own; below 1 it is KHR_materials_specular's dielectric F90 = specularFactor
+    // (kernels/bsdf/fresnel.cl). The metal lobe of a metallic mix keeps 1.
+    float specular_f90 = 1.0f;
     // Image textures bound to the parameters above (docs/textures.md).
     MaterialTextures textures;
 };

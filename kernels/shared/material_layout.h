@@ -97,6 +97,10 @@ enum { FC_ALPHA_MODE_LIST(FC_MATERIAL_ENUM_VALUE) FC_ALPHA_MODE_COUNT };
 /* The alpha texture's coverage is its R channel (a grey image, MTL's map_d without an
  * alpha channel) instead of A. */
 #define FC_MAT_ALPHA_RED 16u
+/* Schlick's Fresnel (FC_FRESNEL_SCHLICK) reaches `specular_f90` at grazing incidence instead of
+ * 1: F = F0 + (F90 - F0)(1 - cos)^5, KHR_materials_specular's dielectric F90 = specularFactor
+ * (kernels/bsdf/fresnel.cl). Without the flag F90 is 1, whatever the field holds. */
+#define FC_MAT_SPECULAR_F90 32u
 
 /* Phong-style exponents are clamped to [0, FC_PHONG_EXPONENT_MAX] (the kernels'
  * fc_phong_exponent, the host's shininess conversions and its clamp_material). */
@@ -145,20 +149,24 @@ typedef struct FcMaterial {
      * inside a transmissive material (KHR_materials_volume: -ln(attenuationColor) /
      * attenuationDistance). `clearcoat` weights a clear GGX layer of roughness alpha
      * `clearcoat_alpha` over the material (KHR_materials_clearcoat); `sheen` is the sheen
-     * layer's colour and `sheen_roughness` its roughness (KHR_materials_sheen). */
+     * layer's colour and `sheen_roughness` its roughness (KHR_materials_sheen).
+     * `specular_f90` is the Schlick Fresnel's value at grazing incidence where
+     * FC_MAT_SPECULAR_F90 is set (KHR_materials_specular's specularFactor). */
     float attenuation[3];
     float clearcoat;
     float sheen[3];
     float clearcoat_alpha;
     float sheen_roughness;
     fc_uint pad1[3];
+    float specular_f90;
+    fc_uint pad2[3];
 } FcMaterial;
 
-FC_STATIC_ASSERT(sizeof(FcMaterial) == 176, "FcMaterial is 176 bytes");
+FC_STATIC_ASSERT(sizeof(FcMaterial) == 192, "FcMaterial is 192 bytes");
 FC_STATIC_ASSERT(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104 &&
                      offsetof(FcMaterial, metallic) == 112 && offsetof(FcMaterial, alpha_texture) == 124 &&
                      offsetof(FcMaterial, attenuation) == 128 && offsetof(FcMaterial, sheen) == 144 &&
-                     offsetof(FcMaterial, sheen_roughness) == 160,
+                     offsetof(FcMaterial, sheen_roughness) == 160 && offsetof(FcMaterial, specular_f90) == 176,
                  "FcMaterial offsets");
 
 #endif
