@@ -59,7 +59,7 @@
     F(FcEnvironment, total) F(FcEnvironment, to_map)                                                                        \
     F(FcTexture, offset) F(FcTexture, width) F(FcTexture, height) F(FcTexture, levels) F(FcTexture, wrap_u)                 \
     F(FcTexture, wrap_v) F(FcTexture, format) F(FcTexture, mip_format) F(FcMaterialTextures, base_color) F(FcMaterialTextures, normal)               \
-    F(FcMaterialTextures, base_factor) F(FcMaterialTextures, flags) F(FcMaterialTextures, uv_transform)                     \
+    F(FcMaterialTextures, base_factor) F(FcMaterialTextures, flags) F(FcMaterialTextures, uv_transform) F(FcMaterialTextures, clearcoat) F(FcMaterialTextures, clearcoat_normal_scale) F(FcMaterialTextures, specular_color_f0) F(FcMaterialTextures, specular_weight)                     \
     F(FcTriTexcoords, uv) F(FcTriTexcoords, tangent_flags) F(FcTriTexcoords, tangent)                                       \
     F(FcSphere, center) F(FcSphere, radius) F(FcSphere, material) F(FcSphere, light) F(FcSphere, flags)                     \
     F(FcSphere, prim) F(FcBinaryNode, a_lo) F(FcBinaryNode, a_index) F(FcBinaryNode, a_hi) F(FcBinaryNode, a_count)         \
