@@ -175,7 +175,7 @@ TEST(ExtensionTextures, FurnaceHoldsWithTexturedLayers) {
 }
 
 // Khronos's ClearCoatTest (Debian's assimp-testmodels; skipped without it): the glTF reader binds
-// its clearcoat and clearcoat roughness textures and warns about none of them.
+// its clearcoat, clearcoat roughness and clearcoat normal textures and warns about none of them.
 TEST(ExtensionTextures, ClearCoatTestBindsItsTextures) {
     const std::string file = "/usr/share/assimp/models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf";
     if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " is missing (Debian's assimp-testmodels)";
@@ -188,10 +188,12 @@ TEST(ExtensionTextures, ClearCoatTestBindsItsTextures) {
     };
     EXPECT_GE(material("Partial_Coated").textures.clearcoat, 0);
     EXPECT_GE(material("RoughVariations_Coated").textures.clearcoat_roughness, 0);
+    EXPECT_GE(material("CoatNorm_Coated").textures.clearcoat_normal, 0);
     EXPECT_LT(material("Simple_Coated").textures.clearcoat, 0);
     for (const std::string& w : s.warnings) {
         EXPECT_EQ(w.find("clearcoatTexture"), std::string::npos) << w;
         EXPECT_EQ(w.find("clearcoatRoughnessTexture"), std::string::npos) << w;
+        EXPECT_EQ(w.find("clearcoatNormalTexture"), std::string::npos) << w;
     }
 }
 

@@ -174,6 +174,7 @@ TEST(Features, EveryFlagIsExercised) {
     layer_textures.textures.sheen_color = layer_textures.textures.sheen_roughness = 0;
     layer_textures.textures.specular_extension = true;
     layer_textures.textures.specular_strength = 0;
+    layer_textures.textures.clearcoat_normal = 0;  // the coat's own normal map
     with_material("clearcoat, sheen and specular textures", layer_textures);
     cases.back().second.textures.push_back(make_texture(2, 1, {0.2f, 0.4f, 0.6f, 0.3f, 0.9f, 0.5f, 0.7f, 1.0f}));
     Material cutout = make_material("lambert");  // alpha: a texture's cut-out, and a constant's veil

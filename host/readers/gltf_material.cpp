@@ -330,8 +330,9 @@ void read_layers(const tinygltf::Material& g, Material& m, const std::string& fi
                 m.textures.clearcoat_roughness =
                     bind_extension_texture(v, extension, "clearcoatRoughnessTexture", TextureSpace::Data, m, file,
                                            place, where, ignored, model, scene);
-                if (v.Has("clearcoatNormalTexture"))
-                    ignored.add("KHR_materials_clearcoat.clearcoatNormalTexture", where);
+                m.textures.clearcoat_normal =
+                    bind_extension_texture(v, extension, "clearcoatNormalTexture", TextureSpace::Data, m, file, place,
+                                           where, ignored, model, scene, &m.textures.clearcoat_normal_scale);
             }
             continue;
         }

@@ -236,12 +236,12 @@ FcMaterialTextures device_material_textures(const MaterialTextures& t) {
         (t.metallic_workflow ? FC_TEX_METALLIC_WORKFLOW : 0u) | (t.specular_extension ? FC_TEX_SPECULAR_EXTENSION : 0u);
     d.clearcoat = t.clearcoat;
     d.clearcoat_roughness = t.clearcoat_roughness;
-    d.clearcoat_normal = -1;
+    d.clearcoat_normal = t.clearcoat_normal;
     d.sheen_color = t.sheen_color;
     d.sheen_roughness = t.sheen_roughness;
     d.specular_strength = t.specular_strength;
     d.specular_color = t.specular_color;
-    d.clearcoat_normal_scale = 1.0f;
+    d.clearcoat_normal_scale = t.clearcoat_normal_scale;
     for (int c = 0; c < 3; ++c) d.specular_color_f0[c] = t.specular_color_f0[c];
     d.specular_weight = t.specular_weight;
     for (int r = 0; r < 2; ++r)

@@ -36,6 +36,8 @@ struct MaterialTextures {
     // colour (RGB, sRGB) and roughness (A).
     int clearcoat = -1;
     int clearcoat_roughness = -1;
+    int clearcoat_normal = -1;  // the coat's own tangent-space normal map (linear), x, y scaled:
+    float clearcoat_normal_scale = 1.0f;
     int sheen_color = -1;
     int sheen_roughness = -1;
     // KHR_materials_specular per hit (specular_extension): the dielectric's F0 =
@@ -48,7 +50,7 @@ struct MaterialTextures {
     float specular_weight = 1.0f;
 
     // Whether the layers' and KHR_materials_specular's textures are bound (or the specular per hit).
-    bool any_clearcoat() const { return clearcoat >= 0 || clearcoat_roughness >= 0; }
+    bool any_clearcoat() const { return clearcoat >= 0 || clearcoat_roughness >= 0 || clearcoat_normal >= 0; }
     bool any_sheen() const { return sheen_color >= 0 || sheen_roughness >= 0; }
     bool any() const {
         return base_color >= 0 || specular >= 0 || roughness >= 0 || metalness >= 0 || emission >= 0 || normal >= 0 ||

@@ -93,7 +93,8 @@ bool face_tangent(const Corners& c, glm::dvec3* dpdu, int* sign) {
 bool wants_tangents(const Scene& scene, const std::vector<FcTriTexcoords>& tc, std::size_t t) {
     const int m = scene.shading[t].material;
     return (tc[t].tangent_flags & FC_TANGENTS_SET) == 0 && m >= 0 && std::size_t(m) < scene.materials.size() &&
-           scene.materials[std::size_t(m)].textures.normal >= 0;
+           (scene.materials[std::size_t(m)].textures.normal >= 0 ||
+            scene.materials[std::size_t(m)].textures.clearcoat_normal >= 0);
 }
 
 }  // namespace

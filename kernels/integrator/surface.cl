@@ -90,9 +90,11 @@ inline float3 surface_offset(const Surface* s, float3 n) {
  * along it) and returns the shading frame there, with wo in it in *wo_local. A ray arriving
  * from behind the normals (the inside of a closed dielectric) flips ng and ns and sees the
  * relative index n_outside / n_inside = 1 / ior (docs/conventions.md). A shading normal
- * facing away from the viewer is replaced by the geometric one. */
+ * facing away from the viewer is replaced by the geometric one. The coat's own normal (if any)
+ * is turned with the surface and brought into the frame. */
 inline Frame surface_orient(Surface* s, FcMaterial* mat, float3 wo, float3* wo_local) {
-    if (dot(s->ng, wo) < 0.0f) {
+    bool flipped = dot(s->ng, wo) < 0.0f;
+    if (flipped) {
         s->ng = -s->ng;
         s->ns = -s->ns;
         if (bsdf_is_dielectric(mat)) mat->ior = 1.0f / mat->ior;
@@ -104,6 +106,7 @@ inline Frame surface_orient(Surface* s, FcMaterial* mat, float3 wo, float3* wo_l
         frame = frame_from_normal(s->ng);
         *wo_local = frame_to_local(&frame, wo);
     }
+    clearcoat_normal_to_shading(mat, &frame, wo, flipped); /* the coat's own normal, if any */
     return frame;
 }
 

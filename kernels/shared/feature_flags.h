@@ -28,7 +28,8 @@
     X(SHEEN, 16)              \
     X(CLEARCOAT_TEXTURES, 18) \
     X(SHEEN_TEXTURES, 19)     \
-    X(SPECULAR_TEXTURES, 20)
+    X(SPECULAR_TEXTURES, 20)  \
+    X(CLEARCOAT_NORMAL, 21)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -95,6 +96,11 @@
 #endif
 #ifndef FC_HAS_SPECULAR_TEXTURES
 #define FC_HAS_SPECULAR_TEXTURES 1
+#endif
+/* The clearcoat's own normal (FC_MAT_CLEARCOAT_NORMAL): its normal map, or the surface's normal
+ * under a base normal map, and the coat lobe evaluated in that frame (kernels/bsdf/clearcoat.cl). */
+#ifndef FC_HAS_CLEARCOAT_NORMAL
+#define FC_HAS_CLEARCOAT_NORMAL 1
 #endif
 
 #endif

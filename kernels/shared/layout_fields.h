@@ -44,7 +44,7 @@
     F(FcMaterial, exponent_x) F(FcMaterial, exponent_y) F(FcMaterial, ior) F(FcMaterial, sigma)                             \
     F(FcMaterial, flags) F(FcMaterial, sampling) F(FcMaterial, metallic) F(FcMaterial, alpha) F(FcMaterial, alpha_cutoff)   \
     F(FcMaterial, alpha_texture) F(FcMaterial, attenuation) F(FcMaterial, clearcoat) F(FcMaterial, sheen)                   \
-    F(FcMaterial, clearcoat_alpha) F(FcMaterial, sheen_roughness) F(FcMaterial, specular_f90)                                  \
+    F(FcMaterial, clearcoat_alpha) F(FcMaterial, sheen_roughness) F(FcMaterial, specular_f90) F(FcMaterial, clearcoat_normal)                                  \
     F(FcLight, p0) F(FcLight, type) F(FcLight, e1) F(FcLight, prim)                                                         \
     F(FcLight, e2) F(FcLight, area) F(FcLight, color) F(FcLight, pick_pdf)                                                  \
     F(FcLight, cos_inner) F(FcLight, cos_outer)                                                                             \

@@ -101,6 +101,12 @@ enum { FC_ALPHA_MODE_LIST(FC_MATERIAL_ENUM_VALUE) FC_ALPHA_MODE_COUNT };
  * 1: F = F0 + (F90 - F0)(1 - cos)^5, KHR_materials_specular's dielectric F90 = specularFactor
  * (kernels/bsdf/fresnel.cl). Without the flag F90 is 1, whatever the field holds. */
 #define FC_MAT_SPECULAR_F90 32u
+/* The clearcoat has a normal of its own (KHR_materials_clearcoat's clearcoatNormalTexture, or the
+ * surface's normal under a base normal map): `clearcoat_normal`, written in world space by the
+ * textures (kernels/texture/extension_textures.cl) and turned into the shading frame by
+ * surface_orient (kernels/integrator/surface.cl), where the coat lobe is evaluated in its own
+ * frame (kernels/bsdf/clearcoat.cl). */
+#define FC_MAT_CLEARCOAT_NORMAL 64u
 
 /* Phong-style exponents are clamped to [0, FC_PHONG_EXPONENT_MAX] (the kernels'
  * fc_phong_exponent, the host's shininess conversions and its clamp_material). */
@@ -151,7 +157,8 @@ typedef struct FcMaterial {
      * `clearcoat_alpha` over the material (KHR_materials_clearcoat); `sheen` is the sheen
      * layer's colour and `sheen_roughness` its roughness (KHR_materials_sheen).
      * `specular_f90` is the Schlick Fresnel's value at grazing incidence where
-     * FC_MAT_SPECULAR_F90 is set (KHR_materials_specular's specularFactor). */
+     * FC_MAT_SPECULAR_F90 is set (KHR_materials_specular's specularFactor); `clearcoat_normal`
+     * the coat's own unit normal where FC_MAT_CLEARCOAT_NORMAL is set. */
     float attenuation[3];
     float clearcoat;
     float sheen[3];
@@ -159,14 +166,15 @@ typedef struct FcMaterial {
     float sheen_roughness;
     fc_uint pad1[3];
     float specular_f90;
-    fc_uint pad2[3];
+    float clearcoat_normal[3];
 } FcMaterial;
 
 FC_STATIC_ASSERT(sizeof(FcMaterial) == 192, "FcMaterial is 192 bytes");
 FC_STATIC_ASSERT(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104 &&
                      offsetof(FcMaterial, metallic) == 112 && offsetof(FcMaterial, alpha_texture) == 124 &&
                      offsetof(FcMaterial, attenuation) == 128 && offsetof(FcMaterial, sheen) == 144 &&
-                     offsetof(FcMaterial, sheen_roughness) == 160 && offsetof(FcMaterial, specular_f90) == 176,
+                     offsetof(FcMaterial, sheen_roughness) == 160 && offsetof(FcMaterial, specular_f90) == 176 &&
+                     offsetof(FcMaterial, clearcoat_normal) == 180,
                  "FcMaterial offsets");
 
 #endif

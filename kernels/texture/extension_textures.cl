@@ -8,7 +8,11 @@
  * - KHR_materials_specular (FC_TEX_SPECULAR_EXTENSION, FC_HAS_SPECULAR_TEXTURES): the
  *   dielectric's F0 = min(F0(ior) specularColorFactor specularColorTexture.rgb, 1)
  *   specularFactor specularTexture.a and F90 = specularFactor specularTexture.a (the
- *   extension's definitions; kernels/bsdf/fresnel.cl). */
+ *   extension's definitions; kernels/bsdf/fresnel.cl);
+ * - the coat's own normal (FC_HAS_CLEARCOAT_NORMAL): clearcoatNormalTexture applied to the
+ *   surface's normal, or that normal itself where only the base is normal-mapped (the
+ *   extension: no normal mapping on the coat without its own map), written to the material in
+ *   world space (FC_MAT_CLEARCOAT_NORMAL) for surface_orient to bring into the shading frame. */
 #ifndef FACET_TEXTURE_EXTENSION_TEXTURES_CL
 #define FACET_TEXTURE_EXTENSION_TEXTURES_CL
 
@@ -50,6 +54,25 @@ inline void apply_extension_textures(const SceneView* sc, __global const FcMater
     }
 #endif
     (void)sc, (void)mt, (void)uv, (void)p, (void)cone, (void)cos_hit, (void)mat;
+}
+
+/* The coat's own normal from the surface's normal `ns_surface` (before any normal map) where
+ * the coat has its own map or the base has one (`ns` the base's normal after it). */
+inline void apply_clearcoat_normal(const SceneView* sc, __global const FcMaterialTextures* mt, float2 uv,
+                                   const TexPoint* p, float cone, float cos_hit, float3 ns_surface, float3 ns,
+                                   FcMaterial* mat) {
+#if FC_HAS_CLEARCOAT_NORMAL
+    if (!(mat->clearcoat > 0.0f) || (mt->clearcoat_normal < 0 && mt->normal < 0)) return;
+    float3 n = ns_surface;
+    if (mt->clearcoat_normal >= 0)
+        n = normal_mapped(ns_surface, p, tex_lookup(sc, mt->clearcoat_normal, uv, p, cone, cos_hit).xyz,
+                          mt->clearcoat_normal_scale);
+    if (all(n == ns)) return;
+    tex_store3(mat->clearcoat_normal, n);
+    mat->flags |= FC_MAT_CLEARCOAT_NORMAL;
+#else
+    (void)sc, (void)mt, (void)uv, (void)p, (void)cone, (void)cos_hit, (void)ns_surface, (void)ns, (void)mat;
+#endif
 }
 
 #endif

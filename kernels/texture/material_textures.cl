@@ -59,6 +59,7 @@ inline void apply_textures(const SceneView* sc, const Hit* hit, int material, fl
     }
     float2 uv = tex_transform(mt, p.uv);
     float cos_hit = dot(*ns, d);
+    float3 ns_surface = *ns; /* before the normal map: the coat's without a map of its own */
 
     /* Base colour and specular colour (or the metallic workflow's pair). */
     float3 base = load3(mt->base_factor);
@@ -103,6 +104,7 @@ inline void apply_textures(const SceneView* sc, const Hit* hit, int material, fl
         *ns = normal_mapped(*ns, &p, n.xyz, mt->normal_scale);
         add_normal_spread(mat, n.w, mt->normal_scale);
     }
+    apply_clearcoat_normal(sc, mt, uv, &p, cone, cos_hit, ns_surface, *ns, mat);
 }
 
 /* The emission of scene triangle `prim` (material `material`) at a light sample's
