@@ -94,6 +94,15 @@ if [ -d "$models" ]; then
     expect render-obj-windows-paths 0 "wrote" -- "$FACET" render "$models/OBJ/spider.obj" "${lit[@]}" --out "$tmp/sp.exr"
     grep -qi "warning:.*\.jpg" "$tmp/err" && bad "obj-windows-paths-no-texture-warning" ||
         ok "obj-windows-paths-no-texture-warning"
+    # Khronos's ClearCoatTest: its clearcoat, roughness and normal textures are read, not ignored.
+    coat=$models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf
+    if [ -f "$coat" ]; then
+        expect render-clearcoat-test 0 "wrote" -- "$FACET" render "$coat" "${lit[@]}" --out "$tmp/coat.exr"
+        grep -qE "ignored.*clearcoat(Roughness|Normal)?Texture|clearcoat(Roughness|Normal)?Texture.*ignored" "$tmp/err" &&
+            bad "clearcoat-textures-not-ignored" || ok "clearcoat-textures-not-ignored"
+    else
+        echo "SKIP render-clearcoat-test: $coat is missing"
+    fi
 else
     echo "SKIP render-stl render-fbx render-obj-windows-paths: $models is missing (Debian's assimp-testmodels)"
 fi

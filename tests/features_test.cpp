@@ -173,6 +173,14 @@ TEST(Features, EveryFlagIsExercised) {
     textured.textures.base_color = textured.textures.roughness = textured.textures.normal = 0;
     with_material("textured", textured);
     cases.back().second.textures.push_back(make_texture(2, 1, {0.2f, 0.4f, 0.6f, 1.0f, 0.9f, 0.5f, 0.7f, 1.0f}));
+    Material layer_textures = layered;  // the extensions' textures: clearcoat, sheen, specular
+    layer_textures.textures.clearcoat = layer_textures.textures.clearcoat_roughness = 0;
+    layer_textures.textures.sheen_color = layer_textures.textures.sheen_roughness = 0;
+    layer_textures.textures.specular_extension = true;
+    layer_textures.textures.specular_strength = 0;
+    layer_textures.textures.clearcoat_normal = 0;  // the coat's own normal map
+    with_material("clearcoat, sheen and specular textures", layer_textures);
+    cases.back().second.textures.push_back(make_texture(2, 1, {0.2f, 0.4f, 0.6f, 0.3f, 0.9f, 0.5f, 0.7f, 1.0f}));
     Material cutout = make_material("lambert");  // alpha: a texture's cut-out, and a constant's veil
     cutout.alpha_mode = FC_ALPHA_MASK;
     cutout.textures.alpha = 0;

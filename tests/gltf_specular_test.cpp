@@ -1,6 +1,6 @@
 // glTF's KHR_materials_specular (host/readers/gltf_material.cpp read_specular): the
-// dielectric's F0 = min(F0(ior) specularColorFactor, 1) specularFactor, on the untextured
-// dielectric-metal mix; ignored with a warning on glass.
+// dielectric's F0 = min(F0(ior) specularColorFactor, 1) specularFactor and its F90 =
+// specularFactor, on the untextured dielectric-metal mix; ignored with a warning on glass.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -32,6 +32,7 @@ TEST(GltfSpecular, FactorAndColourScaleTheDielectricF0) {
         EXPECT_NEAR(m.f0.x, 0.04f * 0.5f, 1e-6f);
         EXPECT_NEAR(m.f0.y, 0.02f * 0.5f, 1e-6f);
         EXPECT_NEAR(m.f0.z, 1.0f * 0.5f, 1e-6f);  // F0(ior) x 30 clamped to 1
+        EXPECT_FLOAT_EQ(m.specular_f90, 0.5f);    // F90 = specularFactor
         EXPECT_FLOAT_EQ(m.metallic, float(metallic));
         EXPECT_FALSE(warned(s, "KHR_materials_specular"));
     }

@@ -299,17 +299,17 @@ TEST(SceneGltf, MaterialsMappedOntoFacetModels) {
 }
 
 // KHR_materials_clearcoat and KHR_materials_sheen onto the layers: alpha = roughness^2, the
-// sheen colour as written, textures warned about, the layers left off a transmissive
-// material, and a factor out of range named by its JSON path.
+// sheen colour as written, the layers left off a transmissive material, and a factor out of
+// range or a texture that does not exist named by its JSON path.
 TEST(SceneGltf, ClearcoatAndSheenLayers) {
     TempDir d;
-    auto build = [](double clearcoat, std::vector<double> sheen) {
+    auto build = [](double clearcoat, std::vector<double> sheen, bool normal_texture = false) {
         ModelBuilder b;
         tinygltf::Value::Object cc, sh, tex;
         cc["clearcoatFactor"] = tinygltf::Value(clearcoat);
         cc["clearcoatRoughnessFactor"] = tinygltf::Value(0.5);
         tex["index"] = tinygltf::Value(0);
-        cc["clearcoatNormalTexture"] = tinygltf::Value(tex);
+        if (normal_texture) cc["clearcoatNormalTexture"] = tinygltf::Value(tex);  // no texture 0
         tinygltf::Value::Array colour;
         for (double c : sheen) colour.push_back(tinygltf::Value(c));
         sh["sheenColorFactor"] = tinygltf::Value(colour);
@@ -343,10 +343,14 @@ TEST(SceneGltf, ClearcoatAndSheenLayers) {
     EXPECT_FLOAT_EQ(coated.sheen_roughness, 0.25f);
     EXPECT_EQ(s.materials[1].clearcoat, 0.0f);
     EXPECT_EQ(s.materials[1].sheen, glm::vec3(0.0f));
-    for (const char* warning : {"KHR_materials_clearcoat.clearcoatNormalTexture",
-                                "KHR_materials_sheen on a transmissive material", "materials[1] 'glass'"})
+    for (const char* warning : {"KHR_materials_sheen on a transmissive material", "materials[1] 'glass'"})
         EXPECT_TRUE(test::contains(s.warnings, warning)) << warning;
     EXPECT_FALSE(test::contains(s.warnings, "material extension KHR_materials_clearcoat"));
+    expect_error(
+        [&] {
+            load_scene(build(0.75, {0.2, 0.4, 0.6}, true).write(d, "normal.gltf"));
+        },
+        {"normal.gltf", "extensions.KHR_materials_clearcoat.clearcoatNormalTexture names texture 0"});
     expect_error(
         [&] {
             load_scene(build(1.5, {0, 0, 0}).write(d, "coat.gltf"));

@@ -129,20 +129,22 @@ TEST(SceneJson, JsonBadTypesAndValues) {
 }
 
 // "clearcoat", "clearcoat_roughness", "sheen" and "sheen_roughness": glTF's layers, alpha =
-// roughness^2, each value checked with its path, and refused on a dielectric.
+// roughness^2, each value checked with its path, and refused on a dielectric; "specular_f90" on a
+// Schlick microfacet lobe; the layers' textures need their factors.
 TEST(SceneJson, ClearcoatAndSheenKeys) {
     TempDir d;
     const std::string shapes = R"(, "shapes": [)" + kQuadShape + "]";
     const Scene s = load_scene(scene(d, "layers.json",
                                      R"("materials": {"m": {"model": "ggx", "metallic": 0.5,
-        "clearcoat": 0.8, "clearcoat_roughness": 0.3, "sheen": [0.1, 0.2, 0.3], "sheen_roughness": 0.6}})" +
-                                         shapes));
+        "clearcoat": 0.8, "clearcoat_roughness": 0.3, "sheen": [0.1, 0.2, 0.3], "sheen_roughness": 0.6,
+        "specular_f90": 0.25}})" + shapes));
     ASSERT_FALSE(s.materials.empty());
     const Material& m = s.materials[0];
     EXPECT_FLOAT_EQ(m.clearcoat, 0.8f);
     EXPECT_NEAR(m.clearcoat_alpha, 0.09f, 1e-6f);
     EXPECT_NEAR(glm::length(m.sheen - glm::vec3(0.1f, 0.2f, 0.3f)), 0.0f, 1e-6f);
     EXPECT_FLOAT_EQ(m.sheen_roughness, 0.6f);
+    EXPECT_FLOAT_EQ(m.specular_f90, 0.25f);
     struct Case {
         std::string body, path, problem;
     };
@@ -153,6 +155,12 @@ TEST(SceneJson, ClearcoatAndSheenKeys) {
         {R"("materials": {"m": {"sheen": 0.5}})", "materials.m.sheen", ""},
         {R"("materials": {"m": {"sheen_roughness": "rough"}})", "materials.m.sheen_roughness", ""},
         {R"("materials": {"m": {"model": "dielectric", "clearcoat": 1}})", "materials.m.clearcoat", "transmit"},
+        {R"("materials": {"m": {"model": "ggx", "specular_f90": 1.5}})", "materials.m.specular_f90", "1.5"},
+        {R"("materials": {"m": {"model": "lambert", "specular_f90": 0.5}})", "materials.m.specular_f90", "schlick"},
+        {R"("materials": {"m": {"model": "ggx", "textures": {"clearcoat": "c.png"}}})",
+         "materials.m.textures.clearcoat", "\"clearcoat\" above 0"},
+        {R"("materials": {"m": {"model": "ggx", "textures": {"sheen_roughness": "s.png"}}})",
+         "materials.m.textures.sheen_roughness", "\"sheen\" above 0"},
     };
     int i = 0;
     for (const Case& c : cases) {

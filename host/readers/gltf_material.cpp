@@ -36,44 +36,6 @@ float in_range(double v, double lo, double hi, const std::string& file, const st
     return static_cast<float>(v);
 }
 
-// KHR_materials_specular on glTF's dielectric-metal mix: the dielectric's F0 becomes
-// min(F0(ior) specularColorFactor, 1) specularFactor (the extension's F0; its F90 =
-// specularFactor is not modelled: facet's Schlick Fresnel reaches 1 at grazing angles). A
-// textured material keeps one F0 for its texels (FcMaterialTextures.dielectric_f0): the
-// colour's mean, with a warning when the colour is not grey.
-void read_specular(const tinygltf::Material& g, Material& m, float ior, const std::string& file,
-                   const std::string& place, const std::string& where, Ignored& ignored) {
-    const auto it = g.extensions.find("KHR_materials_specular");
-    if (it == g.extensions.end() || !it->second.IsObject()) return;
-    const tinygltf::Value& v = it->second;
-    if (v.Has("specularTexture") || v.Has("specularColorTexture"))
-        ignored.add("KHR_materials_specular's textures (its factors are used)", where);
-    if (m.specular_model != FC_SPECULAR_MICROFACET) {
-        ignored.add("KHR_materials_specular on a transmissive material", where);
-        return;
-    }
-    const float factor = in_range(extension_number(g, "KHR_materials_specular", "specularFactor", 1.0), 0, 1, file,
-                                  place, "KHR_materials_specular.specularFactor");
-    glm::vec3 colour(1.0f);
-    if (v.Has("specularColorFactor")) {
-        const tinygltf::Value& c = v.Get("specularColorFactor");
-        if (!c.IsArray() || c.ArrayLen() != 3)
-            throw Error(
-                fmt::format("{}: {}: KHR_materials_specular.specularColorFactor must have 3 numbers", file, place));
-        for (int i = 0; i < 3; ++i)
-            colour[i] = in_range(c.Get(i).IsNumber() ? c.Get(i).GetNumberAsDouble() : std::nan(""), 0, 1e3, file, place,
-                                 "KHR_materials_specular.specularColorFactor");
-    }
-    const float f0_ior = ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
-    const glm::vec3 f0 = glm::min(f0_ior * colour, glm::vec3(1.0f)) * factor;
-    if (m.metallic > 0.0f || m.diffuse_model != FC_DIFFUSE_NONE) m.f0 = m.ks = m.transmittance = f0;  // not metal alone
-    if (m.textures.metallic_workflow) {
-        m.textures.dielectric_f0 = (f0.x + f0.y + f0.z) / 3.0f;
-        if (f0.x != f0.y || f0.y != f0.z)
-            ignored.add("KHR_materials_specular's colour on a textured material (its mean F0 is used)", where);
-    }
-}
-
 // KHR_materials_volume on a transmissive material: Beer-Lambert absorption inside, from
 // attenuationColor (default white: none) and attenuationDistance (default infinite: none);
 // thicknessFactor is for rasterisers (a path tracer follows the ray through the mesh).
@@ -199,6 +161,38 @@ std::array<float, 6> texture_transform(const tinygltf::ExtensionMap& ext, Ignore
     return m;
 }
 
+// A textureInfo of an extension object `v` at `key` (index, texCoord, its KHR_texture_transform
+// and, for normal maps, `scale`), bound as the material's own textures are: TEXCOORD_0 and one
+// KHR_texture_transform per material (warned otherwise). -1 without one.
+int bind_extension_texture(const tinygltf::Value& v, const char* extension, const char* key, TextureSpace space,
+                           Material& m, const std::string& file, const std::string& place, const std::string& where,
+                           Ignored& ignored, const tinygltf::Model& model, Scene& scene, float* scale = nullptr) {
+    if (!v.Has(key)) return -1;
+    const tinygltf::Value& info = v.Get(key);
+    const std::string name = fmt::format("extensions.{}.{}", extension, key);
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt() || info.Get("index").GetNumberAsInt() < 0)
+        throw Error(fmt::format("{}: {}.{}: must be an object with an \"index\" >= 0", file, place, name));
+    tinygltf::ExtensionMap ext;
+    if (info.Has("extensions") && info.Get("extensions").IsObject())
+        for (const std::string& k : info.Get("extensions").Keys()) ext[k] = info.Get("extensions").Get(k);
+    const int tex_coord =
+        info.Has("texCoord") && info.Get("texCoord").IsInt() ? info.Get("texCoord").GetNumberAsInt() : 0;
+    const bool had_texture = m.textures.any();
+    const TextureSlot slot{info.Get("index").GetNumberAsInt(), tex_coord, &ext, name.c_str(), space};
+    const int bound = bind_texture(slot, model, file, where, ignored, scene);
+    const std::array<float, 6> t = texture_transform(ext, ignored, where);
+    if (!had_texture) m.textures.uv_transform = t;
+    else if (t != m.textures.uv_transform)
+        ignored.add("different KHR_texture_transforms in one material (the first is used)", where);
+    if (scale && info.Has("scale")) {
+        const tinygltf::Value& x = info.Get("scale");
+        const double d = x.IsNumber() ? x.GetNumberAsDouble() : std::nan("");
+        if (!std::isfinite(d)) throw Error(fmt::format("{}: {}.{}.scale: must be a finite number", file, place, name));
+        *scale = float(d);
+    }
+    return bound;
+}
+
 // Binds the material's textures (base colour, metallic-roughness, normal, emission).
 void bind_textures(const tinygltf::Material& g, Material& m, glm::vec3 base, float metallic, float f0,
                    const std::string& file, const std::string& where, Ignored& ignored, const tinygltf::Model& model,
@@ -244,10 +238,58 @@ void bind_textures(const tinygltf::Material& g, Material& m, glm::vec3 base, flo
     t.emission = bound[3];
 }
 
+// KHR_materials_specular on glTF's dielectric-metal mix: the dielectric's F0 becomes
+// min(F0(ior) specularColorFactor specularColorTexture, 1) specularFactor specularTexture.a and
+// its F90 specularFactor specularTexture.a (the extension's fresnel_mix; Material::specular_f90,
+// kernels/bsdf/fresnel.cl). With either texture, or a colour on a textured material (whose
+// texels set the dielectric's F0), the kernels compute both per hit
+// (MaterialTextures::specular_extension, kernels/texture/extension_textures.cl).
+void read_specular(const tinygltf::Material& g, Material& m, float ior, const std::string& file,
+                   const std::string& place, const std::string& where, Ignored& ignored, const tinygltf::Model& model,
+                   Scene& scene) {
+    const auto it = g.extensions.find("KHR_materials_specular");
+    if (it == g.extensions.end() || !it->second.IsObject()) return;
+    const tinygltf::Value& v = it->second;
+    if (m.specular_model != FC_SPECULAR_MICROFACET) {
+        ignored.add("KHR_materials_specular on a transmissive material", where);
+        return;
+    }
+    const float factor = in_range(extension_number(g, "KHR_materials_specular", "specularFactor", 1.0), 0, 1, file,
+                                  place, "KHR_materials_specular.specularFactor");
+    glm::vec3 colour(1.0f);
+    if (v.Has("specularColorFactor")) {
+        const tinygltf::Value& c = v.Get("specularColorFactor");
+        if (!c.IsArray() || c.ArrayLen() != 3)
+            throw Error(
+                fmt::format("{}: {}: KHR_materials_specular.specularColorFactor must have 3 numbers", file, place));
+        for (int i = 0; i < 3; ++i)
+            colour[i] = in_range(c.Get(i).IsNumber() ? c.Get(i).GetNumberAsDouble() : std::nan(""), 0, 1e3, file, place,
+                                 "KHR_materials_specular.specularColorFactor");
+    }
+    if (m.metallic <= 0.0f && m.diffuse_model == FC_DIFFUSE_NONE) return;  // the metal alone: no dielectric
+    const float f0_ior = ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f));
+    const glm::vec3 f0 = glm::min(f0_ior * colour, glm::vec3(1.0f)) * factor;
+    m.f0 = m.ks = m.transmittance = f0;
+    m.specular_f90 = factor;
+    MaterialTextures& t = m.textures;
+    const char* ext = "KHR_materials_specular";
+    t.specular_strength = bind_extension_texture(v, ext, "specularTexture", TextureSpace::Data, m, file, place, where,
+                                                 ignored, model, scene);
+    t.specular_color = bind_extension_texture(v, ext, "specularColorTexture", TextureSpace::Color, m, file, place,
+                                              where, ignored, model, scene);
+    const bool coloured = f0.x != f0.y || f0.y != f0.z;
+    t.dielectric_f0 = (f0.x + f0.y + f0.z) / 3.0f;
+    if (t.specular_strength >= 0 || t.specular_color >= 0 || (t.metallic_workflow && coloured)) {
+        t.specular_extension = true;
+        t.specular_color_f0 = f0_ior * colour;
+        t.specular_weight = factor;
+    }
+}
+
 // --- clearcoat and sheen -------------------------------------------------------------------
 
 // The layers' extensions (kernels/bsdf/clearcoat.cl, sheen.cl), each number checked with its
-// JSON path in the message. Their textures are not read (warned about and ignored).
+// JSON path in the message; their textures multiply the factors (extension_textures.cl).
 bool layer_extension(const std::string& name) {
     return name == "KHR_materials_clearcoat" || name == "KHR_materials_sheen";
 }
@@ -270,15 +312,12 @@ float layer_factor(const tinygltf::Value& v, const char* extension, const char* 
 // and KHR_materials_sheen (sheenColorFactor, sheenRoughnessFactor) onto the material's
 // layers. The layers go over non-transmissive materials only.
 void read_layers(const tinygltf::Material& g, Material& m, const std::string& file, const std::string& place,
-                 const std::string& where, Ignored& ignored) {
+                 const std::string& where, Ignored& ignored, const tinygltf::Model& model, Scene& scene) {
     for (const char* extension : {"KHR_materials_clearcoat", "KHR_materials_sheen"}) {
         const auto it = g.extensions.find(extension);
         if (it == g.extensions.end()) continue;
         const tinygltf::Value& v = it->second;
         if (!v.IsObject()) throw Error(fmt::format("{}: {}.extensions.{}: must be an object", file, place, extension));
-        for (const std::string& key : v.Keys())
-            if (key.size() > 7 && key.compare(key.size() - 7, 7, "Texture") == 0)
-                ignored.add(fmt::format("{}.{}", extension, key), where);
         if (m.specular_model == FC_SPECULAR_DIELECTRIC) {
             ignored.add(fmt::format("{} on a transmissive material", extension), where);
             continue;
@@ -287,6 +326,16 @@ void read_layers(const tinygltf::Material& g, Material& m, const std::string& fi
             m.clearcoat = layer_factor(v, extension, "clearcoatFactor", 0.0, file, place);
             const float r = layer_factor(v, extension, "clearcoatRoughnessFactor", 0.0, file, place);
             m.clearcoat_alpha = r * r;
+            if (m.clearcoat > 0.0f) {
+                m.textures.clearcoat = bind_extension_texture(v, extension, "clearcoatTexture", TextureSpace::Data, m,
+                                                              file, place, where, ignored, model, scene);
+                m.textures.clearcoat_roughness =
+                    bind_extension_texture(v, extension, "clearcoatRoughnessTexture", TextureSpace::Data, m, file,
+                                           place, where, ignored, model, scene);
+                m.textures.clearcoat_normal =
+                    bind_extension_texture(v, extension, "clearcoatNormalTexture", TextureSpace::Data, m, file, place,
+                                           where, ignored, model, scene, &m.textures.clearcoat_normal_scale);
+            }
             continue;
         }
         if (v.Has("sheenColorFactor")) {
@@ -303,6 +352,13 @@ void read_layers(const tinygltf::Material& g, Material& m, const std::string& fi
             }
         }
         m.sheen_roughness = layer_factor(v, extension, "sheenRoughnessFactor", 0.0, file, place);
+        if (std::max(m.sheen.x, std::max(m.sheen.y, m.sheen.z)) > 0.0f) {
+            m.textures.sheen_color = bind_extension_texture(v, extension, "sheenColorTexture", TextureSpace::Color, m,
+                                                            file, place, where, ignored, model, scene);
+            m.textures.sheen_roughness =
+                bind_extension_texture(v, extension, "sheenRoughnessTexture", TextureSpace::Data, m, file, place, where,
+                                       ignored, model, scene);
+        }
     }
 }
 
@@ -409,9 +465,9 @@ Material convert_material(const tinygltf::Material& g, const std::string& file, 
 
     bind_textures(g, m, base, metallic, ((ior - 1.0f) / (ior + 1.0f)) * ((ior - 1.0f) / (ior + 1.0f)), file, where,
                   ignored, model, scene);
-    read_specular(g, m, ior, file, place, where, ignored);
+    read_specular(g, m, ior, file, place, where, ignored, model, scene);
     read_volume(g, m, file, place, where, ignored);
-    read_layers(g, m, file, place, where, ignored);
+    read_layers(g, m, file, place, where, ignored, model, scene);
     read_anisotropy(g, m, file, place, where, ignored);
     if (g.occlusionTexture.index >= 0) ignored.add("occlusionTexture (a path tracer computes occlusion itself)", where);
     // alphaMode: OPAQUE ignores alpha; MASK cuts out where alpha < alphaCutoff, BLEND is

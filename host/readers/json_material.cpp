@@ -40,8 +40,14 @@ Material preset(const MaterialKeys& m) {
 // "clearcoat" (0 to 1) and "clearcoat_roughness" (0 to 1; alpha = roughness^2), "sheen" (a
 // colour, each 0 to 1) and "sheen_roughness" (0 to 1): glTF's KHR_materials_clearcoat and
 // KHR_materials_sheen layers (kernels/bsdf/clearcoat.cl, sheen.cl), over any material that
-// does not transmit (docs/scene-format.md).
+// does not transmit (docs/scene-format.md). "specular_f90" (0 to 1): the Schlick Fresnel's
+// reflectance at grazing incidence (KHR_materials_specular's F90; 1 by default).
 void layers(const MaterialKeys& k, Material& m) {
+    if (k.has("specular_f90")) {
+        if (m.fresnel != FC_FRESNEL_SCHLICK || m.specular_model != FC_SPECULAR_MICROFACET)
+            k.r.fail(k.key("specular_f90"), "needs a microfacet lobe with \"fresnel\": \"schlick\"");
+        m.specular_f90 = k.number("specular_f90", 0, 1);
+    }
     for (const char* key : {"clearcoat", "clearcoat_roughness", "sheen", "sheen_roughness"})
         if (k.has(key) && m.specular_model == FC_SPECULAR_DIELECTRIC)
             k.r.fail(k.key(key), "is a layer over a material that does not transmit (not model \"dielectric\")");
@@ -213,14 +219,17 @@ int texture_entry(const MaterialKeys& k, const Json& e, const std::string& path,
 }
 
 // "textures": {"diffuse", "specular", "roughness", "shininess", "metalness", "emission",
-// "normal", "normal_scale", "metallic", "uv_scale", "uv_offset", "alpha"} (docs/textures.md).
+// "normal", "normal_scale", "metallic", "uv_scale", "uv_offset", "alpha", and glTF's layers'
+// "clearcoat" (R), "clearcoat_roughness" (G), "sheen" (RGB), "sheen_roughness" (A) and
+// KHR_materials_specular's "specular_strength" (A: F0 and F90)} (docs/textures.md).
 void textures(const MaterialKeys& k, Material& m, const std::string& name, Scene& scene) {
     const std::string path = k.key("textures");
     const Json& t = k.v["textures"];
     const JsonReader& r = k.r;
     r.object(t, path,
              {"diffuse", "specular", "roughness", "shininess", "metalness", "emission", "normal", "normal_scale",
-              "metallic", "uv_scale", "uv_offset", "alpha"});
+              "metallic", "uv_scale", "uv_offset", "alpha", "clearcoat", "clearcoat_roughness", "sheen",
+              "sheen_roughness", "specular_strength"});
     MaterialTextures& b = m.textures;
     auto slot = [&](const char* key, TextureSpace space, int* channel = nullptr) {
         if (!t.contains(key)) return -1;
@@ -266,6 +275,28 @@ void textures(const MaterialKeys& k, Material& m, const std::string& name, Scene
             v[int(i)] = r.number_in(a[i], fmt::format("{}[{}]", JsonReader::key(path, key), i), lo, hi);
         return v;
     };
+    // The layers' textures multiply their factors, which must be there (> 0) for them to show.
+    auto layer = [&](const char* key, TextureSpace space, bool present, const char* factor) {
+        if (!t.contains(key)) return -1;
+        if (!present) r.fail(JsonReader::key(path, key), fmt::format("needs the material's \"{}\" above 0", factor));
+        return slot(key, space);
+    };
+    const bool coat = m.clearcoat > 0.0f, sheen = std::max(m.sheen.x, std::max(m.sheen.y, m.sheen.z)) > 0.0f;
+    b.clearcoat = layer("clearcoat", TextureSpace::Data, coat, "clearcoat");
+    b.clearcoat_roughness = layer("clearcoat_roughness", TextureSpace::Data, coat, "clearcoat");
+    b.sheen_color = layer("sheen", TextureSpace::Color, sheen, "sheen");
+    b.sheen_roughness = layer("sheen_roughness", TextureSpace::Data, sheen, "sheen");
+    if (t.contains("specular_strength")) {
+        // KHR_materials_specular's specularTexture: A scales F0 and F90 (kernels/texture/extension_textures.cl)
+        if (m.specular_model != FC_SPECULAR_MICROFACET || m.fresnel != FC_FRESNEL_SCHLICK)
+            r.fail(JsonReader::key(path, "specular_strength"), "needs a microfacet lobe with \"fresnel\": \"schlick\"");
+        b.specular_strength = slot("specular_strength", TextureSpace::Data);
+        b.specular_extension = true;
+        b.specular_color_f0 = b.metallic_workflow ? glm::vec3(b.dielectric_f0) : m.f0;
+        b.specular_weight = 1.0f;
+        b.specular_color = b.specular;  // the colour texture multiplies F0 before the strength
+        b.specular = -1;
+    }
     const glm::vec2 scale = pair("uv_scale", -1e6, 1e6, 1.0f), offset = pair("uv_offset", -1e6, 1e6, 0.0f);
     b.uv_transform = {scale.x, 0.0f, offset.x, 0.0f, scale.y, offset.y};
 }
@@ -327,6 +358,7 @@ void JsonLoader::material(const std::string& name, const Json& v, const std::str
               "sheen_roughness",
               "anisotropy",
               "anisotropy_rotation",
+              "specular_f90",
               "metallic",
               "attenuation_color",
               "attenuation_distance",

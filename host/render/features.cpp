@@ -73,6 +73,12 @@ FeatureMask scene_features(const Scene& scene) {
         if (m.specular_model != FC_SPECULAR_DIELECTRIC) {  // the layers go over non-dielectrics only
             if (m.clearcoat > 0.0f) mask |= kCLEARCOAT;
             if (std::max(m.sheen.x, std::max(m.sheen.y, m.sheen.z)) > 0.0f) mask |= kSHEEN;
+            if (m.clearcoat > 0.0f && m.textures.any_clearcoat()) mask |= kCLEARCOAT_TEXTURES;
+            if (m.clearcoat > 0.0f && (m.textures.clearcoat_normal >= 0 || m.textures.normal >= 0))
+                mask |= kCLEARCOAT_NORMAL;
+            if (std::max(m.sheen.x, std::max(m.sheen.y, m.sheen.z)) > 0.0f && m.textures.any_sheen())
+                mask |= kSHEEN_TEXTURES;
+            if (m.textures.specular_extension) mask |= kSPECULAR_TEXTURES;
         }
     }
     return mask;

@@ -111,6 +111,8 @@ FcMaterial device_material(const Material& m) {
     d.flags = (m.two_sided_emission ? FC_MAT_TWO_SIDED_EMISSION : 0u) |
               (m.energy_compensation ? FC_MAT_ENERGY_COMPENSATION : 0u) |
               (material_is_anisotropic(m) ? FC_MAT_ANISOTROPIC : 0u);
+    d.specular_f90 = m.specular_f90;
+    if (m.specular_f90 != 1.0f) d.flags |= FC_MAT_SPECULAR_F90;
     d.alpha = m.alpha;
     d.alpha_cutoff = m.alpha_cutoff;
     d.alpha_texture = -1;
@@ -151,6 +153,7 @@ Material host_material(const FcMaterial& d) {
     m.sigma = m.eon_roughness = d.sigma;
     m.two_sided_emission = (d.flags & FC_MAT_TWO_SIDED_EMISSION) != 0;
     m.energy_compensation = (d.flags & FC_MAT_ENERGY_COMPENSATION) != 0;
+    m.specular_f90 = (d.flags & FC_MAT_SPECULAR_F90) ? d.specular_f90 : 1.0f;
     m.alpha_mode = (d.flags & FC_MAT_ALPHA_MASK)    ? FC_ALPHA_MASK
                    : (d.flags & FC_MAT_ALPHA_BLEND) ? FC_ALPHA_BLEND
                                                     : FC_ALPHA_OPAQUE;

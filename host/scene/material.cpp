@@ -312,6 +312,8 @@ std::string validate_material(const Material& m) {
         if (bad(s.v, s.v >= 0.0f)) return fmt::format("{} must be a finite number >= 0 (got {:g})", s.name, s.v);
     if (bad(m.metallic, m.metallic >= 0.0f && m.metallic <= 1.0f))
         return fmt::format("metallic must be a finite number in [0, 1] (got {:g})", m.metallic);
+    if (bad(m.specular_f90, m.specular_f90 >= 0.0f && m.specular_f90 <= 1.0f))
+        return fmt::format("specular_f90 must be a finite number in [0, 1] (got {:g})", m.specular_f90);
     if (bad(m.alpha, m.alpha >= 0.0f && m.alpha <= 1.0f))
         return fmt::format("alpha must be a finite number in [0, 1] (got {:g})", m.alpha);
     if (bad(m.alpha_cutoff, true))
@@ -385,6 +387,8 @@ std::string describe_material(const Material& m) {
                              enum_to_name(MaterialEnum::Geometry, m.geometry),
                              enum_to_name(MaterialEnum::Fresnel, m.fresnel));
             if (m.fresnel == FC_FRESNEL_SCHLICK) s += " F0=" + rgb(m.f0);
+            if (m.fresnel == FC_FRESNEL_SCHLICK && m.specular_f90 != 1.0f)
+                s += fmt::format(" F90={:g}", m.specular_f90);
             if (m.fresnel == FC_FRESNEL_SCHLICK_IOR || m.fresnel == FC_FRESNEL_DIELECTRIC)
                 s += fmt::format(" ior={:g}", m.ior);
             if (m.fresnel == FC_FRESNEL_CONDUCTOR) s += " eta=" + rgb(m.eta) + " k=" + rgb(m.k);

@@ -84,6 +84,10 @@ struct Material {
     // `anisotropy_rotation` (radians) toward the bitangent. Also orients alpha_x != alpha_y.
     float anisotropy = 0.0f;
     float anisotropy_rotation = 0.0f;
+    // Schlick's reflectance at grazing incidence (FC_FRESNEL_SCHLICK) in [0, 1]: 1 is Schlick's
+    // own; below 1 it is KHR_materials_specular's dielectric F90 = specularFactor
+    // (kernels/bsdf/fresnel.cl). The metal lobe of a metallic mix keeps 1.
+    float specular_f90 = 1.0f;
     // Image textures bound to the parameters above (docs/textures.md).
     MaterialTextures textures;
 };

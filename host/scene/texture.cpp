@@ -241,7 +241,18 @@ FcMaterialTextures device_material_textures(const MaterialTextures& t) {
     d.roughness_mode = t.roughness_mode;
     d.normal_scale = t.normal_scale;
     d.dielectric_f0 = t.dielectric_f0;
-    d.flags = t.metallic_workflow ? FC_TEX_METALLIC_WORKFLOW : 0u;
+    d.flags =
+        (t.metallic_workflow ? FC_TEX_METALLIC_WORKFLOW : 0u) | (t.specular_extension ? FC_TEX_SPECULAR_EXTENSION : 0u);
+    d.clearcoat = t.clearcoat;
+    d.clearcoat_roughness = t.clearcoat_roughness;
+    d.clearcoat_normal = t.clearcoat_normal;
+    d.sheen_color = t.sheen_color;
+    d.sheen_roughness = t.sheen_roughness;
+    d.specular_strength = t.specular_strength;
+    d.specular_color = t.specular_color;
+    d.clearcoat_normal_scale = t.clearcoat_normal_scale;
+    for (int c = 0; c < 3; ++c) d.specular_color_f0[c] = t.specular_color_f0[c];
+    d.specular_weight = t.specular_weight;
     for (int r = 0; r < 2; ++r)
         for (int c = 0; c < 3; ++c) d.uv_transform[r][c] = t.uv_transform[std::size_t(3 * r + c)];
     return d;

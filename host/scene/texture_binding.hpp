@@ -31,10 +31,30 @@ struct MaterialTextures {
     float normal_scale = 1.0f;
     // KHR_texture_transform: u' = t[0] u + t[1] v + t[2], v' = t[3] u + t[4] v + t[5].
     std::array<float, 6> uv_transform{1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f};
+    // glTF's KHR_materials_* textures (kernels/texture/extension_textures.cl), each multiplying
+    // the material's factor: the coat's weight (R) and perceptual roughness (G), the sheen's
+    // colour (RGB, sRGB) and roughness (A).
+    int clearcoat = -1;
+    int clearcoat_roughness = -1;
+    int clearcoat_normal = -1;  // the coat's own tangent-space normal map (linear), x, y scaled:
+    float clearcoat_normal_scale = 1.0f;
+    int sheen_color = -1;
+    int sheen_roughness = -1;
+    // KHR_materials_specular per hit (specular_extension): the dielectric's F0 =
+    // min(specular_color_f0 x specular_color's RGB, 1) x specular_weight x specular_strength's A,
+    // its F90 = the material's specular_f90 x A.
+    bool specular_extension = false;
+    int specular_strength = -1;  // linear, A
+    int specular_color = -1;     // sRGB
+    glm::vec3 specular_color_f0{0.04f};
+    float specular_weight = 1.0f;
 
+    // Whether the layers' and KHR_materials_specular's textures are bound (or the specular per hit).
+    bool any_clearcoat() const { return clearcoat >= 0 || clearcoat_roughness >= 0 || clearcoat_normal >= 0; }
+    bool any_sheen() const { return sheen_color >= 0 || sheen_roughness >= 0; }
     bool any() const {
         return base_color >= 0 || specular >= 0 || roughness >= 0 || metalness >= 0 || emission >= 0 || normal >= 0 ||
-               alpha >= 0;
+               alpha >= 0 || any_clearcoat() || any_sheen() || specular_extension;
     }
 };
 

@@ -94,7 +94,7 @@ bool wants_tangents(const Scene& scene, const std::vector<FcTriTexcoords>& tc, s
     const int m = scene.shading[t].material;
     if ((tc[t].tangent_flags & FC_TANGENTS_SET) != 0 || m < 0 || std::size_t(m) >= scene.materials.size()) return false;
     const Material& mat = scene.materials[std::size_t(m)];
-    return mat.textures.normal >= 0 || material_is_anisotropic(mat);
+    return mat.textures.normal >= 0 || mat.textures.clearcoat_normal >= 0 || material_is_anisotropic(mat);
 }
 
 }  // namespace

@@ -81,6 +81,10 @@ void sanitise_textures(Scene& scene) {
         bind(b.metalness, kFraction);
         bind(b.emission, kEmission);
         bind(b.normal, kNormal);
+        bind(b.clearcoat_normal, kNormal);
+        for (int index : {b.clearcoat, b.clearcoat_roughness, b.sheen_color, b.sheen_roughness, b.specular_strength,
+                          b.specular_color})
+            bind(index, kFraction);
     }
     for (std::size_t i = 0; i < scene.textures.size(); ++i) {
         TextureImage& t = scene.textures[i];

@@ -21,7 +21,8 @@
  *     f = c f_coat + (1 - c E_coat(mu_o)) (f_sheen + (1 - max(S) E_sheen(mu_o)) f_base).
  * sample() chooses the coat with probability p_c = c E_coat(mu_o), the sheen (cosine
  * sampling) with p_s = (1 - p_c) lum(S) E_sheen(mu_o), else the base (both clamped so the
- * base keeps a share), and the pdf is the same mixture. A material without layers takes
+ * base keeps a share), and the pdf is the same mixture. A coat with a normal of its own is
+ * evaluated and sampled in its frame (clearcoat.cl). A material without layers takes
  * the base's code path unchanged, bit for bit. */
 #ifndef FACET_BSDF_BSDF_CL
 #define FACET_BSDF_BSDF_CL
@@ -126,7 +127,7 @@ inline float4 bsdf_layer_weights(const FcMaterial* m, float3 wo) {
     float4 w = (float4)(0.0f, 1.0f, 1.0f, 0.0f);
     if (clearcoat_present(m)) {
         FcMaterial coat = clearcoat_lobe(m);
-        w.x = clearcoat_weight(m) * clearcoat_albedo(&coat, wo.z);
+        w.x = clearcoat_weight(m) * clearcoat_albedo(&coat, fmax(clearcoat_local(m, wo).z, 0.0f));
         w.z = clamp(1.0f - w.x, 0.0f, 1.0f);
     }
     if (sheen_present(m)) {
@@ -160,7 +161,7 @@ inline float3 bsdf_eval(const FcMaterial* m, float3 wo, float3 wi) {
     f *= w.z;
     if (clearcoat_present(m)) {
         FcMaterial coat = clearcoat_lobe(m);
-        f += clearcoat_weight(m) * microfacet_eval(&coat, wo, wi);
+        f += clearcoat_eval(m, &coat, wo, wi);
     }
     return f;
 }
@@ -173,7 +174,7 @@ inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     if (p.y > 0.0f) pdf += p.y * cosine_hemisphere_pdf(wo, wi);
     if (p.x > 0.0f) {
         FcMaterial coat = clearcoat_lobe(m);
-        pdf += p.x * microfacet_pdf(&coat, wo, wi);
+        pdf += p.x * clearcoat_pdf(m, &coat, wo, wi);
     }
     return pdf;
 }
@@ -196,10 +197,11 @@ inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s)
     float pb = 1.0f - p.x - p.y;
     if (u.z < p.x) {
         FcMaterial coat = clearcoat_lobe(m);
-        if (!microfacet_sample(&coat, wo, u.xy, s)) return false;
+        if (!microfacet_sample(&coat, clearcoat_local(m, wo), u.xy, s)) return false;
+        s->wi = clearcoat_to_shading(m, s->wi);
         if (s->delta) { /* the coat's mirror: c F(mu_o), chosen with probability p_c */
             s->weight *= clearcoat_weight(m) / p.x;
-            return all_finite(s->weight);
+            return s->wi.z > 0.0f && all_finite(s->weight);
         }
     } else if (u.z < p.x + p.y) {
         s->wi = square_to_cosine_hemisphere(u.xy);

@@ -19,9 +19,9 @@
  * E_s the Fresnel-weighted albedo of the specular lobe (single + multiple scattering),
  * so the diffuse albedo is rho (1 - E_s(mu_o)) and a white rough plastic reflects
  * everything (Kulla & Conty 2017, "energy-conserving layering" without the internal
- * bounces). E_s uses Schlick's form with the material's F0: E_ss,F = F0 E + (1 - F0) E5,
- * E5 the albedo with F = (1 - wo.h)^5 (exact for Schlick, an approximation for the
- * exact dielectric Fresnel).
+ * bounces). E_s uses Schlick's form with the material's F0 and F90 (1 unless
+ * FC_MAT_SPECULAR_F90): E_ss,F = F0 E + (F90 - F0) E5, E5 the albedo with F = (1 - wo.h)^5
+ * (exact for Schlick, an approximation for the exact dielectric Fresnel).
  *
  * E, E5 and their averages are tables of albedo_tables_conductor.cl and
  * albedo_tables_schlick.cl (32 x 32 in mu and in r = sqrt(alpha), bilinear), integrated on
@@ -127,12 +127,12 @@ inline float3 ec_ms_eval(const FcMaterial* m, float3 wo, float3 wi) {
  * rather than f_ss: f_ms's share of the albedo at F = 1. */
 inline float ec_ms_probability(const FcMaterial* m, float3 wo) { return clamp(1.0f - ec_E_dir(m, wo), 0.0f, 1.0f); }
 
-/* E_s(mu): the Fresnel-weighted albedo of the compensated specular lobe, Schlick form. */
+/* E_s(mu): the Fresnel-weighted albedo of the compensated specular lobe, Schlick form (F0, F90). */
 inline float3 ec_specular_albedo(const FcMaterial* m, float mu, float3 f_ms) {
     float3 f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
     float e = ec_E(m, mu);
     float e5 = ec_lookup(fc_albedo_E5, ec_ndf(m), mu, ec_r(m));
-    return f0 * e + ((float3)(1.0f) - f0) * e5 + f_ms * (1.0f - e);
+    return f0 * e + ((float3)(fresnel_f90(m)) - f0) * e5 + f_ms * (1.0f - e);
 }
 
 /* The coupled diffuse base's factor (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg).
@@ -151,7 +151,7 @@ inline float3 ec_diffuse_coupling(const FcMaterial* m, float3 wo, float3 wi) {
     float3 f_ms = ec_fresnel_ms(m, e_avg);
     float3 f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
     float e5_avg = ec_lookup_avg(fc_albedo_E5_avg, ec_ndf(m), ec_r(m));
-    float3 s_avg = f0 * e_avg + ((float3)(1.0f) - f0) * e5_avg + f_ms * (1.0f - e_avg);
+    float3 s_avg = f0 * e_avg + ((float3)(fresnel_f90(m)) - f0) * e5_avg + f_ms * (1.0f - e_avg);
     float3 lo = fmax((float3)(1.0f) - ec_specular_albedo(m, wo.z, f_ms), (float3)(0.0f));
     float3 li = fmax((float3)(1.0f) - ec_specular_albedo(m, wi.z, f_ms), (float3)(0.0f));
     float3 den = fmax((float3)(1.0f) - s_avg, (float3)(1e-6f));

@@ -2,7 +2,10 @@
  *
  * - Schlick's approximation from the reflectance at normal incidence F0
  *   (Schlick 1994): F = F0 + (1 - F0)(1 - cos)^5, and F0 from a real index of
- *   refraction, F0 = ((n - 1)/(n + 1))^2 (Hoffman 2010).
+ *   refraction, F0 = ((n - 1)/(n + 1))^2 (Hoffman 2010). With FC_MAT_SPECULAR_F90 the
+ *   material's FC_FRESNEL_SCHLICK reaches F90 = `specular_f90` at grazing incidence,
+ *   F = F0 + (F90 - F0)(1 - cos)^5 (KHR_materials_specular's fresnel_mix; F90 = 0 and
+ *   F0 = 0: no specular reflection at all).
  * - The exact unpolarised Fresnel equations of a dielectric interface (relative
  *   index eta = n_transmitted / n_incident) and of a conductor with complex index
  *   eta + i k (per RGB channel; the real-arithmetic form of pbrt-v3, section 8.2.1).
@@ -22,6 +25,18 @@ inline float pow5(float x) {
 inline float3 fresnel_schlick(float3 f0, float cos_theta) {
     float c = clamp(cos_theta, 0.0f, 1.0f);
     return f0 + ((float3)(1.0f) - f0) * pow5(1.0f - c);
+}
+
+/* Schlick's form reaching f90 at grazing incidence (f90 = 1: fresnel_schlick). */
+inline float3 fresnel_schlick_f90(float3 f0, float f90, float cos_theta) {
+    float c = clamp(cos_theta, 0.0f, 1.0f);
+    return f0 + ((float3)(f90)-f0) * pow5(1.0f - c);
+}
+
+/* The material's Schlick reflectance at grazing incidence: `specular_f90` in [0, 1] where
+ * FC_MAT_SPECULAR_F90 is set, else 1. */
+inline float fresnel_f90(const FcMaterial* m) {
+    return (m->flags & FC_MAT_SPECULAR_F90) ? clamp(m->specular_f90, 0.0f, 1.0f) : 1.0f;
 }
 
 inline float f0_from_ior(float n) {
@@ -89,7 +104,7 @@ inline float3 fresnel_conductor(float cos_i, float3 eta, float3 k) {
 inline float3 fresnel_eval(const FcMaterial* m, float cos_d) {
     switch (m->fresnel) {
         case FC_FRESNEL_SCHLICK:
-            return fresnel_schlick(load3p(m->specular), cos_d);
+            return fresnel_schlick_f90(load3p(m->specular), fresnel_f90(m), cos_d);
         case FC_FRESNEL_SCHLICK_IOR:
             return fresnel_schlick((float3)(f0_from_ior(m->ior)), cos_d);
         case FC_FRESNEL_DIELECTRIC:

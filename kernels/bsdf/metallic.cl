@@ -2,9 +2,10 @@
  * Material"): a dielectric and a metal mixed linearly by metallic M in [0, 1],
  *     f = (1 - M) f_dielectric + M f_metal.
  * f_dielectric is the material's own pair of lobes: the microfacet lobe with its Fresnel
- * (Schlick, F0 = `specular`: 0.04 for glTF's ior 1.5) over the Lambert base of colour
+ * (Schlick, F0 = `specular`: 0.04 for glTF's ior 1.5, and F90 = `specular_f90` where
+ * KHR_materials_specular sets it, fresnel.cl) over the Lambert base of colour
  * `diffuse` coupled to that lobe (diffuse.cl). f_metal is the same microfacet lobe (D, G,
- * alpha) with Schlick's Fresnel from F0 = `diffuse`, the base colour, and no diffuse lobe.
+ * alpha) with Schlick's Fresnel from F0 = `diffuse`, the base colour, F90 = 1, and no diffuse lobe.
  * Each lobe carries its own energy compensation (energy_compensation.cl): the metal's f_ms
  * with the metal's F_ms, the dielectric's with 0.04's, and the diffuse base coupled to the
  * dielectric's albedo E_s alone, so a white base reflects everything at every M.
@@ -37,6 +38,7 @@ inline FcMaterial metallic_lobe(const FcMaterial* m) {
     metal.diffuse_model = FC_DIFFUSE_NONE;
     metal.fresnel = FC_FRESNEL_SCHLICK;
     metal.metallic = 0.0f;
+    metal.flags &= ~FC_MAT_SPECULAR_F90; /* a metal's Schlick reaches 1 at grazing */
     for (int c = 0; c < 3; ++c) metal.specular[c] = clamp(m->diffuse[c], 0.0f, 1.0f);
     return metal;
 }

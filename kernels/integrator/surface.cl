@@ -111,7 +111,8 @@ inline float3 surface_offset(const Surface* s, float3 n) {
  * relative index n_outside / n_inside = 1 / ior (docs/conventions.md). A shading normal
  * facing away from the viewer is replaced by the geometric one. An anisotropic material
  * gets its roughness stretched and a frame whose x axis is its anisotropy direction
- * (kernels/bsdf/anisotropy.cl), the same physical direction seen from either side. */
+ * (kernels/bsdf/anisotropy.cl), the same physical direction seen from either side. The
+ * coat's own normal (if any) is turned with the surface and brought into the frame. */
 inline Frame surface_orient(Surface* s, FcMaterial* mat, float3 wo, float3* wo_local) {
 #if FC_HAS_ANISOTROPY
     const bool aniso = (mat->flags & FC_MAT_ANISOTROPIC) != 0u;
@@ -121,7 +122,8 @@ inline Frame surface_orient(Surface* s, FcMaterial* mat, float3 wo, float3* wo_l
         axis = anisotropy_axis(mat, s->ns, s->tangent);
     }
 #endif
-    if (dot(s->ng, wo) < 0.0f) {
+    bool flipped = dot(s->ng, wo) < 0.0f;
+    if (flipped) {
         s->ng = -s->ng;
         s->ns = -s->ns;
         if (bsdf_is_dielectric(mat)) mat->ior = 1.0f / mat->ior;
@@ -139,6 +141,7 @@ inline Frame surface_orient(Surface* s, FcMaterial* mat, float3 wo, float3* wo_l
 #endif
         *wo_local = frame_to_local(&frame, wo);
     }
+    clearcoat_normal_to_shading(mat, &frame, wo, flipped); /* the coat's own normal, if any */
     return frame;
 }
 

@@ -8,25 +8,29 @@
 #define FACET_SHARED_FEATURE_FLAGS_H
 
 /* X(name, bit) for every feature. */
-#define FC_FEATURE_LIST(X)  \
-    X(AREA_LIGHTS, 0)       \
-    X(PUNCTUAL_LIGHTS, 1)   \
-    X(ENVIRONMENT, 2)       \
-    X(OREN_NAYAR, 3)        \
-    X(ASHIKHMIN_SHIRLEY, 4) \
-    X(BLINN_PHONG, 5)       \
-    X(MICROFACET, 6)        \
-    X(BECKMANN, 7)          \
-    X(DIELECTRIC, 8)        \
-    X(TEXTURES, 9)          \
-    X(SPHERES, 10)          \
-    X(INSTANCES, 11)        \
-    X(METALLIC, 12)         \
-    X(ALPHA, 13)            \
-    X(VOLUME, 14)           \
-    X(CLEARCOAT, 15)        \
-    X(SHEEN, 16)            \
-    X(ANISOTROPY, 17)
+#define FC_FEATURE_LIST(X)    \
+    X(AREA_LIGHTS, 0)         \
+    X(PUNCTUAL_LIGHTS, 1)     \
+    X(ENVIRONMENT, 2)         \
+    X(OREN_NAYAR, 3)          \
+    X(ASHIKHMIN_SHIRLEY, 4)   \
+    X(BLINN_PHONG, 5)         \
+    X(MICROFACET, 6)          \
+    X(BECKMANN, 7)            \
+    X(DIELECTRIC, 8)          \
+    X(TEXTURES, 9)            \
+    X(SPHERES, 10)            \
+    X(INSTANCES, 11)          \
+    X(METALLIC, 12)           \
+    X(ALPHA, 13)              \
+    X(VOLUME, 14)             \
+    X(CLEARCOAT, 15)          \
+    X(SHEEN, 16)              \
+    X(ANISOTROPY, 17)         \
+    X(CLEARCOAT_TEXTURES, 18) \
+    X(SHEEN_TEXTURES, 19)     \
+    X(SPECULAR_TEXTURES, 20)  \
+    X(CLEARCOAT_NORMAL, 21)
 
 #ifndef FC_HAS_AREA_LIGHTS
 #define FC_HAS_AREA_LIGHTS 1
@@ -87,6 +91,22 @@
  * (kernels/bsdf/anisotropy.cl, kernels/integrator/surface.cl). */
 #ifndef FC_HAS_ANISOTROPY
 #define FC_HAS_ANISOTROPY 1
+#endif
+/* The glTF extensions' textures (kernels/texture/extension_textures.cl): the clearcoat's
+ * weight and roughness, the sheen's colour and roughness, KHR_materials_specular per hit. */
+#ifndef FC_HAS_CLEARCOAT_TEXTURES
+#define FC_HAS_CLEARCOAT_TEXTURES 1
+#endif
+#ifndef FC_HAS_SHEEN_TEXTURES
+#define FC_HAS_SHEEN_TEXTURES 1
+#endif
+#ifndef FC_HAS_SPECULAR_TEXTURES
+#define FC_HAS_SPECULAR_TEXTURES 1
+#endif
+/* The clearcoat's own normal (FC_MAT_CLEARCOAT_NORMAL): its normal map, or the surface's normal
+ * under a base normal map, and the coat lobe evaluated in that frame (kernels/bsdf/clearcoat.cl). */
+#ifndef FC_HAS_CLEARCOAT_NORMAL
+#define FC_HAS_CLEARCOAT_NORMAL 1
 #endif
 
 #endif

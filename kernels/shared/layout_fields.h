@@ -44,7 +44,8 @@
     F(FcMaterial, exponent_x) F(FcMaterial, exponent_y) F(FcMaterial, ior) F(FcMaterial, sigma)                             \
     F(FcMaterial, flags) F(FcMaterial, sampling) F(FcMaterial, metallic) F(FcMaterial, alpha) F(FcMaterial, alpha_cutoff)   \
     F(FcMaterial, alpha_texture) F(FcMaterial, attenuation) F(FcMaterial, clearcoat) F(FcMaterial, sheen)                   \
-    F(FcMaterial, clearcoat_alpha) F(FcMaterial, sheen_roughness) F(FcMaterial, anisotropy) F(FcMaterial, anisotropy_direction)                                                         \
+    F(FcMaterial, clearcoat_alpha) F(FcMaterial, sheen_roughness) F(FcMaterial, anisotropy) F(FcMaterial, anisotropy_direction) \
+    F(FcMaterial, specular_f90) F(FcMaterial, clearcoat_normal) \
     F(FcLight, p0) F(FcLight, type) F(FcLight, e1) F(FcLight, prim)                                                         \
     F(FcLight, e2) F(FcLight, area) F(FcLight, color) F(FcLight, pick_pdf)                                                  \
     F(FcLight, cos_inner) F(FcLight, cos_outer)                                                                             \
@@ -59,7 +60,7 @@
     F(FcEnvironment, total) F(FcEnvironment, to_map)                                                                        \
     F(FcTexture, offset) F(FcTexture, width) F(FcTexture, height) F(FcTexture, levels) F(FcTexture, wrap_u)                 \
     F(FcTexture, wrap_v) F(FcTexture, format) F(FcTexture, mip_format) F(FcMaterialTextures, base_color) F(FcMaterialTextures, normal)               \
-    F(FcMaterialTextures, base_factor) F(FcMaterialTextures, flags) F(FcMaterialTextures, uv_transform)                     \
+    F(FcMaterialTextures, base_factor) F(FcMaterialTextures, flags) F(FcMaterialTextures, uv_transform) F(FcMaterialTextures, clearcoat) F(FcMaterialTextures, clearcoat_normal_scale) F(FcMaterialTextures, specular_color_f0) F(FcMaterialTextures, specular_weight)                     \
     F(FcTriTexcoords, uv) F(FcTriTexcoords, tangent_flags) F(FcTriTexcoords, tangent)                                       \
     F(FcSphere, center) F(FcSphere, radius) F(FcSphere, material) F(FcSphere, light) F(FcSphere, flags)                     \
     F(FcSphere, prim) F(FcBinaryNode, a_lo) F(FcBinaryNode, a_index) F(FcBinaryNode, a_hi) F(FcBinaryNode, a_count)         \

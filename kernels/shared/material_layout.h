@@ -97,11 +97,21 @@ enum { FC_ALPHA_MODE_LIST(FC_MATERIAL_ENUM_VALUE) FC_ALPHA_MODE_COUNT };
 /* The alpha texture's coverage is its R channel (a grey image, MTL's map_d without an
  * alpha channel) instead of A. */
 #define FC_MAT_ALPHA_RED 16u
+/* Schlick's Fresnel (FC_FRESNEL_SCHLICK) reaches `specular_f90` at grazing incidence instead of
+ * 1: F = F0 + (F90 - F0)(1 - cos)^5, KHR_materials_specular's dielectric F90 = specularFactor
+ * (kernels/bsdf/fresnel.cl). Without the flag F90 is 1, whatever the field holds. */
+#define FC_MAT_SPECULAR_F90 32u
+/* The clearcoat has a normal of its own (KHR_materials_clearcoat's clearcoatNormalTexture, or the
+ * surface's normal under a base normal map): `clearcoat_normal`, written in world space by the
+ * textures (kernels/texture/extension_textures.cl) and turned into the shading frame by
+ * surface_orient (kernels/integrator/surface.cl), where the coat lobe is evaluated in its own
+ * frame (kernels/bsdf/clearcoat.cl). */
+#define FC_MAT_CLEARCOAT_NORMAL 64u
 /* The specular lobes are anisotropic (alpha_x != alpha_y, exponent_x != exponent_y, or
  * `anisotropy` > 0): the shading frame's x axis follows the surface's tangent rotated by
  * anisotropy_direction (kernels/bsdf/anisotropy.cl) instead of an arbitrary one. The host
  * sets it (material_is_anisotropic); without it the frame is frame_from_normal's. */
-#define FC_MAT_ANISOTROPIC 32u
+#define FC_MAT_ANISOTROPIC 128u
 
 /* Phong-style exponents are clamped to [0, FC_PHONG_EXPONENT_MAX] (the kernels'
  * fc_phong_exponent, the host's shininess conversions and its clamp_material). */
@@ -154,7 +164,10 @@ typedef struct FcMaterial {
      * `anisotropy` is KHR_materials_anisotropy's strength s in [0, 1]: the kernels stretch the
      * (textured) roughness along the anisotropy direction, alpha_x = mix(alpha_x, 1, s^2),
      * alpha_y kept; `anisotropy_direction` (cos, sin of the rotation) turns that direction
-     * from the tangent toward the bitangent (used with FC_MAT_ANISOTROPIC). */
+     * from the tangent toward the bitangent (used with FC_MAT_ANISOTROPIC).
+     * `specular_f90` is the Schlick Fresnel's value at grazing incidence where
+     * FC_MAT_SPECULAR_F90 is set (KHR_materials_specular's specularFactor); `clearcoat_normal`
+     * the coat's own unit normal where FC_MAT_CLEARCOAT_NORMAL is set. */
     float attenuation[3];
     float clearcoat;
     float sheen[3];
@@ -162,14 +175,17 @@ typedef struct FcMaterial {
     float sheen_roughness;
     float anisotropy;
     float anisotropy_direction[2];
+    float specular_f90;
+    float clearcoat_normal[3];
 } FcMaterial;
 
-FC_STATIC_ASSERT(sizeof(FcMaterial) == 176, "FcMaterial is 176 bytes");
+FC_STATIC_ASSERT(sizeof(FcMaterial) == 192, "FcMaterial is 192 bytes");
 FC_STATIC_ASSERT(offsetof(FcMaterial, emission) == 32 && offsetof(FcMaterial, flags) == 104 &&
                      offsetof(FcMaterial, metallic) == 112 && offsetof(FcMaterial, alpha_texture) == 124 &&
                      offsetof(FcMaterial, attenuation) == 128 && offsetof(FcMaterial, sheen) == 144 &&
                      offsetof(FcMaterial, sheen_roughness) == 160 && offsetof(FcMaterial, anisotropy) == 164 &&
-                     offsetof(FcMaterial, anisotropy_direction) == 168,
+                     offsetof(FcMaterial, anisotropy_direction) == 168 && offsetof(FcMaterial, specular_f90) == 176 &&
+                     offsetof(FcMaterial, clearcoat_normal) == 180,
                  "FcMaterial offsets");
 
 #endif

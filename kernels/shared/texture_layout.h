@@ -56,6 +56,11 @@ typedef struct FcTexture {
  * as host/scene/material.cpp's set_metallic_roughness does for the factors. Without it the base colour texture scales
  * `diffuse` and the specular texture scales `specular`. */
 #define FC_TEX_METALLIC_WORKFLOW 1u
+/* KHR_materials_specular per hit (kernels/texture/extension_textures.cl): the dielectric's
+ * F0 = min(specular_color_f0 x the colour texture's RGB, 1) x specular_weight x the strength
+ * texture's A, and its F90 = the material's F90 x A (FC_MAT_SPECULAR_F90), replacing the
+ * material's (or the metallic workflow's) F0. */
+#define FC_TEX_SPECULAR_EXTENSION 2u
 
 /* The textures of one material (indexed like FcMaterial), -1 where none. A texture
  * multiplies the parameter's factor: the material's own value, or base_factor /
@@ -80,6 +85,22 @@ typedef struct FcMaterialTextures {
     float dielectric_f0;
     fc_uint flags;
     float uv_transform[2][4]; /* rows (a, b, c, unused): u' = a u + b v + c */
+    /* glTF's KHR_materials_* textures, each multiplying the material's factor (extension_textures.cl):
+     * clearcoat (R) the coat's weight, clearcoat_roughness (G) its perceptual roughness (its alpha
+     * by G^2), sheen_color (RGB) the sheen's colour, sheen_roughness (A) its roughness,
+     * specular_strength (A) and specular_color (RGB) KHR_materials_specular's (with
+     * FC_TEX_SPECULAR_EXTENSION), clearcoat_normal the coat's own tangent-space normal map, x
+     * and y scaled by clearcoat_normal_scale. */
+    fc_int clearcoat;
+    fc_int clearcoat_roughness;
+    fc_int clearcoat_normal;
+    fc_int sheen_color;
+    fc_int sheen_roughness;
+    fc_int specular_strength;
+    fc_int specular_color;
+    float clearcoat_normal_scale;
+    float specular_color_f0[3];
+    float specular_weight;
 } FcMaterialTextures;
 
 /* FcTriTexcoords.tangent_flags: bit c (0..2) set when corner c's bitangent is
@@ -103,8 +124,10 @@ typedef struct FcTriTexcoords {
 } FcTriTexcoords;
 
 FC_STATIC_ASSERT(sizeof(FcTexture) == 32, "FcTexture is 32 bytes");
-FC_STATIC_ASSERT(sizeof(FcMaterialTextures) == 96, "FcMaterialTextures is 96 bytes");
-FC_STATIC_ASSERT(offsetof(FcMaterialTextures, base_factor) == 32 && offsetof(FcMaterialTextures, uv_transform) == 64,
+FC_STATIC_ASSERT(sizeof(FcMaterialTextures) == 144, "FcMaterialTextures is 144 bytes");
+FC_STATIC_ASSERT(offsetof(FcMaterialTextures, base_factor) == 32 && offsetof(FcMaterialTextures, uv_transform) == 64 &&
+                     offsetof(FcMaterialTextures, clearcoat) == 96 &&
+                     offsetof(FcMaterialTextures, specular_color_f0) == 128,
                  "FcMaterialTextures offsets");
 FC_STATIC_ASSERT(sizeof(FcTriTexcoords) == 48, "FcTriTexcoords is 48 bytes");
 FC_STATIC_ASSERT(offsetof(FcTriTexcoords, tangent) == 32, "FcTriTexcoords offsets");
