@@ -5,7 +5,7 @@
 #               whole test suite (ctest), then each fuzz harness for FUZZ_SECONDS (30 s) on
 #               the stored corpus
 #   make bench  installs what is missing (PACKAGES, with Embree), builds, runs the bench
-# Other targets: make build | deps | install [PREFIX=/usr/local] | package | fresh-check | bench | bench-mitsuba | sanitize | fuzz | format | clean (docs/robustness.md)
+# Other targets: make build | deps | install [PREFIX=/usr/local] | package | fresh-check | bench | bench-mitsuba | bench-cycles | sanitize | fuzz | format | clean (docs/robustness.md)
 
 BUILD ?= build
 FUZZ_BUILD ?= build-fuzz
@@ -43,7 +43,7 @@ DEMO_BUILD ?= build-demo
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
-.PHONY: all deps deps-demo install-packages configure build build-demo demo install package test fresh-check bench bench-mitsuba sanitize fuzz-build fuzz format clean
+.PHONY: all deps deps-demo install-packages configure build build-demo demo install package test fresh-check bench bench-mitsuba bench-cycles sanitize fuzz-build fuzz format clean
 
 all: build
 
@@ -114,13 +114,19 @@ fuzz: fuzz-build
 # Then the parallel efficiency of two devices and two MPI ranks against one process
 # (bench/parallel_efficiency.py, out/bench/parallel_efficiency.md), and the Mitsuba 3 baseline (bench/README.md): equal-time RMSE on the demo scenes against
 # Mitsuba 3, skipped when its Python package is absent. MITSUBA_BENCH_FLAGS=--quick: a short run.
+# Then the Blender Cycles baseline (bench/README.md): equal-time RMSE against Cycles through
+# PyPI's bpy (CYCLES_PYTHON: a Python 3.11 that has it, e.g. a venv's), skipped without it;
+# CYCLES_BENCH_FLAGS passed on (--quick, --denoise, --scenes ...).
 PYTHON ?= python3
 MITSUBA_BENCH_FLAGS ?=
+CYCLES_PYTHON ?= $(PYTHON)
+CYCLES_BENCH_FLAGS ?=
 bench: build
 	mkdir -p out/bench
 	$(BUILD)/facet_bench --json out/bench/bench.json --markdown out/bench/bench.md
 	$(PYTHON) bench/parallel_efficiency.py --facet $(BUILD)/facet
 	$(MAKE) --no-print-directory bench-mitsuba
+	$(MAKE) --no-print-directory bench-cycles
 
 bench-mitsuba:
 	@if $(PYTHON) -c 'import mitsuba, numpy' 2>/dev/null; then \
@@ -129,6 +135,14 @@ bench-mitsuba:
 		echo "Mitsuba 3 not installed: pip install mitsuba==3.9.1 numpy, and libllvm19 from Debian" \
 		     "(apt-get install libllvm19; DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM-19.so):" \
 		     "skipping the Mitsuba 3 baseline"; \
+	fi
+
+bench-cycles:
+	@if $(CYCLES_PYTHON) -c 'import bpy, numpy' 2>/dev/null; then \
+		mkdir -p out/bench && $(CYCLES_PYTHON) bench/cycles/equal_time.py --facet $(BUILD)/facet $(CYCLES_BENCH_FLAGS); \
+	else \
+		echo "Blender Cycles not installed: pip install bpy==5.0.0 numpy (Python 3.11, e.g. in a venv," \
+		     "then CYCLES_PYTHON=that venv's python): skipping the Blender Cycles baseline"; \
 	fi
 
 # AddressSanitizer + UBSan build of everything; runs the unit, render and cli tiers (docs/robustness.md).

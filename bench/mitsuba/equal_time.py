@@ -156,12 +156,19 @@ class Facet:
         return read_exr(out), int(rep["spp"]) * scene.pixels, float(rep["render_s"])
 
 
+# Mitsuba 3's samplers, all tried for its best (--mitsuba-best auto), each with both pass
+# sizes of PASS_LANES: None = large passes of about 24 % of the budget, else passes of that
+# many lanes (width x height x spp; about 4 M ran Mitsuba fastest in issue 29's runs).
+SAMPLERS = ("independent", "stratified", "multijitter", "orthogonal", "ldsampler")
+PASS_LANES = (None, 1 << 22)
+
+
 class Mitsuba:
     renderer = "mitsuba"
 
-    def __init__(self, sampler, assets):
-        self.sampler, self.assets = sampler, assets
-        self.label = f"Mitsuba {sampler}"
+    def __init__(self, sampler, assets, pass_lanes=None):
+        self.sampler, self.assets, self.pass_lanes = sampler, assets, pass_lanes
+        self.label = f"Mitsuba {sampler}" + (f", {pass_lanes / (1 << 20):g} M-lane passes" if pass_lanes else "")
         self.loaded = {}
 
     def version(self):
@@ -222,7 +229,8 @@ class Mitsuba:
         cap = max(1, MAX_LANES // scene.pixels)
         s, per_spp = self.warm_up(scene)[:2]
         if seconds is not None:
-            big = self.round_spp(min(cap, max(1, int(0.24 * seconds / per_spp))))
+            big = self.round_spp(min(cap, max(1, int(0.24 * seconds / per_spp) if self.pass_lanes is None
+                                              else self.pass_lanes // scene.pixels)))
             small = self.round_spp(min(cap, max(1, int(0.03 * seconds / per_spp))))
             sizes = [big, small]
         else:
@@ -378,14 +386,41 @@ def fmt_rgb(v, f=".4g"):
 # --------------------------------------------------------------------------------------
 # Equal time / equal spp
 
-def measure(scenes, progs, makers, budgets, repeats, spp, ref_seconds, refs_dir, out_dir, info):
-    """makers: the program that renders each renderer's reference."""
+def select_best(sc, refs, cross, assets, budget, info):
+    """Mitsuba's best program on this scene: each of the five samplers with each pass size
+    of PASS_LANES renders `budget` seconds once (seed 900); the lowest three-cornered RMSE
+    wins. The candidates' figures go to info["selection"]."""
+    tried = []
+    for sampler in SAMPLERS:
+        for lanes in PASS_LANES:
+            p = Mitsuba(sampler, assets, lanes)
+            p.warm_up(sc)
+            img, n, t = p.render(sc, 900, seconds=budget)
+            e = rmse_three_cornered(img, refs["mitsuba"], refs["facet"], cross)
+            tried.append((e, p, n / t * 1e-6))
+            print(f"  {sc.name} selection {budget:g} s {p.label:40s} {n / sc.pixels:7.1f} spp {n / t * 1e-6:6.2f} "
+                  f"Msamples/s  rmse 3c {e:.4g}", flush=True)
+            p.loaded.clear()
+    best = min(tried, key=lambda x: x[0])[1]
+    info.setdefault("selection", {})[sc.name] = {
+        "budget_s": budget, "best": best.label,
+        "tried": [{"program": p.label, "rmse_3c": e, "msamples_s": r} for e, p, r in tried]}
+    print(f"  {sc.name}: Mitsuba's best at {budget:g} s: {best.label}", flush=True)
+    best.label += " (best)"
+    return best
+
+
+def measure(scenes, progs, makers, budgets, repeats, spp, ref_seconds, refs_dir, out_dir, info, best_auto=False):
+    """makers: the program that renders each renderer's reference. best_auto: Mitsuba's best
+    program chosen per scene by select_best, at the longest budget."""
     rows = []
     for sc in scenes:
         refs = {}
         for r in ("facet", "mitsuba"):
             refs[r] = Ref(*reference(makers[r], sc, ref_seconds, refs_dir))
         cross = float(np.mean((refs["facet"].image - refs["mitsuba"].image) ** 2))
+        if best_auto and "mitsuba_best" in progs and not spp:
+            progs["mitsuba_best"] = select_best(sc, refs, cross, progs["mitsuba"].assets, max(budgets), info)
         for p in progs.values():
             if isinstance(p, Mitsuba):
                 p.warm_up(sc)
@@ -501,8 +536,10 @@ def main():
     ap.add_argument("--scale", type=float, default=1.0, help="image size relative to the scene's (default 1)")
     ap.add_argument("--reference-seconds", type=float, default=300,
                     help="time of each renderer's reference (two halves; default 300)")
-    ap.add_argument("--mitsuba-best", default="multijitter",
-                    help="Mitsuba's best sampler, run beside its default 'independent' (default multijitter)")
+    ap.add_argument("--mitsuba-best", default="auto",
+                    help="Mitsuba's best sampler, run beside its default 'independent': a sampler's name, or "
+                         "auto (default): per scene, the best of the five samplers x two pass sizes in one run "
+                         "of the longest budget; with --equal-spp or --per-sample, all five samplers run")
     ap.add_argument("--equal-spp", type=int, default=0, help="instead of time budgets: N samples per pixel")
     ap.add_argument("--per-sample", type=int, default=0, metavar="K",
                     help="error per sample without a reference: K images of independent seeds per program at "
@@ -533,10 +570,20 @@ def main():
     scenes = [Scene(n, a.scale) for n in a.scenes.split(",")]
     progs = {"facet": Facet(a.facet, None, work), "facet_independent": Facet(a.facet, "independent", work),
              "mitsuba": Mitsuba("independent", assets)}
-    if a.mitsuba_best and a.mitsuba_best != "independent":
+    best_auto = a.mitsuba_best == "auto"
+    if best_auto and (a.equal_spp or a.per_sample):
+        for s in SAMPLERS[1:]:
+            progs[f"mitsuba_{s}"] = Mitsuba(s, assets)
+    elif best_auto:
+        progs["mitsuba_best"] = Mitsuba("multijitter", assets)   # replaced per scene by select_best
+    elif a.mitsuba_best and a.mitsuba_best != "independent":
+        if a.mitsuba_best not in SAMPLERS:
+            raise SystemExit(f"equal_time.py: --mitsuba-best {a.mitsuba_best}: one of {', '.join(SAMPLERS)} or auto")
         progs["mitsuba_best"] = Mitsuba(a.mitsuba_best, assets)
     wanted = a.programs.split(",")
-    unknown = [k for k in wanted if k not in ("facet", "facet_independent", "mitsuba", "mitsuba_best")]
+    if best_auto and (a.equal_spp or a.per_sample):
+        wanted += [f"mitsuba_{s}" for s in SAMPLERS[1:]]
+    unknown = [k for k in wanted if k not in set(progs) | {"mitsuba_best"}]
     if unknown or "facet" not in wanted:
         raise SystemExit(f"equal_time.py: --programs {a.programs}: needs facet, and only facet, "
                          "facet_independent, mitsuba, mitsuba_best")
@@ -555,7 +602,8 @@ def main():
     budgets = [float(x) for x in a.budgets.split(",")]
     t0 = time.time()
     check(scenes, refs_progs, a.reference_seconds, refs_dir, a.out)   # the references, compared
-    measure(scenes, progs, refs_progs, budgets, a.repeats, a.equal_spp, a.reference_seconds, refs_dir, a.out, info)
+    measure(scenes, progs, refs_progs, budgets, a.repeats, a.equal_spp, a.reference_seconds, refs_dir, a.out, info,
+            best_auto)
     print(f"equal_time.py: {time.time() - t0:.0f} s")
     return 0
 
