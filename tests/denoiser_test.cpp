@@ -2,7 +2,9 @@
 // host/denoise/denoiser.hpp), on synthetic half-images with known truth: a constant image
 // comes out exactly; white noise on a flat albedo falls to the variance of the window's
 // mean; a step in albedo or in normal that the colour alone cannot tell from the noise
-// stays sharp with the feature guides and blurs without them. Suite Denoiser.
+// stays sharp with the feature guides and blurs without them; the offset-wise kernels give
+// what the filter written directly gives (kernels/test/denoise_direct_kernels.cl). Suite
+// Denoiser.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -130,6 +132,81 @@ TEST(Denoiser, DepthStepStaysSharp) {
     for (std::size_t i = 0; i < kPixels; ++i)
         if (i % kWidth < kWidth / 2) f.depth[i] = 2.0f;
     expect_step_kept(f, FC_DENOISE_GUIDE_DEPTH);
+}
+
+// 4 floats a pixel from 3 (and a fourth channel from `w`, else 0).
+std::vector<float> pack4(const std::vector<float>& rgb, const std::vector<float>* w) {
+    std::vector<float> v(rgb.size() / 3 * 4);
+    for (std::size_t i = 0; i < rgb.size() / 3; ++i) {
+        for (std::size_t c = 0; c < 3; ++c) v[4 * i + c] = rgb[3 * i + c];
+        v[4 * i + 3] = w ? (*w)[i] : 0.0f;
+    }
+    return v;
+}
+
+// The filter written directly (every pixel's window, every patch) on the variance-carrying
+// halves that denoise_variance makes: half k of `h`, 3 floats a pixel.
+std::vector<float> denoise_directly(std::uint32_t width, std::uint32_t height, const FilmHalves& h, const AovImages& f,
+                                    const DenoiseSettings& s, int k) {
+    ClContext& ctx = test::context();
+    const std::size_t pixels = std::size_t(width) * height;
+    FcDenoiseParams p{};
+    p.width = width, p.height = height, p.radius = s.radius, p.patch_radius = s.patch_radius;
+    p.variance_radius = s.variance_radius, p.guides = s.guides, p.k_color = s.k_color;
+    p.sigma_albedo = s.sigma_albedo, p.sigma_normal = s.sigma_normal, p.sigma_depth = s.sigma_depth;
+    const double n = double(h.samples[0] + h.samples[1]);
+    p.variance_scale_a = float(double(h.samples[1]) / n), p.variance_scale_b = float(double(h.samples[0]) / n);
+    auto in = [&](std::vector<float> v) {
+        return cl::Buffer(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, v.size() * sizeof(float), v.data());
+    };
+    cl::Buffer params(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof p, &p);
+    cl::Buffer a = in(pack4(h.rgb[0], nullptr)), b = in(pack4(h.rgb[1], nullptr));
+    cl::Buffer albedo_depth = in(pack4(f.albedo, &f.depth)), normal = in(pack4(f.normal, nullptr));
+    cl::Buffer ca(ctx.context(), CL_MEM_READ_WRITE, 4 * pixels * sizeof(float)),
+        cb(ctx.context(), CL_MEM_READ_WRITE, 4 * pixels * sizeof(float));
+    cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, 3 * pixels * sizeof(float));
+    cl::Program& program = test::program("kernels/test/denoise_direct_kernels.cl");
+    cl::Kernel variance(program, "denoise_variance"), direct(program, "denoise_direct");
+    variance.setArg(0, params), variance.setArg(1, a), variance.setArg(2, b), variance.setArg(3, ca);
+    variance.setArg(4, cb);
+    ctx.queue().enqueueNDRangeKernel(variance, cl::NullRange, cl::NDRange(pixels));
+    direct.setArg(0, params), direct.setArg(1, k == 0 ? ca : cb), direct.setArg(2, albedo_depth);
+    direct.setArg(3, normal), direct.setArg(4, out);
+    ctx.queue().enqueueNDRangeKernel(direct, cl::NullRange, cl::NDRange(pixels));
+    std::vector<float> result(3 * pixels);
+    ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(float), result.data());
+    return result;
+}
+
+// On an image smaller than some windows (19 x 13, radius 6), with noise, a varying
+// variance, textured features and patches of radius 1 and 2, both halves of the
+// offset-wise filter agree with the direct one to float rounding.
+TEST(Denoiser, OffsetWiseFilterEqualsTheDirectOne) {
+    constexpr std::uint32_t w = 19, h = 13;
+    constexpr std::size_t pixels = std::size_t(w) * h;
+    std::mt19937 rng(5);
+    std::normal_distribution<float> noise(0.0f, 1.0f);
+    FilmHalves halves;
+    halves.samples[0] = 5, halves.samples[1] = 3;
+    AovImages f = test::flat_features(pixels);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const float truth = (i % w) < 9 ? 0.3f : 0.8f, sigma = 0.05f + 0.3f * float(i / w) / float(h);
+        for (int k = 0; k < 2; ++k)
+            for (int c = 0; c < 3; ++c) halves.rgb[k].push_back(truth + sigma * noise(rng));
+        f.albedo[3 * i] = (i % w) < 9 ? 0.2f : 0.6f, f.normal[3 * i] = 0.3f * float(i % 3);
+        f.depth[i] = 1.0f + 0.5f * float((i / w) % 4);
+    }
+    for (std::uint32_t patch : {1u, 2u}) {
+        DenoiseSettings s;
+        s.patch_radius = patch;
+        s.sigma_depth = 0.3f;  // depth weights neither 0 nor 1
+        const DenoisedImage d = denoise(test::context(), w, h, halves, f, s);
+        for (int k = 0; k < 2; ++k) {
+            const std::vector<float> direct = denoise_directly(w, h, halves, f, s, k);
+            for (std::size_t i = 0; i < 3 * pixels; ++i)
+                ASSERT_NEAR(d.half[k][i], direct[i], 1e-5f) << "half " << k << ", value " << i << ", patch " << patch;
+        }
+    }
 }
 
 TEST(Denoiser, HalfWithoutSamplesIsRefused) {

@@ -20,15 +20,16 @@ typedef struct FcDenoiseParams {
     fc_uint patch_radius;    /* the colour distance's patch: (2 patch_radius + 1)^2 pixels */
     fc_uint guides;          /* FC_DENOISE_GUIDE_* bits */
     fc_uint variance_radius; /* the box that smooths the half's variance estimate */
-    float variance_scale;    /* the half's variance over E[(a - b)^2]: n_other / (n_a + n_b) */
+    float variance_scale_a;  /* half a's variance over E[(a - b)^2]: n_b / (n_a + n_b) */
     float k_color;           /* the colour distance's scale, in standard deviations (Rousselle et al. 2012's k) */
     float sigma_albedo;      /* albedo difference (Euclidean, RGB) at one standard deviation of the weight */
     float sigma_normal;      /* normal difference (Euclidean) at one standard deviation */
     float sigma_depth;       /* depth difference relative to the larger depth, at one standard deviation */
-    float pad;
+    float variance_scale_b;  /* half b's: n_a / (n_a + n_b) */
 } FcDenoiseParams;
 FC_STATIC_ASSERT(sizeof(FcDenoiseParams) == 48, "FcDenoiseParams layout");
-FC_STATIC_ASSERT(offsetof(FcDenoiseParams, variance_scale) == 24, "FcDenoiseParams layout");
+FC_STATIC_ASSERT(offsetof(FcDenoiseParams, variance_scale_a) == 24, "FcDenoiseParams layout");
 FC_STATIC_ASSERT(offsetof(FcDenoiseParams, sigma_depth) == 40, "FcDenoiseParams layout");
+FC_STATIC_ASSERT(offsetof(FcDenoiseParams, variance_scale_b) == 44, "FcDenoiseParams layout");
 
 #endif

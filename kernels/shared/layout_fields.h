@@ -68,9 +68,9 @@
     F(FcInstance, world_to_object) F(FcInstance, object_to_world) F(FcInstance, lo) F(FcInstance, root)                     \
     F(FcInstance, hi) F(FcInstance, tri_offset)                                                                             \
     F(FcDenoiseParams, width) F(FcDenoiseParams, height) F(FcDenoiseParams, radius) F(FcDenoiseParams, patch_radius)        \
-    F(FcDenoiseParams, guides) F(FcDenoiseParams, variance_radius) F(FcDenoiseParams, variance_scale)                       \
+    F(FcDenoiseParams, guides) F(FcDenoiseParams, variance_radius) F(FcDenoiseParams, variance_scale_a)                     \
     F(FcDenoiseParams, k_color) F(FcDenoiseParams, sigma_albedo) F(FcDenoiseParams, sigma_normal)                           \
-    F(FcDenoiseParams, sigma_depth)
+    F(FcDenoiseParams, sigma_depth) F(FcDenoiseParams, variance_scale_b)
 // clang-format on
 
 #endif
