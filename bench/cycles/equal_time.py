@@ -390,12 +390,7 @@ def main():
     bpy = bpy_module
     if not os.path.exists(a.facet):
         raise SystemExit(f"equal_time.py: {a.facet} not found (make build first)")
-    if a.quick:
-        a.budgets, a.repeats, a.reference_seconds, a.scale = "2,5", 1, 30, 0.25
-    work = os.path.join(a.out, "cycles")
-    assets, refs_dir = os.path.join(work, "assets"), os.path.join(work, "refs")
-    for d in (work, assets, refs_dir):
-        os.makedirs(d, exist_ok=True)
+    work, assets, refs_dir = met.prepare_work(a, "cycles")
     scenes = [Scene(n, a.scale) for n in a.scenes.split(",")]
     progs = {"facet": Facet(a.facet, None, work), "cycles": Cycles(a.threads, work, assets, a.facet)}
     info = {"blender": bpy.app.version_string, "threads": a.threads,

@@ -526,6 +526,18 @@ def write_outputs(out_dir, stem, lines, data):
 
 # --------------------------------------------------------------------------------------
 
+def prepare_work(a, name):
+    """--quick's short settings applied to the parsed options `a`, and the baseline's work,
+    asset and reference folders under a.out/name made (shared with bench/cycles)."""
+    if a.quick:
+        a.budgets, a.repeats, a.reference_seconds, a.scale = "2,5", 1, 30, 0.25
+    work = os.path.join(a.out, name)
+    assets, refs_dir = os.path.join(work, "assets"), os.path.join(work, "refs")
+    for d in (work, assets, refs_dir):
+        os.makedirs(d, exist_ok=True)
+    return work, assets, refs_dir
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -560,12 +572,7 @@ def main():
         return 0
     if not os.path.exists(a.facet):
         raise SystemExit(f"equal_time.py: {a.facet} not found (make build first)")
-    if a.quick:
-        a.budgets, a.repeats, a.reference_seconds, a.scale = "2,5", 1, 30, 0.25
-    work = os.path.join(a.out, "mitsuba")
-    assets, refs_dir = os.path.join(work, "assets"), os.path.join(work, "refs")
-    for d in (work, assets, refs_dir):
-        os.makedirs(d, exist_ok=True)
+    work, assets, refs_dir = prepare_work(a, "mitsuba")
     translate.write_assets(assets, a.facet)
     scenes = [Scene(n, a.scale) for n in a.scenes.split(",")]
     progs = {"facet": Facet(a.facet, None, work), "facet_independent": Facet(a.facet, "independent", work),
