@@ -70,6 +70,10 @@ nlohmann::json bench_bsdfs(ClContext& ctx, bool quick);
 // Equal-time error of BSDF sampling, environment sampling and MIS under stiff maps.
 nlohmann::json bench_ibl(ClContext& ctx, const std::string& assets, bool quick);
 
+// Denoising (issue 30): facet's denoiser and OIDN against a long reference, the half-buffer
+// estimate, and denoise time against render time (bench/denoise_bench.cpp).
+nlohmann::json bench_denoise(ClContext& ctx, bool quick);
+
 // Load time, device memory and samples/s with and without textures of users' assets.
 nlohmann::json bench_assets(ClContext& ctx, const std::string& assets, bool quick);
 

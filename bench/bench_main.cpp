@@ -4,7 +4,7 @@
 // Figures only; nothing here passes or fails. `make bench` runs it; see bench/README.md.
 //
 //   facet_bench [--device SEL] [--assets DIR] [--json FILE] [--markdown FILE] [--quick]
-//               [--only trace|build|bsdf|ibl|specialisation|quality|assets|instancing]
+//               [--only trace|build|bsdf|ibl|specialisation|quality|denoise|assets|instancing]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -387,14 +387,16 @@ int run(int argc, char** argv) {
     std::string scene_filter;
     app.add_option("--scene", scene_filter, "Trace section: only the scenes whose name contains this");
     std::string only;
-    app.add_option("--only", only,
-                   "Run one section: trace (with build), build (alone), bsdf, ibl, specialisation, quality, assets "
-                   "or instancing");
+    app.add_option(
+        "--only", only,
+        "Run one section: trace (with build), build (alone), bsdf, ibl, specialisation, quality, denoise, assets "
+        "or instancing");
     CLI11_PARSE(app, argc, argv);
     if (!only.empty() && only != "trace" && only != "build" && only != "bsdf" && only != "ibl" &&
-        only != "specialisation" && only != "quality" && only != "assets" && only != "instancing")
+        only != "specialisation" && only != "quality" && only != "denoise" && only != "assets" && only != "instancing")
         throw Error(fmt::format(
-            "--only {}: expected trace, build, bsdf, ibl, specialisation, quality, assets or instancing", only));
+            "--only {}: expected trace, build, bsdf, ibl, specialisation, quality, denoise, assets or instancing",
+            only));
     auto wanted = [&](const char* section) {
         return only.empty() || only == section || (only == "build" && std::string(section) == "trace");
     };
@@ -464,6 +466,7 @@ int run(int argc, char** argv) {
     if (wanted("ibl")) all["ibl"] = bench_ibl(ctx, assets, quick);
     if (wanted("specialisation")) all["specialisation"] = bench_specialisation(ctx, assets, quick);
     if (wanted("quality")) all["quality"] = bench_quality(ctx, quick);
+    if (wanted("denoise")) all["denoise"] = bench_denoise(ctx, quick);
     if (wanted("assets")) all["assets"] = bench_assets(ctx, assets, quick);
     if (wanted("instancing")) all["instancing"] = bench_instancing(ctx, assets, quick);
     if (!json_out.empty()) {

@@ -134,44 +134,31 @@ TEST(Denoiser, DepthStepStaysSharp) {
     expect_step_kept(f, FC_DENOISE_GUIDE_DEPTH);
 }
 
-// 4 floats a pixel from 3 (and a fourth channel from `w`, else 0).
-std::vector<float> pack4(const std::vector<float>& rgb, const std::vector<float>* w) {
-    std::vector<float> v(rgb.size() / 3 * 4);
-    for (std::size_t i = 0; i < rgb.size() / 3; ++i) {
-        for (std::size_t c = 0; c < 3; ++c) v[4 * i + c] = rgb[3 * i + c];
-        v[4 * i + 3] = w ? (*w)[i] : 0.0f;
-    }
-    return v;
-}
-
-// The filter written directly (every pixel's window, every patch) on the variance-carrying
-// halves that denoise_variance makes: half k of `h`, 3 floats a pixel.
+// The filter written directly (every pixel's window, every patch) on the planes that
+// denoise_prepare makes: half k of `h`, 3 floats a pixel.
 std::vector<float> denoise_directly(std::uint32_t width, std::uint32_t height, const FilmHalves& h, const AovImages& f,
-                                    const DenoiseSettings& s, int k) {
+                                    const DenoiseSettings& s, cl_uint k) {
     ClContext& ctx = test::context();
     const std::size_t pixels = std::size_t(width) * height;
-    FcDenoiseParams p{};
-    p.width = width, p.height = height, p.radius = s.radius, p.patch_radius = s.patch_radius;
-    p.variance_radius = s.variance_radius, p.guides = s.guides, p.k_color = s.k_color;
-    p.sigma_albedo = s.sigma_albedo, p.sigma_normal = s.sigma_normal, p.sigma_depth = s.sigma_depth;
-    const double n = double(h.samples[0] + h.samples[1]);
-    p.variance_scale_a = float(double(h.samples[1]) / n), p.variance_scale_b = float(double(h.samples[0]) / n);
-    auto in = [&](std::vector<float> v) {
-        return cl::Buffer(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, v.size() * sizeof(float), v.data());
+    FcDenoiseParams p = denoise_params(width, height, h.samples, s);
+    auto in = [&](const std::vector<float>& v) {
+        return cl::Buffer(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, v.size() * sizeof(float),
+                          const_cast<float*>(v.data()));
+    };
+    auto scratch = [&](std::size_t floats) {
+        return cl::Buffer(ctx.context(), CL_MEM_READ_WRITE, floats * sizeof(float));
     };
     cl::Buffer params(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof p, &p);
-    cl::Buffer a = in(pack4(h.rgb[0], nullptr)), b = in(pack4(h.rgb[1], nullptr));
-    cl::Buffer albedo_depth = in(pack4(f.albedo, &f.depth)), normal = in(pack4(f.normal, nullptr));
-    cl::Buffer ca(ctx.context(), CL_MEM_READ_WRITE, 4 * pixels * sizeof(float)),
-        cb(ctx.context(), CL_MEM_READ_WRITE, 4 * pixels * sizeof(float));
-    cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, 3 * pixels * sizeof(float));
+    cl::Buffer a = in(h.rgb[0]), b = in(h.rgb[1]), albedo = in(f.albedo), normal = in(f.normal), depth = in(f.depth);
+    cl::Buffer colour = scratch(8 * std::size_t(p.plane)), features = scratch(7 * std::size_t(p.plane));
+    cl::Buffer out = scratch(3 * pixels);
     cl::Program& program = test::program("kernels/test/denoise_direct_kernels.cl");
-    cl::Kernel variance(program, "denoise_variance"), direct(program, "denoise_direct");
-    variance.setArg(0, params), variance.setArg(1, a), variance.setArg(2, b), variance.setArg(3, ca);
-    variance.setArg(4, cb);
-    ctx.queue().enqueueNDRangeKernel(variance, cl::NullRange, cl::NDRange(pixels));
-    direct.setArg(0, params), direct.setArg(1, k == 0 ? ca : cb), direct.setArg(2, albedo_depth);
-    direct.setArg(3, normal), direct.setArg(4, out);
+    cl::Kernel prepare(program, "denoise_prepare"), direct(program, "denoise_direct");
+    prepare.setArg(0, params), prepare.setArg(1, a), prepare.setArg(2, b), prepare.setArg(3, albedo);
+    prepare.setArg(4, normal), prepare.setArg(5, depth), prepare.setArg(6, colour), prepare.setArg(7, features);
+    ctx.queue().enqueueNDRangeKernel(prepare, cl::NullRange, cl::NDRange(p.plane));
+    direct.setArg(0, params), direct.setArg(1, colour), direct.setArg(2, features), direct.setArg(3, k);
+    direct.setArg(4, out);
     ctx.queue().enqueueNDRangeKernel(direct, cl::NullRange, cl::NDRange(pixels));
     std::vector<float> result(3 * pixels);
     ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(float), result.data());
@@ -202,7 +189,7 @@ TEST(Denoiser, OffsetWiseFilterEqualsTheDirectOne) {
         s.sigma_depth = 0.3f;  // depth weights neither 0 nor 1
         const DenoisedImage d = denoise(test::context(), w, h, halves, f, s);
         for (int k = 0; k < 2; ++k) {
-            const std::vector<float> direct = denoise_directly(w, h, halves, f, s, k);
+            const std::vector<float> direct = denoise_directly(w, h, halves, f, s, cl_uint(k));
             for (std::size_t i = 0; i < 3 * pixels; ++i)
                 ASSERT_NEAR(d.half[k][i], direct[i], 1e-5f) << "half " << k << ", value " << i << ", patch " << patch;
         }

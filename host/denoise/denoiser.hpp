@@ -32,6 +32,12 @@ struct DenoisedImage {
     double seconds = 0.0;        // building the program, uploading, filtering, reading back
 };
 
+// The kernels' parameters for an image of `width` x `height` whose halves hold `samples`
+// samples each (the padded planes' layout included: kernels/shared/denoise_layout.h).
+// Throws facet::Error when the planes would not be addressable with 32-bit indices.
+FcDenoiseParams denoise_params(std::uint32_t width, std::uint32_t height, const std::uint64_t samples[2],
+                               const DenoiseSettings& settings);
+
 // Denoises the film's halves (`halves`, `width` x `height`) with the AOV `features`
 // (albedo, normal, depth: as render/aov.hpp). Throws facet::Error when a half holds no
 // sample, when the sizes disagree, or on an OpenCL failure.

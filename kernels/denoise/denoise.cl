@@ -6,105 +6,151 @@
  * correction of c_p so that a constant image comes out exactly (w_p = 1).
  *
  * Offset-wise (as Rousselle et al. 2012, sec. 5, compute NL-means): for each window offset
- * o the per-pixel colour term image e(i, clamp(i + o)) is computed once (denoise_terms),
- * and each pixel's patch distance is the box sum of that image around it
- * (denoise_accumulate), so the divisions cost O(window) a pixel instead of
- * O(window x patch). One launch of each kernel covers the 2 radius + 1 offsets of one window
- * row. Kernels:
- *   denoise_variance    each half's colour with the variance of its pixel mean
+ * o the colour term image e(u, u + o) is computed once (denoise_terms), and each pixel's
+ * patch distance is the box sum of that image around it (denoise_accumulate): the divisions
+ * cost O(window) a pixel instead of O(window x patch). One launch of each kernel covers the
+ * 2 radius + 1 offsets of one window row. A work item filters 8 neighbouring pixels of a row
+ * in float8 lanes, on planes (one a channel) padded with copies of the border
+ * (FcDenoiseParams.pad), so that no load needs a bounds check. Kernels:
+ *   denoise_prepare     the padded planes: each half's colour and the variance of its pixel
+ *                       mean, Var(a) = E[(a - b)^2] n_b / n (the mean over channels and over
+ *                       a box of (2 variance_radius + 1)^2 pixels), and the features
  *   denoise_terms       the colour terms of one window row's offsets
- *   denoise_accumulate  weights and weighted sums of one window row
- *   denoise_finish      the denoised halves
- * The variance comes from the two half-images: E[(a - b)^2] = Var(a) + Var(b), the mean over
- * channels and over a box of (2 variance_radius + 1)^2 pixels. One work item a pixel, top
- * row first. */
+ *   denoise_accumulate  the weights and weighted sums of one window row
+ *   denoise_finish      the denoised halves, 3 floats a pixel, top row first
+ * Planes: colour 8 (half a r, g, b, v, then half b), features 7 (albedo r, g, b, normal x,
+ * y, z, depth), terms 2 (2 radius + 1) (offset dx, half), all FcDenoiseParams.plane floats;
+ * sums 8 (half a r, g, b, weight, then half b) of width8 x height floats. */
 #ifndef FACET_DENOISE_DENOISE_CL
 #define FACET_DENOISE_DENOISE_CL
 
 #include "kernels/denoise/denoise_weights.cl"
 
-/* ca, cb: the halves a and b (rgb) with the variance of each one's pixel mean in w. */
-__kernel void denoise_variance(__constant const FcDenoiseParams* p, __global const float4* a, __global const float4* b,
-                               __global float4* ca, __global float4* cb) {
-    uint gid = get_global_id(0);
-    if (gid >= p->width * p->height) return;
-    int w = (int)p->width, h = (int)p->height, r = (int)p->variance_radius;
-    int x = (int)gid % w, y = (int)gid / w;
-    int x0 = max(x - r, 0), x1 = min(x + r, w - 1), y0 = max(y - r, 0), y1 = min(y + r, h - 1);
-    float sum = 0.0f;
-    for (int qy = y0; qy <= y1; ++qy)
-        for (int qx = x0; qx <= x1; ++qx) {
-            uint q = (uint)(qy * w + qx);
-            float3 d = a[q].xyz - b[q].xyz;
-            sum += dot(d, d);
-        }
-    float mean = sum / (3.0f * (float)((x1 - x0 + 1) * (y1 - y0 + 1)));
-    ca[gid] = (float4)(a[gid].xyz, p->variance_scale_a * mean);
-    cb[gid] = (float4)(b[gid].xyz, p->variance_scale_b * mean);
+/* The index of image pixel (x, y) in a padded plane. */
+inline uint denoise_padded(__constant const FcDenoiseParams* p, int x, int y) {
+    return (uint)((y + (int)p->pad) * (int)p->pitch + x + (int)p->pad);
 }
 
-/* terms[(dx + radius) pixels + i] = (e_a, e_b): the colour terms of both halves between
- * pixel i and clamp(i + (dx, dy)), for dx = -radius..radius. */
-__kernel void denoise_terms(__constant const FcDenoiseParams* p, __global const float4* ca, __global const float4* cb,
-                            __global float2* terms, int dy) {
-    uint gid = get_global_id(0), pixels = p->width * p->height;
-    if (gid >= pixels) return;
-    int w = (int)p->width, r = (int)p->radius, x = (int)gid % w, y = (int)gid / w;
+/* Half k's colour at padded index `at` and the 7 following. */
+inline DenoiseColor denoise_color_at(__constant const FcDenoiseParams* p, __global const float* colour, uint k,
+                                     uint at) {
+    __global const float* c = colour + 4 * k * p->plane + at;
+    DenoiseColor v = {vload8(0, c), vload8(0, c + p->plane), vload8(0, c + 2 * p->plane), vload8(0, c + 3 * p->plane)};
+    return v;
+}
+
+/* The features at padded index `at` and the 7 following. */
+inline DenoiseFeature denoise_feature_at(__constant const FcDenoiseParams* p, __global const float* features, uint at) {
+    __global const float* f = features + at;
+    uint n = p->plane;
+    DenoiseFeature v = {vload8(0, f),         vload8(0, f + n),     vload8(0, f + 2 * n), vload8(0, f + 3 * n),
+                        vload8(0, f + 4 * n), vload8(0, f + 5 * n), vload8(0, f + 6 * n)};
+    return v;
+}
+
+/* One padded pixel of the colour and feature planes, from the halves a and b and the
+ * features as the host holds them (3 floats a pixel, depth 1). */
+__kernel void denoise_prepare(__constant const FcDenoiseParams* p, __global const float* a, __global const float* b,
+                              __global const float* albedo, __global const float* normal, __global const float* depth,
+                              __global float* colour, __global float* features) {
+    uint gid = get_global_id(0), n = p->plane;
+    if (gid >= n) return;
+    int w = (int)p->width, h = (int)p->height;
+    int x = clamp((int)(gid % p->pitch) - (int)p->pad, 0, w - 1),
+        y = clamp((int)(gid / p->pitch) - (int)p->pad, 0, h - 1);
+    uint i = (uint)(y * w + x);
+    float v = denoise_pair_variance(a, b, w, h, (int)p->variance_radius, x, y);
+    for (uint c = 0; c < 3; ++c) {
+        colour[c * n + gid] = a[3 * i + c];
+        colour[(4 + c) * n + gid] = b[3 * i + c];
+        features[c * n + gid] = albedo[3 * i + c];
+        features[(3 + c) * n + gid] = normal[3 * i + c];
+    }
+    colour[3 * n + gid] = p->variance_scale_a * v;
+    colour[7 * n + gid] = p->variance_scale_b * v;
+    features[6 * n + gid] = depth[i];
+}
+
+/* The colour terms of both halves between the 8 pixels u (from (x, y)) and u + (dx, dy),
+ * dx = -radius..radius, over the image widened by the patch radius. */
+__kernel void denoise_terms(__constant const FcDenoiseParams* p, __global const float* colour, __global float* terms,
+                            int dy) {
+    uint gid = get_global_id(0);
+    int pr = (int)p->patch_radius, r = (int)p->radius, groups = ((int)p->width8 + 2 * pr + 7) / 8;
+    if (gid >= (uint)(groups * ((int)p->height + 2 * pr))) return;
+    int x = -pr + 8 * ((int)gid % groups), y = -pr + (int)gid / groups;
     float k2 = p->k_color * p->k_color;
-    float4 pa = ca[gid], pb = cb[gid];
-    uint row = (uint)clamp(y + dy, 0, (int)p->height - 1) * p->width;
+    uint at = denoise_padded(p, x, y);
+    DenoiseColor pa = denoise_color_at(p, colour, 0, at), pb = denoise_color_at(p, colour, 1, at);
     for (int dx = -r; dx <= r; ++dx) {
-        uint j = row + (uint)clamp(x + dx, 0, w - 1);
-        terms[(uint)(dx + r) * pixels + gid] =
-            (float2)(denoise_color_term(pa, ca[j], k2), denoise_color_term(pb, cb[j], k2));
+        uint bt = denoise_padded(p, x + dx, y + dy), plane = 2 * (uint)(dx + r) * p->plane;
+        vstore8(denoise_color_term(pa, denoise_color_at(p, colour, 0, bt), k2), 0, terms + plane + at);
+        vstore8(denoise_color_term(pb, denoise_color_at(p, colour, 1, bt), k2), 0, terms + plane + p->plane + at);
     }
 }
 
-/* Adds the neighbours of window row dy to each half's sums: (sum w (c_q - c_p), sum w).
+/* Adds the neighbours of window row dy to both halves' sums, for 8 pixels of a row.
  * terms: denoise_terms of the same dy (not read without the colour guide). */
-__kernel void denoise_accumulate(__constant const FcDenoiseParams* p, __global const float4* ca,
-                                 __global const float4* cb, __global const float4* albedo_depth,
-                                 __global const float4* normal, __global const float2* terms, __global float4* sum_a,
-                                 __global float4* sum_b, int dy) {
-    uint gid = get_global_id(0), pixels = p->width * p->height;
-    if (gid >= pixels) return;
-    int w = (int)p->width, h = (int)p->height, r = (int)p->radius, x = (int)gid % w, y = (int)gid / w;
+__kernel void denoise_accumulate(__constant const FcDenoiseParams* p, __global const float* colour,
+                                 __global const float* features, __global const float* terms, __global float* sums,
+                                 int dy) {
+    uint gid = get_global_id(0);
+    int w = (int)p->width, h = (int)p->height, r = (int)p->radius, pr = (int)p->patch_radius;
+    int groups = (int)p->width8 / 8;
+    if (gid >= (uint)(groups * h)) return;
+    int x = 8 * ((int)gid % groups), y = (int)gid / groups;
     if (y + dy < 0 || y + dy >= h) return;
-    int pr = (int)p->patch_radius;
     float inv_patch = 1.0f / (float)((2 * pr + 1) * (2 * pr + 1));
     bool color = (p->guides & FC_DENOISE_GUIDE_COLOR) != 0u;
-    float4 pa = ca[gid], pb = cb[gid], fa = albedo_depth[gid], fn = normal[gid];
-    float4 sa = sum_a[gid], sb = sum_b[gid];
-    uint row = (uint)((y + dy) * w);
-    for (int dx = max(-r, -x); dx <= min(r, w - 1 - x); ++dx) {
-        uint q = row + (uint)(x + dx);
-        float f = denoise_feature_distance(p, fa, fn, albedo_depth[q], normal[q]);
-        float2 d = (float2)(f);
+    uint at = denoise_padded(p, x, y);
+    DenoiseColor pa = denoise_color_at(p, colour, 0, at), pb = denoise_color_at(p, colour, 1, at);
+    DenoiseFeature fp = denoise_feature_at(p, features, at);
+    __global float* s = sums + (uint)(y * (int)p->width8 + x);
+    uint sn = p->width8 * p->height;
+    float8 ar = vload8(0, s), ag = vload8(0, s + sn), ab = vload8(0, s + 2 * sn), aw = vload8(0, s + 3 * sn);
+    float8 br = vload8(0, s + 4 * sn), bg = vload8(0, s + 5 * sn), bb = vload8(0, s + 6 * sn),
+           bw = vload8(0, s + 7 * sn);
+    int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7) + x;
+    for (int dx = -r; dx <= r; ++dx) {
+        uint q = denoise_padded(p, x + dx, y + dy);
+        float8 f = denoise_feature_distance(p, fp, denoise_feature_at(p, features, q)), da = f, db = f;
         if (color) {
             /* The patch distance: the box sum of the offset's term image around p */
-            __global const float2* t = terms + (uint)(dx + r) * pixels;
-            float2 s = (float2)(0.0f);
+            __global const float* ta = terms + 2 * (uint)(dx + r) * p->plane;
+            __global const float* tb = ta + p->plane;
+            float8 sa = (float8)(0.0f), sb = (float8)(0.0f);
             for (int sy = -pr; sy <= pr; ++sy)
-                for (int sx = -pr; sx <= pr; ++sx) s += t[denoise_clamped(p, x + sx, y + sy)];
-            d += fmax(s * inv_patch, (float2)(0.0f));
+                for (int sx = -pr; sx <= pr; ++sx) {
+                    uint t = denoise_padded(p, x + sx, y + sy);
+                    sa += vload8(0, ta + t);
+                    sb += vload8(0, tb + t);
+                }
+            da += fmax(sa * inv_patch, 0.0f);
+            db += fmax(sb * inv_patch, 0.0f);
         }
-        float wa = exp(-d.x), wb = exp(-d.y);
-        sa += wa * (float4)(ca[q].xyz - pa.xyz, 1.0f);
-        sb += wb * (float4)(cb[q].xyz - pb.xyz, 1.0f);
+        /* Neighbours outside the image weigh nothing */
+        int8 inside = (lane + dx >= 0) & (lane + dx < w);
+        float8 wa = select((float8)(0.0f), exp(-da), inside), wb = select((float8)(0.0f), exp(-db), inside);
+        DenoiseColor qa = denoise_color_at(p, colour, 0, q), qb = denoise_color_at(p, colour, 1, q);
+        ar += wa * (qa.r - pa.r), ag += wa * (qa.g - pa.g), ab += wa * (qa.b - pa.b), aw += wa;
+        br += wb * (qb.r - pb.r), bg += wb * (qb.g - pb.g), bb += wb * (qb.b - pb.b), bw += wb;
     }
-    sum_a[gid] = sa;
-    sum_b[gid] = sb;
+    vstore8(ar, 0, s), vstore8(ag, 0, s + sn), vstore8(ab, 0, s + 2 * sn), vstore8(aw, 0, s + 3 * sn);
+    vstore8(br, 0, s + 4 * sn), vstore8(bg, 0, s + 5 * sn), vstore8(bb, 0, s + 6 * sn), vstore8(bw, 0, s + 7 * sn);
 }
 
-/* The denoised halves, 3 floats a pixel: c_p + the weighted mean correction. */
-__kernel void denoise_finish(__constant const FcDenoiseParams* p, __global const float4* ca, __global const float4* cb,
-                             __global const float4* sum_a, __global const float4* sum_b, __global float* out_a,
-                             __global float* out_b) {
+/* One pixel of both denoised halves, 3 floats a pixel: c_p + the weighted mean correction. */
+__kernel void denoise_finish(__constant const FcDenoiseParams* p, __global const float* colour,
+                             __global const float* sums, __global float* out_a, __global float* out_b) {
     uint gid = get_global_id(0);
     if (gid >= p->width * p->height) return;
-    float4 sa = sum_a[gid], sb = sum_b[gid];
-    vstore3(ca[gid].xyz + sa.xyz / sa.w, gid, out_a);
-    vstore3(cb[gid].xyz + sb.xyz / sb.w, gid, out_b);
+    int x = (int)(gid % p->width), y = (int)(gid / p->width);
+    uint at = denoise_padded(p, x, y), sn = p->width8 * p->height, st = (uint)y * p->width8 + (uint)x;
+    float wa = sums[3 * sn + st], wb = sums[7 * sn + st];
+    for (uint c = 0; c < 3; ++c) {
+        out_a[3 * gid + c] = colour[c * p->plane + at] + sums[c * sn + st] / wa;
+        out_b[3 * gid + c] = colour[(4 + c) * p->plane + at] + sums[(4 + c) * sn + st] / wb;
+    }
 }
 
 #endif

@@ -1,54 +1,69 @@
-/* The weights of facet's denoiser (kernels/denoise/denoise.cl), pair by pair: a joint
- * non-local-means filter whose weight for neighbour q of pixel p is exp(-(f + c)), with
+/* The weights of facet's denoiser (kernels/denoise/denoise.cl), for 8 pixel pairs at once
+ * (float8 lanes; the direct test filter broadcasts one pair). A joint non-local-means
+ * filter: the weight of neighbour q for pixel p is exp(-(f + c)), with
  *   c  the colour term: the variance-normalised patch distance of Rousselle, Knaus and
  *      Zwicker, "Adaptive Rendering with Non-Local Means Filtering" (SIGGRAPH Asia 2012),
  *      eq. 6: max(0, the mean over the patch offsets s of e(p + s, q + s)), with
  *          e(i, j) = (du^2 - (v_i + min(v_i, v_j))) / (eps + k^2 (v_i + v_j)),
  *      du^2 the mean over channels of the squared colour difference and v the variance of
- *      the half's pixel mean. Pixels outside the image are clamped to its border, pixel
- *      and partner alike: the term at patch offset s is e(i, clamp(i + q - p)) with
- *      i = clamp(p + s), which makes the patch distance a box filter of the per-pixel term
- *      image of the offset q - p (the offset-wise formulation of denoise.cl)
+ *      the half's pixel mean; pixels outside the image read the nearest border pixel
  *   f  Gaussian terms on the albedo and normal differences (Euclidean, RGB and XYZ) and on
  *      the depth difference relative to the larger depth, as the feature terms of
  *      Rousselle et al. 2013 and Bitterli et al. 2016 ("Nonlinearly Weighted First-order
- *      Regression for Denoising Monte Carlo Renderings").
- * Colours are float4 (rgb, the variance of the half's pixel mean); features are two float4
- * a pixel: (albedo rgb, depth) and (normal xyz, 0). */
+ *      Regression for Denoising Monte Carlo Renderings"). */
 #ifndef FACET_DENOISE_DENOISE_WEIGHTS_CL
 #define FACET_DENOISE_DENOISE_WEIGHTS_CL
 
 #include "kernels/shared/denoise_layout.h"
 
-/* The pixel index of (x, y) clamped into the image. */
-inline uint denoise_clamped(__constant const FcDenoiseParams* p, int x, int y) {
-    uint cx = (uint)clamp(x, 0, (int)p->width - 1), cy = (uint)clamp(y, 0, (int)p->height - 1);
-    return cy * p->width + cx;
-}
+/* One half's colour and the variance of its pixel mean. */
+typedef struct DenoiseColor {
+    float8 r, g, b, v;
+} DenoiseColor;
+
+/* The guides: albedo, normal, depth. */
+typedef struct DenoiseFeature {
+    float8 ar, ag, ab, nx, ny, nz, z;
+} DenoiseFeature;
 
 /* The colour term e(i, j) of pixels i and j (k2: k^2). */
-inline float denoise_color_term(float4 ci, float4 cj, float k2) {
-    float3 d = ci.xyz - cj.xyz;
-    float vi = ci.w, vj = cj.w;
-    return (dot(d, d) * (1.0f / 3.0f) - (vi + fmin(vi, vj))) / (1e-10f + k2 * (vi + vj));
+inline float8 denoise_color_term(DenoiseColor i, DenoiseColor j, float k2) {
+    float8 dr = i.r - j.r, dg = i.g - j.g, db = i.b - j.b;
+    float8 du2 = (dr * dr + dg * dg + db * db) * (1.0f / 3.0f);
+    return (du2 - (i.v + fmin(i.v, j.v))) / (1e-10f + k2 * (i.v + j.v));
 }
 
-/* The feature terms' distance f between pixels i and j (albedo_depth and normal of each). */
-inline float denoise_feature_distance(__constant const FcDenoiseParams* p, float4 ai, float4 ni, float4 aj, float4 nj) {
-    float d = 0.0f;
+/* The feature terms' distance f between pixels i and j. */
+inline float8 denoise_feature_distance(__constant const FcDenoiseParams* p, DenoiseFeature i, DenoiseFeature j) {
+    float8 d = (float8)(0.0f);
     if (p->guides & FC_DENOISE_GUIDE_ALBEDO) {
-        float3 e = ai.xyz - aj.xyz;
-        d += dot(e, e) / (2.0f * p->sigma_albedo * p->sigma_albedo);
+        float8 er = i.ar - j.ar, eg = i.ag - j.ag, eb = i.ab - j.ab;
+        d += (er * er + eg * eg + eb * eb) / (2.0f * p->sigma_albedo * p->sigma_albedo);
     }
     if (p->guides & FC_DENOISE_GUIDE_NORMAL) {
-        float3 e = ni.xyz - nj.xyz;
-        d += dot(e, e) / (2.0f * p->sigma_normal * p->sigma_normal);
+        float8 ex = i.nx - j.nx, ey = i.ny - j.ny, ez = i.nz - j.nz;
+        d += (ex * ex + ey * ey + ez * ez) / (2.0f * p->sigma_normal * p->sigma_normal);
     }
     if (p->guides & FC_DENOISE_GUIDE_DEPTH) {
-        float s = p->sigma_depth * fmax(ai.w, aj.w);
-        if (s > 0.0f) d += (ai.w - aj.w) * (ai.w - aj.w) / (2.0f * s * s);
+        float8 s = p->sigma_depth * fmax(i.z, j.z), dz = i.z - j.z;
+        d += select((float8)(0.0f), dz * dz / (2.0f * s * s), s > 0.0f);
     }
     return d;
+}
+
+/* The mean over channels and over the box of (2 r + 1)^2 pixels around (x, y), clipped at
+ * the border, of (a - b)^2: the halves a and b, 3 floats a pixel, width w, height h. */
+inline float denoise_pair_variance(__global const float* a, __global const float* b, int w, int h, int r, int x,
+                                   int y) {
+    int x0 = max(x - r, 0), x1 = min(x + r, w - 1), y0 = max(y - r, 0), y1 = min(y + r, h - 1);
+    float sum = 0.0f;
+    for (int qy = y0; qy <= y1; ++qy)
+        for (int qx = x0; qx <= x1; ++qx)
+            for (int c = 0; c < 3; ++c) {
+                float d = a[3 * (qy * w + qx) + c] - b[3 * (qy * w + qx) + c];
+                sum += d * d;
+            }
+    return sum / (3.0f * (float)((x1 - x0 + 1) * (y1 - y0 + 1)));
 }
 
 #endif

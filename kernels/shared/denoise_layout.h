@@ -26,10 +26,18 @@ typedef struct FcDenoiseParams {
     float sigma_normal;      /* normal difference (Euclidean) at one standard deviation */
     float sigma_depth;       /* depth difference relative to the larger depth, at one standard deviation */
     float variance_scale_b;  /* half b's: n_a / (n_a + n_b) */
+    /* The planes the filter reads (kernels/denoise/denoise.cl): the image widened to
+     * width8 (a multiple of 8) and padded by `pad` pixels on every side with copies of its
+     * border, so that no load of the filter needs a bounds check */
+    fc_uint width8; /* the width rounded up to a multiple of 8 */
+    fc_uint pad;    /* radius + patch_radius + 8 */
+    fc_uint pitch;  /* width8 + 2 pad: floats from one padded row to the next */
+    fc_uint plane;  /* pitch (height + 2 pad): floats in one plane */
 } FcDenoiseParams;
-FC_STATIC_ASSERT(sizeof(FcDenoiseParams) == 48, "FcDenoiseParams layout");
+FC_STATIC_ASSERT(sizeof(FcDenoiseParams) == 64, "FcDenoiseParams layout");
 FC_STATIC_ASSERT(offsetof(FcDenoiseParams, variance_scale_a) == 24, "FcDenoiseParams layout");
 FC_STATIC_ASSERT(offsetof(FcDenoiseParams, sigma_depth) == 40, "FcDenoiseParams layout");
 FC_STATIC_ASSERT(offsetof(FcDenoiseParams, variance_scale_b) == 44, "FcDenoiseParams layout");
+FC_STATIC_ASSERT(offsetof(FcDenoiseParams, plane) == 60, "FcDenoiseParams layout");
 
 #endif

@@ -70,7 +70,8 @@
     F(FcDenoiseParams, width) F(FcDenoiseParams, height) F(FcDenoiseParams, radius) F(FcDenoiseParams, patch_radius)        \
     F(FcDenoiseParams, guides) F(FcDenoiseParams, variance_radius) F(FcDenoiseParams, variance_scale_a)                     \
     F(FcDenoiseParams, k_color) F(FcDenoiseParams, sigma_albedo) F(FcDenoiseParams, sigma_normal)                           \
-    F(FcDenoiseParams, sigma_depth) F(FcDenoiseParams, variance_scale_b)
+    F(FcDenoiseParams, sigma_depth) F(FcDenoiseParams, variance_scale_b) F(FcDenoiseParams, width8) F(FcDenoiseParams, pad) \
+    F(FcDenoiseParams, pitch) F(FcDenoiseParams, plane)
 // clang-format on
 
 #endif
