@@ -220,34 +220,8 @@ class Cycles:
 # --------------------------------------------------------------------------------------
 
 def check(scenes, progs, seconds, refs_dir, out_dir):
-    """The two renderers' references compared region by region."""
-    lines = [f"# facet vs Blender Cycles: agreement in mean (references of {seconds:g} s each, as two halves)", "",
-             "z: the difference over its standard error, estimated from each reference's two halves; "
-             "** marks |z| > 4.", ""]
-    results = {}
-    for sc in scenes:
-        f_a, f_b, f_spp = met.reference(progs["facet"], sc, seconds, refs_dir)
-        c_a, c_b, c_spp = met.reference(progs["cycles"], sc, seconds, refs_dir)
-        lines += [f"## {sc.name} ({sc.width}x{sc.height}; facet {f_spp:.0f} spp, Cycles {c_spp:.0f} spp)", "",
-                  "| region | facet (R, G, B) | Cycles (R, G, B) | Cycles / facet - 1 | max abs z |",
-                  "|---|---|---|---|---|"]
-        rows = []
-        for name, (x0, y0, x1, y1) in met.regions(sc):
-            def stats(a, b):
-                A, B = a[y0:y1, x0:x1].reshape(-1, 3), b[y0:y1, x0:x1].reshape(-1, 3)
-                return 0.5 * (A + B).mean(0), np.sqrt(np.sum((0.5 * (A - B)) ** 2, 0)) / len(A)
-            fm, fs = stats(f_a, f_b)
-            cm, cs = stats(c_a, c_b)
-            z = (cm - fm) / np.maximum(np.sqrt(fs ** 2 + cs ** 2), 1e-12)
-            rel = cm / np.maximum(fm, 1e-12) - 1
-            zmax = float(np.max(np.abs(z)))
-            rows.append({"region": name, "facet": fm.tolist(), "cycles": cm.tolist(), "rel": rel.tolist(),
-                         "z": z.tolist()})
-            lines.append(f"| {name} | {met.fmt_rgb(fm)} | {met.fmt_rgb(cm)} | {met.fmt_rgb(rel, '+.3f')} | "
-                         f"{zmax:.1f}{' **' if zmax > 4 else ''} |")
-        lines.append("")
-        results[sc.name] = rows
-    met.write_outputs(out_dir, "cycles_check", lines, results)
+    """The two renderers' references compared region by region (the Mitsuba bench's check)."""
+    met.check(scenes, progs, seconds, refs_dir, out_dir, other="cycles", name="Cycles", title="Blender Cycles")
 
 
 def refs_of(sc, makers, seconds, refs_dir):

@@ -347,20 +347,21 @@ def regions(scene):
     return out
 
 
-def check(scenes, progs, seconds, refs_dir, out_dir):
-    """Long renders of both renderers, compared region by region."""
-    lines = [f"# facet vs Mitsuba 3: agreement in mean (references of {seconds:g} s each, as two halves)", "",
+def check(scenes, progs, seconds, refs_dir, out_dir, other="mitsuba", name="Mitsuba", title="Mitsuba 3"):
+    """Long renders of facet and progs[other] (its `name` in tables), compared region by
+    region; written to out_dir/<other>_check.{md,json} (the Cycles bench calls it too)."""
+    lines = [f"# facet vs {title}: agreement in mean (references of {seconds:g} s each, as two halves)", "",
              "z: the difference over its standard error, estimated from each reference's two halves; "
              "** marks |z| > 4.", ""]
     results = {}
     for sc in scenes:
         f_a, f_b, f_spp = reference(progs["facet"], sc, seconds, refs_dir)
-        m_a, m_b, m_spp = reference(progs["mitsuba"], sc, seconds, refs_dir)
-        lines += [f"## {sc.name} ({sc.width}x{sc.height}; facet {f_spp:.0f} spp, Mitsuba {m_spp:.0f} spp)", "",
-                  "| region | facet (R, G, B) | Mitsuba (R, G, B) | Mitsuba / facet - 1 | max abs z |",
+        m_a, m_b, m_spp = reference(progs[other], sc, seconds, refs_dir)
+        lines += [f"## {sc.name} ({sc.width}x{sc.height}; facet {f_spp:.0f} spp, {name} {m_spp:.0f} spp)", "",
+                  f"| region | facet (R, G, B) | {name} (R, G, B) | {name} / facet - 1 | max abs z |",
                   "|---|---|---|---|---|"]
         rows = []
-        for name, (x0, y0, x1, y1) in regions(sc):
+        for region, (x0, y0, x1, y1) in regions(sc):
             def stats(a, b):
                 A, B = a[y0:y1, x0:x1].reshape(-1, 3), b[y0:y1, x0:x1].reshape(-1, 3)
                 n = len(A)
@@ -370,13 +371,13 @@ def check(scenes, progs, seconds, refs_dir, out_dir):
             z = (mm - fm) / np.maximum(np.sqrt(fs ** 2 + ms ** 2), 1e-12)
             rel = mm / np.maximum(fm, 1e-12) - 1
             zmax = float(np.max(np.abs(z)))
-            rows.append({"region": name, "facet": fm.tolist(), "mitsuba": mm.tolist(),
+            rows.append({"region": region, "facet": fm.tolist(), other: mm.tolist(),
                          "rel": rel.tolist(), "z": z.tolist()})
             flag = " **" if zmax > 4 else ""
-            lines.append(f"| {name} | {fmt_rgb(fm)} | {fmt_rgb(mm)} | {fmt_rgb(rel, '+.3f')} | {zmax:.1f}{flag} |")
+            lines.append(f"| {region} | {fmt_rgb(fm)} | {fmt_rgb(mm)} | {fmt_rgb(rel, '+.3f')} | {zmax:.1f}{flag} |")
         lines.append("")
         results[sc.name] = rows
-    write_outputs(out_dir, "mitsuba_check", lines, results)
+    write_outputs(out_dir, f"{other}_check", lines, results)
 
 
 def fmt_rgb(v, f=".4g"):
