@@ -112,6 +112,18 @@ glm::dvec3 random_unit(std::mt19937& rng) {
     }
 }
 
+// `n` spheres with centres uniform in [-10, 10]^3 and radii uniform in [0.05, 1.5], drawn
+// from `rng` (which the caller goes on using).
+std::vector<FcSphere> random_spheres(std::mt19937& rng, std::size_t n) {
+    std::uniform_real_distribution<float> u(-10.0f, 10.0f), ur(0.05f, 1.5f);
+    std::vector<FcSphere> spheres(n);
+    for (FcSphere& s : spheres) {
+        for (float& x : s.center) x = u(rng);
+        s.radius = ur(rng);
+    }
+    return spheres;
+}
+
 // Rays from distance `dist` (in radii) toward sphere (c, r), aimed at points of the disk
 // through its centre at impact parameters b / r in [b_lo, b_hi].
 Rays aimed_rays(glm::dvec3 c, double r, double dist, double b_lo, double b_hi, int n, unsigned seed) {
@@ -178,12 +190,8 @@ TEST(Sphere, RootsFarFromTheOrigin) {
 
 TEST(Sphere, TreeMatchesBruteForce) {
     std::mt19937 rng(5);
-    std::uniform_real_distribution<float> u(-10.0f, 10.0f), ur(0.05f, 1.5f);
-    std::vector<FcSphere> spheres(300);
-    for (FcSphere& s : spheres) {
-        for (float& x : s.center) x = u(rng);
-        s.radius = ur(rng);
-    }
+    std::uniform_real_distribution<float> u(-10.0f, 10.0f);
+    const std::vector<FcSphere> spheres = random_spheres(rng, 300);
     const SphereBvh tree = build_sphere_bvh(spheres);
     ASSERT_EQ(tree.spheres.size(), spheres.size());
     Rays rays;
@@ -235,12 +243,8 @@ TEST(Sphere, TreeMatchesBruteForce) {
 // planes with zero direction components (0 * inf = NaN in the slab test).
 TEST(Sphere, NodeBoxesMatchScalarBoxTest) {
     std::mt19937 rng(11);
-    std::uniform_real_distribution<float> u(-10.0f, 10.0f), ur(0.05f, 1.5f);
-    std::vector<FcSphere> spheres(64);
-    for (FcSphere& s : spheres) {
-        for (float& x : s.center) x = u(rng);
-        s.radius = ur(rng);
-    }
+    std::uniform_real_distribution<float> u(-10.0f, 10.0f);
+    const std::vector<FcSphere> spheres = random_spheres(rng, 64);
     std::vector<FcBinaryNode> nodes = build_sphere_bvh(spheres).nodes;
     nodes.push_back(build_sphere_bvh({}).nodes[0]);  // two empty children
     Rays rays;
