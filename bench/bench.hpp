@@ -77,6 +77,11 @@ nlohmann::json bench_denoise(ClContext& ctx, bool quick);
 // Load time, device memory and samples/s with and without textures of users' assets.
 nlohmann::json bench_assets(ClContext& ctx, const std::string& assets, bool quick);
 
+// Private and local memory, and on NVIDIA registers and spills, of every kernel of the
+// render, AOV and denoise programs as the demo scenes build them.
+struct BvhOptions;
+nlohmann::json bench_kernel_resources(ClContext& ctx, const BvhOptions& bvh_options);
+
 // Specialised against generic programs: build time cold and warm, binary size, speed.
 nlohmann::json bench_specialisation(ClContext& ctx, const std::string& assets, bool quick);
 

@@ -4,7 +4,7 @@
 // Figures only; nothing here passes or fails. `make bench` runs it; see bench/README.md.
 //
 //   facet_bench [--device SEL] [--assets DIR] [--json FILE] [--markdown FILE] [--quick]
-//               [--only trace|build|bsdf|ibl|specialisation|quality|denoise|assets|instancing]
+//               [--only trace|build|bsdf|ibl|specialisation|kernels|quality|denoise|assets|instancing]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -387,16 +387,15 @@ int run(int argc, char** argv) {
     std::string scene_filter;
     app.add_option("--scene", scene_filter, "Trace section: only the scenes whose name contains this");
     std::string only;
-    app.add_option(
-        "--only", only,
-        "Run one section: trace (with build), build (alone), bsdf, ibl, specialisation, quality, denoise, assets "
-        "or instancing");
+    // The sections, in the order they run; "build" is the trace section's BVH build alone.
+    const std::vector<std::string> sections = {"trace",   "build",   "bsdf",    "ibl",    "specialisation",
+                                               "kernels", "quality", "denoise", "assets", "instancing"};
+    std::string section_list;
+    for (const std::string& s : sections) section_list += (section_list.empty() ? "" : ", ") + s;
+    app.add_option("--only", only, "Run one section: " + section_list);
     CLI11_PARSE(app, argc, argv);
-    if (!only.empty() && only != "trace" && only != "build" && only != "bsdf" && only != "ibl" &&
-        only != "specialisation" && only != "quality" && only != "denoise" && only != "assets" && only != "instancing")
-        throw Error(fmt::format(
-            "--only {}: expected trace, build, bsdf, ibl, specialisation, quality, denoise, assets or instancing",
-            only));
+    if (!only.empty() && std::find(sections.begin(), sections.end(), only) == sections.end())
+        throw Error(fmt::format("--only {}: expected one of {}", only, section_list));
     auto wanted = [&](const char* section) {
         return only.empty() || only == section || (only == "build" && std::string(section) == "trace");
     };
@@ -465,6 +464,7 @@ int run(int argc, char** argv) {
     if (wanted("bsdf")) all["bsdfs"] = bench_bsdfs(ctx, quick);
     if (wanted("ibl")) all["ibl"] = bench_ibl(ctx, assets, quick);
     if (wanted("specialisation")) all["specialisation"] = bench_specialisation(ctx, assets, quick);
+    if (wanted("kernels")) all["kernels"] = bench_kernel_resources(ctx, bvh_options);
     if (wanted("quality")) all["quality"] = bench_quality(ctx, quick);
     if (wanted("denoise")) all["denoise"] = bench_denoise(ctx, quick);
     if (wanted("assets")) all["assets"] = bench_assets(ctx, assets, quick);

@@ -264,15 +264,20 @@ std::string default_build_options() {
     return "-cl-std=CL1.2";
 }
 
+std::string build_options_for(const DeviceDesc& dev, const std::string& extra_options) {
+    std::string options = default_build_options();
+    // Oclgrind 21.10 cannot run LLVM's bit-reversal intrinsic, which clang makes of the
+    // sampler's vector bit reversal (kernels/util/sampler.cl): it gets the table version.
+    if (dev.platform.find("Oclgrind") != std::string::npos) options += " -DFC_NO_BITREVERSE_INTRINSIC";
+    if (!extra_options.empty()) options += " " + extra_options;
+    return options;
+}
+
 ProgramBuild build_program(const ClContext& ctx, const std::string& entry, const std::vector<std::string>& prelude,
                            const std::string& extra_options) {
     ProgramBuild build;
     build.source = assemble_program(entry, prelude);
-    build.options = default_build_options();
-    // Oclgrind 21.10 cannot run LLVM's bit-reversal intrinsic, which clang makes of the
-    // sampler's vector bit reversal (kernels/util/sampler.cl): it gets the table version.
-    if (ctx.desc().platform.find("Oclgrind") != std::string::npos) build.options += " -DFC_NO_BITREVERSE_INTRINSIC";
-    if (!extra_options.empty()) build.options += " " + extra_options;
+    build.options = build_options_for(ctx.desc(), extra_options);
     auto start = std::chrono::steady_clock::now();
     const bool caching = use_program_cache(ctx.desc());
     if (caching) {

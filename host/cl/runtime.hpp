@@ -87,6 +87,10 @@ std::size_t program_binary_bytes(const cl::Program& program);
 // The options every facet program is built with (no fast or finite math).
 std::string default_build_options();
 
+// default_build_options, the device's workarounds and `extra_options`: what build_program
+// passes to the driver.
+std::string build_options_for(const DeviceDesc& dev, const std::string& extra_options = "");
+
 // Assembles `entry` after `prelude` and builds it for the context's device. On failure
 // throws facet::Error with the device, the options, the full build log and the path
 // where the assembled source was kept.

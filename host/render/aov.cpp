@@ -29,9 +29,7 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, const 
     const std::size_t pixels = std::size_t(width) * height;
     std::vector<cl_float4> sums(2 * pixels);
     check_device_memory(ctx.desc(), scene_buffer_needs(dev, sums.size() * sizeof(cl_float4)));
-    std::vector<std::string> prelude = feature_prelude(scene_features(scene));
-    if (bvh.stats.width != 4) prelude.push_back(bvh_prelude(bvh));  // 4-wide: the kernels' default
-    const ProgramBuild build = build_program(ctx, "kernels/aov/aov.cl", prelude);
+    const ProgramBuild build = build_program(ctx, "kernels/aov/aov.cl", scene_program_prelude(scene, bvh));
     cl_call("rendering the AOVs", [&] {
         const cl::Context& c = ctx.context();
         cl::Kernel kernel(build.program, "aov_pass");

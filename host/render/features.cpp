@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "host/bvh/bvh.hpp"
 #include "host/util/strings.hpp"
 #include "kernels/shared/feature_flags.h"
 
@@ -88,6 +89,12 @@ std::vector<std::string> feature_prelude(FeatureMask mask) {
     std::vector<std::string> lines;
     for (const Feature& f : kFeatures)
         lines.push_back(fmt::format("#define FC_HAS_{} {}", f.name, (mask >> f.bit) & 1u));
+    return lines;
+}
+
+std::vector<std::string> scene_program_prelude(const Scene& scene, const Bvh& bvh, bool generic) {
+    std::vector<std::string> lines = generic ? std::vector<std::string>{} : feature_prelude(scene_features(scene));
+    if (bvh.stats.width != 4) lines.push_back(bvh_prelude(bvh));
     return lines;
 }
 

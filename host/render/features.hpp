@@ -11,6 +11,7 @@
 namespace facet {
 
 using FeatureMask = std::uint32_t;
+struct Bvh;
 
 // Every feature of the closed list.
 FeatureMask all_features();
@@ -21,6 +22,11 @@ FeatureMask scene_features(const Scene& scene);
 
 // "#define FC_HAS_X 0|1" for every feature: the prelude of a specialised program.
 std::vector<std::string> feature_prelude(FeatureMask mask);
+
+// The prelude of a program that renders `scene` through `bvh`: feature_prelude of the
+// scene's features (nothing for the generic program, which keeps them all) and the BVH's
+// layout line unless it is the kernels' default 4-wide tree.
+std::vector<std::string> scene_program_prelude(const Scene& scene, const Bvh& bvh, bool generic = false);
 
 // "area_lights environment microfacet" (the features present), or "none".
 std::string describe_features(FeatureMask mask);

@@ -31,9 +31,8 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
     check_device_memory(ctx.desc(), scene_buffer_needs(dev, accum_bytes));
 
     stats_.features = generic ? all_features() : scene_features(scene);
-    std::vector<std::string> prelude = generic ? std::vector<std::string>{} : feature_prelude(stats_.features);
+    std::vector<std::string> prelude = scene_program_prelude(scene, bvh, generic);
     prelude.insert(prelude.end(), extra_prelude.begin(), extra_prelude.end());
-    if (bvh.stats.width != 4) prelude.push_back(bvh_prelude(bvh));  // 4-wide: the kernels' default, no line
     build_ = build_program(ctx, "kernels/integrator/path.cl", prelude);
     stats_.compile_seconds = build_.seconds;
     program_ = build_.program;
