@@ -69,8 +69,6 @@ std::vector<float> mean_of(const FilmHalves& h) {
     return m;
 }
 
-std::string cell(double rmse, double estimate) { return fmt::format("{:.4f} ({:.4f})", rmse, estimate); }
-
 // The median of three runs of `f`, in seconds.
 template <typename F>
 double median3(F f) {
@@ -84,26 +82,46 @@ double median3(F f) {
     return t[1];
 }
 
+// Pooled over seeds: the mean over the renders of each MSE (true, against the reference,
+// and estimated from the halves), reported as RMSE = its square root; and the spread of
+// the per-render ratio estimate / true for the denoisers' estimates.
+struct Pooled {
+    double mse = 0.0, est_mse = 0.0, lo = INFINITY, hi = 0.0, seconds = 0.0;
+    int n = 0;
+    void add(double rmse, double est_rmse, double s) {
+        mse += rmse * rmse, est_mse += est_rmse * est_rmse, seconds += s, ++n;
+        lo = std::min(lo, est_rmse / rmse), hi = std::max(hi, est_rmse / rmse);
+    }
+    double rmse() const { return std::sqrt(mse / n); }
+    double est() const { return std::sqrt(est_mse / n); }
+    std::string cell(bool spread) const {
+        return spread ? fmt::format("{:.4f} ({:.4f}; {:.2f}–{:.2f})", rmse(), est(), lo, hi)
+                      : fmt::format("{:.4f} ({:.4f})", rmse(), est());
+    }
+    nlohmann::json json() const {
+        return {{"rmse", rmse()}, {"est", est()}, {"ratio_lo", lo}, {"ratio_hi", hi}, {"seconds", seconds / n}};
+    }
+};
+
 }  // namespace
 
 nlohmann::json bench_denoise(ClContext& ctx, bool quick) {
     const std::uint32_t size = quick ? 64 : 128, ref_spp = quick ? 256 : 1024;
+    const std::vector<std::uint32_t> seeds =
+        quick ? std::vector<std::uint32_t>{0, 1} : std::vector<std::uint32_t>{0, 1, 2, 3};
     const std::string oidn = find_oidn("");
     nlohmann::json out = {{"rows", nlohmann::json::array()}, {"timing", nlohmann::json::array()}};
-    bench_print("\n### Denoising ({}², reference {} spp of another seed, its noise subtracted)\n\n", size, ref_spp);
+    bench_print("\n### Denoising ({}², reference {} spp of another seed, its noise subtracted; {} seeds pooled)\n\n",
+                size, ref_spp, seeds.size());
     if (oidn.empty()) bench_print("OIDN not found (pip install pyoidn, or $FACET_OIDN): its columns are skipped.\n\n");
     else bench_print("OIDN: {}\n\n", oidn);
-    bench_print("RMSE against the reference, in brackets the half-buffer estimate; times in seconds.\n\n");
+    bench_print(
+        "RMSE against the reference pooled over the seeds (the root of the mean MSE), in brackets the half-buffer "
+        "estimate pooled the same way and, for the denoisers, the range over the seeds of estimate / true; times "
+        "in seconds, means over the seeds (facet's: uploading, filtering and reading back; its program is built "
+        "once, as a render session builds it while rendering).\n\n");
     Markdown md({"scene", "sampler", "spp", "noisy", "facet", "OIDN", "facet s / render s", "OIDN s"});
-    // Warm-up: the denoiser's program built once
-    {
-        FilmHalves h;
-        h.samples[0] = h.samples[1] = 1;
-        h.rgb[0].assign(3 * 16, 0.5f), h.rgb[1] = h.rgb[0];
-        AovImages f;
-        f.albedo.assign(3 * 16, 0.5f), f.normal.assign(3 * 16, 0.0f), f.depth.assign(16, 1.0f);
-        denoise(ctx, 4, 4, h, f);
-    }
+    const Denoiser denoiser(ctx);
     struct Case {
         const char* scene;
         int sampler;
@@ -120,37 +138,46 @@ nlohmann::json bench_denoise(ClContext& ctx, bool quick) {
         Renderer ref_renderer(ctx, ref_scene, bvh);
         render_fixed(ref_renderer, ref_spp);
         const Reference ref = reference_of(ref_renderer.halves());
-        Renderer r(ctx, scene, bvh);
         for (std::uint32_t spp : {4u, 16u, 64u}) {
-            r.reset();
-            const double render_before = r.stats().render_seconds;
-            render_fixed(r, spp);
-            const double render_s = r.stats().render_seconds - render_before;
-            const FilmHalves h = r.halves();
-            const AovImages f = render_aovs(ctx, scene, bvh, std::min(spp, 64u));
-            const ErrorMetrics noisy_est = estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]);
-            const DenoisedImage d = denoise(ctx, size, size, h, f);
-            const double noisy = true_rmse(mean_of(h), ref), facet = true_rmse(d.rgb, ref);
-            const double facet_est = estimate_denoised_error(h, d).rmse;
-            nlohmann::json row = {{"scene", c.scene},       {"sampler", sampler},          {"spp", spp},
-                                  {"noisy_rmse", noisy},    {"noisy_est", noisy_est.rmse}, {"facet_rmse", facet},
-                                  {"facet_est", facet_est}, {"facet_s", d.seconds},        {"render_s", render_s}};
-            std::string oidn_cell = "skipped", oidn_s = "-";
-            if (!oidn.empty()) {
-                const DenoisedImage o = denoise_oidn(oidn, size, size, h, f);
-                const double rmse = true_rmse(o.rgb, ref), est = estimate_denoised_error(h, o).rmse;
-                oidn_cell = cell(rmse, est), oidn_s = fmt::format("{:.2f}", o.seconds);
-                row["oidn_rmse"] = rmse, row["oidn_est"] = est, row["oidn_s"] = o.seconds;
+            Pooled noisy, facet, oidn_p;
+            double render_s = 0.0;
+            for (std::uint32_t seed : seeds) {
+                Scene seeded = scene;
+                seeded.settings.seed = scene.settings.seed + seed;
+                Renderer r(ctx, seeded, bvh);
+                const double render_before = r.stats().render_seconds;
+                render_fixed(r, spp);
+                render_s += (r.stats().render_seconds - render_before) / double(seeds.size());
+                const FilmHalves h = r.halves();
+                const AovImages f = render_aovs(ctx, seeded, bvh, std::min(spp, 64u));
+                const ErrorMetrics noisy_est = estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]);
+                noisy.add(true_rmse(mean_of(h), ref), noisy_est.rmse, 0.0);
+                const DenoisedImage d = denoiser.run(size, size, h, f);
+                facet.add(true_rmse(d.rgb, ref), estimate_denoised_error(h, d).rmse, d.seconds);
+                if (!oidn.empty()) {
+                    const DenoisedImage o = denoise_oidn(oidn, size, size, h, f);
+                    oidn_p.add(true_rmse(o.rgb, ref), estimate_denoised_error(h, o).rmse, o.seconds);
+                }
             }
-            md.row({c.scene, sampler, std::to_string(spp), cell(noisy, noisy_est.rmse), cell(facet, facet_est),
-                    oidn_cell, fmt::format("{:.3f} / {:.2f}", d.seconds, render_s), oidn_s});
+            nlohmann::json row = {{"scene", c.scene},      {"sampler", sampler},    {"spp", spp},
+                                  {"seeds", seeds.size()}, {"noisy", noisy.json()}, {"facet", facet.json()},
+                                  {"render_s", render_s}};
+            if (!oidn.empty()) row["oidn"] = oidn_p.json();
+            md.row({c.scene, sampler, std::to_string(spp), noisy.cell(false), facet.cell(true),
+                    oidn.empty() ? "skipped" : oidn_p.cell(true),
+                    fmt::format("{:.3f} / {:.2f}", facet.seconds / facet.n, render_s),
+                    oidn.empty() ? "-" : fmt::format("{:.2f}", oidn_p.seconds / oidn_p.n)});
             out["rows"].push_back(row);
         }
     }
     bench_print("{}", md.str());
 
     // The denoiser's time against the render's at larger sizes (the Cornell box)
-    bench_print("\n### Denoising time against render time (cornell_box; median of 3 denoises)\n\n");
+    bench_print(
+        "\n### Denoising time against render time (cornell_box; median of 3 denoises)\n\n"
+        "denoise s: what a render with --denoise facet adds after its last sample (Denoiser::run: upload, filter, "
+        "read back); the program's build ({:.3f} s here) runs on its own thread while the render does.\n\n",
+        denoiser.build_seconds());
     Markdown tm(
         {"size", "denoise s", "render s 16 spp", "render s 64 spp", "denoise / render 16", "denoise / render 64"});
     for (std::uint32_t side : quick ? std::vector<std::uint32_t>{128} : std::vector<std::uint32_t>{256, 512}) {
@@ -168,7 +195,7 @@ nlohmann::json bench_denoise(ClContext& ctx, bool quick) {
         }
         const FilmHalves h = r.halves();
         const AovImages f = render_aovs(ctx, scene, bvh, 16);
-        const double s = median3([&] { denoise(ctx, side, side, h, f); });
+        const double s = median3([&] { denoiser.run(side, side, h, f); });
         tm.row({fmt::format("{}²", side), fmt::format("{:.3f}", s), fmt::format("{:.2f}", render[0]),
                 fmt::format("{:.2f}", render[1]), fmt::format("{:.1f} %", 100.0 * s / render[0]),
                 fmt::format("{:.1f} %", 100.0 * s / render[1])});

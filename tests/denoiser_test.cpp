@@ -183,17 +183,37 @@ TEST(Denoiser, OffsetWiseFilterEqualsTheDirectOne) {
         f.albedo[3 * i] = (i % w) < 9 ? 0.2f : 0.6f, f.normal[3 * i] = 0.3f * float(i % 3);
         f.depth[i] = 1.0f + 0.5f * float((i / w) % 4);
     }
+    const Denoiser denoiser(test::context());  // built once, run for both patch sizes
     for (std::uint32_t patch : {1u, 2u}) {
         DenoiseSettings s;
         s.patch_radius = patch;
         s.sigma_depth = 0.3f;  // depth weights neither 0 nor 1
-        const DenoisedImage d = denoise(test::context(), w, h, halves, f, s);
+        const DenoisedImage d = denoiser.run(w, h, halves, f, s);
         for (int k = 0; k < 2; ++k) {
             const std::vector<float> direct = denoise_directly(w, h, halves, f, s, cl_uint(k));
             for (std::size_t i = 0; i < 3 * pixels; ++i)
                 ASSERT_NEAR(d.half[k][i], direct[i], 1e-5f) << "half " << k << ", value " << i << ", patch " << patch;
         }
     }
+}
+
+// A Denoiser (one program build) run on one image and then on another of another size
+// gives the second exactly what a denoiser built for it alone gives.
+TEST(Denoiser, ReusedOnAnotherImageGivesTheOneShotResult) {
+    const Denoiser denoiser(test::context());
+    const FilmHalves first = noisy_halves([](std::uint32_t x) { return x < kWidth / 2 ? 0.2f : 0.7f; }, 0.1f, 4, 4);
+    denoiser.run(kWidth, kHeight, first, flat_features());
+    constexpr std::uint32_t w = 11, h = 7;
+    std::mt19937 rng(9);
+    std::normal_distribution<float> noise(0.0f, 0.2f);
+    FilmHalves second;
+    second.samples[0] = second.samples[1] = 2;
+    for (int k = 0; k < 2; ++k)
+        for (std::uint32_t i = 0; i < 3 * w * h; ++i) second.rgb[k].push_back(0.5f + noise(rng));
+    const AovImages f = test::flat_features(std::size_t(w) * h);
+    const DenoisedImage reused = denoiser.run(w, h, second, f), alone = denoise(test::context(), w, h, second, f);
+    EXPECT_EQ(reused.rgb, alone.rgb);
+    EXPECT_EQ(reused.half[1], alone.half[1]);
 }
 
 TEST(Denoiser, HalfWithoutSamplesIsRefused) {

@@ -42,9 +42,24 @@ FcDenoiseParams denoise_params(std::uint32_t width, std::uint32_t height, const 
     return p;
 }
 
+Denoiser::Denoiser(const ClContext& ctx) : ctx_(ctx) {
+    const ProgramBuild build = build_program(ctx_, "kernels/denoise/denoise.cl");
+    program_ = build.program;
+    build_seconds_ = build.seconds;
+}
+
 DenoisedImage denoise(ClContext& ctx, std::uint32_t width, std::uint32_t height, const FilmHalves& halves,
                       const AovImages& features, const DenoiseSettings& settings) {
     const auto start = std::chrono::steady_clock::now();
+    DenoisedImage out = Denoiser(ctx).run(width, height, halves, features, settings);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+DenoisedImage Denoiser::run(std::uint32_t width, std::uint32_t height, const FilmHalves& halves,
+                            const AovImages& features, const DenoiseSettings& settings) const {
+    const auto start = std::chrono::steady_clock::now();
+    ClContext& ctx = ctx_;
     const std::size_t pixels = std::size_t(width) * height;
     if (pixels == 0) throw Error("denoise: the image is empty");
     if (halves.samples[0] == 0 || halves.samples[1] == 0)
@@ -67,7 +82,6 @@ DenoisedImage denoise(ClContext& ctx, std::uint32_t width, std::uint32_t height,
     const cl::NDRange accumulate_items = items(std::size_t(p.width8 / 8) * height);
 
     DenoisedImage out;
-    const ProgramBuild build = build_program(ctx, "kernels/denoise/denoise.cl");
     cl_call("denoising", [&] {
         const cl::Context& c = ctx.context();
         cl::CommandQueue& queue = ctx.queue();
@@ -81,8 +95,8 @@ DenoisedImage denoise(ClContext& ctx, std::uint32_t width, std::uint32_t height,
         cl::Buffer out_a = scratch(3 * pixels), out_b = scratch(3 * pixels);
         queue.enqueueFillBuffer(sums, 0.0f, 0, 8 * sums_plane * sizeof(float));
 
-        cl::Kernel prepare(build.program, "denoise_prepare"), term(build.program, "denoise_terms");
-        cl::Kernel accumulate(build.program, "denoise_accumulate"), finish(build.program, "denoise_finish");
+        cl::Kernel prepare(program_, "denoise_prepare"), term(program_, "denoise_terms");
+        cl::Kernel accumulate(program_, "denoise_accumulate"), finish(program_, "denoise_finish");
         prepare.setArg(0, params), prepare.setArg(1, a), prepare.setArg(2, b), prepare.setArg(3, albedo);
         prepare.setArg(4, normal), prepare.setArg(5, depth), prepare.setArg(6, colour), prepare.setArg(7, guides);
         queue.enqueueNDRangeKernel(prepare, cl::NullRange, prepare_items);

@@ -29,7 +29,7 @@ struct DenoiseSettings {
 struct DenoisedImage {
     std::vector<float> rgb;      // the mean of the two denoised halves, 3 floats a pixel
     std::vector<float> half[2];  // each half denoised on its own
-    double seconds = 0.0;        // building the program, uploading, filtering, reading back
+    double seconds = 0.0;        // uploading, filtering, reading back (and the build: denoise())
 };
 
 // The kernels' parameters for an image of `width` x `height` whose halves hold `samples`
@@ -38,9 +38,28 @@ struct DenoisedImage {
 FcDenoiseParams denoise_params(std::uint32_t width, std::uint32_t height, const std::uint64_t samples[2],
                                const DenoiseSettings& settings);
 
-// Denoises the film's halves (`halves`, `width` x `height`) with the AOV `features`
-// (albedo, normal, depth: as render/aov.hpp). Throws facet::Error when a half holds no
-// sample, when the sizes disagree, or on an OpenCL failure.
+// facet's denoiser on one device, its program built once (at construction) and run on
+// any number of images: a render's snapshots and its final image pay the build once, and a
+// render session builds it on a thread of its own while the device renders.
+class Denoiser {
+public:
+    explicit Denoiser(const ClContext& ctx);
+
+    // Denoises the film's halves (`halves`, `width` x `height`) with the AOV `features`
+    // (albedo, normal, depth: as render/aov.hpp). Throws facet::Error when a half holds no
+    // sample, when the sizes disagree, or on an OpenCL failure. DenoisedImage::seconds
+    // counts uploading, filtering and reading back, not the program's build.
+    DenoisedImage run(std::uint32_t width, std::uint32_t height, const FilmHalves& halves, const AovImages& features,
+                      const DenoiseSettings& settings = {}) const;
+    double build_seconds() const { return build_seconds_; }
+
+private:
+    mutable ClContext ctx_;  // its queue runs the kernels
+    cl::Program program_;
+    double build_seconds_ = 0.0;
+};
+
+// Builds a Denoiser and runs it once (DenoisedImage::seconds then includes the build).
 DenoisedImage denoise(ClContext& ctx, std::uint32_t width, std::uint32_t height, const FilmHalves& halves,
                       const AovImages& features, const DenoiseSettings& settings = {});
 

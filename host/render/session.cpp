@@ -56,7 +56,10 @@ RenderSession::RenderSession(const Scene& scene, SessionOptions options) : scene
     // tracer uploads the scene.
     if ((options_.aovs || options_.denoise) && Ranks::world().leads())
         aovs_ = render_aovs(contexts.front(), scene, bvh_, *device_scene_, aov_spp());
-    if (options_.denoise && Ranks::world().leads()) denoise_device_ = contexts.front();
+    if (options_.denoise && Ranks::world().leads())
+        denoiser_ = std::async(std::launch::async, [ctx = contexts.front()] {
+                        return std::shared_ptr<const Denoiser>(std::make_shared<Denoiser>(ctx));
+                    }).share();
     group_ = std::make_unique<DeviceGroup>(std::move(contexts), scene, bvh_, *device_scene_, options_.generic,
                                            options_.samples_from, options_.warn);
     if (options_.resume)
@@ -87,10 +90,10 @@ FilmState RenderSession::film() const {
 }
 
 DenoisedImage RenderSession::denoised(const DenoiseSettings& settings) const {
-    if (!denoise_device_ || !aovs_) throw Error("denoise: the render session was not opened for denoising");
+    if (!denoiser_.valid() || !aovs_) throw Error("denoise: the render session was not opened for denoising");
     const FilmState f = film();
     const FilmHalves halves = film_halves(f.sums, std::size_t(f.width) * std::size_t(f.height), f.samples);
-    return denoise(*denoise_device_, std::uint32_t(f.width), std::uint32_t(f.height), halves, *aovs_, settings);
+    return denoiser_.get()->run(std::uint32_t(f.width), std::uint32_t(f.height), halves, *aovs_, settings);
 }
 
 // PoCL and other drivers compile a kernel for its launch geometry at its first launch:

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -114,7 +115,9 @@ private:
     Bvh bvh_;
     std::unique_ptr<DeviceScene> device_scene_;  // what every device and the AOV pass read
     std::optional<AovImages> aovs_;
-    mutable std::optional<ClContext> denoise_device_;  // the first device, for denoised()
+    // facet's denoiser on the first device, its program built on a thread of its own while
+    // the devices render (denoised() waits for it; a failed build is thrown there).
+    std::shared_future<std::shared_ptr<const Denoiser>> denoiser_;
     std::unique_ptr<DeviceGroup> group_;
     double warmup_s_ = 0.0;
     bool tiles_started_ = false;

@@ -35,7 +35,8 @@ inline uint denoise_padded(__constant const FcDenoiseParams* p, int x, int y) {
 inline DenoiseColor denoise_color_at(__constant const FcDenoiseParams* p, __global const float* colour, uint k,
                                      uint at) {
     __global const float* c = colour + 4 * k * p->plane + at;
-    DenoiseColor v = {vload8(0, c), vload8(0, c + p->plane), vload8(0, c + 2 * p->plane), vload8(0, c + 3 * p->plane)};
+    DenoiseColor v = {denoise_load8(c), denoise_load8(c + p->plane), denoise_load8(c + 2 * p->plane),
+                      denoise_load8(c + 3 * p->plane)};
     return v;
 }
 
@@ -43,8 +44,9 @@ inline DenoiseColor denoise_color_at(__constant const FcDenoiseParams* p, __glob
 inline DenoiseFeature denoise_feature_at(__constant const FcDenoiseParams* p, __global const float* features, uint at) {
     __global const float* f = features + at;
     uint n = p->plane;
-    DenoiseFeature v = {vload8(0, f),         vload8(0, f + n),     vload8(0, f + 2 * n), vload8(0, f + 3 * n),
-                        vload8(0, f + 4 * n), vload8(0, f + 5 * n), vload8(0, f + 6 * n)};
+    DenoiseFeature v = {denoise_load8(f),         denoise_load8(f + n),     denoise_load8(f + 2 * n),
+                        denoise_load8(f + 3 * n), denoise_load8(f + 4 * n), denoise_load8(f + 5 * n),
+                        denoise_load8(f + 6 * n)};
     return v;
 }
 
@@ -84,8 +86,8 @@ __kernel void denoise_terms(__constant const FcDenoiseParams* p, __global const 
     DenoiseColor pa = denoise_color_at(p, colour, 0, at), pb = denoise_color_at(p, colour, 1, at);
     for (int dx = -r; dx <= r; ++dx) {
         uint bt = denoise_padded(p, x + dx, y + dy), plane = 2 * (uint)(dx + r) * p->plane;
-        vstore8(denoise_color_term(pa, denoise_color_at(p, colour, 0, bt), k2), 0, terms + plane + at);
-        vstore8(denoise_color_term(pb, denoise_color_at(p, colour, 1, bt), k2), 0, terms + plane + p->plane + at);
+        denoise_store8(denoise_color_term(pa, denoise_color_at(p, colour, 0, bt), k2), terms + plane + at);
+        denoise_store8(denoise_color_term(pb, denoise_color_at(p, colour, 1, bt), k2), terms + plane + p->plane + at);
     }
 }
 
@@ -107,9 +109,10 @@ __kernel void denoise_accumulate(__constant const FcDenoiseParams* p, __global c
     DenoiseFeature fp = denoise_feature_at(p, features, at);
     __global float* s = sums + (uint)(y * (int)p->width8 + x);
     uint sn = p->width8 * p->height;
-    float8 ar = vload8(0, s), ag = vload8(0, s + sn), ab = vload8(0, s + 2 * sn), aw = vload8(0, s + 3 * sn);
-    float8 br = vload8(0, s + 4 * sn), bg = vload8(0, s + 5 * sn), bb = vload8(0, s + 6 * sn),
-           bw = vload8(0, s + 7 * sn);
+    float8 ar = denoise_load8(s), ag = denoise_load8(s + sn), ab = denoise_load8(s + 2 * sn),
+           aw = denoise_load8(s + 3 * sn);
+    float8 br = denoise_load8(s + 4 * sn), bg = denoise_load8(s + 5 * sn), bb = denoise_load8(s + 6 * sn),
+           bw = denoise_load8(s + 7 * sn);
     int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7) + x;
     for (int dx = -r; dx <= r; ++dx) {
         uint q = denoise_padded(p, x + dx, y + dy);
@@ -122,8 +125,8 @@ __kernel void denoise_accumulate(__constant const FcDenoiseParams* p, __global c
             for (int sy = -pr; sy <= pr; ++sy)
                 for (int sx = -pr; sx <= pr; ++sx) {
                     uint t = denoise_padded(p, x + sx, y + sy);
-                    sa += vload8(0, ta + t);
-                    sb += vload8(0, tb + t);
+                    sa += denoise_load8(ta + t);
+                    sb += denoise_load8(tb + t);
                 }
             da += fmax(sa * inv_patch, 0.0f);
             db += fmax(sb * inv_patch, 0.0f);
@@ -135,8 +138,9 @@ __kernel void denoise_accumulate(__constant const FcDenoiseParams* p, __global c
         ar += wa * (qa.r - pa.r), ag += wa * (qa.g - pa.g), ab += wa * (qa.b - pa.b), aw += wa;
         br += wb * (qb.r - pb.r), bg += wb * (qb.g - pb.g), bb += wb * (qb.b - pb.b), bw += wb;
     }
-    vstore8(ar, 0, s), vstore8(ag, 0, s + sn), vstore8(ab, 0, s + 2 * sn), vstore8(aw, 0, s + 3 * sn);
-    vstore8(br, 0, s + 4 * sn), vstore8(bg, 0, s + 5 * sn), vstore8(bb, 0, s + 6 * sn), vstore8(bw, 0, s + 7 * sn);
+    denoise_store8(ar, s), denoise_store8(ag, s + sn), denoise_store8(ab, s + 2 * sn), denoise_store8(aw, s + 3 * sn);
+    denoise_store8(br, s + 4 * sn), denoise_store8(bg, s + 5 * sn), denoise_store8(bb, s + 6 * sn),
+        denoise_store8(bw, s + 7 * sn);
 }
 
 /* One pixel of both denoised halves, 3 floats a pixel: c_p + the weighted mean correction. */

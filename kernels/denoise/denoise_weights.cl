@@ -16,6 +16,19 @@
 
 #include "kernels/shared/denoise_layout.h"
 
+/* 8 floats from any 4-byte-aligned address, and back. PoCL 3.1's vload8 became four
+ * 64-bit loads, two shuffles and an insert (objdump of denoise_accumulate: 288 vmovsd, 72
+ * vmovlhps, 36 vinsertf128); a float8 type aligned to 4 bytes (a clang extension) is read
+ * and written as one unaligned vector access. Other compilers take vload8 / vstore8. */
+#if defined(__clang__)
+typedef float8 denoise_float8_u __attribute__((aligned(4)));
+inline float8 denoise_load8(__global const float* p) { return *(__global const denoise_float8_u*)p; }
+inline void denoise_store8(float8 v, __global float* p) { *(__global denoise_float8_u*)p = v; }
+#else
+inline float8 denoise_load8(__global const float* p) { return vload8(0, p); }
+inline void denoise_store8(float8 v, __global float* p) { vstore8(v, 0, p); }
+#endif
+
 /* One half's colour and the variance of its pixel mean. */
 typedef struct DenoiseColor {
     float8 r, g, b, v;
