@@ -89,6 +89,8 @@ struct Pooled {
     double mse = 0.0, est_mse = 0.0, lo = INFINITY, hi = 0.0, seconds = 0.0;
     int n = 0;
     void add(double rmse, double est_rmse, double s) {
+        // A render whose estimate is not positive (NaN: docs/denoising.md) counts as 0
+        if (!(est_rmse >= 0.0)) est_rmse = 0.0;
         mse += rmse * rmse, est_mse += est_rmse * est_rmse, seconds += s, ++n;
         lo = std::min(lo, est_rmse / rmse), hi = std::max(hi, est_rmse / rmse);
     }

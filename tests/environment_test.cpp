@@ -5,8 +5,10 @@
 // environment_chi2_test.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <random>
 
 #include "tests/environment_test_util.hpp"
 #include "host/error.hpp"
@@ -246,6 +248,50 @@ TEST(Environment, RotationAndConvention) {
     std::vector<float> err(rand_dirs.size());
     ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, err.size() * sizeof(float), err.data());
     for (std::size_t i = 0; i < err.size(); ++i) ASSERT_LT(err[i], 2e-5f) << "direction " << i;
+}
+
+// Sampling searches a cdf from its guide table (Chen & Asau 1974): the interval is the
+// one bisecting the whole cdf gives, for every u tried (uniform, every guide boundary k / g
+// and the floats next to it, and the cdf's own values), on a map with a sharp lobe, black
+// texels and rows; and the kernels' env_guide_size (count leading zeros) is the host's.
+TEST(Environment, GuidedSearchFindsTheBisectedInterval) {
+    ClContext& ctx = test::context();
+    constexpr int w = 200, h = 100;  // not powers of two
+    std::vector<float> rgb = smooth_map(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (y < 10 || (x > 50 && x < 90))  // black rows and columns: zero-width intervals
+                for (int c = 0; c < 3; ++c) rgb[3 * (std::size_t(y) * w + x) + c] = 0.0f;
+    std::vector<std::string> warnings;
+    const EnvironmentMap e = environment_from_pixels(w, h, rgb, glm::vec3(1.0f), glm::mat3(1.0f), "guided", warnings);
+    std::vector<float> us;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    for (int i = 0; i < 20000; ++i) us.push_back(std::min(uniform(rng), 0x1.fffffep-1f));
+    for (std::uint32_t g : {env_guide_size(w), env_guide_size(h)})
+        for (std::uint32_t k = 0; k < g; ++k) {
+            const float t = float(k) / float(g);
+            us.push_back(t);
+            if (k > 0) us.push_back(std::nextafter(t, 0.0f));
+            us.push_back(std::nextafter(t, 1.0f));
+        }
+    for (int i = 0; i <= h; ++i) us.push_back(std::min(e.distribution[std::size_t(i)], 0x1.fffffep-1f));
+    const DeviceEnv d(e);
+    cl::Buffer in(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, us.size() * sizeof(float), us.data());
+    cl::Buffer found(ctx.context(), CL_MEM_WRITE_ONLY, us.size() * sizeof(cl_int4));
+    cl::Buffer sizes(ctx.context(), CL_MEM_WRITE_ONLY, us.size() * sizeof(cl_uint));
+    cl::Kernel k(test::program(kProgram), "env_guided_search");
+    k.setArg(0, d.params), k.setArg(1, d.dist), k.setArg(2, in), k.setArg(3, found), k.setArg(4, sizes);
+    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(us.size()));
+    std::vector<cl_int4> f(us.size());
+    std::vector<cl_uint> g(us.size());
+    ctx.queue().enqueueReadBuffer(found, CL_TRUE, 0, f.size() * sizeof(cl_int4), f.data());
+    ctx.queue().enqueueReadBuffer(sizes, CL_TRUE, 0, g.size() * sizeof(cl_uint), g.data());
+    for (std::size_t i = 0; i < us.size(); ++i) {
+        ASSERT_EQ(f[i].s[0], f[i].s[1]) << "row, u = " << us[i];
+        ASSERT_EQ(f[i].s[2], f[i].s[3]) << "column, u = " << us[i];
+        ASSERT_EQ(g[i], env_guide_size(std::uint32_t(i + 1))) << "n = " << i + 1;
+    }
 }
 
 // The bilinear lookup (opt-in, docs/environment.md): a texel's value at

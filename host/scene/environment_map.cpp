@@ -3,6 +3,7 @@
 #include "host/scene/environment_map.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <new>
 
@@ -139,6 +140,27 @@ std::vector<double> texel_luminance(const EnvironmentMap& env) {
     return lum;
 }
 
+// Appends to `dist` the guide table of the cdf of `n` intervals at `cdf_at`: entry k of
+// env_guide_size(n) + 1 the interval holding k / g (the largest i < n with cdf[i] <= k / g,
+// as env_find_interval finds it), stored as the bits of a uint.
+void append_guide(std::vector<float>& dist, std::size_t cdf_at, int n) {
+    const std::uint32_t g = env_guide_size(std::uint32_t(n));
+    std::vector<float> guide(g + 1);
+    for (std::uint32_t k = 0; k <= g; ++k) {
+        const float t = float(k) / float(g);  // exact: g is a power of two
+        const float* cdf = dist.data() + cdf_at;
+        const auto i = std::uint32_t(std::upper_bound(cdf, cdf + n, t) - cdf - 1);
+        guide[k] = std::bit_cast<float>(i);
+    }
+    dist.insert(dist.end(), guide.begin(), guide.end());
+}
+
+// The guide tables of the marginal cdf and of each row's conditional cdf, in that order.
+void append_guides(std::vector<float>& dist, int w, int h) {
+    append_guide(dist, 0, h);
+    for (int y = 0; y < h; ++y) append_guide(dist, std::size_t(h + 1) + std::size_t(y) * (w + 1), w);
+}
+
 // Fills `dist` (the layout of EnvironmentMap::distribution) with the cdfs of texel weights
 // max(luminance - subtract, 0) * sin(theta), the luminance as texel_luminance gives it,
 // and returns their sum; `mean` gets the integral of the luminance over the sphere.
@@ -178,6 +200,7 @@ double build_cdfs(const EnvironmentMap& env, double subtract, std::vector<float>
         acc += row_sum[y];
     }
     marginal[h] = 1.0f;
+    append_guides(dist, w, h);
     return total;
 }
 

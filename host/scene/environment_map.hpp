@@ -12,6 +12,11 @@
 //                                          cdf[0] = 0, cdf[H] = 1
 //      [H + 1 + y (W + 1), ... + W]        the conditional cdf of row y: W + 1 entries,
 //                                          0 ... 1 (uniform for a row with no energy)
+//      then the guide tables (Chen & Asau 1974) of the marginal cdf and of each row's
+//      conditional cdf in turn, g + 1 entries each for a cdf of n intervals, g =
+//      env_guide_size(n) (kernels/shared/environment_layout.h): entry k is the interval
+//      holding k / g, the bits of a uint; env_sample bisects only between entries k and
+//      k + 1 (kernels/lights/environment.cl, env_find_interval)
 //    Texel (x, y) weighs f = luminance(texel * scale) * sin(theta of row y's centre) (for
 //    the bilinear lookup, the luminance is its mean over the texel's square); a
 //    texel's probability is the product of its two cdf steps. params.total is the

@@ -148,16 +148,25 @@ inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global con
     return env_lookup(env, texels, uv, t) * scale;
 }
 
-/* The interval i of cdf[0..n] (cdf[0] = 0, cdf[n] = 1, non-decreasing) with
- * cdf[i] <= u < cdf[i + 1]: never an interval of zero width. */
-inline int env_find_interval(__global const float* cdf, int n, float u) {
-    int lo = 0, hi = n;
+/* The interval i of a non-decreasing cdf with cdf[i] <= u < cdf[i + 1] (never one of zero
+ * width), by bisection of [lo, hi): the caller knows cdf[lo] <= u and that i < hi. */
+inline int env_bisect(__global const float* cdf, int lo, int hi, float u) {
     while (hi - lo > 1) {
         int mid = (lo + hi) / 2;
         if (cdf[mid] <= u) lo = mid;
         else hi = mid;
     }
     return lo;
+}
+
+/* The interval of cdf[0..n] (cdf[0] = 0, cdf[n] = 1) holding u, from the cdf's guide
+ * table guide[0..g] (g = env_guide_size(n); entry k the interval holding k / g, as uint
+ * bits; Chen & Asau 1974): floor(u g) / g <= u < (floor(u g) + 1) / g, so the answer lies
+ * between entries k and k + 1, a step or two of bisection instead of log2(n). The same
+ * interval as bisecting all of [0, n). */
+inline int env_find_interval(__global const float* cdf, __global const float* guide, uint g, float u) {
+    uint k = min((uint)(u * (float)g), g - 1u);
+    return env_bisect(cdf, (int)as_uint(guide[k]), (int)as_uint(guide[k + 1u]) + 1, u);
 }
 
 /* u's position inside interval i of cdf, in [0, 1). */
@@ -189,10 +198,12 @@ inline float3 env_sample(__constant const FcEnvironment* env, __global const flo
     if (!(env->total > 0.0f)) return (float3)(0.0f);
     /* row from the marginal cdf, column from the row's conditional cdf */
     int w = env->width, h = env->height;
-    int y = env_find_interval(dist, h, u.y);
+    uint gm = env_guide_size((uint)h), gc = env_guide_size((uint)w);
+    __global const float* guides = dist + (h + 1) + h * (w + 1);
+    int y = env_find_interval(dist, guides, gm, u.y);
     float dv = env_remap(dist, y, u.y);
     __global const float* cond = dist + (h + 1) + y * (w + 1);
-    int x = env_find_interval(cond, w, u.x);
+    int x = env_find_interval(cond, guides + (gm + 1u) + (uint)y * (gc + 1u), gc, u.x);
     float du = env_remap(cond, x, u.x);
     float2 uv = (float2)(((float)x + du) / (float)w, ((float)y + dv) / (float)h);
     *dir = normalize_or(env_map_to_dir(env, env_uv_to_map_dir(uv)), (float3)(0.0f, 1.0f, 0.0f));

@@ -14,7 +14,8 @@
  * Radiance = lookup * scale.
  * Sampling uses a piecewise-constant 2D distribution over luminance x sin(theta):
  * a marginal cdf over rows (H + 1 floats) then a conditional cdf per row (W + 1 floats
- * each) in the distribution buffer (host/scene/environment_map.hpp documents the layout;
+ * each) in the distribution buffer, then their guide tables (Chen & Asau 1974) that
+ * start each search near its answer (host/scene/environment_map.hpp documents the layout;
  * docs/environment.md the whole). */
 #ifndef FACET_SHARED_ENVIRONMENT_LAYOUT_H
 #define FACET_SHARED_ENVIRONMENT_LAYOUT_H
@@ -23,6 +24,18 @@
 
 #define FC_ENV_FILTER_NEAREST 0
 #define FC_ENV_FILTER_BILINEAR 1
+
+/* The entries, less one, of the guide table of a cdf of n intervals: the largest power of
+ * two not above max(n / 2, 1) (a power of two, so that u g is exact in float). */
+#if defined(__OPENCL_VERSION__) || defined(__OPENCL_C_VERSION__)
+inline uint env_guide_size(uint n) { return 1u << (31u - clz(max(n >> 1, 1u))); }
+#else
+static inline fc_uint env_guide_size(fc_uint n) {
+    fc_uint g = 1u;
+    while (2u * g <= (n >> 1)) g *= 2u;
+    return g;
+}
+#endif
 
 typedef struct FcEnvironment {
     fc_int width; /* 0: no map (constant radiance, or no environment at all) */

@@ -69,3 +69,20 @@ __kernel void env_round_trip(__constant const FcEnvironment* env, __global const
     float3 via_uv = env_map_to_dir(env, env_uv_to_map_dir(env_map_dir_to_uv(m)));
     err[i] = fmax(length(back - d), length(via_uv - d));
 }
+
+/* For each u: the interval env_find_interval finds through the guide tables and the one
+ * bisecting the whole cdf finds, for the marginal cdf and for the middle row's conditional
+ * cdf; and env_guide_size(i + 1), which the host computes in its own form. */
+__kernel void env_guided_search(__constant const FcEnvironment* env, __global const float* dist,
+                                __global const float* us, __global int4* found, __global uint* sizes) {
+    uint i = (uint)get_global_id(0);
+    int w = env->width, h = env->height;
+    __global const float* guides = dist + (h + 1) + h * (w + 1);
+    __global const float* cond = dist + (h + 1) + (h / 2) * (w + 1);
+    uint gm = env_guide_size((uint)h), gc = env_guide_size((uint)w);
+    float u = us[i];
+    found[i] = (int4)(env_find_interval(dist, guides, gm, u), env_bisect(dist, 0, h, u),
+                      env_find_interval(cond, guides + (gm + 1u) + (uint)(h / 2) * (gc + 1u), gc, u),
+                      env_bisect(cond, 0, w, u));
+    sizes[i] = env_guide_size(i + 1u);
+}
