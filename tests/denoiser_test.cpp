@@ -134,8 +134,9 @@ TEST(Denoiser, DepthStepStaysSharp) {
     expect_step_kept(f, FC_DENOISE_GUIDE_DEPTH);
 }
 
-// The filter written directly (every pixel's window, every patch) on the planes that
-// denoise_prepare makes: half k of `h`, 3 floats a pixel.
+// The filter written directly (every pixel's window, every patch, the variance box in one
+// piece) on the colours and features of the planes that denoise_prepare makes: half k of
+// `h`, 3 floats a pixel.
 std::vector<float> denoise_directly(std::uint32_t width, std::uint32_t height, const FilmHalves& h, const AovImages& f,
                                     const DenoiseSettings& s, cl_uint k) {
     ClContext& ctx = test::context();
@@ -151,14 +152,18 @@ std::vector<float> denoise_directly(std::uint32_t width, std::uint32_t height, c
     cl::Buffer params(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof p, &p);
     cl::Buffer a = in(h.rgb[0]), b = in(h.rgb[1]), albedo = in(f.albedo), normal = in(f.normal), depth = in(f.depth);
     cl::Buffer colour = scratch(8 * std::size_t(p.plane)), features = scratch(7 * std::size_t(p.plane));
-    cl::Buffer out = scratch(3 * pixels);
+    cl::Buffer rows = scratch(pixels), out = scratch(3 * pixels);
     cl::Program& program = test::program("kernels/test/denoise_direct_kernels.cl");
-    cl::Kernel prepare(program, "denoise_prepare"), direct(program, "denoise_direct");
-    prepare.setArg(0, params), prepare.setArg(1, a), prepare.setArg(2, b), prepare.setArg(3, albedo);
-    prepare.setArg(4, normal), prepare.setArg(5, depth), prepare.setArg(6, colour), prepare.setArg(7, features);
+    cl::Kernel difference(program, "denoise_difference"), prepare(program, "denoise_prepare");
+    cl::Kernel direct(program, "denoise_direct");
+    difference.setArg(0, params), difference.setArg(1, a), difference.setArg(2, b), difference.setArg(3, rows);
+    ctx.queue().enqueueNDRangeKernel(difference, cl::NullRange, cl::NDRange(pixels));
+    prepare.setArg(0, params), prepare.setArg(1, a), prepare.setArg(2, b), prepare.setArg(3, rows);
+    prepare.setArg(4, albedo), prepare.setArg(5, normal), prepare.setArg(6, depth), prepare.setArg(7, colour);
+    prepare.setArg(8, features);
     ctx.queue().enqueueNDRangeKernel(prepare, cl::NullRange, cl::NDRange(p.plane));
-    direct.setArg(0, params), direct.setArg(1, colour), direct.setArg(2, features), direct.setArg(3, k);
-    direct.setArg(4, out);
+    direct.setArg(0, params), direct.setArg(1, colour), direct.setArg(2, features), direct.setArg(3, a);
+    direct.setArg(4, b), direct.setArg(5, k), direct.setArg(6, out);
     ctx.queue().enqueueNDRangeKernel(direct, cl::NullRange, cl::NDRange(pixels));
     std::vector<float> result(3 * pixels);
     ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(float), result.data());
@@ -166,8 +171,9 @@ std::vector<float> denoise_directly(std::uint32_t width, std::uint32_t height, c
 }
 
 // On an image smaller than some windows (19 x 13, radius 6), with noise, a varying
-// variance, textured features and patches of radius 1 and 2, both halves of the
-// offset-wise filter agree with the direct one to float rounding.
+// variance, textured features and patches of radius 1 and 2 (the written-out 3 x 3 box
+// and the loop), both halves of the offset-wise filter with its separable variance box
+// agree with the direct one to float rounding.
 TEST(Denoiser, OffsetWiseFilterEqualsTheDirectOne) {
     constexpr std::uint32_t w = 19, h = 13;
     constexpr std::size_t pixels = std::size_t(w) * h;

@@ -76,6 +76,7 @@ DenoisedImage Denoiser::run(std::uint32_t width, std::uint32_t height, const Fil
     const std::size_t plane = p.plane, sums_plane = std::size_t(p.width8) * height;
     const std::size_t term_groups = std::size_t(p.width8 + 2 * p.patch_radius + 7) / 8;
     // Work items: padded pixels (prepare), runs of 8 pixels (terms, accumulate), pixels
+    // (difference, finish)
     auto items = [](std::size_t n) { return cl::NDRange((n + 63) / 64 * 64); };
     const cl::NDRange prepare_items = items(plane), finish_items = items(pixels);
     const cl::NDRange term_items = items(term_groups * (height + 2 * p.patch_radius));
@@ -90,15 +91,20 @@ DenoisedImage Denoiser::run(std::uint32_t width, std::uint32_t height, const Fil
         cl::Buffer a = in(halves.rgb[0]), b = in(halves.rgb[1]);
         cl::Buffer albedo = in(features.albedo), normal = in(features.normal), depth = in(features.depth);
         cl::Buffer params(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof p, const_cast<FcDenoiseParams*>(&p));
-        cl::Buffer colour = scratch(8 * plane), guides = scratch(7 * plane), sums = scratch(8 * sums_plane);
+        cl::Buffer rows = scratch(pixels), colour = scratch(8 * plane), guides = scratch(7 * plane);
+        cl::Buffer sums = scratch(8 * sums_plane);
         cl::Buffer terms = scratch(color ? 2 * plane * std::size_t(2 * r + 1) : 1);
         cl::Buffer out_a = scratch(3 * pixels), out_b = scratch(3 * pixels);
         queue.enqueueFillBuffer(sums, 0.0f, 0, 8 * sums_plane * sizeof(float));
 
-        cl::Kernel prepare(program_, "denoise_prepare"), term(program_, "denoise_terms");
-        cl::Kernel accumulate(program_, "denoise_accumulate"), finish(program_, "denoise_finish");
-        prepare.setArg(0, params), prepare.setArg(1, a), prepare.setArg(2, b), prepare.setArg(3, albedo);
-        prepare.setArg(4, normal), prepare.setArg(5, depth), prepare.setArg(6, colour), prepare.setArg(7, guides);
+        cl::Kernel difference(program_, "denoise_difference"), prepare(program_, "denoise_prepare");
+        cl::Kernel term(program_, "denoise_terms"), accumulate(program_, "denoise_accumulate");
+        cl::Kernel finish(program_, "denoise_finish");
+        difference.setArg(0, params), difference.setArg(1, a), difference.setArg(2, b), difference.setArg(3, rows);
+        queue.enqueueNDRangeKernel(difference, cl::NullRange, finish_items);
+        prepare.setArg(0, params), prepare.setArg(1, a), prepare.setArg(2, b), prepare.setArg(3, rows);
+        prepare.setArg(4, albedo), prepare.setArg(5, normal), prepare.setArg(6, depth), prepare.setArg(7, colour);
+        prepare.setArg(8, guides);
         queue.enqueueNDRangeKernel(prepare, cl::NullRange, prepare_items);
         term.setArg(0, params), term.setArg(1, colour), term.setArg(2, terms);
         accumulate.setArg(0, params), accumulate.setArg(1, colour), accumulate.setArg(2, guides);

@@ -50,18 +50,33 @@ inline DenoiseFeature denoise_feature_at(__constant const FcDenoiseParams* p, __
     return v;
 }
 
-/* One padded pixel of the colour and feature planes, from the halves a and b and the
- * features as the host holds them (3 floats a pixel, depth 1). */
+/* One pixel's row sum of the squared half difference (denoise_pair_row), 1 float a pixel. */
+__kernel void denoise_difference(__constant const FcDenoiseParams* p, __global const float* a, __global const float* b,
+                                 __global float* rows) {
+    uint gid = get_global_id(0);
+    if (gid >= p->width * p->height) return;
+    int w = (int)p->width;
+    rows[gid] = denoise_pair_row(a, b, w, (int)p->variance_radius, (int)gid % w, (int)gid / w);
+}
+
+/* The sums of 3 neighbouring terms from t, for 8 pixels: one row of a 3 x 3 patch. */
+inline float8 denoise_box3(__global const float* t) {
+    return denoise_load8(t) + denoise_load8(t + 1) + denoise_load8(t + 2);
+}
+
+/* One padded pixel of the colour and feature planes, from the halves a and b, their
+ * difference's row sums (denoise_difference) and the features as the host holds them
+ * (3 floats a pixel, depth 1). */
 __kernel void denoise_prepare(__constant const FcDenoiseParams* p, __global const float* a, __global const float* b,
-                              __global const float* albedo, __global const float* normal, __global const float* depth,
-                              __global float* colour, __global float* features) {
+                              __global const float* rows, __global const float* albedo, __global const float* normal,
+                              __global const float* depth, __global float* colour, __global float* features) {
     uint gid = get_global_id(0), n = p->plane;
     if (gid >= n) return;
     int w = (int)p->width, h = (int)p->height;
     int x = clamp((int)(gid % p->pitch) - (int)p->pad, 0, w - 1),
         y = clamp((int)(gid / p->pitch) - (int)p->pad, 0, h - 1);
     uint i = (uint)(y * w + x);
-    float v = denoise_pair_variance(a, b, w, h, (int)p->variance_radius, x, y);
+    float v = denoise_pair_variance(rows, w, h, (int)p->variance_radius, x, y);
     for (uint c = 0; c < 3; ++c) {
         colour[c * n + gid] = a[3 * i + c];
         colour[(4 + c) * n + gid] = b[3 * i + c];
@@ -107,6 +122,7 @@ __kernel void denoise_accumulate(__constant const FcDenoiseParams* p, __global c
     uint at = denoise_padded(p, x, y);
     DenoiseColor pa = denoise_color_at(p, colour, 0, at), pb = denoise_color_at(p, colour, 1, at);
     DenoiseFeature fp = denoise_feature_at(p, features, at);
+    DenoiseFeatureScale scale = denoise_feature_scale(p);
     __global float* s = sums + (uint)(y * (int)p->width8 + x);
     uint sn = p->width8 * p->height;
     float8 ar = denoise_load8(s), ag = denoise_load8(s + sn), ab = denoise_load8(s + 2 * sn),
@@ -116,18 +132,25 @@ __kernel void denoise_accumulate(__constant const FcDenoiseParams* p, __global c
     int8 lane = (int8)(0, 1, 2, 3, 4, 5, 6, 7) + x;
     for (int dx = -r; dx <= r; ++dx) {
         uint q = denoise_padded(p, x + dx, y + dy);
-        float8 f = denoise_feature_distance(p, fp, denoise_feature_at(p, features, q)), da = f, db = f;
+        float8 f = denoise_feature_distance(scale, fp, denoise_feature_at(p, features, q)), da = f, db = f;
         if (color) {
-            /* The patch distance: the box sum of the offset's term image around p */
+            /* The patch distance: the box sum of the offset's term image around p (the
+             * 3 x 3 patch, the default, written out) */
             __global const float* ta = terms + 2 * (uint)(dx + r) * p->plane;
             __global const float* tb = ta + p->plane;
             float8 sa = (float8)(0.0f), sb = (float8)(0.0f);
-            for (int sy = -pr; sy <= pr; ++sy)
-                for (int sx = -pr; sx <= pr; ++sx) {
-                    uint t = denoise_padded(p, x + sx, y + sy);
-                    sa += denoise_load8(ta + t);
-                    sb += denoise_load8(tb + t);
-                }
+            if (pr == 1) {
+                uint t = denoise_padded(p, x - 1, y - 1), t2 = t + p->pitch, t3 = t2 + p->pitch;
+                sa = denoise_box3(ta + t) + denoise_box3(ta + t2) + denoise_box3(ta + t3);
+                sb = denoise_box3(tb + t) + denoise_box3(tb + t2) + denoise_box3(tb + t3);
+            } else {
+                for (int sy = -pr; sy <= pr; ++sy)
+                    for (int sx = -pr; sx <= pr; ++sx) {
+                        uint t = denoise_padded(p, x + sx, y + sy);
+                        sa += denoise_load8(ta + t);
+                        sb += denoise_load8(tb + t);
+                    }
+            }
             da += fmax(sa * inv_patch, 0.0f);
             db += fmax(sb * inv_patch, 0.0f);
         }

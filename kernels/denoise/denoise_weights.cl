@@ -46,36 +46,54 @@ inline float8 denoise_color_term(DenoiseColor i, DenoiseColor j, float k2) {
     return (du2 - (i.v + fmin(i.v, j.v))) / (1e-10f + k2 * (i.v + j.v));
 }
 
-/* The feature terms' distance f between pixels i and j. */
-inline float8 denoise_feature_distance(__constant const FcDenoiseParams* p, DenoiseFeature i, DenoiseFeature j) {
-    float8 d = (float8)(0.0f);
-    if (p->guides & FC_DENOISE_GUIDE_ALBEDO) {
-        float8 er = i.ar - j.ar, eg = i.ag - j.ag, eb = i.ab - j.ab;
-        d += (er * er + eg * eg + eb * eb) / (2.0f * p->sigma_albedo * p->sigma_albedo);
-    }
-    if (p->guides & FC_DENOISE_GUIDE_NORMAL) {
-        float8 ex = i.nx - j.nx, ey = i.ny - j.ny, ez = i.nz - j.nz;
-        d += (ex * ex + ey * ey + ez * ez) / (2.0f * p->sigma_normal * p->sigma_normal);
-    }
-    if (p->guides & FC_DENOISE_GUIDE_DEPTH) {
-        float8 s = p->sigma_depth * fmax(i.z, j.z), dz = i.z - j.z;
-        d += select((float8)(0.0f), dz * dz / (2.0f * s * s), s > 0.0f);
-    }
-    return d;
+/* The feature terms' scales, 1 / (2 sigma^2) of each guide that is on (0 where it is off),
+ * computed once per work item, not once per neighbour (a sigma not above 0 turns its
+ * guide off). */
+typedef struct DenoiseFeatureScale {
+    float albedo, normal, depth;
+} DenoiseFeatureScale;
+
+inline DenoiseFeatureScale denoise_feature_scale(__constant const FcDenoiseParams* p) {
+    DenoiseFeatureScale s = {0.0f, 0.0f, 0.0f};
+    if ((p->guides & FC_DENOISE_GUIDE_ALBEDO) && p->sigma_albedo > 0.0f)
+        s.albedo = 1.0f / (2.0f * p->sigma_albedo * p->sigma_albedo);
+    if ((p->guides & FC_DENOISE_GUIDE_NORMAL) && p->sigma_normal > 0.0f)
+        s.normal = 1.0f / (2.0f * p->sigma_normal * p->sigma_normal);
+    if ((p->guides & FC_DENOISE_GUIDE_DEPTH) && p->sigma_depth > 0.0f)
+        s.depth = 1.0f / (2.0f * p->sigma_depth * p->sigma_depth);
+    return s;
 }
 
-/* The mean over channels and over the box of (2 r + 1)^2 pixels around (x, y), clipped at
- * the border, of (a - b)^2: the halves a and b, 3 floats a pixel, width w, height h. */
-inline float denoise_pair_variance(__global const float* a, __global const float* b, int w, int h, int r, int x,
-                                   int y) {
+/* The feature terms' distance f between pixels i and j: the depth difference is relative
+ * to the larger depth (0 where both are 0, nothing hit). */
+inline float8 denoise_feature_distance(DenoiseFeatureScale s, DenoiseFeature i, DenoiseFeature j) {
+    float8 er = i.ar - j.ar, eg = i.ag - j.ag, eb = i.ab - j.ab;
+    float8 ex = i.nx - j.nx, ey = i.ny - j.ny, ez = i.nz - j.nz;
+    float8 z = fmax(i.z, j.z), dz = i.z - j.z;
+    float8 depth = select((float8)(0.0f), dz * dz / (z * z), z > 0.0f);
+    return (er * er + eg * eg + eb * eb) * s.albedo + (ex * ex + ey * ey + ez * ez) * s.normal + depth * s.depth;
+}
+
+/* The variance estimate's box, split into a row pass and a column pass: the sum over
+ * channels and over the row segment of (2 r + 1) pixels around (x, y), clipped at the
+ * border, of (a - b)^2 (the halves a and b, 3 floats a pixel, width w)... */
+inline float denoise_pair_row(__global const float* a, __global const float* b, int w, int r, int x, int y) {
+    int x0 = max(x - r, 0), x1 = min(x + r, w - 1);
+    float sum = 0.0f;
+    for (int qx = x0; qx <= x1; ++qx)
+        for (int c = 0; c < 3; ++c) {
+            float d = a[3 * (y * w + qx) + c] - b[3 * (y * w + qx) + c];
+            sum += d * d;
+        }
+    return sum;
+}
+
+/* ... and the mean over channels and over the box of (2 r + 1)^2 pixels around (x, y) from
+ * those row sums (`rows`, 1 float a pixel, width w, height h). */
+inline float denoise_pair_variance(__global const float* rows, int w, int h, int r, int x, int y) {
     int x0 = max(x - r, 0), x1 = min(x + r, w - 1), y0 = max(y - r, 0), y1 = min(y + r, h - 1);
     float sum = 0.0f;
-    for (int qy = y0; qy <= y1; ++qy)
-        for (int qx = x0; qx <= x1; ++qx)
-            for (int c = 0; c < 3; ++c) {
-                float d = a[3 * (qy * w + qx) + c] - b[3 * (qy * w + qx) + c];
-                sum += d * d;
-            }
+    for (int qy = y0; qy <= y1; ++qy) sum += rows[qy * w + x];
     return sum / (3.0f * (float)((x1 - x0 + 1) * (y1 - y0 + 1)));
 }
 
