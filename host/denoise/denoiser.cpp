@@ -78,7 +78,7 @@ DenoisedImage Denoiser::run(std::uint32_t width, std::uint32_t height, const Fil
     // Work items: padded pixels (prepare), runs of 8 pixels (terms, accumulate), pixels
     // (difference, finish)
     auto items = [](std::size_t n) { return cl::NDRange((n + 63) / 64 * 64); };
-    const cl::NDRange prepare_items = items(plane), finish_items = items(pixels);
+    const cl::NDRange prepare_items = items(plane), pixel_items = items(pixels);
     const cl::NDRange term_items = items(term_groups * (height + 2 * p.patch_radius));
     const cl::NDRange accumulate_items = items(std::size_t(p.width8 / 8) * height);
 
@@ -101,7 +101,7 @@ DenoisedImage Denoiser::run(std::uint32_t width, std::uint32_t height, const Fil
         cl::Kernel term(program_, "denoise_terms"), accumulate(program_, "denoise_accumulate");
         cl::Kernel finish(program_, "denoise_finish");
         difference.setArg(0, params), difference.setArg(1, a), difference.setArg(2, b), difference.setArg(3, rows);
-        queue.enqueueNDRangeKernel(difference, cl::NullRange, finish_items);
+        queue.enqueueNDRangeKernel(difference, cl::NullRange, pixel_items);
         prepare.setArg(0, params), prepare.setArg(1, a), prepare.setArg(2, b), prepare.setArg(3, rows);
         prepare.setArg(4, albedo), prepare.setArg(5, normal), prepare.setArg(6, depth), prepare.setArg(7, colour);
         prepare.setArg(8, guides);
@@ -119,7 +119,7 @@ DenoisedImage Denoiser::run(std::uint32_t width, std::uint32_t height, const Fil
         }
         finish.setArg(0, params), finish.setArg(1, colour), finish.setArg(2, sums);
         finish.setArg(3, out_a), finish.setArg(4, out_b);
-        queue.enqueueNDRangeKernel(finish, cl::NullRange, finish_items);
+        queue.enqueueNDRangeKernel(finish, cl::NullRange, pixel_items);
         out.half[0].resize(3 * pixels), out.half[1].resize(3 * pixels);
         queue.enqueueReadBuffer(out_a, CL_TRUE, 0, 3 * pixels * sizeof(float), out.half[0].data());
         queue.enqueueReadBuffer(out_b, CL_TRUE, 0, 3 * pixels * sizeof(float), out.half[1].data());
