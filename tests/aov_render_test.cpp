@@ -8,6 +8,8 @@
 
 #include "host/bvh/bvh.hpp"
 #include "host/render/aov.hpp"
+#include "host/render/progressive.hpp"
+#include "host/render/renderer.hpp"
 #include "host/scene/material.hpp"
 #include "host/scene/scene.hpp"
 #include "tests/cl_test_env.hpp"
@@ -18,13 +20,13 @@ namespace {
 constexpr int kSize = 16;
 
 // An orthographic camera 5 units above z = 0 looking down -z over [-2, 2]^2; a quad of
-// reflectance (0.2, 0.5, 0.7) over x in [-2, 0] (the image's left half).
-Scene quad_scene() {
+// reflectance (0.2, 0.5, 0.7) over x in [-2, right] (by default the image's left half).
+Scene quad_scene(float right = 0.0f) {
     Scene scene;
     Material m = default_material();
     m.diffuse = glm::vec3(0.2f, 0.5f, 0.7f);
     add_material(scene, m, "paint");
-    add_quad(scene, glm::vec3(-2.0f, -2.0f, 0.0f), glm::vec3(2.0f, 0.0f, 0.0f), glm::vec3(0.0f, 4.0f, 0.0f), 0);
+    add_quad(scene, glm::vec3(-2.0f, -2.0f, 0.0f), glm::vec3(2.0f + right, 0.0f, 0.0f), glm::vec3(0.0f, 4.0f, 0.0f), 0);
     build_lights(scene);
     scene.camera.eye = glm::vec3(0.0f, 0.0f, 5.0f);
     scene.camera.target = glm::vec3(0.0f);
@@ -101,6 +103,35 @@ TEST(AovRender, ClearcoatAlbedo) {
     EXPECT_NEAR(a.albedo[3 * on + 0], 0.04f + 0.96f * 0.24f, 1e-4f);
     EXPECT_NEAR(a.albedo[3 * on + 1], 0.04f + 0.96f * 0.54f, 1e-4f);
     EXPECT_NEAR(a.albedo[3 * on + 2], 0.04f + 0.96f * 0.74f, 1e-4f);
+}
+
+// The AOV pass draws camera samples of its own (aov_seed), not the render's: an emitting
+// quad whose edge cuts the middle of column 32 of 64, one sample a pixel in both passes.
+// With shared samples the image and the depth AOV would agree in every row of that column
+// on which side of the edge the sample fell (they did, 64 of 64); with samples of their
+// own they disagree in about half the rows.
+TEST(AovRender, SamplesAreNotTheRendersOwn) {
+    constexpr int kSide = 64;
+    Scene scene = quad_scene(2.0f / kSide);  // columns are 4 / kSide wide
+    scene.settings.width = scene.settings.height = kSide;
+    scene.materials[0].diffuse = glm::vec3(0.0f);
+    scene.materials[0].emission = glm::vec3(1.0f);
+    build_lights(scene);
+    const Bvh bvh = build_bvh(scene.vertices);
+    Renderer r(test::context(), scene, bvh);
+    render_fixed(r, 1);
+    const FilmHalves h = r.halves();
+    const AovImages a = render_aovs(test::context(), scene, bvh, 1);
+    int differ = 0, covered = 0;
+    for (int y = 0; y < kSide; ++y) {
+        const std::size_t i = std::size_t(y) * kSide + kSide / 2;
+        const bool image_hit = h.rgb[0][3 * i] > 0.5f, aov_hit = a.depth[i] > 0.0f;
+        differ += image_hit != aov_hit;
+        covered += aov_hit;
+    }
+    EXPECT_GT(covered, kSide / 4);  // the edge does cut the column
+    EXPECT_LT(covered, 3 * kSide / 4);
+    EXPECT_GE(differ, kSide / 4);  // 32 expected, binomial sd 4
 }
 
 }  // namespace

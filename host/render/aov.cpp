@@ -43,6 +43,7 @@ AovImages render_aovs(ClContext& ctx, const Scene& scene, const Bvh& bvh, const 
         const std::uint32_t rows = rows_per_launch(width, spp);
         for (std::uint32_t row = 0; row < height; row += rows) {
             FcRenderParams p = dev.params;
+            p.seed = aov_seed(dev.params.seed);
             p.sample_begin = 0;
             p.sample_count = spp;
             p.row_begin = row;
