@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "host/film/film_layout.hpp"
 #include "host/error.hpp"
 #include "host/render/adaptive_bands.hpp"
 
@@ -15,7 +16,7 @@ namespace {
 // a pixel is `even` (even indices) or `odd` (odd indices).
 std::vector<float> sums_for(const BandLayout& l, float even, float odd) {
     const std::size_t n = std::size_t(l.width * l.height);
-    std::vector<float> s(2 * n * 4, 0.0f);
+    std::vector<float> s(film_floats(n), 0.0f);
     for (std::size_t p = 0; p < n; ++p) {
         const std::uint64_t spp = l.spp[std::size_t(l.band_of_row(int(p) / l.width))];
         for (int c = 0; c < 3; ++c) {

@@ -141,7 +141,8 @@ std::vector<float> denoise_directly(std::uint32_t width, std::uint32_t height, c
                                     const DenoiseSettings& s, cl_uint k) {
     ClContext& ctx = test::context();
     const std::size_t pixels = std::size_t(width) * height;
-    FcDenoiseParams p = denoise_params(width, height, h.samples, s);
+    const DenoiseVariance variance = denoise_variance(width, height, h);
+    FcDenoiseParams p = denoise_params(width, height, variance, s);
     auto in = [&](const std::vector<float>& v) {
         return cl::Buffer(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, v.size() * sizeof(float),
                           const_cast<float*>(v.data()));
@@ -152,18 +153,18 @@ std::vector<float> denoise_directly(std::uint32_t width, std::uint32_t height, c
     cl::Buffer params(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof p, &p);
     cl::Buffer a = in(h.rgb[0]), b = in(h.rgb[1]), albedo = in(f.albedo), normal = in(f.normal), depth = in(f.depth);
     cl::Buffer colour = scratch(8 * std::size_t(p.plane)), features = scratch(7 * std::size_t(p.plane));
-    cl::Buffer rows = scratch(pixels), out = scratch(3 * pixels);
+    cl::Buffer source = in(variance.source), rows = scratch(2 * pixels), out = scratch(3 * pixels);
     cl::Program& program = test::program("kernels/test/denoise_direct_kernels.cl");
-    cl::Kernel difference(program, "denoise_difference"), prepare(program, "denoise_prepare");
+    cl::Kernel variance_rows(program, "denoise_variance_rows"), prepare(program, "denoise_prepare");
     cl::Kernel direct(program, "denoise_direct");
-    difference.setArg(0, params), difference.setArg(1, a), difference.setArg(2, b), difference.setArg(3, rows);
-    ctx.queue().enqueueNDRangeKernel(difference, cl::NullRange, cl::NDRange(pixels));
+    variance_rows.setArg(0, params), variance_rows.setArg(1, source), variance_rows.setArg(2, rows);
+    ctx.queue().enqueueNDRangeKernel(variance_rows, cl::NullRange, cl::NDRange(2 * pixels));
     prepare.setArg(0, params), prepare.setArg(1, a), prepare.setArg(2, b), prepare.setArg(3, rows);
     prepare.setArg(4, albedo), prepare.setArg(5, normal), prepare.setArg(6, depth), prepare.setArg(7, colour);
     prepare.setArg(8, features);
     ctx.queue().enqueueNDRangeKernel(prepare, cl::NullRange, cl::NDRange(p.plane));
-    direct.setArg(0, params), direct.setArg(1, colour), direct.setArg(2, features), direct.setArg(3, a);
-    direct.setArg(4, b), direct.setArg(5, k), direct.setArg(6, out);
+    direct.setArg(0, params), direct.setArg(1, colour), direct.setArg(2, features), direct.setArg(3, source);
+    direct.setArg(4, k), direct.setArg(5, out);
     ctx.queue().enqueueNDRangeKernel(direct, cl::NullRange, cl::NDRange(pixels));
     std::vector<float> result(3 * pixels);
     ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, result.size() * sizeof(float), result.data());
@@ -173,7 +174,8 @@ std::vector<float> denoise_directly(std::uint32_t width, std::uint32_t height, c
 // On an image smaller than some windows (19 x 13, radius 6), with noise, a varying
 // variance, textured features and patches of radius 1 and 2 (the written-out 3 x 3 box
 // and the loop), both halves of the offset-wise filter with its separable variance box
-// agree with the direct one to float rounding.
+// agree with the direct one to float rounding, with the pair's variance and with each
+// half's own (second moments given).
 TEST(Denoiser, OffsetWiseFilterEqualsTheDirectOne) {
     constexpr std::uint32_t w = 19, h = 13;
     constexpr std::size_t pixels = std::size_t(w) * h;
@@ -189,18 +191,31 @@ TEST(Denoiser, OffsetWiseFilterEqualsTheDirectOne) {
         f.albedo[3 * i] = (i % w) < 9 ? 0.2f : 0.6f, f.normal[3 * i] = 0.3f * float(i % 3);
         f.depth[i] = 1.0f + 0.5f * float((i / w) % 4);
     }
-    const Denoiser denoiser(test::context());  // built once, run for both patch sizes
-    for (std::uint32_t patch : {1u, 2u}) {
-        DenoiseSettings s;
-        s.patch_radius = patch;
-        s.sigma_depth = 0.3f;  // depth weights neither 0 nor 1
-        const DenoisedImage d = denoiser.run(w, h, halves, f, s);
-        for (int k = 0; k < 2; ++k) {
-            const std::vector<float> direct = denoise_directly(w, h, halves, f, s, cl_uint(k));
-            for (std::size_t i = 0; i < 3 * pixels; ++i)
-                ASSERT_NEAR(d.half[k][i], direct[i], 1e-5f) << "half " << k << ", value " << i << ", patch " << patch;
+    FilmHalves own = halves;  // second moments: the means' squares plus a varying spread
+    std::uniform_real_distribution<float> spread(0.0f, 0.5f);
+    for (int k = 0; k < 2; ++k)
+        for (std::size_t i = 0; i < pixels; ++i) {
+            float q = spread(rng);
+            for (std::size_t c = 0; c < 3; ++c) q += own.rgb[k][3 * i + c] * own.rgb[k][3 * i + c];
+            own.square[k].push_back(q);
         }
-    }
+    ASSERT_FALSE(denoise_variance(w, h, halves).own);
+    ASSERT_TRUE(denoise_variance(w, h, own).own);
+    const Denoiser denoiser(test::context());  // built once, run for both patch sizes
+    for (const FilmHalves* input : {&halves, &own})
+        for (std::uint32_t patch : {1u, 2u}) {
+            DenoiseSettings s;
+            s.patch_radius = patch;
+            s.sigma_depth = 0.3f;  // depth weights neither 0 nor 1
+            const DenoisedImage d = denoiser.run(w, h, *input, f, s);
+            EXPECT_EQ(d.own_variance, input == &own);
+            for (int k = 0; k < 2; ++k) {
+                const std::vector<float> direct = denoise_directly(w, h, *input, f, s, cl_uint(k));
+                for (std::size_t i = 0; i < 3 * pixels; ++i)
+                    ASSERT_NEAR(d.half[k][i], direct[i], 1e-5f) << "half " << k << ", value " << i << ", patch "
+                                                                << patch << ", own variance " << d.own_variance;
+            }
+        }
 }
 
 // A Denoiser (one program build) run on one image and then on another of another size

@@ -107,7 +107,7 @@ TEST(DeviceGroup, ResumeAndSamplesFromContinueAtTheirIndices) {
     std::vector<float> sums = first.accumulation();
     const std::vector<float> more = rest.accumulation();
     for (std::size_t i = 0; i < sums.size(); ++i) sums[i] += more[i];
-    expect_same_image(film_mean(film_halves(sums, 256, {{0, 10}})), want);
+    expect_same_image(film_mean(film_halves(sums, 256, {{0, 10}}, true)), want);
     // Samples from 2 would repeat the film's 2 and 3.
     DeviceGroup overlapping(contexts(1), f.scene, f.bvh, false, 2);
     EXPECT_NE(

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "host/film/film_layout.hpp"
 #include "host/bvh/bvh.hpp"
 #include "host/film/film_merge.hpp"
 #include "host/render/film_identity.hpp"
@@ -33,7 +34,7 @@ std::uint64_t identity(const Scene& s) { return film_identity(s, build_bvh(s.ver
 
 // The messages of --resume and of a merge of a film of `base` with one of `changed`.
 std::vector<std::string> refusals(const Scene& base, const Scene& changed) {
-    const std::vector<float> sums(2 * 36 * 4, 1.0f);
+    const std::vector<float> sums(film_floats(36), 1.0f);
     const FilmState a = make_film(base, identity(base), SampleRanges{{0, 4}}, 1.0, sums);
     const FilmState b = make_film(changed, identity(changed), SampleRanges{{4, 8}}, 1.0, sums);
     return {error_of([&] { check_film_matches(a, "a.film", changed, identity(changed)); }), error_of([&] {

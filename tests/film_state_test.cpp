@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "host/film/film_layout.hpp"
 #include "host/bvh/bvh.hpp"
 #include "host/error.hpp"
 #include "host/film/film_state.hpp"
@@ -29,7 +30,7 @@ using test::lit_scene;
 FilmState some_film(int w, int h) {
     Scene scene = lit_scene(w);
     scene.settings.height = h;
-    std::vector<float> sums(2 * std::size_t(w) * std::size_t(h) * 4);
+    std::vector<float> sums(film_floats(std::size_t(w) * std::size_t(h)));
     for (std::size_t i = 0; i < sums.size(); ++i) sums[i] = i % 4 == 3 ? 0.0f : float(i) * 0.25f;  // none rejected
     return make_film(scene, film_identity(scene, build_bvh(scene.vertices)), 7, 1.5, sums);
 }
@@ -78,7 +79,7 @@ TEST(FilmState, RefusesCorruptTruncatedAndForeignFiles) {
 TEST(FilmState, RefusesAnotherSceneOrSettings) {
     Scene scene = lit_scene(6);
     const std::uint64_t hash = film_identity(scene, build_bvh(scene.vertices));
-    FilmState film = make_film(scene, hash, 4, 0.1, std::vector<float>(2 * 36 * 4));
+    FilmState film = make_film(scene, hash, 4, 0.1, std::vector<float>(film_floats(36)));
     EXPECT_EQ(error_of([&] { check_film_matches(film, "f.film", scene, hash); }), "");
 
     Scene other = scene;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "host/film/film_layout.hpp"
 #include "host/film/film_state.hpp"
 #include "host/film/film_validate.hpp"
 #include "host/render/film_identity.hpp"
@@ -24,8 +25,8 @@ using test::error_of;
 FilmState plain_film(SampleRanges samples = {{0, 6}}) {
     Scene scene = test::lit_scene(4);
     scene.settings.height = 3;
-    std::vector<float> sums(2 * 12 * 4, 1.0f);
-    for (std::size_t i = 3; i < sums.size(); i += 4) sums[i] = 0.0f;
+    std::vector<float> sums(film_floats(12), 1.0f);
+    for (std::size_t i = 3; i < film_rgba_floats(12); i += 4) sums[i] = 0.0f;
     return make_film(scene, film_identity(scene, build_bvh(scene.vertices)), samples, 1.0, sums);
 }
 
@@ -76,6 +77,16 @@ TEST(FilmValidate, RefusesNanNegativeAndInconsistentCounts) {
     FilmState empty_half = plain_film({{0, 1}});  // sample 0 only: the odd half holds none
     msg = read_error(empty_half);
     EXPECT_NE(msg.find("odd-sample half has the red 1: but the half holds no samples"), std::string::npos) << msg;
+
+    // The second moments (film_layout.hpp): sums of squares
+    FilmState square = plain_film();
+    square.sums[film_rgba_floats(12) + 12 + 5] = -2.0f;  // the odd half's pixel (1, 1)
+    msg = read_error(square);
+    EXPECT_NE(msg.find("bad.film: pixel (1, 1) of the odd-sample half has the second moment -2: a sum of squares"),
+              std::string::npos)
+        << msg;
+    square.sums[film_rgba_floats(12) + 12 + 5] = std::numeric_limits<float>::infinity();
+    EXPECT_NE(read_error(square).find("second moment inf"), std::string::npos);
 }
 
 TEST(FilmValidate, FilmEndingAtSample2To32ReadsBack) {

@@ -67,7 +67,7 @@ int run_denoise(const DenoiseOptions& opt) {
         if (film.width != image.width || film.height != image.height)
             throw Error(fmt::format("--film {}: is {}x{}, the image {} is {}x{}", opt.film, film.width, film.height,
                                     opt.image, image.width, image.height));
-        halves = film_halves(film.sums, pixels, film.samples);
+        halves = film_halves(film);
     } else {
         if (opt.denoiser == "facet")
             throw Error(fmt::format(

@@ -51,8 +51,7 @@ int run_merge(const MergeOptions& opt) {
     for (const std::string& path : opt.films) films.push_back(read_film(path));
     const FilmState merged = merge_films(films, opt.films);
     if (merged.spp == 0) throw Error("the films hold no samples: nothing to merge");
-    const std::size_t pixels = std::size_t(merged.width) * std::size_t(merged.height);
-    const FilmHalves h = film_halves(merged.sums, pixels, merged.samples);
+    const FilmHalves h = film_halves(merged);
     const std::vector<float> rgb = film_mean(h);
     ImageMetadata meta;
     meta.ints.push_back({"facet:spp", int(merged.spp)});

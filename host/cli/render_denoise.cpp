@@ -14,8 +14,7 @@ namespace facet {
 std::string write_denoised(const RenderJob& job, PassRecord& row, const ImageMetadata& extra, bool announce) {
     try {
         const FilmState film = job.session.film();
-        const FilmHalves halves =
-            film_halves(film.sums, std::size_t(film.width) * std::size_t(film.height), film.samples);
+        const FilmHalves halves = film_halves(film);
         if (!job.session.aovs()) throw Error("denoise: the render has no AOVs");
         const DenoiseRun d = run_denoiser(
             job.opt.denoise, job.opt.oidn, std::uint32_t(film.width), std::uint32_t(film.height), halves,

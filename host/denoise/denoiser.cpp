@@ -19,7 +19,7 @@ void check_size(const std::vector<float>& v, std::size_t want, const char* what)
 
 }  // namespace
 
-FcDenoiseParams denoise_params(std::uint32_t width, std::uint32_t height, const std::uint64_t samples[2],
+FcDenoiseParams denoise_params(std::uint32_t width, std::uint32_t height, const DenoiseVariance& variance,
                                const DenoiseSettings& settings) {
     FcDenoiseParams p{};
     p.width = width, p.height = height;
@@ -27,10 +27,7 @@ FcDenoiseParams denoise_params(std::uint32_t width, std::uint32_t height, const 
     p.variance_radius = settings.variance_radius, p.guides = settings.guides;
     p.k_color = settings.k_color, p.sigma_albedo = settings.sigma_albedo;
     p.sigma_normal = settings.sigma_normal, p.sigma_depth = settings.sigma_depth;
-    // The variance of half k's pixel means: E[(a - b)^2] n_other / (n_a + n_b)
-    const double n = double(samples[0] + samples[1]);
-    p.variance_scale_a = float(double(samples[1]) / n);
-    p.variance_scale_b = float(double(samples[0]) / n);
+    p.variance_scale_a = variance.scale[0], p.variance_scale_b = variance.scale[1];
     p.width8 = (width + 7) / 8 * 8;
     p.pad = settings.radius + settings.patch_radius + 8;
     p.pitch = p.width8 + 2 * p.pad;
@@ -70,19 +67,21 @@ DenoisedImage Denoiser::run(std::uint32_t width, std::uint32_t height, const Fil
     check_size(features.normal, 3 * pixels, "normal");
     check_size(features.depth, pixels, "depth");
 
-    const FcDenoiseParams p = denoise_params(width, height, halves.samples, settings);
+    const DenoiseVariance variance = denoise_variance(width, height, halves);
+    const FcDenoiseParams p = denoise_params(width, height, variance, settings);
     const int r = int(settings.radius);
     const bool color = (settings.guides & FC_DENOISE_GUIDE_COLOR) != 0;
     const std::size_t plane = p.plane, sums_plane = std::size_t(p.width8) * height;
     const std::size_t term_groups = std::size_t(p.width8 + 2 * p.patch_radius + 7) / 8;
     // Work items: padded pixels (prepare), runs of 8 pixels (terms, accumulate), pixels
-    // (difference, finish)
+    // (finish) and pixels of both halves (variance rows)
     auto items = [](std::size_t n) { return cl::NDRange((n + 63) / 64 * 64); };
-    const cl::NDRange prepare_items = items(plane), pixel_items = items(pixels);
+    const cl::NDRange prepare_items = items(plane), pixel_items = items(pixels), half_items = items(2 * pixels);
     const cl::NDRange term_items = items(term_groups * (height + 2 * p.patch_radius));
     const cl::NDRange accumulate_items = items(std::size_t(p.width8 / 8) * height);
 
     DenoisedImage out;
+    out.own_variance = variance.own;
     cl_call("denoising", [&] {
         const cl::Context& c = ctx.context();
         cl::CommandQueue& queue = ctx.queue();
@@ -91,17 +90,18 @@ DenoisedImage Denoiser::run(std::uint32_t width, std::uint32_t height, const Fil
         cl::Buffer a = in(halves.rgb[0]), b = in(halves.rgb[1]);
         cl::Buffer albedo = in(features.albedo), normal = in(features.normal), depth = in(features.depth);
         cl::Buffer params(c, CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof p, const_cast<FcDenoiseParams*>(&p));
-        cl::Buffer rows = scratch(pixels), colour = scratch(8 * plane), guides = scratch(7 * plane);
+        cl::Buffer source = in(variance.source), rows = scratch(2 * pixels), colour = scratch(8 * plane),
+                   guides = scratch(7 * plane);
         cl::Buffer sums = scratch(8 * sums_plane);
         cl::Buffer terms = scratch(color ? 2 * plane * std::size_t(2 * r + 1) : 1);
         cl::Buffer out_a = scratch(3 * pixels), out_b = scratch(3 * pixels);
         queue.enqueueFillBuffer(sums, 0.0f, 0, 8 * sums_plane * sizeof(float));
 
-        cl::Kernel difference(program_, "denoise_difference"), prepare(program_, "denoise_prepare");
+        cl::Kernel variance_rows(program_, "denoise_variance_rows"), prepare(program_, "denoise_prepare");
         cl::Kernel term(program_, "denoise_terms"), accumulate(program_, "denoise_accumulate");
         cl::Kernel finish(program_, "denoise_finish");
-        difference.setArg(0, params), difference.setArg(1, a), difference.setArg(2, b), difference.setArg(3, rows);
-        queue.enqueueNDRangeKernel(difference, cl::NullRange, pixel_items);
+        variance_rows.setArg(0, params), variance_rows.setArg(1, source), variance_rows.setArg(2, rows);
+        queue.enqueueNDRangeKernel(variance_rows, cl::NullRange, half_items);
         prepare.setArg(0, params), prepare.setArg(1, a), prepare.setArg(2, b), prepare.setArg(3, rows);
         prepare.setArg(4, albedo), prepare.setArg(5, normal), prepare.setArg(6, depth), prepare.setArg(7, colour);
         prepare.setArg(8, guides);

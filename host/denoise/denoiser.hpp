@@ -1,6 +1,6 @@
 // facet's own denoiser (kernels/denoise/denoise.cl), run on the render's OpenCL device:
-// each half-image of the film is denoised on its own, guided by its colour, its variance
-// (from the two halves) and the AOV features, and the denoised image is the mean of the
+// each half-image of the film is denoised on its own, guided by its colour, its own
+// variance (denoise_variance.hpp) and the AOV features, and the denoised image is the mean of the
 // two denoised halves. Keeping the halves apart is what lets the error of the denoised
 // image be estimated without a reference (host/denoise/denoise_error.hpp).
 #pragma once
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "host/cl/runtime.hpp"
+#include "host/denoise/denoise_variance.hpp"
 #include "host/film/film_halves.hpp"
 #include "host/render/aov.hpp"
 #include "kernels/shared/denoise_layout.h"
@@ -30,12 +31,13 @@ struct DenoisedImage {
     std::vector<float> rgb;      // the mean of the two denoised halves, 3 floats a pixel
     std::vector<float> half[2];  // each half denoised on its own
     double seconds = 0.0;        // uploading, filtering, reading back (and the build: denoise())
+    bool own_variance = false;   // each half filtered with its own variance (denoise_variance.hpp)
 };
 
-// The kernels' parameters for an image of `width` x `height` whose halves hold `samples`
-// samples each (the padded planes' layout included: kernels/shared/denoise_layout.h).
+// The kernels' parameters for an image of `width` x `height` whose halves' variance is
+// `variance` (the padded planes' layout included: kernels/shared/denoise_layout.h).
 // Throws facet::Error when the planes would not be addressable with 32-bit indices.
-FcDenoiseParams denoise_params(std::uint32_t width, std::uint32_t height, const std::uint64_t samples[2],
+FcDenoiseParams denoise_params(std::uint32_t width, std::uint32_t height, const DenoiseVariance& variance,
                                const DenoiseSettings& settings);
 
 // facet's denoiser on one device, its program built once (at construction) and run on

@@ -3,11 +3,13 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
+#include "host/film/film_layout.hpp"
 
 namespace facet {
 
-FilmHalves film_halves(const std::vector<float>& sums, std::size_t pixels, const SampleRanges& samples) {
-    if (sums.size() != 2 * pixels * 4)
+FilmHalves film_halves(const std::vector<float>& sums, std::size_t pixels, const SampleRanges& samples,
+                       bool second_moments) {
+    if (sums.size() != film_floats(pixels))
         throw Error(fmt::format("a film of {} values does not hold {} pixels", sums.size(), pixels));
     FilmHalves h;
     h.samples[0] = even_samples(samples);
@@ -20,8 +22,17 @@ FilmHalves film_halves(const std::vector<float>& sums, std::size_t pixels, const
             for (int c = 0; c < 3; ++c) h.rgb[k][3 * i + c] = half[4 * i + c] * inv;
             h.rejected += double(half[4 * i + 3]);
         }
+        if (!second_moments) continue;
+        const float* squares = sums.data() + film_rgba_floats(pixels) + std::size_t(k) * pixels;
+        h.square[k].assign(squares, squares + pixels);
+        for (float& s : h.square[k]) s *= inv;
     }
     return h;
+}
+
+FilmHalves film_halves(const FilmState& film) {
+    return film_halves(film.sums, std::size_t(film.width) * std::size_t(film.height), film.samples,
+                       film.second_moments);
 }
 
 std::vector<float> film_mean(const FilmHalves& h) {

@@ -51,6 +51,7 @@ FilmState merge_films(const std::vector<FilmState>& films, const std::vector<std
         for (std::size_t k = 0; k < merged.sums.size(); ++k) merged.sums[k] += f.sums[k];
         merged.samples.insert(merged.samples.end(), f.samples.begin(), f.samples.end());
         merged.render_seconds += f.render_seconds;
+        merged.second_moments = merged.second_moments && f.second_moments;
     }
     merged.samples = normalized(merged.samples);
     merged.spp = sample_count(merged.samples);

@@ -11,6 +11,7 @@
 #include "host/error.hpp"
 #include "host/util/fnv.hpp"
 #include "host/util/safe_write.hpp"
+#include "host/film/film_layout.hpp"
 #include "host/film/film_validate.hpp"
 
 namespace facet {
@@ -19,7 +20,8 @@ namespace {
 static_assert(std::endian::native == std::endian::little, "the film format is little-endian (docs/film-format.md)");
 
 constexpr char kMagic[8] = {'F', 'A', 'C', 'E', 'T', 'F', 'L', 'M'};
-constexpr std::uint32_t kVersion = 2;  // 1: no "samples", indices [0, spp)
+// 1: no "samples", indices [0, spp); 1 and 2: RGBA sums only, no second moments
+constexpr std::uint32_t kVersion = 3;
 constexpr std::uint32_t kMaxHeaderBytes = 1 << 20;
 constexpr int kMaxSide = 16384;
 
@@ -45,7 +47,7 @@ std::uint64_t parse_hex(const std::string& s) {
 }  // namespace
 
 void write_film(const std::string& path, const FilmState& film) {
-    const std::size_t floats = 2 * std::size_t(film.width) * std::size_t(film.height) * 4;
+    const std::size_t floats = film_floats(std::size_t(film.width) * std::size_t(film.height));
     if (sample_count(film.samples) != film.spp || first_overlap(film.samples))
         throw Error(
             fmt::format("{}: a film of {} spp cannot hold the samples {}", path, film.spp, describe(film.samples)));
@@ -68,6 +70,7 @@ void write_film(const std::string& path, const FilmState& film) {
     for (const SampleRange& r : normalized(film.samples)) ranges.push_back({r.begin, r.end});
     h["samples"] = ranges;
     h["render_seconds"] = film.render_seconds;
+    h["second_moments"] = film.second_moments;
     h["payload_floats"] = floats;
     h["payload_fnv1a64"] = fmt::format("{:016x}", payload_hash(film.sums));
     const std::string header = h.dump(1) + "\n";
@@ -119,6 +122,7 @@ FilmState read_film(const std::string& path) {
             for (const nlohmann::json& r : h.at("samples"))
                 film.samples.push_back({r.at(0).get<std::uint64_t>(), r.at(1).get<std::uint64_t>()});
         film.render_seconds = h.at("render_seconds").get<double>();
+        film.second_moments = version >= 3 && h.at("second_moments").get<bool>();
         floats = h.at("payload_floats").get<std::uint64_t>();
         checksum = parse_hex(h.at("payload_fnv1a64").get<std::string>());
     } catch (const std::exception& e) {
@@ -135,7 +139,9 @@ FilmState read_film(const std::string& path) {
         throw Error(fmt::format("{}: the film claims {} spp but holds the samples {}: corrupt", path, film.spp,
                                 describe(film.samples)));
     film.samples = normalized(film.samples);
-    const std::uint64_t want = 2 * std::uint64_t(film.width) * std::uint64_t(film.height) * 4;
+    // Versions 1 and 2 hold the RGBA sums alone; their second moments are read as zeros
+    const std::size_t pixels = std::size_t(film.width) * std::size_t(film.height);
+    const std::uint64_t want = version >= 3 ? film_floats(pixels) : film_rgba_floats(pixels);
     if (floats != want || size - sizeof head - header_bytes != want * sizeof(float))
         throw Error(
             fmt::format("{}: the film of {}x{} pixels should hold {} bytes of samples, but has {}: "
@@ -146,6 +152,7 @@ FilmState read_film(const std::string& path) {
         throw Error(fmt::format("{}: cannot read the film's samples", path));
     if (payload_hash(film.sums) != checksum)
         throw Error(fmt::format("{}: the film's samples do not match its checksum: corrupt", path));
+    film.sums.resize(film_floats(pixels), 0.0f);
     validate_film_payload(film, path);
     return film;
 }

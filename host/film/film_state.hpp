@@ -23,9 +23,13 @@ struct FilmState {
     std::uint64_t spp = 0;  // samples in every pixel: sample_count(samples)
     SampleRanges samples;   // their indices (sample_ranges.hpp), even ones in the first half
     double render_seconds = 0.0;
-    // 2 * width * height RGBA float sums: the even-sample half, then the odd-sample half;
-    // A counts the samples the kernel rejected (render/renderer.hpp).
+    // film_floats(width * height) floats (film_layout.hpp): 2 * width * height RGBA float
+    // sums, the even-sample half then the odd-sample half (A counts the samples the kernel
+    // rejected, render/renderer.hpp), then each half's second moments.
     std::vector<float> sums;
+    // Whether the second moments hold every sample's: false for a film of format version 1
+    // or 2 (read with zeros there) and for films continued or merged from one.
+    bool second_moments = true;
 };
 
 // Writes the film through write_file_safely; throws facet::Error naming the path.

@@ -6,12 +6,13 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
+#include "host/film/film_layout.hpp"
 
 namespace facet {
 
 void validate_film_payload(const FilmState& film, const std::string& path) {
     const std::size_t pixels = std::size_t(film.width) * std::size_t(film.height);
-    if (film.sums.size() != 2 * pixels * 4)
+    if (film.sums.size() != film_floats(pixels))
         throw Error(fmt::format("{}: the film of {}x{} pixels holds {} values: corrupt", path, film.width, film.height,
                                 film.sums.size()));
     const std::uint64_t half_samples[2] = {even_samples(film.samples), odd_samples(film.samples)};
@@ -46,6 +47,18 @@ void validate_film_payload(const FilmState& film, const std::string& path) {
                     fmt::format("{}: the {}-sample half's {} light adds up to {:g}, below zero: the film is "
                                 "corrupt and cannot be continued or merged",
                                 path, half_name[k], channel[c], total[c]));
+        // The second moments: sums of squares, so finite and not negative
+        const float* squares = film.sums.data() + film_rgba_floats(pixels) + std::size_t(k) * pixels;
+        for (std::size_t i = 0; i < pixels; ++i) {
+            const float v = squares[i];
+            if (std::isfinite(v) && v >= 0.0f && (half_samples[k] > 0 || v == 0.0f)) continue;
+            throw Error(
+                fmt::format("{}: pixel ({}, {}) of the {}-sample half has the second moment {}: {}; the film "
+                            "is corrupt and cannot be continued or merged",
+                            path, i % std::size_t(film.width), i / std::size_t(film.width), half_name[k], v,
+                            half_samples[k] == 0 ? "but the half holds no samples"
+                                                 : "a sum of squares is a finite number, not below zero"));
+        }
     }
 }
 

@@ -1,3 +1,4 @@
+#include "host/film/film_layout.hpp"
 #include "host/render/adaptive_bands.hpp"
 
 #include <cmath>
@@ -9,7 +10,7 @@ namespace facet {
 
 ResolvedBands resolve_bands(const std::vector<float>& sums, const BandLayout& layout) {
     const std::size_t w = std::size_t(layout.width), h = std::size_t(layout.height), n = w * h;
-    if (sums.size() != 2 * n * 4 || layout.spp.size() != std::size_t(layout.bands()))
+    if (sums.size() != film_floats(n) || layout.spp.size() != std::size_t(layout.bands()))
         throw Error("adaptive tiles: the accumulation buffer or the band counts do not fit the image");
     ResolvedBands r;
     r.rgb.assign(3 * n, 0.0f);

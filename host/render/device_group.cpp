@@ -1,3 +1,4 @@
+#include "host/film/film_layout.hpp"
 #include "host/render/device_group.hpp"
 
 #include <algorithm>
@@ -85,7 +86,7 @@ DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, co
     renderers_.resize(n);
     shares_.resize(n);
     rate_.assign(n, 0.0);
-    committed_.assign(n, std::vector<float>(2 * pixel_count() * 4, 0.0f));
+    committed_.assign(n, std::vector<float>(film_floats(pixel_count()), 0.0f));
     // One program per device, built concurrently.
     std::vector<std::exception_ptr> errors = for_each_concurrently(n, [&](std::size_t i) {
         shares_[i].desc = contexts_[i]->desc();
@@ -232,8 +233,9 @@ void DeviceGroup::local_reset() {
     stats_.render_seconds = base_seconds_;
 }
 
-void DeviceGroup::restore(const std::vector<float>& sums, const SampleRanges& samples, double render_seconds) {
-    if (sums.size() != 2 * pixel_count() * 4)
+void DeviceGroup::restore(const std::vector<float>& sums, const SampleRanges& samples, double render_seconds,
+                          bool second_moments) {
+    if (sums.size() != film_floats(pixel_count()))
         throw Error(fmt::format("a film of {} values does not fit a {}x{} image", sums.size(), width_, height_));
     if (first_sample_ > 0 && first_sample_ < next_sample(samples))
         throw Error(fmt::format("the film holds samples {}: samples from {} would repeat some of them",
@@ -244,12 +246,13 @@ void DeviceGroup::restore(const std::vector<float>& sums, const SampleRanges& sa
         if (ranks_.leads()) base_ = sums;
         base_samples_ = normalized(samples);
         base_seconds_ = render_seconds;
+        second_moments_ = second_moments;
     }
     local_reset();
 }
 
 std::vector<float> DeviceGroup::accumulation() const {
-    std::vector<float> sums = base_.empty() ? std::vector<float>(2 * pixel_count() * 4, 0.0f) : base_;
+    std::vector<float> sums = base_.empty() ? std::vector<float>(film_floats(pixel_count()), 0.0f) : base_;
     if (ranks_.size() > 1) {
         for (std::size_t k = 0; k < reduced_.size(); ++k) sums[k] += reduced_[k];
         return sums;
@@ -259,7 +262,7 @@ std::vector<float> DeviceGroup::accumulation() const {
     return sums;
 }
 
-FilmHalves DeviceGroup::halves() const { return film_halves(accumulation(), pixel_count(), samples_); }
+FilmHalves DeviceGroup::halves() const { return film_halves(accumulation(), pixel_count(), samples_, second_moments_); }
 
 std::vector<float> DeviceGroup::image(double* rejected_samples) const {
     FilmHalves h = halves();

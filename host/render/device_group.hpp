@@ -81,7 +81,11 @@ public:
     // Continues a film (film/film_state.hpp) of the same scene and settings: its sums and
     // samples are kept and rendering goes on after its last sample index (or at
     // first_sample when that is later; earlier is refused, as it would repeat samples).
-    void restore(const std::vector<float>& sums, const SampleRanges& samples, double render_seconds);
+    // `second_moments`: whether the film's sums hold its samples' second moments
+    // (film_layout.hpp; films written before format version 3 do not), and so the result's.
+    void restore(const std::vector<float>& sums, const SampleRanges& samples, double render_seconds,
+                 bool second_moments = true);
+    bool second_moments() const { return second_moments_; }
 
     // As of the last finished pass: the sums (film layout), their sample indices, the
     // half-images and the image (3 floats a pixel; `rejected_samples` as Renderer's).
@@ -145,7 +149,8 @@ private:
     std::vector<float> base_;                    // a restored film's sums
     SampleRanges base_samples_;
     double base_seconds_ = 0.0;
-    SampleRanges samples_;  // of the film: base and finished passes
+    bool second_moments_ = true;  // false once a film without them is restored
+    SampleRanges samples_;        // of the film: base and finished passes
     std::uint64_t first_sample_ = 0;
     std::uint64_t next_ = 0;      // the index of the current pass's first sample
     std::vector<Job> pass_jobs_;  // the current pass's jobs, to deal again if a device fails

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "host/film/film_layout.hpp"
 #include "host/render/device_group.hpp"
 
 #include "host/error.hpp"
@@ -105,7 +106,7 @@ void DeviceGroup::rank_end_pass(std::uint32_t count, double seconds) {
         // the films of every rank are summed to rank 0.
         const auto start = Clock::now();
         ranks_.gather(0.0);
-        std::vector<float> local(2 * pixel_count() * 4, 0.0f);
+        std::vector<float> local(film_floats(pixel_count()), 0.0f);
         for (const std::vector<float>& c : committed_)
             for (std::size_t k = 0; k < local.size(); ++k) local[k] += c[k];
         if (ranks_.leads()) reduced.assign(local.size(), 0.0f);

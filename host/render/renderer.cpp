@@ -1,3 +1,4 @@
+#include "host/film/film_layout.hpp"
 #include "host/render/renderer.hpp"
 
 #include <algorithm>
@@ -27,7 +28,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
     : ctx_(ctx), width_(int(dev.params.width)), height_(int(dev.params.height)) {
     if (width_ < 1 || height_ < 1) throw Error(fmt::format("invalid image size {}x{}", width_, height_));
     params_ = dev.params;
-    const std::size_t accum_bytes = 2 * pixel_count() * sizeof(cl_float4);
+    const std::size_t accum_bytes = film_floats(pixel_count()) * sizeof(float);
     check_device_memory(ctx.desc(), scene_buffer_needs(dev, accum_bytes));
 
     stats_.features = generic ? all_features() : scene_features(scene);
@@ -53,8 +54,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
 
 void Renderer::reset() {
     cl_call("clearing the image", [&] {
-        ctx_.queue().enqueueFillBuffer(accum_, cl_float4{{0.0f, 0.0f, 0.0f, 0.0f}}, 0,
-                                       2 * pixel_count() * sizeof(cl_float4));
+        ctx_.queue().enqueueFillBuffer(accum_, 0.0f, 0, film_floats(pixel_count()) * sizeof(float));
         ctx_.queue().finish();
     });
     stats_.samples_per_pixel = 0;
@@ -62,14 +62,14 @@ void Renderer::reset() {
 }
 
 std::vector<float> Renderer::accumulation() const {
-    std::vector<float> sums(2 * pixel_count() * 4);
+    std::vector<float> sums(film_floats(pixel_count()));
     cl_call("reading the image back",
             [&] { ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data()); });
     return sums;
 }
 
 void Renderer::restore(const std::vector<float>& sums, std::uint64_t spp, double render_seconds) {
-    if (sums.size() != 2 * pixel_count() * 4)
+    if (sums.size() != film_floats(pixel_count()))
         throw Error(fmt::format("a film of {} values does not fit a {}x{} image", sums.size(), width_, height_));
     if (spp > 0xffffffffull) throw Error(fmt::format("a film of {} samples per pixel is beyond 2^32", spp));
     cl_call("uploading the film",
@@ -120,10 +120,10 @@ void Renderer::render(std::uint32_t count, std::uint32_t max_rows_per_launch) {
 
 Renderer::Halves Renderer::halves() const {
     const std::size_t n = pixel_count();
-    std::vector<float> sums(2 * n * 4);
+    std::vector<float> sums(film_floats(n));
     cl_call("reading the image back",
             [&] { ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data()); });
-    return film_halves(sums, n, SampleRanges{{0, stats_.samples_per_pixel}});
+    return film_halves(sums, n, SampleRanges{{0, stats_.samples_per_pixel}}, true);
 }
 
 std::vector<float> Renderer::image(double* rejected_samples) const {

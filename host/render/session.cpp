@@ -63,7 +63,8 @@ RenderSession::RenderSession(const Scene& scene, SessionOptions options) : scene
     group_ = std::make_unique<DeviceGroup>(std::move(contexts), scene, bvh_, *device_scene_, options_.generic,
                                            options_.samples_from, options_.warn);
     if (options_.resume)
-        group_->restore(options_.resume->sums, options_.resume->samples, options_.resume->render_seconds);
+        group_->restore(options_.resume->sums, options_.resume->samples, options_.resume->render_seconds,
+                        options_.resume->second_moments);
 }
 
 RenderSession::~RenderSession() = default;
@@ -86,13 +87,16 @@ std::vector<float> RenderSession::image(double* rejected_samples) const {
 
 FilmState RenderSession::film() const {
     if (!has_film()) throw Error("the tile mode's bands hold different sample counts, which a film cannot hold");
-    return make_film(scene_, film_identity_, group_->samples(), group_->stats().render_seconds, group_->accumulation());
+    FilmState f =
+        make_film(scene_, film_identity_, group_->samples(), group_->stats().render_seconds, group_->accumulation());
+    f.second_moments = group_->second_moments();
+    return f;
 }
 
 DenoisedImage RenderSession::denoised(const DenoiseSettings& settings) const {
     if (!denoiser_.valid() || !aovs_) throw Error("denoise: the render session was not opened for denoising");
     const FilmState f = film();
-    const FilmHalves halves = film_halves(f.sums, std::size_t(f.width) * std::size_t(f.height), f.samples);
+    const FilmHalves halves = film_halves(f);
     return denoiser_.get()->run(std::uint32_t(f.width), std::uint32_t(f.height), halves, *aovs_, settings);
 }
 

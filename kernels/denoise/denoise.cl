@@ -12,9 +12,13 @@
  * 2 radius + 1 offsets of one window row. A work item filters 8 neighbouring pixels of a row
  * in float8 lanes, on planes (one a channel) padded with copies of the border
  * (FcDenoiseParams.pad), so that no load needs a bounds check. Kernels:
+ *   denoise_variance_rows  the row pass of the variance box: each half's variance source
+ *                       (host/denoise/denoise_variance.hpp: its own, from its second moments,
+ *                       or the pair's (a - b)^2) summed along rows
  *   denoise_prepare     the padded planes: each half's colour and the variance of its pixel
- *                       mean, Var(a) = E[(a - b)^2] n_b / n (the mean over channels and over
- *                       a box of (2 variance_radius + 1)^2 pixels), and the features
+ *                       mean (the column pass: the mean over channels and over a box of
+ *                       (2 variance_radius + 1)^2 pixels, times the half's scale), and the
+ *                       features
  *   denoise_terms       the colour terms of one window row's offsets
  *   denoise_accumulate  the weights and weighted sums of one window row
  *   denoise_finish      the denoised halves, 3 floats a pixel, top row first
@@ -50,13 +54,14 @@ inline DenoiseFeature denoise_feature_at(__constant const FcDenoiseParams* p, __
     return v;
 }
 
-/* One pixel's row sum of the squared half difference (denoise_pair_row), 1 float a pixel. */
-__kernel void denoise_difference(__constant const FcDenoiseParams* p, __global const float* a, __global const float* b,
-                                 __global float* rows) {
-    uint gid = get_global_id(0);
-    if (gid >= p->width * p->height) return;
-    int w = (int)p->width;
-    rows[gid] = denoise_pair_row(a, b, w, (int)p->variance_radius, (int)gid % w, (int)gid / w);
+/* One pixel's row sum of a half's variance source (denoise_variance_row): both halves,
+ * 1 float a pixel, half a's plane then half b's, as `source`. */
+__kernel void denoise_variance_rows(__constant const FcDenoiseParams* p, __global const float* source,
+                                    __global float* rows) {
+    uint gid = get_global_id(0), pixels = p->width * p->height;
+    if (gid >= 2u * pixels) return;
+    int w = (int)p->width, i = (int)(gid % pixels);
+    rows[gid] = denoise_variance_row(source + (gid - (uint)i), w, (int)p->variance_radius, i % w, i / w);
 }
 
 /* The sums of 3 neighbouring terms from t, for 8 pixels: one row of a 3 x 3 patch. */
@@ -65,8 +70,8 @@ inline float8 denoise_box3(__global const float* t) {
 }
 
 /* One padded pixel of the colour and feature planes, from the halves a and b, their
- * difference's row sums (denoise_difference) and the features as the host holds them
- * (3 floats a pixel, depth 1). */
+ * variance sources' row sums (denoise_variance_rows) and the features as the host holds
+ * them (3 floats a pixel, depth 1). */
 __kernel void denoise_prepare(__constant const FcDenoiseParams* p, __global const float* a, __global const float* b,
                               __global const float* rows, __global const float* albedo, __global const float* normal,
                               __global const float* depth, __global float* colour, __global float* features) {
@@ -76,15 +81,16 @@ __kernel void denoise_prepare(__constant const FcDenoiseParams* p, __global cons
     int x = clamp((int)(gid % p->pitch) - (int)p->pad, 0, w - 1),
         y = clamp((int)(gid / p->pitch) - (int)p->pad, 0, h - 1);
     uint i = (uint)(y * w + x);
-    float v = denoise_pair_variance(rows, w, h, (int)p->variance_radius, x, y);
+    int vr = (int)p->variance_radius;
+    float va = denoise_box_variance(rows, w, h, vr, x, y), vb = denoise_box_variance(rows + w * h, w, h, vr, x, y);
     for (uint c = 0; c < 3; ++c) {
         colour[c * n + gid] = a[3 * i + c];
         colour[(4 + c) * n + gid] = b[3 * i + c];
         features[c * n + gid] = albedo[3 * i + c];
         features[(3 + c) * n + gid] = normal[3 * i + c];
     }
-    colour[3 * n + gid] = p->variance_scale_a * v;
-    colour[7 * n + gid] = p->variance_scale_b * v;
+    colour[3 * n + gid] = p->variance_scale_a * va;
+    colour[7 * n + gid] = p->variance_scale_b * vb;
     features[6 * n + gid] = depth[i];
 }
 

@@ -74,23 +74,20 @@ inline float8 denoise_feature_distance(DenoiseFeatureScale s, DenoiseFeature i, 
     return (er * er + eg * eg + eb * eb) * s.albedo + (ex * ex + ey * ey + ez * ez) * s.normal + depth * s.depth;
 }
 
-/* The variance estimate's box, split into a row pass and a column pass: the sum over
- * channels and over the row segment of (2 r + 1) pixels around (x, y), clipped at the
- * border, of (a - b)^2 (the halves a and b, 3 floats a pixel, width w)... */
-inline float denoise_pair_row(__global const float* a, __global const float* b, int w, int r, int x, int y) {
+/* The variance estimate's box, split into a row pass and a column pass: the sum over the
+ * row segment of (2 r + 1) pixels around (x, y), clipped at the border, of a half's
+ * variance source (1 float a pixel, width w: summed over channels,
+ * host/denoise/denoise_variance.hpp)... */
+inline float denoise_variance_row(__global const float* source, int w, int r, int x, int y) {
     int x0 = max(x - r, 0), x1 = min(x + r, w - 1);
     float sum = 0.0f;
-    for (int qx = x0; qx <= x1; ++qx)
-        for (int c = 0; c < 3; ++c) {
-            float d = a[3 * (y * w + qx) + c] - b[3 * (y * w + qx) + c];
-            sum += d * d;
-        }
+    for (int qx = x0; qx <= x1; ++qx) sum += source[y * w + qx];
     return sum;
 }
 
 /* ... and the mean over channels and over the box of (2 r + 1)^2 pixels around (x, y) from
  * those row sums (`rows`, 1 float a pixel, width w, height h). */
-inline float denoise_pair_variance(__global const float* rows, int w, int h, int r, int x, int y) {
+inline float denoise_box_variance(__global const float* rows, int w, int h, int r, int x, int y) {
     int x0 = max(x - r, 0), x1 = min(x + r, w - 1), y0 = max(y - r, 0), y1 = min(y + r, h - 1);
     float sum = 0.0f;
     for (int qy = y0; qy <= y1; ++qy) sum += rows[qy * w + x];

@@ -177,7 +177,9 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
 /* Adds samples [sample_begin, sample_begin + sample_count) of each pixel of rows
  * [row_begin, row_begin + row_count). The accumulation buffer holds two images:
  * accum[pixel] sums the even-numbered samples, accum[width * height + pixel] the odd
- * ones, so the host can estimate the error from the two independent halves. */
+ * ones, so the host can estimate the error from the two independent halves; after them,
+ * one float a pixel and half, the sums of each sample's r^2 + g^2 + b^2 (the second
+ * moments, from which a half's own variance follows: host/film/film_layout.hpp). */
 __kernel void render_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     uint gid = get_global_id(0);
     uint x = gid % params->width;
@@ -186,6 +188,7 @@ __kernel void render_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     SceneView sc = FC_SCENE_VIEW_INIT;
     uint pixel = y * params->width + x;
     float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
+    float square[2] = {0.0f, 0.0f};
     for (uint i = 0; i < params->sample_count; ++i) {
         uint index = params->sample_begin + i;
         Sampler sampler = sampler_init(params->sampler, params->seed, pixel, index);
@@ -197,11 +200,17 @@ __kernel void render_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             /* --clamp: the sample scaled down to its largest channel's limit (hue kept) */
             float peak = max3(l);
             if (peak > params->clamp) l *= params->clamp / peak;
-            sum[index & 1u].xyz += filter_weight * l;
+            float3 weighted = filter_weight * l;
+            sum[index & 1u].xyz += weighted;
+            square[index & 1u] += fmin(dot(weighted, weighted), FC_MAX_SQUARE);
         } else sum[index & 1u].w += 1.0f;
     }
     accum[pixel] += sum[0];
-    accum[params->width * params->height + pixel] += sum[1];
+    uint pixels = params->width * params->height;
+    accum[pixels + pixel] += sum[1];
+    __global float* squares = (__global float*)(accum + 2u * pixels);
+    squares[pixel] += square[0];
+    squares[pixels + pixel] += square[1];
 }
 
 #endif

@@ -20,12 +20,13 @@ typedef struct FcDenoiseParams {
     fc_uint patch_radius;    /* the colour distance's patch: (2 patch_radius + 1)^2 pixels */
     fc_uint guides;          /* FC_DENOISE_GUIDE_* bits */
     fc_uint variance_radius; /* the box that smooths the half's variance estimate */
-    float variance_scale_a;  /* half a's variance over E[(a - b)^2]: n_b / (n_a + n_b) */
+    float variance_scale_a;  /* half a's variance over the box mean of its variance source / 3
+                                (host/denoise/denoise_variance.hpp) */
     float k_color;           /* the colour distance's scale, in standard deviations (Rousselle et al. 2012's k) */
     float sigma_albedo;      /* albedo difference (Euclidean, RGB) at one standard deviation of the weight */
     float sigma_normal;      /* normal difference (Euclidean) at one standard deviation */
     float sigma_depth;       /* depth difference relative to the larger depth, at one standard deviation */
-    float variance_scale_b;  /* half b's: n_a / (n_a + n_b) */
+    float variance_scale_b;  /* half b's */
     /* The planes the filter reads (kernels/denoise/denoise.cl): the image widened to
      * width8 (a multiple of 8) and padded by `pad` pixels on every side with copies of its
      * border, so that no load of the filter needs a bounds check */

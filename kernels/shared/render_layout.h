@@ -39,6 +39,9 @@ enum { FC_SAMPLER_LIST(FC_RENDER_ENUM_VALUE) FC_SAMPLER_COUNT };
  * scene may give: 2^24 samples (the most a render takes) of it sum to 1.7e37, so the
  * float accumulation, the image and the report stay finite. */
 #define FC_MAX_RADIANCE 1e30f
+/* The largest r^2 + g^2 + b^2 one sample adds to its pixel's second moment (larger ones
+ * are clamped to it): 2^24 samples of it sum to 1.7e37, finite like the sums. */
+#define FC_MAX_SQUARE 1e30f
 
 /* A pinhole, thin-lens or orthographic camera. `right` and `up` span half the image
  * plane: for a perspective camera at distance 1 along `forward` (so |up| =

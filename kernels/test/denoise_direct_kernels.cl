@@ -1,24 +1,21 @@
 /* Test entry point for kernels/denoise/denoise.cl (tests/denoiser_test.cpp): the same filter
  * written directly, one pixel at a time, its whole window and every patch (O(window x
- * patch) colour terms a pixel), and the variance estimate as one 2-D box from the halves,
+ * patch) colour terms a pixel), and the variance estimate as one 2-D box of its source,
  * reading only the colours and features of the planes denoise_prepare makes, to check the
  * offset-wise kernels and the separable variance box against. */
 #include "kernels/denoise/denoise.cl"
 
-/* The variance of half k's pixel mean at image pixel (x, y): E[(a - b)^2] over channels
- * and the box of (2 variance_radius + 1)^2 pixels clipped at the border, times n_other / n
- * (the halves a and b, 3 floats a pixel). */
-inline float direct_variance(__constant const FcDenoiseParams* p, __global const float* a, __global const float* b,
-                             uint k, int x, int y) {
+/* The variance of half k's pixel mean at image pixel (x, y): the mean over channels and
+ * over the box of (2 variance_radius + 1)^2 pixels clipped at the border of half k's
+ * variance source (`source`: 1 float a pixel summed over channels, half a's plane then
+ * half b's), times the half's scale. */
+inline float direct_variance(__constant const FcDenoiseParams* p, __global const float* source, uint k, int x, int y) {
     int w = (int)p->width, h = (int)p->height, r = (int)p->variance_radius;
     int x0 = max(x - r, 0), x1 = min(x + r, w - 1), y0 = max(y - r, 0), y1 = min(y + r, h - 1);
+    __global const float* plane = source + k * (uint)(w * h);
     float sum = 0.0f;
     for (int qy = y0; qy <= y1; ++qy)
-        for (int qx = x0; qx <= x1; ++qx)
-            for (int c = 0; c < 3; ++c) {
-                float d = a[3 * (qy * w + qx) + c] - b[3 * (qy * w + qx) + c];
-                sum += d * d;
-            }
+        for (int qx = x0; qx <= x1; ++qx) sum += plane[qy * w + qx];
     float mean = sum / (3.0f * (float)((x1 - x0 + 1) * (y1 - y0 + 1)));
     return (k == 0u ? p->variance_scale_a : p->variance_scale_b) * mean;
 }
@@ -26,11 +23,11 @@ inline float direct_variance(__constant const FcDenoiseParams* p, __global const
 /* Half k's colour and variance at image pixel (x, y) clamped into the image, in every
  * lane. */
 inline DenoiseColor direct_color(__constant const FcDenoiseParams* p, __global const float* colour,
-                                 __global const float* a, __global const float* b, uint k, int x, int y) {
+                                 __global const float* source, uint k, int x, int y) {
     x = clamp(x, 0, (int)p->width - 1), y = clamp(y, 0, (int)p->height - 1);
     __global const float* c = colour + 4 * k * p->plane + denoise_padded(p, x, y);
     DenoiseColor v = {(float8)(c[0]), (float8)(c[p->plane]), (float8)(c[2 * p->plane]),
-                      (float8)(direct_variance(p, a, b, k, x, y))};
+                      (float8)(direct_variance(p, source, k, x, y))};
     return v;
 }
 
@@ -46,14 +43,14 @@ inline DenoiseFeature direct_feature(__constant const FcDenoiseParams* p, __glob
 
 /* One pixel of half k denoised directly, 3 floats a pixel. */
 __kernel void denoise_direct(__constant const FcDenoiseParams* p, __global const float* colour,
-                             __global const float* features, __global const float* a, __global const float* b, uint k,
+                             __global const float* features, __global const float* source, uint k,
                              __global float* out) {
     uint gid = get_global_id(0);
     if (gid >= p->width * p->height) return;
     int w = (int)p->width, h = (int)p->height, r = (int)p->radius, pr = (int)p->patch_radius;
     int x = (int)gid % w, y = (int)gid / w;
     float k2 = p->k_color * p->k_color, inv_patch = 1.0f / (float)((2 * pr + 1) * (2 * pr + 1));
-    DenoiseColor cp = direct_color(p, colour, a, b, k, x, y);
+    DenoiseColor cp = direct_color(p, colour, source, k, x, y);
     float3 correction = (float3)(0.0f);
     float weights = 0.0f;
     for (int qy = max(y - r, 0); qy <= min(y + r, h - 1); ++qy)
@@ -65,13 +62,13 @@ __kernel void denoise_direct(__constant const FcDenoiseParams* p, __global const
                 float s = 0.0f;
                 for (int sy = -pr; sy <= pr; ++sy)
                     for (int sx = -pr; sx <= pr; ++sx)
-                        s += denoise_color_term(direct_color(p, colour, a, b, k, x + sx, y + sy),
-                                                direct_color(p, colour, a, b, k, qx + sx, qy + sy), k2)
+                        s += denoise_color_term(direct_color(p, colour, source, k, x + sx, y + sy),
+                                                direct_color(p, colour, source, k, qx + sx, qy + sy), k2)
                                  .s0;
                 d += fmax(s * inv_patch, 0.0f);
             }
             float wq = exp(-d);
-            DenoiseColor cq = direct_color(p, colour, a, b, k, qx, qy);
+            DenoiseColor cq = direct_color(p, colour, source, k, qx, qy);
             correction += wq * (float3)(cq.r.s0 - cp.r.s0, cq.g.s0 - cp.g.s0, cq.b.s0 - cp.b.s0);
             weights += wq;
         }

@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
         if (a.scene_hash != b.scene_hash || a.width != b.width || a.height != b.height)
             throw std::runtime_error(std::string(argv[2]) + " is not a render of the scene of " + argv[1]);
         const std::size_t pixels = std::size_t(a.width) * std::size_t(a.height);
-        const FilmHalves ha = film_halves(a.sums, pixels, a.samples), hb = film_halves(b.sums, pixels, b.samples);
+        const FilmHalves ha = film_halves(a), hb = film_halves(b);
         const std::vector<float> ma = film_mean(ha), mb = film_mean(hb);
         auto variance = [](const FilmHalves& h, std::size_t i) {
             const double n0 = double(h.samples[0]), n1 = double(h.samples[1]), n = n0 + n1;
