@@ -88,6 +88,12 @@ int run_denoise(const DenoiseOptions& opt) {
             return denoise(ctx, std::uint32_t(image.width), std::uint32_t(image.height), halves, features);
         },
         [](const std::string& w) { fmt::print(stderr, "facet: warning: {}\n", w); });
+    if (with_film && d.denoiser == "facet" && !d.image.own_variance)
+        fmt::print(stderr,
+                   "facet: warning: {}: the film holds no second moments (written before film format 3, or "
+                   "continued from such a film), so facet's denoiser read each half's variance from both halves: "
+                   "the error estimate may read low below 16 spp (docs/denoising.md)\n",
+                   opt.film);
     ImageMetadata meta;
     meta.strings.push_back({"facet:denoiser", d.denoiser});
     meta.strings.push_back({"facet:denoised_from", opt.image});
