@@ -380,7 +380,7 @@ int run(int argc, char** argv) {
                    "when set, else the build's default)")
         ->check(CLI::IsMember({-1, 0, 1}));
     app.add_option("--bvh-intersection-cost", bvh_options.intersection_cost,
-                   "BVH knob: SAH cost of a triangle test against a node visit (default 1)");
+                   "BVH knob: SAH cost of a triangle block test against a node visit (default 4)");
     bool facet_only = false;
     app.add_flag("--facet-only", facet_only,
                  "Trace section: facet's traversal alone (no Embree, no render), for profiles and instruction counts");
@@ -449,7 +449,7 @@ int run(int argc, char** argv) {
                                                 build_md, trace_md, render_md));
         }
         bench_print(
-            "\n### BVH build (one thread; SAH cost normalised by the root's area, traversal = one 4-triangle block test = 1)\n\n{}",
+            "\n### BVH build (one thread; SAH cost normalised by the root's area, a node visit 1, a 4-triangle block test 4)\n\n{}",
             build_md.str());
         if (only != "build") {
             bench_print(

@@ -314,7 +314,9 @@ TEST(Bvh, NoSelfHitsOnAPlaneThroughZeroAtLargeScale) {
             const glm::vec3 l0 = scale * glm::vec3(0.0f, 2.0f, -1.0f), lx = scale * glm::vec3(2.0f, 0.0f, 0.0f);
             std::vector<glm::vec3> soup = {w0, w0 + wy, w0 + wy + wz, w0, w0 + wy + wz, w0 + wz,
                                            l0, l0 + lx, l0 + lx + wz, l0, l0 + lx + wz, l0 + wz};
-            Bvh bvh = build_bvh(soup, with_layout({}, layout));
+            BvhOptions one_leaf;  // both planes in one leaf: a block test as cheap as a node visit
+            one_leaf.intersection_cost = 1.0f;
+            Bvh bvh = build_bvh(soup, with_layout(one_leaf, layout));
             ASSERT_EQ(bvh.stats.leaves, 1u);
             std::mt19937 rng(6);
             std::uniform_real_distribution<float> u01(0.0f, 1.0f), u(-1.0f, 1.0f);

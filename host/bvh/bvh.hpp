@@ -17,7 +17,9 @@ struct BvhOptions {
     int max_leaf_size = 8;           // a leaf never holds more triangles than this
     int exact_max = 16;              // ranges up to this size get the exact SAH sweep (0: bin everywhere)
     float traversal_cost = 1.0f;     // SAH cost of visiting a node, relative to...
-    float intersection_cost = 1.0f;  // ...the cost of one ray/triangle block test
+    float intersection_cost = 4.0f;  // ...the cost of one ray/triangle block test: fitted to the
+                                     // trace kernels' instructions on PoCL (docs/performance.md,
+                                     // "The SAH's block test cost"), flat from 4 on
     int block_size = 4;              // triangles tested at once (FcTriBlock lanes): a leaf of n costs
                                      // ceil(n / block_size) tests (Embree's blocked SAH); 1, 2, 4 or 8
     int width = 0;                   // node width, 4 (FcBvhNode) or 8 (FcBvhNode8); 0: FACET_BVH_WIDTH
