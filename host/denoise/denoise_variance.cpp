@@ -55,13 +55,13 @@ DenoiseVariance denoise_variance(std::size_t width, std::size_t height, const Fi
     for (int k = 0; k < 2; ++k) {
         const std::vector<float>& m = h.rgb[k];
         const double to_mean = 1.0 / (double(h.samples[k]) - 1.0);
+        v.scale[k] = float(to_mean);
         for (std::size_t i = 0; i < pixels; ++i) {
             double spread = double(h.square[k][i]);
             for (std::size_t c = 0; c < 3; ++c) spread -= double(m[3 * i + c]) * double(m[3 * i + c]);
             spread = std::max(spread, 0.0);  // float rounding of q - m^2
             v.source[std::size_t(k) * pixels + i] = float(spread);
             own[i] += spread * to_mean;
-            v.scale[k] = float(to_mean);
         }
     }
     // The calibration rho over the box around each pixel (1 where the box holds no spread)
