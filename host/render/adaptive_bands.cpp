@@ -1,10 +1,10 @@
-#include "host/film/film_layout.hpp"
 #include "host/render/adaptive_bands.hpp"
 
 #include <cmath>
 #include <cstddef>
 
 #include "host/error.hpp"
+#include "host/film/film_layout.hpp"
 
 namespace facet {
 

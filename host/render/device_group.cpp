@@ -1,4 +1,3 @@
-#include "host/film/film_layout.hpp"
 #include "host/render/device_group.hpp"
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "host/error.hpp"
+#include "host/film/film_layout.hpp"
 #include "host/render/film_identity.hpp"
 #include "host/util/clock.hpp"
 
@@ -265,7 +265,8 @@ std::vector<float> DeviceGroup::accumulation() const {
 FilmHalves DeviceGroup::halves() const { return film_halves(accumulation(), pixel_count(), samples_, second_moments_); }
 
 std::vector<float> DeviceGroup::image(double* rejected_samples) const {
-    FilmHalves h = halves();
+    // The means alone: no second moments
+    const FilmHalves h = film_halves(accumulation(), pixel_count(), samples_, false);
     if (rejected_samples) *rejected_samples = h.rejected;
     return film_mean(h);
 }

@@ -1,4 +1,3 @@
-#include "host/film/film_layout.hpp"
 #include "host/render/renderer.hpp"
 
 #include <algorithm>
@@ -8,6 +7,7 @@
 
 #include "host/cl/upload.hpp"
 #include "host/error.hpp"
+#include "host/film/film_layout.hpp"
 #include "host/render/features.hpp"
 
 namespace facet {
@@ -119,15 +119,12 @@ void Renderer::render(std::uint32_t count, std::uint32_t max_rows_per_launch) {
 }
 
 Renderer::Halves Renderer::halves() const {
-    const std::size_t n = pixel_count();
-    std::vector<float> sums(film_floats(n));
-    cl_call("reading the image back",
-            [&] { ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data()); });
-    return film_halves(sums, n, SampleRanges{{0, stats_.samples_per_pixel}}, true);
+    return film_halves(accumulation(), pixel_count(), SampleRanges{{0, stats_.samples_per_pixel}}, true);
 }
 
 std::vector<float> Renderer::image(double* rejected_samples) const {
-    const Halves h = halves();
+    // The means alone: no second moments
+    const Halves h = film_halves(accumulation(), pixel_count(), SampleRanges{{0, stats_.samples_per_pixel}}, false);
     if (rejected_samples) *rejected_samples = h.rejected;
     return film_mean(h);
 }
