@@ -22,9 +22,10 @@
 namespace facet {
 namespace {
 
-// The area light of triangle t: edges ordered so that cross(e1, e2) points to the
-// side its shading normals face (the emitting side).
-FcLight triangle_light(const Scene& scene, std::size_t t, float area) {
+// The area light of triangle t of material m: edges ordered so that cross(e1, e2) points
+// to the side its shading normals face (the emitting side), whose unit normal, emission
+// and two-sidedness are stored with it (scene_layout.h).
+FcLight triangle_light(const Scene& scene, std::size_t t, float area, const Material& m) {
     const glm::vec3* v = &scene.vertices[3 * t];
     const FcTriShading& sh = scene.shading[t];
     glm::vec3 e1 = v[1] - v[0], e2 = v[2] - v[0];
@@ -38,6 +39,9 @@ FcLight triangle_light(const Scene& scene, std::size_t t, float area) {
     light.type = FC_LIGHT_AREA_TRIANGLE;
     light.prim = static_cast<fc_int>(t);
     light.area = area;
+    store(light.color, m.emission);
+    light.flags = m.two_sided_emission ? FC_MAT_TWO_SIDED_EMISSION : 0u;
+    store(light.n, unit_or(wide_cross(e1, e2), glm::vec3(0.0f, 0.0f, 1.0f)));
     return light;
 }
 
@@ -97,7 +101,7 @@ void build_lights(Scene& scene) {
         if (!(area > 0.0f) || !std::isfinite(area)) continue;
         const double sides = m.two_sided_emission ? 2.0 : 1.0;
         sh.light = static_cast<fc_int>(scene.lights.size());
-        scene.lights.push_back(triangle_light(scene, t, area));
+        scene.lights.push_back(triangle_light(scene, t, area, m));
         power.push_back(kPi * double(area) * lum * sides);
     }
     for (FcSphere& s : scene.spheres) {

@@ -1,7 +1,8 @@
 /* Area lights: emitting triangles, picked in proportion to power and sampled
- * uniformly by area. Radiance L_e comes from the triangle's material; a light
- * emits on the side cross(e1, e2) points to, or on both sides when its material
- * has FC_MAT_TWO_SIDED_EMISSION. (Sampling by solid angle, Arvo 1995, was tried and
+ * uniformly by area. Radiance L_e is the triangle's material's emission, which the
+ * host copies into the light record with the unit normal and the material's
+ * FC_MAT_TWO_SIDED_EMISSION (kernels/shared/scene_layout.h); a light emits on the side
+ * cross(e1, e2) points to, or on both sides when its material has that flag. (Sampling by solid angle, Arvo 1995, was tried and
  * dropped: docs/lights.md.) */
 #ifndef FACET_LIGHTS_AREA_CL
 #define FACET_LIGHTS_AREA_CL
@@ -16,9 +17,8 @@ inline float2 square_to_triangle(float2 u) {
     return (float2)(su * (1.0f - u.y), su * u.y);
 }
 
-inline float3 area_light_normal(__global const FcLight* l) {
-    return normalize_scaled_or(cross(load3(l->e1), load3(l->e2)), (float3)(0.0f, 0.0f, 1.0f));
-}
+/* The unit normal of the emitting side, normalize(cross(e1, e2)), stored by the host. */
+inline float3 area_light_normal(__global const FcLight* l) { return load3(l->n); }
 
 /* A point uniformly distributed over the light's triangle. */
 inline float3 area_light_point(__global const FcLight* l, float2 u) {
@@ -37,7 +37,7 @@ inline float3 area_light_radiance(float3 emission, uint material_flags, float3 n
  * at the light, when lights are sampled by sample_area_light. */
 inline float area_light_pdf_solid_angle(__global const FcLight* l, float dist, float cos_light) {
     float c = fabs(cos_light);
-    return (c > 0.0f) ? l->pick_pdf / l->area * dist * dist / c : 0.0f;
+    return (c > 0.0f) ? l->pick_pdf * (dist * dist) / (l->area * c) : 0.0f;
 }
 
 #endif

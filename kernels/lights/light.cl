@@ -56,8 +56,7 @@ inline bool sample_light(const SceneView* sc, float3 p, float u_pick, float2 u, 
         ls->dist = sqrt(d2);
         ls->wi = to / ls->dist;
         ls->pdf = area_light_pdf_solid_angle(l, ls->dist, dot(ls->normal, ls->wi));
-        __global const FcMaterial* m = &sc->materials[sc->shading[l->prim].material];
-        ls->li = area_light_radiance(load3(m->emission), m->flags, ls->normal, -ls->wi);
+        ls->li = area_light_radiance(load3(l->color), l->flags, ls->normal, -ls->wi);
 #if FC_HAS_TEXTURES
         ls->li *= emission_texture_at(sc, l->prim, sc->shading[l->prim].material, square_to_triangle(u));
 #endif

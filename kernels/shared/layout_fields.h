@@ -48,7 +48,7 @@
     F(FcMaterial, specular_f90) F(FcMaterial, clearcoat_normal) \
     F(FcLight, p0) F(FcLight, type) F(FcLight, e1) F(FcLight, prim)                                                         \
     F(FcLight, e2) F(FcLight, area) F(FcLight, color) F(FcLight, pick_pdf)                                                  \
-    F(FcLight, cos_inner) F(FcLight, cos_outer)                                                                             \
+    F(FcLight, cos_inner) F(FcLight, cos_outer) F(FcLight, flags) F(FcLight, n)                                             \
     F(FcCamera, eye) F(FcCamera, projection) F(FcCamera, forward) F(FcCamera, right)                                        \
     F(FcCamera, up) F(FcCamera, lens_radius) F(FcCamera, focus_distance)                                                    \
     F(FcRenderParams, camera) F(FcRenderParams, width) F(FcRenderParams, height) F(FcRenderParams, sample_begin)            \

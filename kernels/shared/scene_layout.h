@@ -29,8 +29,10 @@ typedef struct FcTriShading {
 /* A light (docs/lights.md gives the units).
  * - Area light: one emitting triangle: `p0` a vertex, `e1`, `e2` its edges, ordered so
  *   that cross(e1, e2) points to the emitting side (the side its shading normals
- *   face); `prim` is the triangle's scene index, `area` its area; the radiance is its
- *   material's emission.
+ *   face); `prim` is the triangle's scene index, `area` its area; `color` its material's
+ *   emission and `flags` that material's FC_MAT_TWO_SIDED_EMISSION bit, `n` the unit
+ *   normal of cross(e1, e2): copied here so that a light sample reads one record
+ *   (kernels/lights/light.cl).
  * - Point and spot lights: position `p0`; spot axis `e1` (unit), cone cosines
  *   cos_inner >= cos_outer with a smoothstep falloff between. `color` is Hoffman's
  *   c_light at distance 1: the radiance of a white Lambertian surface facing the light
@@ -54,12 +56,15 @@ typedef struct FcLight {
     float pick_pdf;
     float cos_inner;
     float cos_outer;
-    float pad0[2];
+    fc_uint flags;
+    float pad0;
+    float n[3];
+    float pad1;
 } FcLight;
 
 FC_STATIC_ASSERT(sizeof(FcTriShading) == 48, "FcTriShading is 48 bytes");
 FC_STATIC_ASSERT(offsetof(FcTriShading, n1) == 16 && offsetof(FcTriShading, n2) == 32, "FcTriShading offsets");
-FC_STATIC_ASSERT(sizeof(FcLight) == 80, "FcLight is 80 bytes");
+FC_STATIC_ASSERT(sizeof(FcLight) == 96, "FcLight is 96 bytes");
 FC_STATIC_ASSERT(offsetof(FcLight, e1) == 16 && offsetof(FcLight, pick_pdf) == 60, "FcLight offsets");
 
 #endif
