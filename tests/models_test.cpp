@@ -366,6 +366,28 @@ TEST(Models, EnergyLossTable) {
     }
 }
 
+TEST(Models, LambertSampleIsItsEvalOverPdf) {
+    // A Lambertian lobe alone is sampled by its own short route (bsdf.cl,
+    // lambert_only_sample: weight = albedo): its f, pdf and weight must be those of the
+    // general route, bsdf_eval, bsdf_pdf and f cos / pdf, to rounding; so must a Lambert
+    // lobe under a specular one, which takes the general route.
+    std::vector<FcMaterial> mats;
+    std::vector<V3> wo;
+    const V3 dirs[] = {{0, 0, 1}, dir_at(45), dir_at(89.9), {1.0, 0.0, 1e-7}};
+    for (int specular : {FC_SPECULAR_NONE, FC_SPECULAR_MICROFACET})
+        for (float albedo : {0.0f, 0.18f, 1.0f})
+            for (V3 v : dirs) {
+                FcMaterial m = white(FC_DIFFUSE_LAMBERT, specular);
+                set3(m.diffuse, albedo, 0.5f * albedo, 1.0f);
+                mats.push_back(m), wo.push_back(v);
+            }
+    std::vector<int> c = run_per_wo<int>("models_bsdf_sample_consistency", mats, wo, 4096, 2);
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+        EXPECT_EQ(c[2 * i], 0) << "f, pdf or weight differ: " << describe_material(mats[i]) << " wo.z " << wo[i].z;
+        EXPECT_EQ(c[2 * i + 1], 0) << "bad sample: " << describe_material(mats[i]) << " wo.z " << wo[i].z;
+    }
+}
+
 TEST(Models, SampleMatchesEvalAndExtremes) {
     // The Blinn-Phong and Ashikhmin-Shirley samplers report exactly eval/pdf, and every
     // lobe stays finite and non-negative at extreme parameters and grazing directions.

@@ -95,6 +95,19 @@ inline bool bsdf_base_is_delta(const FcMaterial* m) {
     return m->diffuse_model == FC_DIFFUSE_NONE && specular_is_delta(m);
 }
 
+/* A Lambertian lobe alone, cosine-sampled: f = albedo / pi and pdf = cos / pi, so the
+ * weight f cos / pdf is the albedo itself, without evaluating the BSDF and its density
+ * (finish_sample's general route, which gives the same values to rounding). */
+inline bool lambert_only_sample(const FcMaterial* m, float2 u, BsdfSample* s) {
+    s->wi = square_to_cosine_hemisphere(u);
+    if (s->wi.z <= 0.0f) return false;
+    const float3 albedo = material_diffuse(m);
+    s->f = albedo * FC_INV_PI;
+    s->pdf = s->wi.z * FC_INV_PI;
+    s->weight = albedo;
+    return all_finite(s->weight);
+}
+
 /* u.z chooses the lobe, u.xy sample it. Returns false when no direction was made. */
 inline bool bsdf_base_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s) {
     s->delta = 0;
@@ -102,6 +115,8 @@ inline bool bsdf_base_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSampl
     if (bsdf_is_dielectric(m)) return dielectric_sample(m, wo, u, s);
 #endif
     if (wo.z <= 0.0f) return false;
+    if (m->diffuse_model == FC_DIFFUSE_LAMBERT && m->specular_model == FC_SPECULAR_NONE)
+        return lambert_only_sample(m, u.xy, s);
     float p = specular_probability(m, wo);
     if (u.z < p) {
         if (!specular_sample(m, wo, u.xy, s)) return false;

@@ -86,4 +86,35 @@ __kernel void models_sample_consistency(__global const FcMaterial* mats, __globa
     out[2 * i + 1] = bad;
 }
 
+/* The whole BSDF's sample against its eval and pdf (bsdf.cl): for each of `samples`
+ * samples, whether the reported f, pdf and weight differ from bsdf_eval, bsdf_pdf and
+ * f cos / pdf by more than float rounding (3e-6 relative; out[2i]), and whether the sample
+ * is bad: non-finite, negative, below the surface (out[2i + 1]). */
+__kernel void models_bsdf_sample_consistency(__global const FcMaterial* mats, __global const float* wos,
+                                             __global int* out, int n, int samples) {
+    int i = (int)get_global_id(0);
+    if (i >= n) return;
+    FcMaterial m = mats[i];
+    float3 wo = vload3(i, wos);
+    Rng rng = rng_init(7u, (uint)i, 0u);
+    int mismatch = 0, bad = 0;
+    for (int k = 0; k < samples; ++k) {
+        BsdfSample s;
+        float2 u2 = rng_float2(&rng);
+        if (!bsdf_sample(&m, wo, (float3)(u2, rng_float(&rng)), &s)) continue;
+        if (!all_finite(s.weight) || any(s.weight < 0.0f) || !(s.pdf > 0.0f) || !(s.wi.z > 0.0f)) {
+            ++bad;
+            continue;
+        }
+        float3 f = bsdf_eval(&m, wo, s.wi);
+        float pdf = bsdf_pdf(&m, wo, s.wi);
+        float3 w = f * (s.wi.z / pdf);
+        const float tol = 3e-6f;
+        if (any(fabs(f - s.f) > tol * f) || fabs(pdf - s.pdf) > tol * pdf || any(fabs(w - s.weight) > tol * w))
+            ++mismatch;
+    }
+    out[2 * i + 0] = mismatch;
+    out[2 * i + 1] = bad;
+}
+
 #endif
