@@ -26,7 +26,7 @@
 inline float fc_phong_exponent(float e) { return (e > 0.0f) ? fmin(e, FC_PHONG_EXPONENT_MAX) : 0.0f; }
 
 /* cos^e for cos in [0, 1]; 0 for cos <= 0 (never a pow of a negative base). */
-inline float fc_pow_cos(float c, float e) { return (c > 0.0f) ? pow(fmin(c, 1.0f), e) : 0.0f; }
+inline float fc_pow_cos(float c, float e) { return (c > 0.0f) ? pow_positive(fmin(c, 1.0f), e) : 0.0f; }
 
 /* The lobe at half vector h (wo, wi above the surface): its value, and through
  * *pdf its density (cos^(e+1) as cos^e cos: the one pow serves both). */

@@ -23,6 +23,15 @@ inline bool all_finite(float3 c) { return isfinite(c.x) && isfinite(c.y) && isfi
 
 inline float sqr(float x) { return x * x; }
 
+/* x^y for x > 0, as exp2(y log2 x). PoCL's pow() works in extended precision (its
+ * __pocl_epln and __pocl_expep were 6 % of material_grid's render-kernel instructions,
+ * docs/performance.md); this costs two built-ins of at most 3 ulp each (OpenCL 1.2) and
+ * the rounding of y log2 x, an error in the exponent that grows with |y log2 x|, so with
+ * how small the result is: within 1e-5 relative wherever x^y >= 1e-30, 2e-6 where
+ * x^y >= 1e-6 (Math.PowPositiveRelativeError). x = 0 gives 0 for y > 0; the callers keep
+ * x > 0 (0 * log2(0) would be NaN at y = 0). */
+inline float pow_positive(float x, float y) { return exp2(y * log2(x)); }
+
 inline float safe_sqrt(float x) { return sqrt(fmax(x, 0.0f)); }
 
 /* Normalises v, or returns `fallback` when v has zero or non-finite length. */
