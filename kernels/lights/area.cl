@@ -2,8 +2,8 @@
  * uniformly by area. Radiance L_e is the triangle's material's emission, which the
  * host copies into the light record with the unit normal and the material's
  * FC_MAT_TWO_SIDED_EMISSION (kernels/shared/scene_layout.h); a light emits on the side
- * cross(e1, e2) points to, or on both sides when its material has that flag. (Sampling by solid angle, Arvo 1995, was tried and
- * dropped: docs/lights.md.) */
+ * cross(e1, e2) points to, or on both sides when its material has that flag. (Sampling
+ * by solid angle, Arvo 1995, was tried and dropped: docs/lights.md.) */
 #ifndef FACET_LIGHTS_AREA_CL
 #define FACET_LIGHTS_AREA_CL
 
