@@ -3,16 +3,21 @@
 // accept those of the same scene compiled again.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "host/film/film_layout.hpp"
 #include "host/bvh/bvh.hpp"
+#include "host/cl/kernel_source.hpp"
 #include "host/film/film_merge.hpp"
 #include "host/render/film_identity.hpp"
+#include "host/render/renderer.hpp"
 #include "host/scene/texture.hpp"
 #include "tests/lit_scene.hpp"
 #include "tests/test_helpers.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -66,9 +71,46 @@ TEST(FilmIdentity, RefusesAnotherSphereTextureOrUvScale) {
     for (const auto& [what, changed] : changes) {
         EXPECT_NE(identity(changed), identity(base)) << what;
         for (const std::string& msg : refusals(base, changed))
-            EXPECT_NE(msg.find("the film was rendered from another scene (identity "), std::string::npos)
-                << what << ": " << msg;
+            EXPECT_NE(msg.find("the film was rendered from another scene"), std::string::npos) << what << ": " << msg;
     }
+}
+
+// The identity covers the render kernels' code: the digest of the render program's sources
+// (every file path.cl includes) ignores where they were read from (#line directives) and
+// changes with any other line; a film of the same scene and settings whose identity differs
+// (another facet's kernels) is refused, and the message says that kernels may be why.
+TEST(FilmIdentity, CoversTheRenderKernelsCode) {
+    EXPECT_EQ(kernel_code_digest("#line 1 \"kernels/a.cl\"\nfloat x;\n"),
+              kernel_code_digest("#line 7 \"/tmp/elsewhere/kernels/a.cl\"\nfloat x;\n"));
+    EXPECT_NE(kernel_code_digest("float x;\n"), kernel_code_digest("float y;\n"));
+    EXPECT_NE(kernel_code_digest("a\nb\n"), kernel_code_digest("ab\n"));
+
+    const std::uint64_t embedded = kernel_code_digest(assemble_program(kRenderProgram).text);
+    EXPECT_EQ(render_kernel_digest(), embedded);
+    // The same sources read from the checkout (FACET_KERNEL_DIR) give the same digest.
+    const std::string kernels = (std::filesystem::path(test::scenes_dir()).parent_path() / "kernels").string();
+    const char* before = std::getenv("FACET_KERNEL_DIR");
+    const std::string saved = before ? before : "";
+    ::setenv("FACET_KERNEL_DIR", kernels.c_str(), 1);
+    const AssembledSource from_disk = assemble_program(kRenderProgram);
+    if (saved.empty()) ::unsetenv("FACET_KERNEL_DIR");
+    else ::setenv("FACET_KERNEL_DIR", saved.c_str(), 1);
+    EXPECT_NE(from_disk.origin, "embedded");
+    EXPECT_GT(from_disk.files.size(), 20u) << "path.cl and what it includes";
+    EXPECT_EQ(kernel_code_digest(from_disk.text), embedded) << "the checkout's kernels are the embedded ones";
+
+    const Scene s = textured_scene();
+    const std::uint64_t id = identity(s);
+    const DeviceScene compiled = compile(s, build_bvh(s.vertices));
+    EXPECT_EQ(film_identity(compiled, render_kernel_digest()), id);
+    EXPECT_NE(film_identity(compiled, embedded ^ 1u), id) << "another facet's kernels, the same scene";
+    const std::vector<float> sums(film_floats(36), 1.0f);
+    const FilmState other_kernels = make_film(s, id ^ 1u, SampleRanges{{0, 4}}, 1.0, sums);
+    const std::string msg = error_of([&] { check_film_matches(other_kernels, "k.film", s, id); });
+    EXPECT_NE(msg.find("--resume k.film: the film was rendered from another scene, or by a facet whose render kernels "
+                       "differ from this one's"),
+              std::string::npos)
+        << msg;
 }
 
 // The identity leaves out the trees' layout (the node width each device picks) but not

@@ -5,14 +5,36 @@
 
 #include <fmt/format.h>
 
+#include "host/cl/kernel_source.hpp"
 #include "host/error.hpp"
+#include "host/render/renderer.hpp"
 #include "host/scene/render_names.hpp"
 #include "host/util/fnv.hpp"
 
 namespace facet {
 
-std::uint64_t film_identity(const DeviceScene& scene) {
+std::uint64_t kernel_code_digest(const std::string& assembled_text) {
     Fnv1a f;
+    std::size_t at = 0;
+    while (at < assembled_text.size()) {
+        std::size_t end = assembled_text.find('\n', at);
+        end = end == std::string::npos ? assembled_text.size() : end + 1;
+        if (assembled_text.compare(at, 6, "#line ") != 0) f.bytes(assembled_text.data() + at, end - at);
+        at = end;
+    }
+    return f.h;
+}
+
+std::uint64_t render_kernel_digest() {
+    static const std::uint64_t digest = kernel_code_digest(assemble_program(kRenderProgram).text);
+    return digest;
+}
+
+std::uint64_t film_identity(const DeviceScene& scene) { return film_identity(scene, render_kernel_digest()); }
+
+std::uint64_t film_identity(const DeviceScene& scene, std::uint64_t kernel_digest) {
+    Fnv1a f;
+    f.bytes(&kernel_digest, sizeof kernel_digest);
     FcRenderParams p = scene.params;
     p.sample_begin = p.sample_count = p.row_begin = p.row_count = 0;
     f.bytes(&p, sizeof p);
@@ -70,6 +92,15 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
                         "the film's scene file: {}, this one: {}): samples of different scenes cannot be combined",
                         film_path, film.scene_hash, identity, film.scene_path, scene.source_path));
     };
+    // The same file and settings: its contents changed, or the film comes from a facet with
+    // other render kernels.
+    auto refuse_contents = [&] {
+        throw Error(fmt::format(
+            "--resume {}: the film was rendered from another scene, or by a facet whose render kernels differ from "
+            "this one's (identity {:016x}, this render {:016x}; scene file {}): samples of different scenes or "
+            "kernels cannot be combined; render it again, or resume it with the facet that rendered it",
+            film_path, film.scene_hash, identity, scene.source_path));
+    };
     // Another scene file: said first; else the setting that differs, else the scene's contents.
     if (film.scene_hash != identity && film.scene_path != scene.source_path) refuse_scene();
     if (film.width != s.width || film.height != s.height)
@@ -83,7 +114,7 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
         refuse("--strategy", setting_name(kStrategyNames, film.strategy), setting_name(kStrategyNames, s.strategy));
     if (film.sampler != s.sampler)
         refuse("--sampler", setting_name(kSamplerNames, film.sampler), setting_name(kSamplerNames, s.sampler));
-    if (film.scene_hash != identity) refuse_scene();
+    if (film.scene_hash != identity) refuse_contents();
 }
 
 }  // namespace facet

@@ -34,7 +34,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
     stats_.features = generic ? all_features() : scene_features(scene);
     std::vector<std::string> prelude = scene_program_prelude(scene, bvh, generic);
     prelude.insert(prelude.end(), extra_prelude.begin(), extra_prelude.end());
-    build_ = build_program(ctx, "kernels/integrator/path.cl", prelude);
+    build_ = build_program(ctx, kRenderProgram, prelude);
     stats_.compile_seconds = build_.seconds;
     program_ = build_.program;
 

@@ -15,6 +15,9 @@
 
 namespace facet {
 
+// The render program: path.cl and what it includes (its render_pass kernel).
+inline constexpr const char* kRenderProgram = "kernels/integrator/path.cl";
+
 struct RenderStats {
     std::uint64_t samples_per_pixel = 0;  // samples added to every pixel so far
     double compile_seconds = 0.0;         // building the render program
