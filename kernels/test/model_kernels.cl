@@ -60,61 +60,53 @@ __kernel void models_albedo(__global const FcMaterial* mats, __global const floa
     out[4 * i + 3] = wmax;
 }
 
-/* specular_sample of mats[i] from wos[i] with `samples` random u: counts samples whose
- * f and pdf differ from specular_eval/specular_pdf (out[2i]) and samples with a NaN,
- * infinite or negative value anywhere (out[2i+1]). */
+/* Samples `samples` directions from wo with random u and counts the mismatches, those whose
+ * reported f, pdf or weight differ from the evaluation, and the bad ones, with a NaN,
+ * infinite or negative value or below the surface; returns (mismatches, bad).
+ * `whole` == 0: specular_sample against specular_eval / specular_pdf, exactly (the lobes
+ * report what eval and pdf give); 1: bsdf_sample against bsdf_eval, bsdf_pdf and
+ * f cos / pdf, to float rounding (3e-6 relative: a short route such as a Lambertian
+ * lobe's computes them in closed form). */
+inline int2 sample_consistency(const FcMaterial* m, float3 wo, uint seed, uint index, int samples, int whole) {
+    Rng rng = rng_init(seed, index, 0u);
+    int mismatch = 0, bad = 0;
+    for (int k = 0; k < samples; ++k) {
+        BsdfSample s;
+        float2 u2 = rng_float2(&rng);
+        bool made = whole ? bsdf_sample(m, wo, (float3)(u2, rng_float(&rng)), &s) : specular_sample(m, wo, u2, &s);
+        if (!made) continue;
+        float3 f = whole ? bsdf_eval(m, wo, s.wi) : specular_eval(m, wo, s.wi);
+        float pdf = whole ? bsdf_pdf(m, wo, s.wi) : specular_pdf(m, wo, s.wi);
+        float3 w = f * (s.wi.z / pdf);
+        if (!all_finite(f) || !all_finite(s.f) || !all_finite(s.weight) || !isfinite(pdf) || !isfinite(s.pdf) ||
+            !(pdf > 0.0f) || any(f < 0.0f) || any(s.weight < 0.0f) || !(s.wi.z > 0.0f)) {
+            ++bad;
+            continue;
+        }
+        const float tol = whole ? 3e-6f : 0.0f;
+        if (any(fabs(f - s.f) > tol * f) || fabs(pdf - s.pdf) > tol * pdf || any(fabs(w - s.weight) > tol * w))
+            ++mismatch;
+    }
+    return (int2)(mismatch, bad);
+}
+
+/* specular_sample of mats[i] from wos[i] (sample_consistency, exact): mismatches in
+ * out[2i], bad samples in out[2i + 1]. */
 __kernel void models_sample_consistency(__global const FcMaterial* mats, __global const float* wos, __global int* out,
                                         int n, int samples) {
     int i = (int)get_global_id(0);
     if (i >= n) return;
     FcMaterial m = mats[i];
-    float3 wo = vload3(i, wos);
-    Rng rng = rng_init(99u, (uint)i, 0u);
-    int mismatch = 0, bad = 0;
-    for (int k = 0; k < samples; ++k) {
-        BsdfSample s;
-        if (!specular_sample(&m, wo, rng_float2(&rng), &s)) continue;
-        float3 f = specular_eval(&m, wo, s.wi);
-        float pdf = specular_pdf(&m, wo, s.wi);
-        if (any(f != s.f) || pdf != s.pdf) ++mismatch;
-        float3 w = f * (s.wi.z / pdf);
-        if (!all_finite(f) || !all_finite(s.weight) || !isfinite(pdf) || !(pdf > 0.0f) || any(f < 0.0f) ||
-            any(w != s.weight) || !(s.wi.z > 0.0f))
-            ++bad;
-    }
-    out[2 * i + 0] = mismatch;
-    out[2 * i + 1] = bad;
+    vstore2(sample_consistency(&m, vload3(i, wos), 99u, (uint)i, samples, 0), i, out);
 }
 
-/* The whole BSDF's sample against its eval and pdf (bsdf.cl): for each of `samples`
- * samples, whether the reported f, pdf and weight differ from bsdf_eval, bsdf_pdf and
- * f cos / pdf by more than float rounding (3e-6 relative; out[2i]), and whether the sample
- * is bad: non-finite, negative, below the surface (out[2i + 1]). */
+/* The whole BSDF's sample of mats[i] from wos[i] (sample_consistency, to rounding). */
 __kernel void models_bsdf_sample_consistency(__global const FcMaterial* mats, __global const float* wos,
                                              __global int* out, int n, int samples) {
     int i = (int)get_global_id(0);
     if (i >= n) return;
     FcMaterial m = mats[i];
-    float3 wo = vload3(i, wos);
-    Rng rng = rng_init(7u, (uint)i, 0u);
-    int mismatch = 0, bad = 0;
-    for (int k = 0; k < samples; ++k) {
-        BsdfSample s;
-        float2 u2 = rng_float2(&rng);
-        if (!bsdf_sample(&m, wo, (float3)(u2, rng_float(&rng)), &s)) continue;
-        if (!all_finite(s.weight) || any(s.weight < 0.0f) || !(s.pdf > 0.0f) || !(s.wi.z > 0.0f)) {
-            ++bad;
-            continue;
-        }
-        float3 f = bsdf_eval(&m, wo, s.wi);
-        float pdf = bsdf_pdf(&m, wo, s.wi);
-        float3 w = f * (s.wi.z / pdf);
-        const float tol = 3e-6f;
-        if (any(fabs(f - s.f) > tol * f) || fabs(pdf - s.pdf) > tol * pdf || any(fabs(w - s.weight) > tol * w))
-            ++mismatch;
-    }
-    out[2 * i + 0] = mismatch;
-    out[2 * i + 1] = bad;
+    vstore2(sample_consistency(&m, vload3(i, wos), 7u, (uint)i, samples, 1), i, out);
 }
 
 #endif
