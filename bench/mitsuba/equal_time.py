@@ -552,7 +552,8 @@ def main():
     ap.add_argument("--mitsuba-best", default="auto",
                     help="Mitsuba's best sampler, run beside its default 'independent': a sampler's name, or "
                          "auto (default): per scene, the best of the five samplers x two pass sizes in one run "
-                         "of the longest budget; with --equal-spp or --per-sample, all five samplers run")
+                         "of the longest budget; with --equal-spp or --per-sample, all five samplers run; "
+                         "SAMPLER@4M: that sampler in passes of 4 M lanes (what auto's selection may pick)")
     ap.add_argument("--equal-spp", type=int, default=0, help="instead of time budgets: N samples per pixel")
     ap.add_argument("--per-sample", type=int, default=0, metavar="K",
                     help="error per sample without a reference: K images of independent seeds per program at "
@@ -585,9 +586,11 @@ def main():
     elif best_auto:
         progs["mitsuba_best"] = Mitsuba("multijitter", assets)   # replaced per scene by select_best
     elif a.mitsuba_best and a.mitsuba_best != "independent":
-        if a.mitsuba_best not in SAMPLERS:
-            raise SystemExit(f"equal_time.py: --mitsuba-best {a.mitsuba_best}: one of {', '.join(SAMPLERS)} or auto")
-        progs["mitsuba_best"] = Mitsuba(a.mitsuba_best, assets)
+        sampler, _, lanes = a.mitsuba_best.partition("@")
+        if sampler not in SAMPLERS or (lanes and lanes != "4M"):
+            raise SystemExit(f"equal_time.py: --mitsuba-best {a.mitsuba_best}: one of {', '.join(SAMPLERS)} "
+                             "(with @4M: passes of 4 M lanes), or auto")
+        progs["mitsuba_best"] = Mitsuba(sampler, assets, PASS_LANES[1] if lanes else None)
     wanted = a.programs.split(",")
     if best_auto and (a.equal_spp or a.per_sample):
         wanted += [f"mitsuba_{s}" for s in SAMPLERS[1:]]
