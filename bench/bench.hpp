@@ -76,6 +76,8 @@ nlohmann::json bench_denoise(ClContext& ctx, bool quick);
 
 // Load time, device memory and samples/s with and without textures of users' assets.
 nlohmann::json bench_assets(ClContext& ctx, const std::string& assets, bool quick);
+struct BvhOptions;
+nlohmann::json bench_packet(ClContext& ctx, const BvhOptions& bvh_options, bool quick);
 
 // Private and local memory, and on NVIDIA registers and spills, of every kernel of the
 // render, AOV and denoise programs as the demo scenes build them.

@@ -388,8 +388,9 @@ int run(int argc, char** argv) {
     app.add_option("--scene", scene_filter, "Trace section: only the scenes whose name contains this");
     std::string only;
     // The sections, in the order they run; "build" is the trace section's BVH build alone.
-    const std::vector<std::string> sections = {"trace",   "build",   "bsdf",    "ibl",    "specialisation",
-                                               "kernels", "quality", "denoise", "assets", "instancing"};
+    const std::vector<std::string> sections = {"trace",          "build",      "bsdf",    "ibl",
+                                               "specialisation", "kernels",    "quality", "denoise",
+                                               "assets",         "instancing", "packet"};
     std::string section_list;
     for (const std::string& s : sections) section_list += (section_list.empty() ? "" : ", ") + s;
     app.add_option("--only", only, "Run one section: " + section_list);
@@ -469,6 +470,7 @@ int run(int argc, char** argv) {
     if (wanted("denoise")) all["denoise"] = bench_denoise(ctx, quick);
     if (wanted("assets")) all["assets"] = bench_assets(ctx, assets, quick);
     if (wanted("instancing")) all["instancing"] = bench_instancing(ctx, assets, quick);
+    if (wanted("packet")) all["packet"] = bench_packet(ctx, bvh_options, quick);
     if (!json_out.empty()) {
         if (fs::path(json_out).has_parent_path()) fs::create_directories(fs::path(json_out).parent_path());
         std::ofstream(json_out) << all.dump(2) << "\n";
