@@ -6,6 +6,7 @@
 #include "kernels/integrator/path.cl"
 
 #define W 8
+#define PATH_ENDED 0xfffffffeu /* depth[j] of a lane whose path ended and is not yet added */
 
 typedef struct {
     float8 x, y, z;
@@ -143,7 +144,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         for (int j = 0; j < W; ++j) {
             if (!active[j]) continue;
             if (!alive[j]) {
-                if (depth[j] == 0xfffffffeu) { /* a finished path: add it */
+                if (depth[j] == PATH_ENDED) { /* a finished path: add it */
                     float3 l = lane3(rad, j);
                     uint idx = index[j];
                     if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) {
@@ -184,7 +185,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             Hit hit;
             if (!scene_trace_closest(sc, oo, dd, INFINITY, alpha_ray_seed(seed[j], irev[j], depth[j], 0u), &hit)) {
                 alive[j] = 0;
-                depth[j] = 0xfffffffeu;
+                depth[j] = PATH_ENDED;
                 continue;
             }
             Surface s = surface_at(sc, &hit);
@@ -201,7 +202,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             }
             if (depth[j] >= P->max_depth) {
                 alive[j] = 0;
-                depth[j] = 0xfffffffeu;
+                depth[j] = PATH_ENDED;
                 continue;
             }
             /* two-sided: the side the ray came from */
@@ -239,10 +240,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         /* the light: picked and read per lane */
         float lp0[3 * W], le1[3 * W], le2[3 * W], ln[3 * W], lc[3 * W], lpick[W], larea[W];
         uint lflags[W];
-        float ulp[W];
-        vstore8(ul[0], 0, ulp);
+        float upick[W];
+        vstore8(ul[0], 0, upick);
         for (int j = 0; j < W; ++j) {
-            __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, P->light_count, ulp[j])];
+            __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])];
             set_lane3(lp0, j, load3(l->p0));
             set_lane3(le1, j, load3(l->e1));
             set_lane3(le2, j, load3(l->e2));
@@ -327,7 +328,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             if (!active[j] || !alive[j]) continue;
             if (!conta[j]) {
                 alive[j] = 0;
-                depth[j] = 0xfffffffeu;
+                depth[j] = PATH_ENDED;
                 continue;
             }
             depth[j] += 1u;
