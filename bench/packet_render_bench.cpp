@@ -8,7 +8,7 @@
 
 #include "bench/bench.hpp"
 #include "host/bvh/bvh.hpp"
-#include "host/cl/upload.hpp"
+#include "host/film/film_layout.hpp"
 #include "host/render/features.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
@@ -26,7 +26,7 @@ nlohmann::json bench_packet(ClContext& ctx, const BvhOptions& bvh_options, bool 
     Bvh bvh = build_bvh(scene.vertices, bvh_options);
     const DeviceScene dev = compile(scene, bvh);
     const std::size_t pixels = std::size_t(size) * size;
-    const std::size_t floats = 4 * (2 * pixels) + 2 * pixels;
+    const std::size_t floats = film_floats(pixels);  // render_pass's accumulation layout
     std::vector<float> sums(floats);
     const ProgramBuild build = build_program(ctx, "kernels/bench/packet_render.cl", scene_program_prelude(scene, bvh));
     cl::Kernel kernel(build.program, "packet_pass");
