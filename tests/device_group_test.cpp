@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "host/bvh/bvh.hpp"
+#include "host/film/error_metrics.hpp"
 #include "host/render/device_group.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
@@ -59,6 +60,36 @@ TEST(DeviceGroup, TwoDevicesRenderTheImageOfOne) {
     const FilmHalves h = group.halves();
     EXPECT_EQ(h.samples[0], 6u);
     EXPECT_EQ(h.samples[1], 6u);
+}
+
+// The progressive render's estimate after each pass (DeviceGroup::estimate, which streams
+// over the devices' films instead of building the halves) is the halves' estimate bit for
+// bit: two devices, then on a restored film, then with a device dropped.
+TEST(DeviceGroup, EstimateIsTheEstimateOfItsHalves) {
+    Fixture f;
+    auto expect_same_estimate = [](const DeviceGroup& g) {
+        const FilmHalves h = g.halves();
+        const ErrorMetrics want = estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]);
+        const ErrorMetrics got = g.estimate();
+        EXPECT_TRUE(std::isfinite(want.mse) && want.mse > 0.0) << want.mse;
+        EXPECT_EQ(got.mse, want.mse);
+        EXPECT_EQ(got.rmse, want.rmse);
+        EXPECT_EQ(got.relmse, want.relmse);
+    };
+    DeviceGroup group(contexts(2), f.scene, f.bvh);
+    render_fixed(group, 6, 3);
+    expect_same_estimate(group);
+    DeviceGroup resumed(contexts(2), f.scene, f.bvh);
+    resumed.restore(group.accumulation(), group.samples(), 1.0);
+    render_fixed(resumed, 5, 5);
+    expect_same_estimate(resumed);
+    int launches = 0;
+    resumed.before_launch = [&](std::size_t device) {
+        if (device == 1 && ++launches == 2) throw std::runtime_error("CL_OUT_OF_RESOURCES (injected)");
+    };
+    render_fixed(resumed, 4, 2);
+    EXPECT_TRUE(resumed.devices()[1].dropped);
+    expect_same_estimate(resumed);
 }
 
 TEST(DeviceGroup, FailingDeviceIsDroppedAndItsSamplesRenderedByTheOthers) {

@@ -30,25 +30,11 @@ ErrorMetrics compare_images(const std::vector<float>& image, const std::vector<f
 
 ErrorMetrics estimate_error(const std::vector<float>& a, const std::vector<float>& b, std::uint64_t n_a,
                             std::uint64_t n_b) {
-    ErrorMetrics m;
-    if (n_a == 0 || n_b == 0 || a.size() != b.size() || a.empty()) {
-        m.mse = m.rmse = m.relmse = std::numeric_limits<double>::quiet_NaN();
-        return m;
-    }
-    double n = double(n_a + n_b);
-    double scale = double(n_a) * double(n_b) / (n * n);
-    double wa = double(n_a) / n, wb = double(n_b) / n;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        double d = double(a[i]) - double(b[i]);
-        double var = d * d * scale;
-        double mean = wa * double(a[i]) + wb * double(b[i]);
-        m.mse += var;
-        m.relmse += var / ((mean + 0.01) * (mean + 0.01));
-    }
-    m.mse /= double(a.size());
-    m.relmse /= double(a.size());
-    m.rmse = std::sqrt(m.mse);
-    return m;
+    if (a.size() != b.size()) return estimate_error_streamed(0, n_a, n_b, [](std::size_t, float&, float&) {});
+    return estimate_error_streamed(a.size(), n_a, n_b, [&](std::size_t j, float& x, float& y) {
+        x = a[j];
+        y = b[j];
+    });
 }
 
 double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {

@@ -2,7 +2,10 @@
 // convergence rate of an error series.
 #pragma once
 
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,6 +35,33 @@ ErrorMetrics compare_images(const std::vector<float>& image, const std::vector<f
 // variance part of the error.
 ErrorMetrics estimate_error(const std::vector<float>& a, const std::vector<float>& b, std::uint64_t n_a,
                             std::uint64_t n_b);
+
+// The same over `count` values of each half that get(j, a_j, b_j) supplies, j in order, for
+// halves that are never stored whole (film_halves.hpp's estimate_film_error).
+template <class Get>
+ErrorMetrics estimate_error_streamed(std::size_t count, std::uint64_t n_a, std::uint64_t n_b, Get&& get) {
+    ErrorMetrics m;
+    if (n_a == 0 || n_b == 0 || count == 0) {
+        m.mse = m.rmse = m.relmse = std::numeric_limits<double>::quiet_NaN();
+        return m;
+    }
+    const double n = double(n_a + n_b);
+    const double scale = double(n_a) * double(n_b) / (n * n);
+    const double wa = double(n_a) / n, wb = double(n_b) / n;
+    for (std::size_t j = 0; j < count; ++j) {
+        float a = 0.0f, b = 0.0f;
+        get(j, a, b);
+        const double d = double(a) - double(b);
+        const double var = d * d * scale;
+        const double mean = wa * double(a) + wb * double(b);
+        m.mse += var;
+        m.relmse += var / ((mean + 0.01) * (mean + 0.01));
+    }
+    m.mse /= double(count);
+    m.relmse /= double(count);
+    m.rmse = std::sqrt(m.mse);
+    return m;
+}
 
 // Least-squares slope of log(y) against log(x) over the points with x > 0 and y > 0;
 // NaN when fewer than 3 such points or x spans no range.

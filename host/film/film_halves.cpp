@@ -35,6 +35,26 @@ FilmHalves film_halves(const FilmState& film) {
                        film.second_moments);
 }
 
+ErrorMetrics estimate_film_error(const std::vector<const std::vector<float>*>& films, std::size_t pixels,
+                                 const SampleRanges& samples) {
+    for (const std::vector<float>* f : films)
+        if (f->size() != film_floats(pixels))
+            throw Error(fmt::format("a film of {} values does not hold {} pixels", f->size(), pixels));
+    const std::uint64_t n[2] = {even_samples(samples), odd_samples(samples)};
+    const float inv[2] = {n[0] ? 1.0f / float(n[0]) : 0.0f, n[1] ? 1.0f / float(n[1]) : 0.0f};
+    // One pixel's channel of half k: the films' sums added as DeviceGroup::accumulation()
+    // adds them (from 0), then scaled as film_halves scales it.
+    auto half = [&](int k, std::size_t i, int c) {
+        float sum = 0.0f;
+        for (const std::vector<float>* f : films) sum += (*f)[std::size_t(k) * pixels * 4 + 4 * i + std::size_t(c)];
+        return sum * inv[k];
+    };
+    return estimate_error_streamed(3 * pixels, n[0], n[1], [&](std::size_t j, float& a, float& b) {
+        a = half(0, j / 3, int(j % 3));
+        b = half(1, j / 3, int(j % 3));
+    });
+}
+
 std::vector<float> film_mean(const FilmHalves& h) {
     const std::uint64_t n = h.samples[0] + h.samples[1];
     std::vector<float> rgb(h.rgb[0].size(), 0.0f);

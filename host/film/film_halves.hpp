@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "host/film/error_metrics.hpp"
 #include "host/film/film_state.hpp"
 #include "host/film/sample_ranges.hpp"
 
@@ -29,6 +30,14 @@ FilmHalves film_halves(const std::vector<float>& sums, std::size_t pixels, const
                        bool second_moments);
 // The halves of a film.
 FilmHalves film_halves(const FilmState& film);
+
+// estimate_error of the halves of the sum of `films` (each film_floats(pixels) floats)
+// holding the samples `samples`, without building the sum or the halves: the progressive
+// render's estimate after every pass, which at 1024² would otherwise allocate and fill
+// about 70 MB each pass. The films are added in list order in float and each half scaled
+// as film_halves scales it, so the result is estimate_error(film_halves(sum, ...)) bit for bit.
+ErrorMetrics estimate_film_error(const std::vector<const std::vector<float>*>& films, std::size_t pixels,
+                                 const SampleRanges& samples);
 
 // The mean of both halves, weighted by their counts; 3 floats a pixel.
 std::vector<float> film_mean(const FilmHalves& halves);

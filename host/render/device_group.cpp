@@ -197,9 +197,9 @@ void DeviceGroup::commit() {
     // Each device's sums read back; a device failing here loses its pass, dealt again.
     for (;;) {
         const std::vector<std::size_t> devices = live();
-        std::vector<std::vector<float>> sums(devices.size());
+        read_.resize(committed_.size());
         std::vector<std::exception_ptr> errors = for_each_concurrently(
-            devices.size(), [&](std::size_t k) { sums[k] = renderers_[devices[k]]->accumulation(); });
+            devices.size(), [&](std::size_t k) { renderers_[devices[k]]->read_accumulation(read_[devices[k]]); });
         std::vector<Job> again;
         for (std::size_t k = 0; k < devices.size(); ++k) {
             if (!errors[k]) continue;
@@ -208,7 +208,7 @@ void DeviceGroup::commit() {
                 if (j.device == devices[k]) again.push_back(j);
         }
         if (again.empty()) {
-            for (std::size_t k = 0; k < devices.size(); ++k) committed_[devices[k]] = std::move(sums[k]);
+            for (std::size_t k = 0; k < devices.size(); ++k) committed_[devices[k]].swap(read_[devices[k]]);
             return;
         }
         std::erase_if(pass_jobs_, [&](const Job& j) { return !renderers_[j.device]; });
@@ -263,6 +263,18 @@ std::vector<float> DeviceGroup::accumulation() const {
 }
 
 FilmHalves DeviceGroup::halves() const { return film_halves(accumulation(), pixel_count(), samples_, second_moments_); }
+
+ErrorMetrics DeviceGroup::estimate() const {
+    // The films accumulation() adds, in its order.
+    std::vector<const std::vector<float>*> films;
+    if (!base_.empty()) films.push_back(&base_);
+    if (ranks_.size() > 1) {
+        if (!reduced_.empty()) films.push_back(&reduced_);
+    } else {
+        for (const std::vector<float>& c : committed_) films.push_back(&c);
+    }
+    return estimate_film_error(films, pixel_count(), samples_);
+}
 
 std::vector<float> DeviceGroup::image(double* rejected_samples) const {
     // The means alone: no second moments

@@ -93,6 +93,9 @@ public:
     const SampleRanges& samples() const { return samples_; }
     FilmHalves halves() const;
     std::vector<float> image(double* rejected_samples = nullptr) const;
+    // estimate_error of halves(), without building them (film_halves.hpp's
+    // estimate_film_error): the progressive render's estimate after each pass.
+    ErrorMetrics estimate() const;
 
     // samples_per_pixel and render_seconds of the whole group (a restored film's too);
     // compile and upload seconds of the slowest device; features of the program.
@@ -146,6 +149,8 @@ private:
     std::vector<DeviceShare> shares_;
     std::vector<double> rate_;                   // pixel samples per second, as last measured
     std::vector<std::vector<float>> committed_;  // each device's sums at the last pass end
+    std::vector<std::vector<float>> read_;       // each device's sums as read at this pass end (then swapped
+                                                 // with committed_): memory kept from pass to pass
     std::vector<float> base_;                    // a restored film's sums
     SampleRanges base_samples_;
     double base_seconds_ = 0.0;

@@ -62,10 +62,15 @@ void Renderer::reset() {
 }
 
 std::vector<float> Renderer::accumulation() const {
-    std::vector<float> sums(film_floats(pixel_count()));
-    cl_call("reading the image back",
-            [&] { ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, sums.size() * sizeof(float), sums.data()); });
+    std::vector<float> sums;
+    read_accumulation(sums);
     return sums;
+}
+
+void Renderer::read_accumulation(std::vector<float>& into) const {
+    into.resize(film_floats(pixel_count()));
+    cl_call("reading the image back",
+            [&] { ctx_.queue().enqueueReadBuffer(accum_, CL_TRUE, 0, into.size() * sizeof(float), into.data()); });
 }
 
 void Renderer::restore(const std::vector<float>& sums, std::uint64_t spp, double render_seconds) {

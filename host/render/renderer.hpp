@@ -71,6 +71,8 @@ public:
     // The accumulation buffer as the kernel holds it, for a film (film/film_state.hpp):
     // 2 * pixel_count() RGBA sums, the even-sample half then the odd-sample half.
     std::vector<float> accumulation() const;
+    // The same into `into` (resized to fit), which keeps its memory from pass to pass.
+    void read_accumulation(std::vector<float>& into) const;
 
     // Continues an earlier render: loads `sums` (from accumulation(), of the same scene
     // and settings) holding `spp` samples per pixel rendered in `render_seconds`; the

@@ -146,8 +146,7 @@ SessionOutcome RenderSession::run(const SessionHooks& hooks) {
     po.stop = [&] { return out.converged || stop_signal() != 0; };
     po.on_first_pass_estimate = hooks.on_slow_first_pass;
     po.on_pass = [&](const PassDone& d) {
-        const FilmHalves h = group.halves();
-        const PassRecord p = record(d.pass, d.spp, estimate_error(h.rgb[0], h.rgb[1], h.samples[0], h.samples[1]));
+        const PassRecord p = record(d.pass, d.spp, group.estimate());
         out.converged = rules_.converged(p.spp, p.estimate.relmse);
         report(p, po.target_spp, d.remaining_s, d.last || out.converged);
     };
