@@ -52,6 +52,25 @@ TEST(Progressive, PassClampedTo50msAnd2s) {
     EXPECT_EQ(next_pass_samples(state(1u << 20, 1, 10.0, 1)), 1u);
 }
 
+TEST(Progressive, PassLongEnoughToHideTheHostsWork) {
+    // 100 spp/s after 1 s: a tenth would be 10 samples; 21.1 ms of host work between passes
+    // asks for at least 0.0211 * 0.95 / 0.05 = 0.4009 s, 40 samples.
+    ScheduleState s = state(1u << 20, 100, 1.0, 100);
+    EXPECT_EQ(next_pass_samples(s), 10u);
+    s.host_s = 0.0211;
+    EXPECT_EQ(next_pass_samples(s), 40u);
+    // Still at most twice the last pass, and within max_pass_s (2 s: 200 samples).
+    s.last_pass = 10;
+    EXPECT_EQ(next_pass_samples(s), 20u);
+    s.last_pass = 1000;
+    s.host_s = 1.0;
+    EXPECT_EQ(next_pass_samples(s), 200u);
+    // A share of 1 leaves the rule out.
+    ScheduleRules rules;
+    rules.max_host_share = 1.0;
+    EXPECT_EQ(next_pass_samples(s, rules), 10u);
+}
+
 TEST(Progressive, PassCutToTheTarget) {
     EXPECT_EQ(next_pass_samples(state(1030, 1000, 10.0, 100)), 30u);
     EXPECT_EQ(next_pass_samples(state(1000, 1000, 10.0, 100)), 0u);

@@ -1,6 +1,7 @@
 #include "host/render/progressive.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "host/util/clock.hpp"
@@ -19,7 +20,10 @@ ProgressiveResult render_progressive(PassTarget& target, const ProgressiveOption
     std::vector<double> row_cost(height, 0.0);  // seconds for one sample over each row, as measured
     std::uint32_t last_rows = 0;
     bool first_pass_estimated = false;
+    std::optional<Clock::time_point> last_pass_end;  // when the last pass's launches ended
     while (!schedule_done(s) && !stop_requested() && width > 0 && height > 0) {
+        // The host's work since then: the films read back, the estimate, the report.
+        if (last_pass_end) s.host_s = seconds_since(*last_pass_end);
         const std::uint32_t n = opt.fixed_pass
                                     ? std::uint32_t(std::min<std::uint64_t>(opt.fixed_pass, s.target_spp - s.done_spp))
                                     : next_pass_samples(s, opt.rules);
@@ -54,6 +58,7 @@ ProgressiveResult render_progressive(PassTarget& target, const ProgressiveOption
             }
         }
         const double pass_s = seconds_since(pass_start);
+        last_pass_end = Clock::now();
         target.end_pass(n, pass_s);
         s.done_spp += n;
         s.render_s += pass_s;

@@ -16,8 +16,12 @@ std::uint32_t next_pass_samples(const ScheduleState& s, const ScheduleRules& rul
     const std::uint64_t left = s.target_spp - s.done_spp;
     if (s.done_spp == 0 || s.render_s <= 0.0) return 1;
     const double rate = double(s.done_spp) / s.render_s;  // samples per pixel per second
-    // About a tenth of the time so far, at most twice the last pass.
-    const double want_s = std::clamp(rules.pass_fraction * s.render_s, rules.min_pass_s, rules.max_pass_s);
+    // About a tenth of the time so far, long enough that the host's work between passes is
+    // a small share, at most twice the last pass.
+    const double share = std::clamp(rules.max_host_share, 1e-3, 1.0);
+    const double host_floor_s = std::max(s.host_s, 0.0) * (1.0 - share) / share;
+    const double want_s =
+        std::clamp(std::max(rules.pass_fraction * s.render_s, host_floor_s), rules.min_pass_s, rules.max_pass_s);
     const double growth = rules.max_growth * double(std::max<std::uint32_t>(s.last_pass, 1));
     double n = std::clamp(want_s * rate, 1.0, std::max(1.0, growth));
     n = std::min(n, double(left));
