@@ -6,7 +6,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
+#include "host/cl/runtime.hpp"
+#include "host/error.hpp"
 #include "tests/cl_test_env.hpp"
 #include "tests/temp_dir.hpp"
 
@@ -60,6 +63,27 @@ TEST_F(ProgramCache, OffWithZero) {
     ProgramBuild b = build_program(test::context(), "kernels/test/layout_kernels.cl", {"// cache off"});
     EXPECT_TRUE(b.cache_file.empty());
     EXPECT_FALSE(fs::exists(dir_));
+}
+
+// FACET_CL_VENDOR_OPTIONS (runtime.hpp): NVIDIA's code-generation options reach the
+// driver's options (and so the cache key); an option that could change float results is
+// refused by name, and the program is not built with it.
+TEST_F(ProgramCache, VendorOptionsAreNvidiasCodeGenerationOnly) {
+    const DeviceDesc& dev = test::context().desc();
+    unsetenv("FACET_CL_VENDOR_OPTIONS");
+    EXPECT_EQ(build_options_for(dev).find("-cl-nv-"), std::string::npos);
+    setenv("FACET_CL_VENDOR_OPTIONS", " -cl-nv-maxrregcount=128  -cl-nv-opt-level=3 ", 1);
+    EXPECT_NE(build_options_for(dev).find(" -cl-nv-maxrregcount=128 -cl-nv-opt-level=3"), std::string::npos)
+        << build_options_for(dev);
+    setenv("FACET_CL_VENDOR_OPTIONS", "-cl-nv-maxrregcount=128 -cl-fast-relaxed-math", 1);
+    try {
+        build_options_for(dev);
+        ADD_FAILURE() << "-cl-fast-relaxed-math was taken";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("'-cl-fast-relaxed-math'"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(build_program(test::context(), "kernels/test/layout_kernels.cl", {}), Error);
+    unsetenv("FACET_CL_VENDOR_OPTIONS");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -264,8 +265,25 @@ std::string default_build_options() {
     return "-cl-std=CL1.2";
 }
 
+std::string vendor_build_options() {
+    const char* env = std::getenv("FACET_CL_VENDOR_OPTIONS");
+    if (!env) return "";
+    std::istringstream words(env);
+    std::string word, out;
+    while (words >> word) {
+        if (word.rfind("-cl-nv-", 0) != 0)
+            throw Error(
+                fmt::format("FACET_CL_VENDOR_OPTIONS: '{}' is not one of NVIDIA's -cl-nv-* code-generation "
+                            "options, the only ones taken (others could change float results)",
+                            word));
+        out += (out.empty() ? "" : " ") + word;
+    }
+    return out;
+}
+
 std::string build_options_for(const DeviceDesc& dev, const std::string& extra_options) {
     std::string options = default_build_options();
+    if (const std::string vendor = vendor_build_options(); !vendor.empty()) options += " " + vendor;
     // Oclgrind 21.10 cannot run LLVM's bit-reversal intrinsic, which clang makes of the
     // sampler's vector bit reversal (kernels/util/sampler.cl): it gets the table version.
     if (dev.platform.find("Oclgrind") != std::string::npos) options += " -DFC_NO_BITREVERSE_INTRINSIC";

@@ -87,8 +87,15 @@ std::size_t program_binary_bytes(const cl::Program& program);
 // The options every facet program is built with (no fast or finite math).
 std::string default_build_options();
 
-// default_build_options, the device's workarounds and `extra_options`: what build_program
-// passes to the driver.
+// The words of the environment variable FACET_CL_VENDOR_OPTIONS, checked: NVIDIA's
+// code-generation options alone (each word -cl-nv-*: -cl-nv-maxrregcount=N caps a
+// work-item's registers, -cl-nv-opt-level=N), which leave every float result as it is,
+// for measuring occupancy against registers (docs/performance.md). Any other word throws
+// facet::Error naming it. Empty when unset.
+std::string vendor_build_options();
+
+// default_build_options, the device's workarounds, vendor_build_options and
+// `extra_options`: what build_program passes to the driver.
 std::string build_options_for(const DeviceDesc& dev, const std::string& extra_options = "");
 
 // Assembles `entry` after `prelude` and builds it for the context's device. On failure
