@@ -6,6 +6,7 @@
 #   scenes/   the demo scenes
 #   reference/ PoCL renders of the demo scenes (films), for run.sh's z-test
 #   run.sh    everything the node should run, in one go (tools/bundle/run.sh)
+#   variants.sh  samples per second under register caps and BVH widths (tools/bundle/variants.sh)
 # Usage: tools/bundle/make_bundle.sh OUT_DIR [BUILD_DIR]   (on a machine with the toolchain
 # and PoCL; OUT_DIR must stay under 60 MB). Environment: REFERENCE_SPP (default 256);
 # BUNDLE_EMBREE=1 links the bench's CPU reference tracer, Embree, as the full build does
@@ -42,8 +43,8 @@ loader=$(ldconfig -p | awk '/libOpenCL\.so\.1 / && !found { print $NF; found = 1
 cp -L "$loader" "$out/lib/libOpenCL.so.1"
 strip --strip-unneeded "$out"/lib/* 2>/dev/null || true
 cp "$root"/scenes/*.json "$root"/scenes/*.obj "$root"/scenes/*.mtl "$out/scenes/" 2>/dev/null || true
-cp "$root/tools/bundle/run.sh" "$out/run.sh"
-chmod +x "$out/run.sh"
+cp "$root/tools/bundle/run.sh" "$root/tools/bundle/variants.sh" "$out/"
+chmod +x "$out/run.sh" "$out/variants.sh"
 
 # PoCL references: every demo scene at the size run.sh renders, seed 1 (run.sh uses seed 2).
 for s in "$out"/scenes/*.json; do
