@@ -164,6 +164,7 @@ private:
     std::vector<double> rank_rate_;                  // at rank 0: each rank's pixel samples per second
     std::vector<std::uint64_t> rank_pixel_samples_;  // at rank 0
     std::vector<float> reduced_;                     // at rank 0: every rank's sums
+    std::vector<float> reduced_next_, rank_local_;   // the next pass's reduction and this rank's sum
     double reduce_seconds_ = 0.0;
     bool followers_stopped_ = false;
     mutable std::mutex film_mutex_;
