@@ -48,7 +48,8 @@ std::vector<KernelResources> kernel_resources(const ClContext& ctx, const cl::Pr
                                               const std::string& build_log = "");
 
 // Builds `entry` with `prelude` from source, never from facet's program cache (whose
-// entries carry no build log), with verbose_build_option, and reports its kernels.
+// entries carry no build log) nor the driver's (a kernel with a nonce is added, and left
+// out of the report), with verbose_build_option, and reports its kernels.
 std::vector<KernelResources> build_and_report_kernels(const ClContext& ctx, const std::string& entry,
                                                       const std::vector<std::string>& prelude = {});
 
