@@ -75,12 +75,12 @@ TEST_F(ProgramCache, VendorOptionsAreNvidiasCodeGenerationOnly) {
     setenv("FACET_CL_VENDOR_OPTIONS", " -cl-nv-maxrregcount=128  -cl-nv-opt-level=3 ", 1);
     EXPECT_NE(build_options_for(dev).find(" -cl-nv-maxrregcount=128 -cl-nv-opt-level=3"), std::string::npos)
         << build_options_for(dev);
-    setenv("FACET_CL_VENDOR_OPTIONS", "-cl-nv-maxrregcount=128 -cl-fast-relaxed-math", 1);
+    setenv("FACET_CL_VENDOR_OPTIONS", "-cl-nv-maxrregcount=128 -cl-mad-enable", 1);
     try {
         build_options_for(dev);
-        ADD_FAILURE() << "-cl-fast-relaxed-math was taken";
+        ADD_FAILURE() << "-cl-mad-enable was taken";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("'-cl-fast-relaxed-math'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("'-cl-mad-enable'"), std::string::npos) << e.what();
     }
     EXPECT_THROW(build_program(test::context(), "kernels/test/layout_kernels.cl", {}), Error);
     unsetenv("FACET_CL_VENDOR_OPTIONS");
