@@ -405,8 +405,13 @@ int run(int argc, char** argv) {
     if (bvh_options.width == 0)
         bvh_options.width = bvh_width_for(ctx.desc().type == CL_DEVICE_TYPE_GPU,
                                           ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
+    const bool small_quantised = resolve_quantised(bvh_options, 0),
+               large_quantised = resolve_quantised(bvh_options, kQuantiseAboveTriangles + 1);
     bench_print("BVH node width: {}{}\n", bvh_options.width,
-                bvh_options.width == 8 && resolve_quantised(bvh_options) ? " (quantised boxes)" : "");
+                bvh_options.width != 8 ? ""
+                : small_quantised      ? " (quantised boxes)"
+                : large_quantised      ? fmt::format(" (quantised boxes above {} triangles)", kQuantiseAboveTriangles)
+                                       : "");
     std::vector<BenchCase> cases = {
         {"cornell_box", (fs::path(FACET_SOURCE_DIR) / "scenes" / "cornell_box.json").string()}};
     if (wanted("trace")) {

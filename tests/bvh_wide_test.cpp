@@ -186,8 +186,10 @@ TEST(BvhWide, WidthChoice) {
 }
 
 // Quantised 8-wide nodes come from BvhOptions::quantised, else FACET_BVH_QUANTISED, else
-// kQuantisedDefault where every leaf fits the node's bytes (max_leaf_size <= 16); 4-wide
-// trees are never quantised; bad values are refused with a message that names them.
+// from the size: above kQuantiseAboveTriangles (the tree's own, or
+// BvhOptions::layout_triangles when set), where every leaf fits the node's bytes
+// (max_leaf_size <= 16); 4-wide trees are never quantised; bad values are refused with a
+// message that names them.
 TEST(BvhWide, QuantisedChoice) {
     const std::vector<glm::vec3> tri = {glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
     const char* saved = std::getenv("FACET_BVH_QUANTISED");
@@ -203,9 +205,15 @@ TEST(BvhWide, QuantisedChoice) {
     unsetenv("FACET_BVH_QUANTISED");
     BvhOptions o;
     o.width = 8;
-    EXPECT_EQ(build_bvh(tri, o).stats.quantised, kQuantisedDefault ? 1 : 0);
+    EXPECT_EQ(build_bvh(tri, o).stats.quantised, 0);  // one triangle: float boxes
+    EXPECT_FALSE(resolve_quantised(o, kQuantiseAboveTriangles));
+    EXPECT_TRUE(resolve_quantised(o, kQuantiseAboveTriangles + 1));
+    o.layout_triangles = kQuantiseAboveTriangles + 1;  // a scene's instanced meshes counted
+    EXPECT_EQ(build_bvh(tri, o).stats.quantised, 1);
+    EXPECT_FALSE(resolve_quantised(BvhOptions{.layout_triangles = 10}, kQuantiseAboveTriangles + 1));
     o.max_leaf_size = 17;
     EXPECT_EQ(build_bvh(tri, o).stats.quantised, 0);
+    o.layout_triangles = 0;
     o.quantised = 1;
     expect_error(o, "quantised nodes hold leaves of up to 16 triangles, max_leaf_size is 17");
     o.max_leaf_size = 16;

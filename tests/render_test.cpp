@@ -6,10 +6,13 @@
 #include <numeric>
 
 #include "host/bvh/bvh.hpp"
+#include "host/readers/load_scene.hpp"
 #include "tests/cl_test_env.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/scene.hpp"
+#include "tests/bvh_test_util.hpp"
+#include "tests/test_paths.hpp"
 
 namespace facet {
 namespace {
@@ -86,6 +89,30 @@ TEST(Render, PassSplitDoesNotChangeSamples) {
     std::vector<float> one = render(scene, 8, 8);
     std::vector<float> four = render(scene, 8, 2);
     for (std::size_t i = 0; i < one.size(); ++i) ASSERT_NEAR(one[i], four[i], 1e-5f * std::max(1.0f, one[i])) << i;
+}
+
+// Every node layout traces the same hits (quantised boxes contain the float ones and the
+// leaves are the same), so a scene renders to the same image bit for bit whichever the
+// session picks: small trees take float boxes, large ones quantised (kQuantiseAboveTriangles),
+// and the demo scenes' render programs would otherwise no longer run the quantised decode.
+TEST(Render, EveryNodeLayoutGivesTheSameImage) {
+    Scene scene = load_scene(test::scenes_dir() + "/cornell_box.json");
+    scene.settings.width = 40;
+    scene.settings.height = 40;
+    std::vector<std::vector<float>> images;
+    using bvh_test::kLayouts;
+    for (const bvh_test::Layout& layout : kLayouts) {
+        Bvh bvh = build_bvh(scene.vertices, bvh_test::with_layout({}, layout));
+        ASSERT_EQ(bvh.stats.quantised, layout.quantised) << layout.name;
+        Renderer r(test::context(), scene, bvh);
+        render_fixed(r, 8, 8);
+        images.push_back(r.image());
+    }
+    for (std::size_t k = 1; k < images.size(); ++k) {
+        ASSERT_EQ(images[k].size(), images[0].size());
+        EXPECT_EQ(0, std::memcmp(images[k].data(), images[0].data(), images[0].size() * sizeof(float)))
+            << kLayouts[k].name << " against " << kLayouts[0].name;
+    }
 }
 
 }  // namespace

@@ -243,7 +243,7 @@ int resolve_width(int width) {
     return width;
 }
 
-bool resolve_quantised(const BvhOptions& options) {
+bool resolve_quantised(const BvhOptions& options, std::size_t triangles) {
     // The meta byte holds up to 7 blocks a leaf and a leaf's first block up to 31 after the
     // node's first: eight leaves of up to 16 triangles (4 blocks) always fit.
     const bool fits = options.max_leaf_size <= 16;
@@ -258,7 +258,8 @@ bool resolve_quantised(const BvhOptions& options) {
     if (q == 1 && !fits)
         throw Error("build_bvh: quantised nodes hold leaves of up to 16 triangles, max_leaf_size is " +
                     std::to_string(options.max_leaf_size) + " (FACET_BVH_QUANTISED=0 keeps float boxes)");
-    return q < 0 ? kQuantisedDefault && fits : q == 1;
+    const std::size_t counted = options.layout_triangles ? options.layout_triangles : triangles;
+    return q < 0 ? fits && counted > kQuantiseAboveTriangles : q == 1;
 }
 
 int bvh_width_for(bool gpu, unsigned native_float_vector_width) {
@@ -352,7 +353,7 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
         const int width = resolve_width(options.width);
         if (width == 4 && options.quantised == 1)
             throw Error("build_bvh: BvhOptions::quantised is 1 for a 4-wide tree: quantised nodes are 8-wide");
-        const bool quantised = width == 8 && resolve_quantised(options);
+        const bool quantised = width == 8 && resolve_quantised(options, refs.size());
         CollapseOut wide;
         std::vector<FcBvhNode> nodes4;
         std::vector<FcBvhNode8> nodes8;

@@ -2,6 +2,7 @@
 // flattened into the layout of kernels/shared/bvh_layout.h for the traversal kernel.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,25 +14,34 @@
 namespace facet {
 
 struct BvhOptions {
-    int bins = 12;                   // SAH bins per axis
-    int max_leaf_size = 8;           // a leaf never holds more triangles than this
-    int exact_max = 16;              // ranges up to this size get the exact SAH sweep (0: bin everywhere)
-    float traversal_cost = 1.0f;     // SAH cost of visiting a node, relative to...
-    float intersection_cost = 4.0f;  // ...the cost of one ray/triangle block test: fitted to the
-                                     // trace kernels' instructions on PoCL (docs/performance.md,
-                                     // "The SAH's block test cost"), flat from 4 on
-    int block_size = 4;              // triangles tested at once (FcTriBlock lanes): a leaf of n costs
-                                     // ceil(n / block_size) tests (Embree's blocked SAH); 1, 2, 4 or 8
-    int width = 0;                   // node width, 4 (FcBvhNode) or 8 (FcBvhNode8); 0: FACET_BVH_WIDTH
-                                     // when set, else 4 (bvh_width_for picks one for a device)
-    int quantised = -1;              // 8-wide trees: 1 quantised child boxes (FcBvhNodeQ, 80-byte
-                                     // nodes), 0 float boxes (FcBvhNode8); -1: FACET_BVH_QUANTISED
-                                     // when set, else kQuantisedDefault (where the leaves fit)
+    int bins = 12;                     // SAH bins per axis
+    int max_leaf_size = 8;             // a leaf never holds more triangles than this
+    int exact_max = 16;                // ranges up to this size get the exact SAH sweep (0: bin everywhere)
+    float traversal_cost = 1.0f;       // SAH cost of visiting a node, relative to...
+    float intersection_cost = 4.0f;    // ...the cost of one ray/triangle block test: fitted to the
+                                       // trace kernels' instructions on PoCL (docs/performance.md,
+                                       // "The SAH's block test cost"), flat from 4 on
+    int block_size = 4;                // triangles tested at once (FcTriBlock lanes): a leaf of n costs
+                                       // ceil(n / block_size) tests (Embree's blocked SAH); 1, 2, 4 or 8
+    int width = 0;                     // node width, 4 (FcBvhNode) or 8 (FcBvhNode8); 0: FACET_BVH_WIDTH
+                                       // when set, else 4 (bvh_width_for picks one for a device)
+    int quantised = -1;                // 8-wide trees: 1 quantised child boxes (FcBvhNodeQ, 80-byte
+                                       // nodes), 0 float boxes (FcBvhNode8); -1: FACET_BVH_QUANTISED
+                                       // when set, else by size (kQuantiseAboveTriangles, where the
+                                       // leaves fit)
+    std::size_t layout_triangles = 0;  // the triangles that choice counts: 0, the tree's own; a
+                                       // scene with instances passes all it stores, since its
+                                       // instanced meshes' trees take the world tree's layout
 };
 
 // Whether 8-wide trees are quantised when neither BvhOptions::quantised nor
-// FACET_BVH_QUANTISED says (docs/performance.md has the figures that chose it).
-inline constexpr bool kQuantisedDefault = true;
+// FACET_BVH_QUANTISED says: above this many triangles. Quantised boxes take a third of the
+// float nodes' bytes, which pays on large meshes (the full dragon's closest-hit rays 8 %
+// faster), but their decoding costs instructions, which small trees pay for with nothing
+// (the Cornell box's render kernel 8.8 % fewer instructions with float boxes, 6.6 % more
+// samples per second; the bunny's and dragon_res2's rays as fast or faster):
+// docs/performance.md, "Float or quantised boxes, by size".
+inline constexpr std::size_t kQuantiseAboveTriangles = 150000;
 
 struct BvhStats {
     std::size_t triangles = 0;
@@ -67,10 +77,12 @@ struct Bvh {
 // throws an Error naming the bad value.
 int resolve_width(int width);
 
-// Whether 8-wide trees built with `options` are quantised (BvhOptions::quantised, else
-// FACET_BVH_QUANTISED, else kQuantisedDefault when every leaf fits FcBvhNodeQ's bytes:
-// max_leaf_size <= 16); throws an Error naming the bad value or the leaf size that does not fit.
-bool resolve_quantised(const BvhOptions& options);
+// Whether an 8-wide tree of `triangles` triangles built with `options` is quantised
+// (BvhOptions::quantised, else FACET_BVH_QUANTISED, else when BvhOptions::layout_triangles,
+// or without it `triangles`, exceeds kQuantiseAboveTriangles, and every leaf fits
+// FcBvhNodeQ's bytes: max_leaf_size <= 16); throws an Error naming the bad value or the
+// leaf size that does not fit.
+bool resolve_quantised(const BvhOptions& options, std::size_t triangles);
 
 // The i-th wide node of an 8-wide (FcBvhNode8) or 4-wide (FcBvhNode) tree. A quantised
 // node comes decoded (bvh_detail::dequantise_node: the boxes the traversal tests), with

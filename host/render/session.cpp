@@ -45,6 +45,7 @@ RenderSession::RenderSession(const Scene& scene, SessionOptions options) : scene
     BvhOptions bvh_options;  // the node width of the first device (every program reads the tree's own)
     bvh_options.width = bvh_width_for(contexts.front().desc().type == CL_DEVICE_TYPE_GPU,
                                       contexts.front().device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
+    bvh_options.layout_triangles = scene.stored_triangle_count();  // instanced meshes take its layout
     bvh_ = build_bvh(scene.vertices, bvh_options);
     // The device scene, compiled once for the AOVs and every device; the film's identity is
     // computed from it here alone, for the resumed film's check and the film saved, before
