@@ -32,6 +32,11 @@ expect render-cornell 0 "wrote" -- "$FACET" render "$SCENES/cornell_box.json" "$
 # Outputs go through temporaries named ".<stem>.tmp-<pid>-<n><ext>" (util/safe_write.cpp): none may be left.
 if ls -A "$tmp" | grep -q '\.tmp-'; then bad "no-temporary-left"; else ok "no-temporary-left"; fi
 expect info 0 "triangles" -- "$FACET" info "$SCENES/cornell_box.json"
+# The layout `facet render` picks on a CPU: float boxes for a small tree, unless forced.
+expect info-bvh-layout 0 "bvh layout +8-wide .*float boxes \(32 triangles: quantised above 150000\)" -- \
+    env -u FACET_BVH_QUANTISED "$FACET" info "$SCENES/cornell_box.json"
+expect info-bvh-layout-forced 0 "quantised boxes \(FACET_BVH_QUANTISED=1\)" -- \
+    env FACET_BVH_QUANTISED=1 "$FACET" info "$SCENES/cornell_box.json"
 
 # A bare OBJ renders with a default camera and light.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$tmp/tet.obj"

@@ -1,6 +1,8 @@
 // `facet info SCENE`: what the scene holds and what it will need on the device.
 #include <fmt/format.h>
 
+#include <cstdlib>
+
 #include "host/bvh/bvh.hpp"
 #include "host/cli/commands.hpp"
 #include "host/render/features.hpp"
@@ -61,8 +63,20 @@ int run_info(const InfoOptions& opt) {
         fmt::print("textures    {} images, {:.2f} MiB with mip-maps and uvs\n", scene.textures.size(),
                    double(texture_bytes) / (1 << 20));
     fmt::print("features    {}\n", describe_features(scene_features(scene)));
-    fmt::print("bvh         {} nodes, {} leaves, depth {}, max leaf {}, SAH cost {:.2f}, built in {:.3f} s\n", b.nodes,
-               b.leaves, b.max_depth, b.max_leaf_size, b.sah_cost, b.build_seconds);
+    fmt::print(
+        "bvh         {} nodes, {} leaves, depth {}, max leaf {}, SAH cost {:.2f}, built in {:.3f} s ({}-wide{})\n",
+        b.nodes, b.leaves, b.max_depth, b.max_leaf_size, b.sah_cost, b.build_seconds, b.width,
+        b.width == 8 ? (b.quantised ? ", quantised boxes" : ", float boxes") : "");
+    // What `facet render` builds on a CPU with 8-wide float vectors (bvh_width_for).
+    BvhOptions wide;
+    wide.width = 8;
+    wide.layout_triangles = scene.stored_triangle_count();
+    const char* forced = std::getenv("FACET_BVH_QUANTISED");
+    fmt::print("bvh layout  8-wide on CPUs with 8-wide vectors, {} boxes ({}); 4-wide on GPUs\n",
+               resolve_quantised(wide, wide.layout_triangles) ? "quantised" : "float",
+               forced && *forced
+                   ? fmt::format("FACET_BVH_QUANTISED={}", forced)
+                   : fmt::format("{} triangles: quantised above {}", wide.layout_triangles, kQuantiseAboveTriangles));
     fmt::print("image       {}x{}, {} spp, max depth {}\n", scene.settings.width, scene.settings.height,
                scene.settings.spp, scene.settings.max_depth);
     fmt::print("device mem  {:.2f} MiB (bvh {:.2f}, shading {:.2f}, textures {:.2f}, film {:.2f})\n",
