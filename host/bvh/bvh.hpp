@@ -38,7 +38,7 @@ struct BvhOptions {
 // FACET_BVH_QUANTISED says: above this many triangles. Quantised boxes take a third of the
 // float nodes' bytes, which pays on large meshes (the full dragon's closest-hit rays 8 %
 // faster), but their decoding costs instructions, which small trees pay for with nothing
-// (the Cornell box's render kernel 8.8 % fewer instructions with float boxes, 6.6 % more
+// (the Cornell box's render kernel 8.8 % fewer instructions with float boxes, 6 % more
 // samples per second; the bunny's and dragon_res2's rays as fast or faster):
 // docs/performance.md, "Float or quantised boxes, by size".
 inline constexpr std::size_t kQuantiseAboveTriangles = 150000;
