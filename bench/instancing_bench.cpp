@@ -113,7 +113,7 @@ Run run_once(ClContext& ctx, const std::string& path, bool instanced, bool quick
     r.world_triangles = scene.placed_triangle_count();
     r.device_bytes = dev.nodes.size_bytes() + dev.tris.size_bytes() + dev.shading.size_bytes() +
                      dev.instancing.instances.size() * sizeof(FcInstance) +
-                     dev.instancing.tree.size() * sizeof(FcBinaryNode);
+                     dev.instancing.tree.size() * sizeof(FcBvhNode);
     Renderer renderer(ctx, scene, bvh);
     render_fixed(renderer, 1);  // the first launch generates machine code
     renderer.reset();

@@ -188,18 +188,20 @@ TEST(Sphere, RootsFarFromTheOrigin) {
     EXPECT_LT(err, 1e-2);
 }
 
-TEST(Sphere, TreeMatchesBruteForce) {
+// Nearest hits of the spheres' tree of node width `width` against brute force.
+void tree_matches_brute_force(int width) {
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(-10.0f, 10.0f);
     const std::vector<FcSphere> spheres = random_spheres(rng, 300);
-    const SphereBvh tree = build_sphere_bvh(spheres);
+    const SphereBvh tree = build_sphere_bvh(spheres, width);
     ASSERT_EQ(tree.spheres.size(), spheres.size());
     Rays rays;
     for (int i = 0; i < 4096; ++i) {
         rays.o.push_back(f4(glm::dvec3(u(rng), u(rng), u(rng)) * 1.5));
         rays.d.push_back(f4(random_unit(rng), i % 4 == 0 ? 5.0 : 1e30));
     }
-    cl::Kernel k(kernels(), "trace_spheres_batch");
+    cl::Kernel k(test::program(width == 8 ? "kernels/test/sphere_kernels8.cl" : "kernels/test/sphere_kernels.cl"),
+                 "trace_spheres_batch");
     cl::Buffer nodes = buffer(tree.nodes), sph = buffer(tree.spheres), o = buffer(rays.o), d = buffer(rays.d);
     cl::Buffer out(test::context().context(), CL_MEM_WRITE_ONLY, rays.o.size() * sizeof(cl_float2));
     k.setArg(0, nodes);
@@ -229,73 +231,27 @@ TEST(Sphere, TreeMatchesBruteForce) {
         if (prim != best_prim || (prim >= 0 && std::abs(double(got[i].s[0]) - best) > 1e-4 * std::max(1.0, best)))
             ++mismatches;
     }
-    std::printf("[ sphere   ] tree of %zu nodes: %d of %zu rays hit, %d differ from brute force\n", tree.nodes.size(),
-                hits, rays.o.size(), mismatches);
+    std::printf("[ sphere   ] %d-wide tree of %zu node units: %d of %zu rays hit, %d differ from brute force\n", width,
+                tree.nodes.size(), hits, rays.o.size(), mismatches);
     EXPECT_GT(hits, 500);
     EXPECT_EQ(mismatches, 0);
 }
 
-// The binary traversal tests a node's two boxes as float2 lanes (box2_hit in
-// kernels/trace/binary_traverse.cl); its entry distances and answers must be those of the
-// scalar box_hit, bit for bit, so that the trees' hits, and images, stay as they were: on
-// the nodes of a real tree, on empty (inverted) boxes, on rays through a box's corner (where
-// only the exit's FC_SLAB_SCALE keeps the hit) and on rays whose origins lie on the slab
-// planes with zero direction components (0 * inf = NaN in the slab test).
-TEST(Sphere, NodeBoxesMatchScalarBoxTest) {
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<float> u(-10.0f, 10.0f);
-    const std::vector<FcSphere> spheres = random_spheres(rng, 64);
-    std::vector<FcBinaryNode> nodes = build_sphere_bvh(spheres).nodes;
-    nodes.push_back(build_sphere_bvh({}).nodes[0]);  // two empty children
-    Rays rays;
-    for (int i = 0; i < 8192; ++i) {
-        const FcBinaryNode& n = nodes[std::size_t(i) % nodes.size()];
-        glm::dvec3 o = glm::dvec3(u(rng), u(rng), u(rng)) * 1.5;
-        glm::dvec3 d = random_unit(rng);
-        const glm::dvec3 centre_a(0.5 * (double(n.a_lo[0]) + double(n.a_hi[0])),
-                                  0.5 * (double(n.a_lo[1]) + double(n.a_hi[1])),
-                                  0.5 * (double(n.a_lo[2]) + double(n.a_hi[2])));
-        if (i % 2 == 0 && n.a_count + n.a_index > 0 && glm::length(centre_a - o) > 0.0)
-            d = glm::normalize(centre_a - o);  // toward child a (not for an empty child)
-        const glm::dvec3 corner_a(n.a_hi[0], n.a_hi[1], n.a_hi[2]);
-        if (i % 6 == 1 && n.a_count + n.a_index > 0 && glm::length(corner_a - o) > 0.0)
-            d = glm::normalize(corner_a - o);  // grazing: entry = exit, up to rounding
-        if (i % 3 == 0) {                      // on a slab plane of child a, parallel to it
-            const int axis = (i / 3) % 3;
-            o[axis] = double(i % 2 ? n.a_lo[axis] : n.a_hi[axis]);
-            d[axis] = 0.0;
-            d = glm::length(d) > 0.0 ? glm::normalize(d) : glm::dvec3(0.0, 0.0, 1.0);
-        }
-        rays.o.push_back(f4(o));
-        rays.d.push_back(f4(d, i % 4 == 0 ? 3.0 : 1e30));
+// The spheres' tree has the triangles' tree's node width: both widths.
+TEST(Sphere, TreeMatchesBruteForce) {
+    for (int width : {4, 8}) {
+        SCOPED_TRACE(width);
+        tree_matches_brute_force(width);
     }
-    cl::Kernel k(kernels(), "binary_boxes_batch");
-    cl::Buffer nb = buffer(nodes), o = buffer(rays.o), d = buffer(rays.d);
-    cl::Buffer out(test::context().context(), CL_MEM_WRITE_ONLY, 2 * rays.o.size() * sizeof(cl_float4));
-    k.setArg(0, nb);
-    k.setArg(1, cl_uint(nodes.size()));
-    k.setArg(2, o);
-    k.setArg(3, d);
-    k.setArg(4, out);
-    run(k, rays.o.size());
-    const std::vector<cl_float4> got = read<cl_float4>(out, 2 * rays.o.size());
-    int differ = 0, hits = 0;
-    for (std::size_t i = 0; i < rays.o.size(); ++i) {
-        differ += std::memcmp(&got[2 * i], &got[2 * i + 1], sizeof(cl_float4)) != 0;
-        hits += got[2 * i + 1].s[2] > 0.0f;
-    }
-    std::printf("[ sphere   ] %zu rays against %zu nodes: %d hit child a, %d differ from box_hit\n", rays.o.size(),
-                nodes.size(), hits, differ);
-    EXPECT_GT(hits, 2000);
-    EXPECT_EQ(differ, 0);
 }
 
 TEST(Sphere, EmptyTreeIsNeverHit) {
-    const SphereBvh tree = build_sphere_bvh({});
+    const SphereBvh tree = build_sphere_bvh({}, 4);
     ASSERT_EQ(tree.nodes.size(), 1u);
-    EXPECT_EQ(tree.nodes[0].a_count, 0);
-    EXPECT_GT(tree.nodes[0].a_lo[0], tree.nodes[0].a_hi[0]);
-    EXPECT_GT(tree.nodes[0].b_lo[0], tree.nodes[0].b_hi[0]);
+    for (int c = 0; c < 4; ++c) {
+        EXPECT_EQ(tree.nodes[0].count[c], 0);
+        EXPECT_GT(tree.nodes[0].lo_x[c], tree.nodes[0].hi_x[c]);
+    }
 }
 
 // Chains of rays entering a sphere, bouncing inside and leaving, each from the offset

@@ -230,6 +230,28 @@ std::size_t pack_node_buffer(std::vector<Node>& nodes, bool quantised, const std
 
 }  // namespace
 
+std::vector<FcBvhNode> bvh_detail::collapse_float_tree(const std::vector<BinaryNode>& bin, int width) {
+    std::vector<FcBvhNode> units;
+    if (width == 8) {
+        std::vector<FcBvhNode8> nodes8;
+        CollapseOut wide = collapse(bin, false, nodes8);
+        if (wide.stack_need > FC_BVH8_STACK_SIZE) wide = collapse(bin, true, nodes8);
+        if (wide.stack_need > FC_BVH8_STACK_SIZE)
+            throw Error("collapse_float_tree: the 8-wide tree needs " + std::to_string(wide.stack_need) +
+                        " stack entries, more than FC_BVH8_STACK_SIZE");
+        units.resize(nodes8.size() * (sizeof(FcBvhNode8) / sizeof(FcBvhNode)));
+        std::memcpy(units.data(), nodes8.data(), nodes8.size() * sizeof(FcBvhNode8));
+    } else if (width == 4) {
+        const CollapseOut wide = collapse(bin, false, units);
+        if (wide.stack_need > FC_BVH_STACK_SIZE)
+            throw Error("collapse_float_tree: the 4-wide tree needs " + std::to_string(wide.stack_need) +
+                        " stack entries, more than FC_BVH_STACK_SIZE");
+    } else {
+        throw Error("collapse_float_tree: width " + std::to_string(width) + " is not 4 or 8");
+    }
+    return units;
+}
+
 int resolve_width(int width) {
     if (width == 0) {
         const char* env = std::getenv("FACET_BVH_WIDTH");

@@ -73,6 +73,16 @@ struct Bvh {
     BvhStats stats;
 };
 
+namespace bvh_detail {
+struct BinaryNode;
+// The binary tree `bin` (host/bvh/sah_builder.hpp) collapsed into float wide nodes of
+// `width` (4: FcBvhNode, 8: FcBvhNode8), as the FcBvhNode units a node buffer holds, each
+// leaf keeping its primitive range (index, count) as the builder left it: the small trees'
+// layout (host/bvh/small_tree.hpp). Throws when a path would push more than the
+// traversal's stack holds.
+std::vector<FcBvhNode> collapse_float_tree(const std::vector<BinaryNode>& bin, int width);
+}  // namespace bvh_detail
+
 // The node width that `options.width` asks for (0: FACET_BVH_WIDTH when set, else 4);
 // throws an Error naming the bad value.
 int resolve_width(int width);

@@ -11,7 +11,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "host/bvh/binary_tree.hpp"
+#include "host/bvh/small_tree.hpp"
 #include "host/error.hpp"
 
 namespace facet {
@@ -98,7 +98,7 @@ InstanceBvh build_instance_bvh(const Bvh& world, std::span<const InstancedMesh> 
         placed.push_back(in);
         out.order.push_back(std::int32_t(i));
     }
-    out.tree = build_binary_tree(refs, 2);
+    out.tree = build_small_tree(refs, SmallTreeCosts{2, 1.0f}, world.stats.width);
     std::vector<std::int32_t> order;
     order.reserve(refs.size());
     out.instances.reserve(refs.size());

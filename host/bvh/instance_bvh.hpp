@@ -1,8 +1,8 @@
 // The two-level tree of instancing (kernels/shared/instance_layout.h): one bottom-level
 // tree (BLAS) per shared mesh, built by build_bvh over its object-space triangles, to be
 // appended to the world tree's node buffer and triangle array (so kernels/trace's
-// traversal serves it from its root), and a binary top-level tree over the instances'
-// world boxes (host/bvh/binary_tree.hpp, as the spheres' tree is).
+// traversal serves it from its root), and a top-level small tree over the instances'
+// world boxes (host/bvh/small_tree.hpp, as the spheres' tree is), as wide as the world tree.
 #pragma once
 
 #include <cstdint>
@@ -34,7 +34,7 @@ struct InstanceBvh {
     std::vector<FcBvhNode> nodes;       // each mesh's BLAS, to follow the world tree's buffer
     std::vector<FcTriangle> triangles;  // each mesh's, to follow the world tree's
     std::vector<FcInstance> instances;  // in the top-level tree's leaf order
-    std::vector<FcBinaryNode> tree;     // the top level; tree[0] is the root
+    std::vector<FcBvhNode> tree;        // the top level, float wide nodes as FcBvhNode units, the root first
     std::vector<std::int32_t> order;    // order[k]: the placement FcInstance k came from
     std::size_t blas_bytes = 0;         // the meshes' nodes, leaf blocks and triangles
     double build_seconds = 0.0;         // BLASes, top level and the copies

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "host/bvh/binary_tree.hpp"
+#include "host/bvh/small_tree.hpp"
 
 namespace facet {
 namespace {
@@ -28,13 +28,13 @@ bvh_detail::PrimRef sphere_ref(const FcSphere& s, std::uint32_t id) {
 
 }  // namespace
 
-SphereBvh build_sphere_bvh(const std::vector<FcSphere>& spheres) {
+SphereBvh build_sphere_bvh(const std::vector<FcSphere>& spheres, int width) {
     std::vector<bvh_detail::PrimRef> refs;
     refs.reserve(spheres.size());
     for (std::size_t i = 0; i < spheres.size(); ++i)
         if (usable(spheres[i])) refs.push_back(sphere_ref(spheres[i], std::uint32_t(i)));
     SphereBvh out;
-    out.nodes = build_binary_tree(refs, 4);
+    out.nodes = build_small_tree(refs, SmallTreeCosts{4, 1.0f}, width);
     out.spheres.reserve(refs.size());
     for (const bvh_detail::PrimRef& r : refs) {
         FcSphere s = spheres[r.id];

@@ -21,7 +21,7 @@ int run_info(const InfoOptions& opt) {
     const std::size_t bvh_bytes = scene.instances.empty() ? b.device_bytes
                                                           : dev.nodes.size_bytes() + dev.tris.size_bytes() +
                                                                 dev.instancing.instances.size() * sizeof(FcInstance) +
-                                                                dev.instancing.tree.size() * sizeof(FcBinaryNode);
+                                                                dev.instancing.tree.size() * sizeof(FcBvhNode);
     std::size_t shading_bytes = dev.shading.size_bytes() + scene.materials.size() * sizeof(FcMaterial) +
                                 scene.lights.size() * sizeof(FcLight) + scene.light_cdf.size() * sizeof(float);
     std::size_t film_bytes = 2 * std::size_t(scene.settings.width) * scene.settings.height * 16;  // two halves

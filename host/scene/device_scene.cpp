@@ -199,7 +199,7 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     for (const Material& m : scene.materials) d.materials_owned.push_back(device_material(m));
     d.materials = d.materials_owned;
     d.texture_data = compile_textures(scene);
-    d.sphere_tree = build_sphere_bvh(scene.spheres);
+    d.sphere_tree = build_sphere_bvh(scene.spheres, bvh.stats.width);
     d.spheres = d.sphere_tree.spheres;
     d.sphere_nodes = d.sphere_tree.nodes;
     compile_instances(scene, bvh, d);

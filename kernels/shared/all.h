@@ -4,7 +4,6 @@
 #include "kernels/shared/types.h"
 #include "kernels/shared/bvh_layout.h"
 #include "kernels/shared/scene_layout.h"
-#include "kernels/shared/binary_node_layout.h"
 #include "kernels/shared/sphere_layout.h"
 #include "kernels/shared/instance_layout.h"
 #include "kernels/shared/render_layout.h"

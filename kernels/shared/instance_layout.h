@@ -12,12 +12,13 @@
  * index of its first FcTriangle; their FcTriangle.prim index the shading arrays (FcTriShading,
  * FcTriTexcoords), which hold each shared mesh's triangles once, after the world triangles'.
  *
- * The top-level tree is an FcBinaryNode tree (binary_node_layout.h), its leaves indexing the
- * FcInstance array. */
+ * The top-level tree is a small tree (float wide nodes of bvh_layout.h as wide as the world
+ * tree, traversed by kernels/trace/small_tree_traverse.cl), its leaves indexing the FcInstance
+ * array. */
 #ifndef FACET_SHARED_INSTANCE_LAYOUT_H
 #define FACET_SHARED_INSTANCE_LAYOUT_H
 
-#include "kernels/shared/binary_node_layout.h"
+#include "kernels/shared/bvh_layout.h"
 #include "kernels/shared/types.h"
 
 typedef struct FcInstance {

@@ -20,7 +20,6 @@
     S(FcMaterialTextures)    \
     S(FcTriTexcoords)        \
     S(FcSphere)              \
-    S(FcBinaryNode)          \
     S(FcInstance)            \
     S(FcDenoiseParams)
 
@@ -63,8 +62,7 @@
     F(FcMaterialTextures, base_factor) F(FcMaterialTextures, flags) F(FcMaterialTextures, uv_transform) F(FcMaterialTextures, clearcoat) F(FcMaterialTextures, clearcoat_normal_scale) F(FcMaterialTextures, specular_color_f0) F(FcMaterialTextures, specular_weight)                     \
     F(FcTriTexcoords, uv) F(FcTriTexcoords, tangent_flags) F(FcTriTexcoords, tangent)                                       \
     F(FcSphere, center) F(FcSphere, radius) F(FcSphere, material) F(FcSphere, light) F(FcSphere, flags)                     \
-    F(FcSphere, prim) F(FcBinaryNode, a_lo) F(FcBinaryNode, a_index) F(FcBinaryNode, a_hi) F(FcBinaryNode, a_count)         \
-    F(FcBinaryNode, b_lo) F(FcBinaryNode, b_index) F(FcBinaryNode, b_hi) F(FcBinaryNode, b_count)                           \
+    F(FcSphere, prim)                                                                                                       \
     F(FcInstance, world_to_object) F(FcInstance, object_to_world) F(FcInstance, lo) F(FcInstance, root)                     \
     F(FcInstance, hi) F(FcInstance, tri_offset)                                                                             \
     F(FcDenoiseParams, width) F(FcDenoiseParams, height) F(FcDenoiseParams, radius) F(FcDenoiseParams, patch_radius)        \

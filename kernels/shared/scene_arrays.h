@@ -40,9 +40,9 @@
     X(FcMaterialTextures, FcMaterialTextures, material_textures, "material texture bindings", FC_ARRAY_CONTENT)    \
     X(FcTriTexcoords, FcTriTexcoords, texcoords, "texture uvs", FC_ARRAY_CONTENT)                                  \
     X(FcSphere, FcSphere, spheres, "spheres", FC_ARRAY_CONTENT)                                                    \
-    X(FcBinaryNode, FcBinaryNode, sphere_nodes, "sphere BVH", FC_ARRAY_CONTENT)                                    \
+    X(FcBvhNode, FcBvhNode, sphere_nodes, "sphere BVH", FC_ARRAY_TREE)                                             \
     X(FcInstance, FcInstance, instances, "instances", FC_ARRAY_TREE)                                               \
-    X(FcBinaryNode, FcBinaryNode, instance_nodes, "instance BVH", FC_ARRAY_CONTENT)
+    X(FcBvhNode, FcBvhNode, instance_nodes, "instance BVH", FC_ARRAY_TREE)
 // clang-format on
 
 #endif

@@ -1,12 +1,11 @@
 /* Analytic spheres (kernels/trace/sphere.cl), uploaded by the host (host/bvh/sphere_bvh.hpp):
- * the spheres in tree order and a binary BVH over their boxes (FcBinaryNode of
- * binary_node_layout.h, its leaves indexing the FcSphere array), apart from the triangles'
+ * the spheres in tree order and a small tree over their boxes (float wide nodes of bvh_layout.h
+ * as wide as the triangles' tree, its leaves indexing the FcSphere array), apart from the triangles'
  * tree so that a scene without spheres pays nothing (kernels built without FC_HAS_SPHERES
- * never look at them). A scene without spheres has a root with two empty children. */
+ * never look at them). A scene without spheres has a root whose slots are all empty. */
 #ifndef FACET_SHARED_SPHERE_LAYOUT_H
 #define FACET_SHARED_SPHERE_LAYOUT_H
 
-#include "kernels/shared/binary_node_layout.h"
 #include "kernels/shared/types.h"
 
 /* FcSphere.flags: the surface faces into the sphere (normals and emission point inward,

@@ -1,5 +1,8 @@
 /* Test kernels for tests/sphere_test.cpp: the ray/sphere roots, the spheres' tree, chains of
  * rays bouncing inside a sphere from offset origins, and the sphere light's sampling. */
+#ifndef FACET_TEST_SPHERE_KERNELS_CL
+#define FACET_TEST_SPHERE_KERNELS_CL
+
 #include "kernels/integrator/surface.cl"
 #include "kernels/lights/sphere_light.cl"
 
@@ -14,7 +17,7 @@ __kernel void sphere_roots_batch(float4 sphere, __global const float4* origins, 
 
 /* The nearest sphere of the tree along origins[i] + t dirs[i].xyz, t < dirs[i].w:
  * out[i] = (t, as_float(sphere index in the FcSphere array)), index -1 on a miss. */
-__kernel void trace_spheres_batch(__global const FcBinaryNode* nodes, __global const FcSphere* spheres,
+__kernel void trace_spheres_batch(__global const FcBvhNode* nodes, __global const FcSphere* spheres,
                                   __global const float4* origins, __global const float4* dirs, __global float2* out) {
     const uint i = get_global_id(0);
     Hit hit;
@@ -23,23 +26,6 @@ __kernel void trace_spheres_batch(__global const FcBinaryNode* nodes, __global c
     hit.tri = -1;
     trace_spheres(nodes, spheres, origins[i].xyz, dirs[i].xyz, &hit, false);
     out[i] = (float2)(hit.t, as_float(hit.prim));
-}
-
-/* Node nodes[i % n_nodes]'s two child boxes against ray i (dirs[i].w = tmax) by the binary
- * traversal's box2_hit and by two scalar box_hit calls: out[2 i] = (tnear a, tnear b, hit a,
- * hit b) of box2_hit, out[2 i + 1] the same of box_hit, hits as 1.0f or 0.0f. */
-__kernel void binary_boxes_batch(__global const FcBinaryNode* nodes, uint n_nodes, __global const float4* origins,
-                                 __global const float4* dirs, __global float4* out) {
-    const uint i = get_global_id(0);
-    __global const FcBinaryNode* n = &nodes[i % n_nodes];
-    const BoxRay r = box_ray_setup(origins[i].xyz, dirs[i].xyz);
-    float2 t2;
-    const int2 h2 = box2_hit(&r, n, dirs[i].w, &t2);
-    float ta, tb;
-    const bool ha = box_hit(&r, n->a_lo, n->a_hi, dirs[i].w, &ta);
-    const bool hb = box_hit(&r, n->b_lo, n->b_hi, dirs[i].w, &tb);
-    out[2 * i] = (float4)(t2.x, t2.y, h2.x ? 1.0f : 0.0f, h2.y ? 1.0f : 0.0f);
-    out[2 * i + 1] = (float4)(ta, tb, ha ? 1.0f : 0.0f, hb ? 1.0f : 0.0f);
 }
 
 /* A ray from outside (origins[i], dirs[i]) enters the sphere, bounces `bounces` times inside
@@ -123,3 +109,5 @@ __kernel void sphere_uv_batch(__global const float4* normals, __global float2* o
     out[i] = sphere_uv(n);
     tangents[i] = (float4)(sphere_tangent(n), 0.0f);
 }
+
+#endif

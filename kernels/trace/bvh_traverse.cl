@@ -218,15 +218,91 @@ inline int8 children_hit(__global const FcNode* n, float4 head, float3 o, float3
                      head.z + convert_float8(q[near.z]) * sz, head.z + convert_float8(q[far.z]) * sz, o, inv_d, tmax,
                      tnear);
 }
+#endif
+
+/* The float node of the program's width: the triangles' tree unless it is quantised, and
+ * always the small trees of the spheres and the instances (small_tree_traverse.cl). */
+#if FC_W == 8
+typedef FcBvhNode8 FcFloatNode;
 #else
-inline intW children_hit(__global const FcNode* n, float3 o, float3 inv_d, int3 near, int3 far, float tmax,
-                         floatW* tnear) {
+typedef FcBvhNode FcFloatNode;
+#endif
+
+inline intW float_children_hit(__global const FcFloatNode* n, float3 o, float3 inv_d, int3 near, int3 far, float tmax,
+                               floatW* tnear) {
     /* Whole-vector loads (nodes are aligned to their size): vload8 became two 16-byte
      * loads and an insert in PoCL's code. */
     __global const floatW* v = (__global const floatW*)n;
     return slabs_hit(v[near.x], v[far.x], v[near.y], v[far.y], v[near.z], v[far.z], o, inv_d, tmax, tnear);
 }
-#endif
+
+/* The step after a node's leaves, shared by every wide traversal: with no hit inner child,
+ * the next stack entry still nearer than HIT_T (none left: EXIT); with one, that child;
+ * with two, the nearer, the other pushed; with more, insertion by entry distance, the
+ * nearest entered and the rest pushed farthest first. INNER (a uint of lanes) and TNW (the
+ * entry distances) are the node's; CHILD(c) gives inner child c's node index. Used inside
+ * the traversal's loop (its `continue`s are the loop's); the host keeps the pushes within
+ * FC_STACK. */
+#define FC_WIDE_NEXT(INNER, TNW, STACK_NODE, STACK_T, SP, NODE, HIT_T, CHILD, EXIT) \
+    {                                                                               \
+        if (!(INNER)) {                                                             \
+            /* Pop the next entry still nearer than the nearest hit. */             \
+            for (;;) {                                                              \
+                if ((SP) == 0) EXIT;                                                \
+                --(SP);                                                             \
+                if ((STACK_T)[SP] <= (HIT_T)) break;                                \
+            }                                                                       \
+            (NODE) = (STACK_NODE)[SP];                                              \
+            continue;                                                               \
+        }                                                                           \
+        const uint fc_c0 = lowest_bit(INNER);                                       \
+        (INNER) &= (INNER)-1u;                                                      \
+        if (!(INNER)) {                                                             \
+            (NODE) = CHILD(fc_c0);                                                  \
+            continue;                                                               \
+        }                                                                           \
+        float fc_tn[FC_W];                                                          \
+        FC_VSTOREW(TNW, 0, fc_tn);                                                  \
+        const uint fc_c1 = lowest_bit(INNER);                                       \
+        (INNER) &= (INNER)-1u;                                                      \
+        if (!(INNER)) {                                                             \
+            const bool fc_swap = fc_tn[fc_c1] < fc_tn[fc_c0];                       \
+            const uint fc_nearer = fc_swap ? fc_c1 : fc_c0;                         \
+            const uint fc_farther = fc_swap ? fc_c0 : fc_c1;                        \
+            if ((SP) < FC_STACK) { /* always, by the builder */                     \
+                (STACK_NODE)[SP] = CHILD(fc_farther);                               \
+                (STACK_T)[SP] = fc_tn[fc_farther];                                  \
+                ++(SP);                                                             \
+            }                                                                       \
+            (NODE) = CHILD(fc_nearer);                                              \
+            continue;                                                               \
+        }                                                                           \
+        /* Three or more: insertion by entry distance, farthest at 0. */            \
+        int fc_order[FC_W];                                                         \
+        float fc_dist[FC_W];                                                        \
+        fc_order[0] = (int)fc_c0;                                                   \
+        fc_dist[0] = fc_tn[fc_c0];                                                  \
+        int fc_k = 1;                                                               \
+        (INNER) |= 1u << fc_c1;                                                     \
+        do {                                                                        \
+            const uint fc_c = lowest_bit(INNER);                                    \
+            (INNER) &= (INNER)-1u;                                                  \
+            int fc_j = fc_k++;                                                      \
+            for (; fc_j > 0 && fc_dist[fc_j - 1] < fc_tn[fc_c]; --fc_j) {           \
+                fc_dist[fc_j] = fc_dist[fc_j - 1];                                  \
+                fc_order[fc_j] = fc_order[fc_j - 1];                                \
+            }                                                                       \
+            fc_dist[fc_j] = fc_tn[fc_c];                                            \
+            fc_order[fc_j] = (int)fc_c;                                             \
+        } while (INNER);                                                            \
+        for (int fc_j = 0; fc_j + 1 < fc_k; ++fc_j)                                 \
+            if ((SP) < FC_STACK) { /* always, by the builder */                     \
+                (STACK_NODE)[SP] = CHILD((uint)fc_order[fc_j]);                     \
+                (STACK_T)[SP] = fc_dist[fc_j];                                      \
+                ++(SP);                                                             \
+            }                                                                       \
+        (NODE) = CHILD((uint)fc_order[fc_k - 1]);                                   \
+    }
 
 /* The node index of hit inner child c: from the float node's index row, or, quantised,
  * by its rank among the node's inner children. */
@@ -268,7 +344,7 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
         uint leaves = hits & ~inner_slots;
         uint inner = hits & inner_slots;
 #else
-        const intW mask = children_hit(n, o, br.inv_d, near_row, far_row, hit->t, &tnw);
+        const intW mask = float_children_hit(n, o, br.inv_d, near_row, far_row, hit->t, &tnw);
         const intW count = FC_VLOADW(0, n->count);
         const intW index = FC_VLOADW(0, n->index);
         uint leaves = lane_bits_w(mask & (count > 0));
@@ -299,65 +375,10 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
                 }
             } while (leaves);
         }
-        if (!inner) {
-            /* Pop the next entry still nearer than the nearest hit. */
-            for (;;) {
-                if (sp == 0) return found;
-                --sp;
-                if (stack_t[sp] <= hit->t) break;
-            }
-            node = stack_node[sp];
-            continue;
-        }
 #if FC_BVH_QUANTISED
         const int child_base = n->child_base;
 #endif
-        const uint c0 = lowest_bit(inner);
-        inner &= inner - 1u;
-        if (!inner) {
-            node = FC_CHILD(c0);
-            continue;
-        }
-        float tn[FC_W];
-        FC_VSTOREW(tnw, 0, tn);
-        const uint c1 = lowest_bit(inner);
-        inner &= inner - 1u;
-        if (!inner) {
-            const bool swap = tn[c1] < tn[c0];
-            const uint nearer = swap ? c1 : c0, farther = swap ? c0 : c1;
-            if (sp < FC_STACK) { /* always, by the builder */
-                stack_node[sp] = FC_CHILD(farther);
-                stack_t[sp] = tn[farther];
-                ++sp;
-            }
-            node = FC_CHILD(nearer);
-            continue;
-        }
-        /* Three or more: insertion by entry distance, farthest at 0. */
-        int order[FC_W];
-        float dist[FC_W];
-        order[0] = (int)c0;
-        dist[0] = tn[c0];
-        int k = 1;
-        inner |= 1u << c1;
-        do {
-            const uint c = lowest_bit(inner);
-            inner &= inner - 1u;
-            int j = k++;
-            for (; j > 0 && dist[j - 1] < tn[c]; --j) {
-                dist[j] = dist[j - 1];
-                order[j] = order[j - 1];
-            }
-            dist[j] = tn[c];
-            order[j] = (int)c;
-        } while (inner);
-        for (int j = 0; j + 1 < k; ++j)
-            if (sp < FC_STACK) { /* always, by the builder */
-                stack_node[sp] = FC_CHILD((uint)order[j]);
-                stack_t[sp] = dist[j];
-                ++sp;
-            }
-        node = FC_CHILD((uint)order[k - 1]);
+        FC_WIDE_NEXT(inner, tnw, stack_node, stack_t, sp, node, hit->t, FC_CHILD, return found);
     }
 }
 #undef FC_CHILD

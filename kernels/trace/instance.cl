@@ -1,5 +1,5 @@
 /* Instancing (kernels/shared/instance_layout.h): rays against the instances of shared
- * meshes. A binary top-level tree over the instances' world boxes (binary_traverse.cl, as
+ * meshes. A top-level small tree over the instances' world boxes (small_tree_traverse.cl, as
  * the spheres' tree) leads to instances; at each, the ray is taken
  * into the mesh's object space (its direction not renormalised, so that t along it is the
  * world ray's t and the nearest hit is shared by every instance and the world's triangles)
@@ -10,8 +10,7 @@
 
 #include "kernels/scene/instance_transform.cl"
 #include "kernels/scene/scene_view.cl"
-#include "kernels/trace/binary_traverse.cl"
-#include "kernels/trace/bvh_traverse.cl"
+#include "kernels/trace/small_tree_traverse.cl"
 
 /* The instances [first, first + count) of a leaf, shortening hit->t: a hit sets hit->inst
  * and hit->tri to the triangle's index in the whole FcTriangle array. `alpha_seed` is the
@@ -39,13 +38,18 @@ inline bool instance_leaf_hit(const SceneView* sc, int first, int count, float3 
     return found;
 }
 
+/* The instances' tree for instance_leaf_hit's hits, without hit->prim. */
+inline bool instances_traverse(const SceneView* sc, float3 o, float3 d, Hit* hit, bool any_hit, uint alpha_seed) {
+    bool found = false;
+#define FC_INSTANCE_LEAF(first, count) instance_leaf_hit(sc, first, count, o, d, hit, any_hit, alpha_seed)
+    FC_SMALL_TREE_TRAVERSE(sc->instance_nodes, o, d, hit, any_hit, found, FC_INSTANCE_LEAF);
+#undef FC_INSTANCE_LEAF
+}
+
 /* Nearest instanced hit with 0 < t < hit->t (or, with `any_hit`, whether there is one). A
  * closest hit gets hit->prim (its triangle's index in the shading arrays). */
 inline bool trace_instances(const SceneView* sc, float3 o, float3 d, Hit* hit, bool any_hit, uint alpha_seed) {
-    bool found = false;
-#define FC_INSTANCE_LEAF(first, count) instance_leaf_hit(sc, first, count, o, d, hit, any_hit, alpha_seed)
-    FC_BINARY_TRAVERSE(sc->instance_nodes, o, d, hit, any_hit, found, FC_INSTANCE_LEAF);
-#undef FC_INSTANCE_LEAF
+    const bool found = instances_traverse(sc, o, d, hit, any_hit, alpha_seed);
     if (found) hit->prim = sc->tris[hit->tri].prim;
     return found;
 }

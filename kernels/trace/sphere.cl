@@ -1,5 +1,5 @@
 /* Analytic spheres: the ray/sphere intersection, the traversal of the spheres' own binary
- * BVH (kernels/shared/sphere_layout.h, traversed by binary_traverse.cl), and the surface at a hit.
+ * tree (kernels/shared/sphere_layout.h, traversed by small_tree_traverse.cl), and the surface at a hit.
  *
  * The intersection is the numerically careful quadratic of Haines et al. 2019 ("Precision
  * Improvements for Ray/Sphere Intersection", Ray Tracing Gems ch. 7) as pbrt-v4 (section
@@ -15,7 +15,7 @@
 #define FACET_TRACE_SPHERE_CL
 
 #include "kernels/shared/sphere_layout.h"
-#include "kernels/trace/binary_traverse.cl"
+#include "kernels/trace/small_tree_traverse.cl"
 #include "kernels/util/math.cl"
 
 /* Hit.tri of a sphere hit; Hit.prim is then the sphere's index in the FcSphere array. */
@@ -77,13 +77,12 @@ inline bool sphere_leaf_hit(__global const FcSphere* spheres, int first, int cou
 }
 
 /* Nearest sphere hit with 0 < t < hit->t (or, with `any_hit`, whether there is one). */
-inline bool trace_spheres(__global const FcBinaryNode* nodes, __global const FcSphere* spheres, float3 o, float3 d,
+inline bool trace_spheres(__global const FcBvhNode* nodes, __global const FcSphere* spheres, float3 o, float3 d,
                           Hit* hit, bool any_hit) {
     bool found = false;
 #define FC_SPHERE_LEAF(first, count) sphere_leaf_hit(spheres, first, count, o, d, hit, any_hit)
-    FC_BINARY_TRAVERSE(nodes, o, d, hit, any_hit, found, FC_SPHERE_LEAF);
+    FC_SMALL_TREE_TRAVERSE(nodes, o, d, hit, any_hit, found, FC_SPHERE_LEAF);
 #undef FC_SPHERE_LEAF
-    return found;
 }
 
 /* The hit point o + t d re-projected onto the sphere, its outward unit normal in *n and a
