@@ -151,6 +151,23 @@ CollapseOut collapse(const std::vector<bvh_detail::BinaryNode>& bin, bool by_lev
     return res;
 }
 
+// collapse() within the traversal's stack (FC_BVH_STACK_SIZE or FC_BVH8_STACK_SIZE entries):
+// an 8-wide tree whose paths would push more is collapsed by levels instead; a tree still too
+// deep is an Error naming `who`.
+template <typename Node>
+CollapseOut collapse_within_stack(const std::vector<bvh_detail::BinaryNode>& bin, std::vector<Node>& out,
+                                  const char* who) {
+    constexpr int W = kWidth<Node>;
+    constexpr int stack = W == 8 ? FC_BVH8_STACK_SIZE : FC_BVH_STACK_SIZE;
+    CollapseOut wide = collapse(bin, false, out);
+    if (W == 8 && wide.stack_need > stack) wide = collapse(bin, true, out);
+    if (wide.stack_need > stack)
+        throw Error(std::string(who) + ": the " + std::to_string(W) + "-wide tree needs " +
+                    std::to_string(wide.stack_need) + " stack entries, more than " +
+                    (W == 8 ? "FC_BVH8_STACK_SIZE" : "FC_BVH_STACK_SIZE"));
+    return wide;
+}
+
 constexpr std::int64_t kRowsPerBlock = sizeof(FcTriBlock) / 16;
 static_assert(sizeof(FcBvhNode) % 16 == 0 && sizeof(FcBvhNode8) % sizeof(FcBvhNode) == 0 &&
                   sizeof(FcBvhNodeQ) % 16 == 0 && sizeof(FcTriBlock) % 16 == 0,
@@ -234,18 +251,11 @@ std::vector<FcBvhNode> bvh_detail::collapse_float_tree(const std::vector<BinaryN
     std::vector<FcBvhNode> units;
     if (width == 8) {
         std::vector<FcBvhNode8> nodes8;
-        CollapseOut wide = collapse(bin, false, nodes8);
-        if (wide.stack_need > FC_BVH8_STACK_SIZE) wide = collapse(bin, true, nodes8);
-        if (wide.stack_need > FC_BVH8_STACK_SIZE)
-            throw Error("collapse_float_tree: the 8-wide tree needs " + std::to_string(wide.stack_need) +
-                        " stack entries, more than FC_BVH8_STACK_SIZE");
+        collapse_within_stack(bin, nodes8, "collapse_float_tree");
         units.resize(nodes8.size() * (sizeof(FcBvhNode8) / sizeof(FcBvhNode)));
         std::memcpy(units.data(), nodes8.data(), nodes8.size() * sizeof(FcBvhNode8));
     } else if (width == 4) {
-        const CollapseOut wide = collapse(bin, false, units);
-        if (wide.stack_need > FC_BVH_STACK_SIZE)
-            throw Error("collapse_float_tree: the 4-wide tree needs " + std::to_string(wide.stack_need) +
-                        " stack entries, more than FC_BVH_STACK_SIZE");
+        collapse_within_stack(bin, units, "collapse_float_tree");
     } else {
         throw Error("collapse_float_tree: width " + std::to_string(width) + " is not 4 or 8");
     }
@@ -376,18 +386,10 @@ Bvh build_bvh(const std::vector<glm::vec3>& vertices, const BvhOptions& options,
         if (width == 4 && options.quantised == 1)
             throw Error("build_bvh: BvhOptions::quantised is 1 for a 4-wide tree: quantised nodes are 8-wide");
         const bool quantised = width == 8 && resolve_quantised(options, refs.size());
-        CollapseOut wide;
         std::vector<FcBvhNode> nodes4;
         std::vector<FcBvhNode8> nodes8;
-        if (width == 8) {
-            wide = collapse(built.nodes, false, nodes8);
-            if (wide.stack_need > FC_BVH8_STACK_SIZE) wide = collapse(built.nodes, true, nodes8);
-            if (wide.stack_need > FC_BVH8_STACK_SIZE)
-                throw Error("build_bvh: the 8-wide tree needs " + std::to_string(wide.stack_need) +
-                            " stack entries, more than FC_BVH8_STACK_SIZE");
-        } else {
-            wide = collapse(built.nodes, false, nodes4);
-        }
+        const CollapseOut wide = width == 8 ? collapse_within_stack(built.nodes, nodes8, "build_bvh")
+                                            : collapse_within_stack(built.nodes, nodes4, "build_bvh");
         static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "vertices are packed float triples");
         bvh.triangles.reserve(refs.size());  // filled in order, without zeroing first
         for (std::size_t k = 0; k < refs.size(); ++k) {
