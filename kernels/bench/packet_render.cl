@@ -2,23 +2,18 @@
  * Lambertian materials and triangle area lights, eight paths per work-item in float8
  * lanes, with regeneration. Trace, surface, camera ray and accumulation per lane (facet's
  * scalar functions); the sampler, light sampling, the BSDF and roulette in lanes. A
- * measurement, not a product kernel: the lane code repeats the scalar formulas. */
+ * measurement, not a product kernel. Its formulas are the lane-generic bodies that the scalar
+ * kernels run at W = 1 (kernels/lanes/packet.cl); the path loop's steps are its own. */
 #include "kernels/integrator/path.cl"
+#include "kernels/lanes/packet.cl"
 
 #define W 8
 #define PATH_ENDED 0xfffffffeu /* depth[j] of a lane whose path ended and is not yet added */
 
-typedef struct {
-    float8 x, y, z;
-} L3;
+typedef FcVec3x8 L3;
 
-inline L3 l3(float8 x, float8 y, float8 z) {
-    L3 r;
-    r.x = x;
-    r.y = y;
-    r.z = z;
-    return r;
-}
+#define l3 vec3_l8
+#define l3_dot vec3_dot_l8
 inline L3 l3_load(const float* a) { return l3(vload8(0, a), vload8(0, a + W), vload8(0, a + 2 * W)); }
 inline void l3_store(L3 v, float* a) {
     vstore8(v.x, 0, a);
@@ -30,88 +25,6 @@ inline void set_lane3(float* a, int j, float3 v) {
     a[j] = v.x;
     a[W + j] = v.y;
     a[2 * W + j] = v.z;
-}
-inline float8 l3_dot(L3 a, L3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-
-inline ulong8 mix64_8(ulong8 z) {
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9UL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebUL;
-    return z ^ (z >> 31);
-}
-inline uint8 lk8(uint8 x, uint8 seed) {
-    x += seed;
-    x ^= x * 0x6c50b47cu;
-    x ^= x * 0xb82f1e52u;
-    x ^= x * 0xc7afe638u;
-    return x ^ (x * 0x8d22f6e6u);
-}
-inline uint8 hash32_8(uint8 x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    return x ^ (x >> 16);
-}
-inline uint8 rev8(uint8 x) {
-    x = (x >> 16) | (x << 16);
-    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-    return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-}
-
-/* offset_ray_origin (kernels/trace/ray.cl) on eight lanes */
-inline float8 offset_ulps8(float8 p, float8 n) {
-    int8 of_i = convert_int8(FC_OFFSET_INT_SCALE * n);
-    float8 p_i = as_float8(as_int8(p) + select(of_i, -of_i, p < 0.0f));
-    return select(p_i, p + FC_OFFSET_FLOAT_SCALE * n, fabs(p) < FC_OFFSET_ORIGIN);
-}
-inline L3 offset_origin8(L3 p, L3 n) {
-    return l3(offset_ulps8(p.x, n.x), offset_ulps8(p.y, n.y), offset_ulps8(p.z, n.z));
-}
-
-/* sampler_get4 for eight lanes (Sobol' only): u[0..3] the four coordinates. */
-inline void get4_8(uint8 pixel_seed, uint8 index_rev, uint8 set, float8* u) {
-    uint8 seed = convert_uint8(mix64_8((convert_ulong8(pixel_seed) << 32) | convert_ulong8(set)));
-    uint8 r = lk8(index_rev, seed);
-    uint rr[W];
-    vstore8(r, 0, rr);
-    uint c[4 * W];
-    for (int j = 0; j < W; ++j) {
-        uint4 q = sobol4_reversed(rr[j]);
-        c[j] = q.x;
-        c[W + j] = q.y;
-        c[2 * W + j] = q.z;
-        c[3 * W + j] = q.w;
-    }
-    for (uint k = 0; k < 4u; ++k) {
-        uint8 x = rev8(lk8(vload8(0, c + k * W), hash32_8(seed + (k + 1u) * 0x9e3779b9u)));
-        u[k] = convert_float8(x >> 8) * 0x1p-24f;
-    }
-}
-
-/* sincos_turns (kernels/util/trig.cl) on eight lanes: returns sin, writes cos. */
-inline float8 sincos_turns8(float8 t, float8* cos_out) {
-    float8 q = rint(4.0f * t);
-    float8 f = t - 0.25f * q;
-    float8 x = FC_2PI * f;
-    float8 x2 = x * x;
-    float8 s = 2.7557319e-06f;
-    s = -1.9841270e-04f + x2 * s;
-    s = 8.3333338e-03f + x2 * s;
-    s = -1.6666667e-01f + x2 * s;
-    s = x + x * x2 * s;
-    float8 c = -2.7557320e-07f;
-    c = 2.4801588e-05f + x2 * c;
-    c = -1.3888889e-03f + x2 * c;
-    c = 4.1666668e-02f + x2 * c;
-    c = -0.5f + x2 * c;
-    c = 1.0f + x2 * c;
-    int8 k = convert_int8(q) & 3;
-    float8 a = select(s, c, (k & 1) != 0);
-    float8 b = select(c, s, (k & 1) != 0);
-    *cos_out = select(b, -b, ((k + 1) & 2) != 0);
-    return select(a, -a, (k & 2) != 0);
 }
 
 __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
@@ -145,16 +58,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             if (!active[j]) continue;
             if (!alive[j]) {
                 if (depth[j] == PATH_ENDED) { /* a finished path: add it */
-                    float3 l = lane3(rad, j);
                     uint idx = index[j];
-                    if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) {
-                        l = fmin(l, (float3)(FC_MAX_RADIANCE));
-                        float peak = max3(l);
-                        if (peak > params->clamp) l *= params->clamp / peak;
-                        float3 weighted = fweight[j] * l;
-                        sum[idx & 1u].xyz += weighted;
-                        square[idx & 1u] += fmin(dot(weighted, weighted), FC_MAX_SQUARE);
-                    } else sum[idx & 1u].w += 1.0f;
+                    film_add_sample(lane3(rad, j), fweight[j], params->clamp, &sum[idx & 1u], &square[idx & 1u]);
                     index[j] += W;
                     if (index[j] >= end) {
                         active[j] = 0;
@@ -220,22 +125,16 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         int8 live = (vload8(0, alive) != 0) & (vload8(0, active) != 0);
         L3 D = l3_load(d), N = l3_load(ns), NG = l3_load(ng), PP = l3_load(p), A = l3_load(alb), T = l3_load(thr);
         L3 wo = l3(-D.x, -D.y, -D.z);
-        /* frame_from_normal(ns); ns = ng where wo is below ns */
+        /* the shading frame; ns = ng where wo is below ns */
         float8 wz = l3_dot(wo, N);
-        int8 below = wz <= 0.0f;
-        N.x = select(N.x, NG.x, below);
-        N.y = select(N.y, NG.y, below);
-        N.z = select(N.z, NG.z, below);
-        float8 sign = copysign((float8)(1.0f), N.z);
-        float8 a = -1.0f / (sign + N.z);
-        float8 b = N.x * N.y * a;
-        L3 S = l3(1.0f + sign * N.x * N.x * a, sign * b, -sign * N.x);
-        L3 Tt = l3(b, sign + N.y * N.y * a, -N.y);
+        N = vec3_select_l8(N, NG, wz <= 0.0f);
+        L3 S, Tt;
+        frame_from_normal_l8(N, &S, &Tt);
         float8 wo_z = l3_dot(wo, N);
         uint8 dep = vload8(0, depth), sd = vload8(0, seed), ir = vload8(0, irev);
         float8 ul[4], ub[4];
-        get4_8(sd, ir, 1u + 2u * dep, ul);
-        get4_8(sd, ir, 2u + 2u * dep, ub);
+        sampler_get4_l8(sd, ir, 1u + 2u * dep, ul);
+        sampler_get4_l8(sd, ir, 2u + 2u * dep, ub);
 
         /* the light: picked and read per lane */
         float lp0[3 * W], le1[3 * W], le2[3 * W], ln[3 * W], lc[3 * W], lpick[W], larea[W];
@@ -253,8 +152,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             larea[j] = l->area;
             lflags[j] = l->flags;
         }
-        float8 su = sqrt(ul[1]);
-        float8 b0 = su * (1.0f - ul[2]), b1 = su * ul[2];
+        FcVec2x8 bary = square_to_triangle_l8(ul[1], ul[2]);
+        float8 b0 = bary.x, b1 = bary.y;
         L3 LP = l3_load(lp0), E1 = l3_load(le1), E2 = l3_load(le2), LN = l3_load(ln), LC = l3_load(lc);
         L3 point = l3(LP.x + b0 * E1.x + b1 * E2.x, LP.y + b0 * E1.y + b1 * E2.y, LP.z + b0 * E1.z + b1 * E2.z);
         L3 to = l3(point.x - PP.x, point.y - PP.y, point.z - PP.z);
@@ -262,24 +161,21 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         float8 dist = sqrt(d2);
         L3 wi = l3(to.x / dist, to.y / dist, to.z / dist);
         float8 cl = l3_dot(LN, wi);
-        float8 acl = fabs(cl);
-        float8 pdf_l = select((float8)(0.0f), vload8(0, lpick) * (dist * dist) / (vload8(0, larea) * acl), acl > 0.0f);
-        uint8 two = vload8(0, lflags) & FC_MAT_TWO_SIDED_EMISSION;
-        int8 lit = select(-cl > 0.0f, -cl != 0.0f, two != 0u); /* area_light_radiance toward -wi */
+        float8 pdf_l = area_light_pdf_solid_angle_l8(vload8(0, lpick), vload8(0, larea), dist, cl);
+        int8 lit = area_light_lit_l8((vload8(0, lflags) & FC_MAT_TWO_SIDED_EMISSION) != 0u, -cl); /* toward -wi */
         float8 side = l3_dot(NG, wi);
         float8 wi_z = l3_dot(wi, N);
         float8 f_scale = FC_INV_PI;
         int8 ok = live & (d2 > 0.0f) & (pdf_l > 0.0f) & isfinite(pdf_l) & lit & (side > 0.0f) & (wi_z * side > 0.0f) &
                   (wo_z > 0.0f) & (wi_z > 0.0f);
-        float8 pdf_b = wi_z * f_scale;
-        float8 w = (pdf_l * pdf_l) / (pdf_l * pdf_l + pdf_b * pdf_b);
+        float8 w = light_strategy_weight_l8(P->strategy, pdf_l, cosine_hemisphere_pdf_l8(wo_z, wi_z));
         float8 k = select((float8)(0.0f), fabs(wi_z) * w / pdf_l, ok);
         L3 contrib = l3(T.x * A.x * f_scale * LC.x * k, T.y * A.y * f_scale * LC.y * k, T.z * A.z * f_scale * LC.z * k);
         /* the shadow rays, in lanes: from the offset point to the offset point on the light */
-        L3 so = offset_origin8(PP, NG);
+        L3 so = offset_ray_origin_l8(PP, NG);
         int8 back = cl < 0.0f;
         L3 tn = l3(select(-LN.x, LN.x, back), select(-LN.y, LN.y, back), select(-LN.z, LN.z, back));
-        L3 target = offset_origin8(point, tn);
+        L3 target = offset_ray_origin_l8(point, tn);
         L3 seg = l3(target.x - so.x, target.y - so.y, target.z - so.z);
         float8 tmax = sqrt(l3_dot(seg, seg));
         ok &= tmax > 0.0f;
@@ -301,27 +197,20 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         }
 
         /* E: the BSDF sample (cosine hemisphere), throughput and roulette, in lanes */
-        float8 px = 2.0f * ub[0] - 1.0f, py = 2.0f * ub[1] - 1.0f;
-        int8 xm = fabs(px) > fabs(py);
-        float8 r = select(py, px, xm);
-        float8 turns = select(0.25f - 0.125f * (px / py), 0.125f * (py / px), xm);
-        float8 cs;
-        float8 sn = sincos_turns8(turns, &cs);
-        int8 zero = (px == 0.0f) & (py == 0.0f);
-        float8 dx = select(r * cs, (float8)(0.0f), zero), dy = select(r * sn, (float8)(0.0f), zero);
-        float8 dz = sqrt(fmax(0.0f, 1.0f - dx * dx - dy * dy));
-        L3 nwi = l3(dx * S.x + dy * Tt.x + dz * N.x, dx * S.y + dy * Tt.y + dz * N.y, dx * S.z + dy * Tt.z + dz * N.z);
+        L3 dir_local = square_to_cosine_hemisphere_l8(ub[0], ub[1]);
+        float8 dz = dir_local.z;
+        L3 nwi = vec3_combine_l8(dir_local.x, S, dir_local.y, Tt, dz, N);
         float8 nside = l3_dot(NG, nwi);
         int8 cont = live & (wo_z > 0.0f) & (dz > 0.0f) & (nside * dz > 0.0f);
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);
         int8 rr = convert_int8(dep + 1u >= P->rr_depth);
-        float8 survive = fmin(fmax(T2.x, fmax(T2.y, T2.z)), 0.95f);
+        float8 survive = roulette_survival_l8(T2, 1.0f); /* no refraction: eta_scale 1 */
         cont &= select((int8)(-1), ub[3] < survive, rr);
         T2 = l3(select(T2.x, T2.x / survive, rr), select(T2.y, T2.y / survive, rr), select(T2.z, T2.z / survive, rr));
         l3_store(T2, thr);
         l3_store(nwi, d);
-        l3_store(offset_origin8(PP, NG), o);
-        vstore8(dz * f_scale, 0, prev_pdf);
+        l3_store(offset_ray_origin_l8(PP, NG), o);
+        vstore8(cosine_hemisphere_pdf_l8(wo_z, dz), 0, prev_pdf);
         int conta[W];
         vstore8(cont, 0, conta);
         for (int j = 0; j < W; ++j) {

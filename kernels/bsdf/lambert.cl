@@ -11,15 +11,10 @@ inline float3 lambert_eval(float3 albedo, float3 wo, float3 wi) {
     return (wo.z > 0.0f && wi.z > 0.0f) ? albedo * FC_INV_PI : (float3)(0.0f);
 }
 
-inline float cosine_hemisphere_pdf(float3 wo, float3 wi) {
-    return (wo.z > 0.0f && wi.z > 0.0f) ? wi.z * FC_INV_PI : 0.0f;
-}
+/* Cosine-weighted sampling: kernels/util/warp_lanes.cl. */
+inline float cosine_hemisphere_pdf(float3 wo, float3 wi) { return cosine_hemisphere_pdf_l1(wo.z, wi.z); }
 
 /* A cosine-distributed direction on the upper hemisphere; z may be 0 on the rim. */
-inline float3 square_to_cosine_hemisphere(float2 u) {
-    float2 d = square_to_disk_concentric(u);
-    float z = safe_sqrt(1.0f - d.x * d.x - d.y * d.y);
-    return (float3)(d.x, d.y, z);
-}
+inline float3 square_to_cosine_hemisphere(float2 u) { return square_to_cosine_hemisphere_l1(u.x, u.y); }
 
 #endif

@@ -27,6 +27,7 @@
 #include "kernels/camera/pixel_sample.cl"
 #include "kernels/lights/light.cl"
 #include "kernels/bsdf/bsdf.cl"
+#include "kernels/util/mis.cl"
 #include "kernels/util/sampler.cl"
 #if FC_HAS_TEXTURES
 #include "kernels/texture/material_textures.cl"
@@ -71,16 +72,16 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
     if (ls.delta) return f * ls.li * (cos_i / ls.pdf);
     uint strategy = sc->params->strategy;
     if (strategy == FC_STRATEGY_BSDF) return (float3)(0.0f);
-    float w = strategy == FC_STRATEGY_LIGHT ? 1.0f : power_heuristic(ls.pdf, bsdf_pdf(m, wo_local, wi_local));
+    /* (path_lanes.cl; BSDF sampling alone left above, before the BSDF's density) */
+    float w = light_strategy_weight_l1(strategy, ls.pdf,
+                                       strategy == FC_STRATEGY_MIS ? bsdf_pdf(m, wo_local, wi_local) : 0.0f);
     return f * ls.li * (cos_i * w / ls.pdf);
 }
 
-/* The weight of light found by BSDF sampling, against light sampling's density. After
- * a delta lobe (pdf INFINITY) light sampling could not have found it: weight 1. */
+/* The weight of light found by BSDF sampling, against light sampling's density
+ * (kernels/integrator/path_lanes.cl). */
 inline float bsdf_strategy_weight(uint strategy, float bsdf_pdf, float light_pdf) {
-    if (strategy == FC_STRATEGY_BSDF || isinf(bsdf_pdf)) return 1.0f;
-    if (strategy == FC_STRATEGY_LIGHT) return 0.0f;
-    return power_heuristic(bsdf_pdf, light_pdf);
+    return bsdf_strategy_weight_l1(strategy, bsdf_pdf, light_pdf);
 }
 
 inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sampler) {
@@ -164,7 +165,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         if (bs.wi.z < 0.0f) eta_scale *= mat.ior * mat.ior;
 
         if (depth + 1u >= P->rr_depth) {
-            float survive = fmin(max3(throughput) * eta_scale, 0.95f);
+            float survive = roulette_survival_l1(throughput, eta_scale);
             if (ub.w >= survive) break;
             throughput /= survive;
         }
@@ -172,6 +173,21 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         d = wi;
     }
     return radiance;
+}
+
+/* Adds sample radiance l, of filter weight filter_weight, to its half's sum (rgb, and in w
+ * the count of rejected samples) and second moment. A sample with a NaN, infinite or
+ * negative channel is rejected (counted, not added); others are capped at FC_MAX_RADIANCE
+ * and, with --clamp, scaled down to its limit on their largest channel (hue kept). */
+inline void film_add_sample(float3 l, float filter_weight, float clamp, float4* sum, float* square) {
+    if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) {
+        l = fmin(l, (float3)(FC_MAX_RADIANCE));
+        float peak = max3(l);
+        if (peak > clamp) l *= clamp / peak;
+        float3 weighted = filter_weight * l;
+        sum->xyz += weighted;
+        *square += fmin(dot(weighted, weighted), FC_MAX_SQUARE);
+    } else sum->w += 1.0f;
 }
 
 /* Adds samples [sample_begin, sample_begin + sample_count) of each pixel of rows
@@ -194,16 +210,8 @@ __kernel void render_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         Sampler sampler = sampler_init(params->sampler, params->seed, pixel, index);
         float3 o, d;
         float filter_weight = pixel_sample_ray(params, x, y, &sampler, &o, &d);
-        float3 l = path_radiance(&sc, o, d, &sampler);
-        if (all_finite(l) && l.x >= 0.0f && l.y >= 0.0f && l.z >= 0.0f) {
-            l = fmin(l, (float3)(FC_MAX_RADIANCE));
-            /* --clamp: the sample scaled down to its largest channel's limit (hue kept) */
-            float peak = max3(l);
-            if (peak > params->clamp) l *= params->clamp / peak;
-            float3 weighted = filter_weight * l;
-            sum[index & 1u].xyz += weighted;
-            square[index & 1u] += fmin(dot(weighted, weighted), FC_MAX_SQUARE);
-        } else sum[index & 1u].w += 1.0f;
+        film_add_sample(path_radiance(&sc, o, d, &sampler), filter_weight, params->clamp, &sum[index & 1u],
+                        &square[index & 1u]);
     }
     accum[pixel] += sum[0];
     uint pixels = params->width * params->height;

@@ -8,14 +8,12 @@
 #define FACET_LIGHTS_AREA_CL
 
 #include "kernels/shared/scene_layout.h"
+#include "kernels/lanes/scalar.cl"
 #include "kernels/util/math.cl"
 
-/* Uniform point on a triangle (the square-root parameterisation, Turk 1990):
- * barycentrics of v1 and v2. */
-inline float2 square_to_triangle(float2 u) {
-    float su = sqrt(u.x);
-    return (float2)(su * (1.0f - u.y), su * u.y);
-}
+/* Uniform point on a triangle (the square-root parameterisation, Turk 1990;
+ * kernels/util/warp_lanes.cl): barycentrics of v1 and v2. */
+inline float2 square_to_triangle(float2 u) { return square_to_triangle_l1(u.x, u.y); }
 
 /* The unit normal of the emitting side, normalize(cross(e1, e2)), stored by the host. */
 inline float3 area_light_normal(__global const FcLight* l) { return load3(l->n); }
@@ -28,16 +26,13 @@ inline float3 area_light_point(__global const FcLight* l, float2 u) {
 
 /* Radiance leaving the light toward direction w (pointing away from the light). */
 inline float3 area_light_radiance(float3 emission, uint material_flags, float3 n, float3 w) {
-    float c = dot(n, w);
-    bool lit = (material_flags & FC_MAT_TWO_SIDED_EMISSION) ? (c != 0.0f) : (c > 0.0f);
-    return lit ? emission : (float3)(0.0f);
+    return area_light_lit_l1((material_flags & FC_MAT_TWO_SIDED_EMISSION) != 0u, dot(n, w)) ? emission : (float3)(0.0f);
 }
 
 /* Solid-angle density of reaching light `l` at distance `dist` with cosine `cos_light`
  * at the light, when lights are sampled by sample_area_light. */
 inline float area_light_pdf_solid_angle(__global const FcLight* l, float dist, float cos_light) {
-    float c = fabs(cos_light);
-    return (c > 0.0f) ? l->pick_pdf * (dist * dist) / (l->area * c) : 0.0f;
+    return area_light_pdf_solid_angle_l1(l->pick_pdf, l->area, dist, cos_light); /* kernels/lights/area_lanes.cl */
 }
 
 #endif

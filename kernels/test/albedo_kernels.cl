@@ -44,7 +44,7 @@ __kernel void albedo_table(int ndf, int n_mu, int n_r, uint samples, __global fl
     float2 shift = (float2)(rng_float(&rng), rng_float(&rng));
     KahanSum3 e = {(float3)(0.0f), (float3)(0.0f)};
     for (uint k = 0; k < samples; ++k) {
-        float2 u = (float2)(((float)k + 0.5f) / (float)samples, (float)(reverse_bits32(k) >> 8) * 0x1p-24f);
+        float2 u = (float2)(((float)k + 0.5f) / (float)samples, (float)(reverse_bits_l1(k) >> 8) * 0x1p-24f);
         u = u + shift;
         u -= floor(u);
         BsdfSample s;
@@ -69,7 +69,7 @@ __kernel void albedo_sheen_table(int n_mu, int n_r, uint samples, __global float
     float2 shift = (float2)(rng_float(&rng), rng_float(&rng));
     KahanSum3 e = {(float3)(0.0f), (float3)(0.0f)};
     for (uint k = 0; k < samples; ++k) {
-        float2 u = (float2)(((float)k + 0.5f) / (float)samples, (float)(reverse_bits32(k) >> 8) * 0x1p-24f);
+        float2 u = (float2)(((float)k + 0.5f) / (float)samples, (float)(reverse_bits_l1(k) >> 8) * 0x1p-24f);
         u = u + shift;
         u -= floor(u);
         float3 wi = square_to_cosine_hemisphere(u);
@@ -115,7 +115,7 @@ __kernel void albedo_dielectric_table(int ndf, int side, int n_mu, int n_r, int 
     float2 shift = (float2)(rng_float(&rng), rng_float(&rng));
     KahanSum3 sum = {(float3)(0.0f), (float3)(0.0f)};
     for (uint q = 0; q < samples; ++q) {
-        float2 u = (float2)(((float)q + 0.5f) / (float)samples, (float)(reverse_bits32(q) >> 8) * 0x1p-24f);
+        float2 u = (float2)(((float)q + 0.5f) / (float)samples, (float)(reverse_bits_l1(q) >> 8) * 0x1p-24f);
         u = u + shift;
         u -= floor(u);
         BsdfSample s;

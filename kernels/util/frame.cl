@@ -4,6 +4,7 @@
 #ifndef FACET_UTIL_FRAME_CL
 #define FACET_UTIL_FRAME_CL
 
+#include "kernels/lanes/scalar.cl"
 #include "kernels/util/math.cl"
 
 typedef struct {
@@ -15,12 +16,8 @@ typedef struct {
 /* A frame around unit vector n without branches on its orientation (Duff et al. 2017,
  * "Building an Orthonormal Basis, Revisited", JCGT 6(1)). */
 inline Frame frame_from_normal(float3 n) {
-    float sign = copysign(1.0f, n.z);
-    float a = -1.0f / (sign + n.z);
-    float b = n.x * n.y * a;
     Frame f;
-    f.s = (float3)(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
-    f.t = (float3)(b, sign + n.y * n.y * a, -n.y);
+    frame_from_normal_l1(n, &f.s, &f.t); /* kernels/util/frame_lanes.cl */
     f.n = n;
     return f;
 }

@@ -6,6 +6,8 @@
 
 #define FC_PI 3.14159265358979323846f
 #define FC_INV_PI 0.31830988618379067154f
+#define FC_2PI 6.28318530717958647693f
+#define FC_PI_2 1.57079632679489661923f
 #define FC_ONE_MINUS_EPSILON 0x1.fffffep-1f
 
 inline float3 load3(const __global float* p) { return (float3)(p[0], p[1], p[2]); }
@@ -47,15 +49,6 @@ inline float3 normalize_scaled_or(float3 v, float3 fallback) {
     float m = fmax(fmax(fabs(v.x), fabs(v.y)), fabs(v.z));
     if (!(m > 0.0f) || !isfinite(m)) return fallback;
     return normalize_or(v / m, fallback);
-}
-
-/* Veach's power heuristic with beta = 2, for two strategies with one sample each
- * (Veach 1997, section 9.2.4). Safe for infinite pdfs (delta lobes) and zeros. */
-inline float power_heuristic(float pdf_a, float pdf_b) {
-    if (isinf(pdf_a)) return 1.0f;
-    float a = pdf_a * pdf_a;
-    float b = pdf_b * pdf_b;
-    return (a + b > 0.0f) ? a / (a + b) : 0.0f;
 }
 
 #endif

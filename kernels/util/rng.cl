@@ -10,6 +10,7 @@
 #ifndef FACET_UTIL_RNG_CL
 #define FACET_UTIL_RNG_CL
 
+#include "kernels/lanes/scalar.cl"
 #include "kernels/util/math.cl"
 
 typedef struct {
@@ -18,11 +19,7 @@ typedef struct {
 } Rng;
 
 /* SplitMix64's output mixer (Steele, Lea, Flood 2014). */
-inline ulong mix64(ulong z) {
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9UL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebUL;
-    return z ^ (z >> 31);
-}
+inline ulong mix64(ulong z) { return mix64_l1(z); } /* kernels/util/hash_lanes.cl */
 
 inline uint rng_next(Rng* r) {
     ulong old = r->state;

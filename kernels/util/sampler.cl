@@ -23,6 +23,7 @@
 #ifndef FACET_UTIL_SAMPLER_CL
 #define FACET_UTIL_SAMPLER_CL
 
+#include "kernels/lanes/scalar.cl"
 #include "kernels/shared/render_layout.h"
 #include "kernels/util/rng.cl"
 #include "kernels/util/sobol_table.cl"
@@ -39,22 +40,6 @@ typedef struct {
 inline uint sampler_set_light(uint depth) { return 1u + 2u * depth; } /* pick, u, v, - */
 inline uint sampler_set_bsdf(uint depth) { return 2u + 2u * depth; }  /* u, v, lobe, roulette */
 
-inline uint reverse_bits32(uint x) {
-    return ((uint)fc_reverse_byte[x & 0xffu] << 24) | ((uint)fc_reverse_byte[(x >> 8) & 0xffu] << 16) |
-           ((uint)fc_reverse_byte[(x >> 16) & 0xffu] << 8) | (uint)fc_reverse_byte[x >> 24];
-}
-
-/* The Laine-Karras hash of Burley 2020, listing 3: applied to bit-reversed x it is an Owen
- * scramble of x's bits from the most significant down (nested uniform scrambling), and
- * stays in the reversed domain. */
-inline uint laine_karras(uint x, uint seed) {
-    x += seed;
-    x ^= x * 0x6c50b47cu;
-    x ^= x * 0xb82f1e52u;
-    x ^= x * 0xc7afe638u;
-    return x ^ (x * 0x8d22f6e6u);
-}
-
 /* Sobol' dimensions 0..3, bit-reversed, of the index whose bit reversal is r, from the
  * reversed chunk table: one uint4 load a chunk, written out (PoCL keeps the 8-step loop
  * rolled, at twice the instructions). */
@@ -64,59 +49,20 @@ inline uint4 sobol4_reversed(uint r) {
            t[64u + ((r >> 16) & 15u)] ^ t[80u + ((r >> 20) & 15u)] ^ t[96u + ((r >> 24) & 15u)] ^ t[112u + (r >> 28)];
 }
 
-inline uint hash_pair(uint a, uint b) { return (uint)mix64(((ulong)a << 32) | (ulong)b); }
-
-/* Chris Wellons' "lowbias32" integer hash (hash-prospector, 2018: a bijection of 32-bit
- * words with a bias of 0.17 against an ideal avalanche) on each lane. Two 32-bit
- * multiplies a lane, one vector instruction each on CPUs and GPUs, where SplitMix64's
- * 64-bit products cost three 32-bit ones a lane on AVX2. */
-inline uint4 hash32x4(uint4 x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    return x ^ (x >> 16);
-}
-
-/* The Owen scramble seeds of a set's four coordinates, from the set's seed: each the hash
- * of the seed plus a multiple of the golden ratio's 32-bit fraction (distinct per lane). */
-inline uint4 coordinate_seeds(uint set_seed) {
-    return hash32x4((uint4)(set_seed) + (uint4)(1u, 2u, 3u, 4u) * 0x9e3779b9u);
-}
+/* The Owen scramble seeds of a set's four coordinates, from the set's seed
+ * (coordinate_seed of kernels/util/hash_lanes.cl, the coordinates in the lanes). */
+inline uint4 coordinate_seeds(uint set_seed) { return coordinate_seed_l4((uint4)(set_seed), (uint4)(1u, 2u, 3u, 4u)); }
 
 /* The independent sampler's stream is seeded only for it: the Sobol' sampler never reads it. */
 inline Sampler sampler_init(uint kind, uint seed, uint pixel, uint sample) {
     Sampler s;
     s.kind = kind;
-    s.index_reversed = reverse_bits32(sample >> 1);
+    s.index_reversed = reverse_bits_l1(sample >> 1);
     s.seed = (uint)mix64(mix64((ulong)seed ^ 0x5a17e5eedUL) ^ (((ulong)(sample & 1u) << 32) | (ulong)pixel));
     s.rng.state = 0UL;
     s.rng.inc = 0UL;
     if (kind == FC_SAMPLER_INDEPENDENT) s.rng = rng_init(seed, pixel, sample);
     return s;
-}
-
-/* reverse_bits32 of each lane, by swapping halves, bytes, nibbles, pairs and bits: on
- * uint4 these are vector shifts and masks, where the byte table costs 16 scalar loads. */
-inline uint4 reverse_bits4(uint4 x) {
-#ifdef FC_NO_BITREVERSE_INTRINSIC /* set by the host for Oclgrind (host/cl/runtime.cpp) */
-    return (uint4)(reverse_bits32(x.x), reverse_bits32(x.y), reverse_bits32(x.z), reverse_bits32(x.w));
-#else
-    x = (x >> 16) | (x << 16);
-    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-    return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-#endif
-}
-
-/* laine_karras of each lane with its own seed. */
-inline uint4 laine_karras4(uint4 x, uint4 seed) {
-    x += seed;
-    x ^= x * 0x6c50b47cu;
-    x ^= x * 0xb82f1e52u;
-    x ^= x * 0xc7afe638u;
-    return x ^ (x * 0x8d22f6e6u);
 }
 
 /* The point of dimension set `set`, each coordinate in [0, 1). Burley's scrambles,
@@ -130,9 +76,9 @@ inline float4 sampler_get4(Sampler* s, uint set) {
         float2 a = rng_float2(&s->rng);
         return (float4)(a, rng_float2(&s->rng));
     }
-    uint seed = hash_pair(s->seed, set);
-    uint r = laine_karras(s->index_reversed, seed);
-    uint4 x = reverse_bits4(laine_karras4(sobol4_reversed(r), coordinate_seeds(seed)));
+    uint seed = hash_pair_l1(s->seed, set);
+    uint r = laine_karras_l1(s->index_reversed, seed);
+    uint4 x = reverse_bits_l4(laine_karras_l4(sobol4_reversed(r), coordinate_seeds(seed)));
     return convert_float4(x >> 8) * 0x1p-24f; /* the top 24 bits: every float in [0, 1) exact */
 }
 

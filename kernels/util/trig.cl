@@ -15,36 +15,11 @@
 #ifndef FACET_UTIL_TRIG_CL
 #define FACET_UTIL_TRIG_CL
 
+#include "kernels/lanes/scalar.cl"
 #include "kernels/util/math.cl"
 
-#define FC_2PI 6.28318530717958647693f
-#define FC_PI_2 1.57079632679489661923f
-
-/* (sin 2 pi t, cos 2 pi t) for finite t with |t| < 2^21. */
-inline float2 sincos_turns(float t) {
-    /* t = q / 4 + f exactly, q an integer, |f| <= 1/8 */
-    float q = rint(4.0f * t);
-    float f = t - 0.25f * q;
-    float x = FC_2PI * f;
-    float x2 = x * x;
-    /* Taylor series of sin and cos on |x| <= pi/4 */
-    float s = 2.7557319e-06f;
-    s = -1.9841270e-04f + x2 * s;
-    s = 8.3333338e-03f + x2 * s;
-    s = -1.6666667e-01f + x2 * s;
-    s = x + x * x2 * s;
-    float c = -2.7557320e-07f;
-    c = 2.4801588e-05f + x2 * c;
-    c = -1.3888889e-03f + x2 * c;
-    c = 4.1666668e-02f + x2 * c;
-    c = -0.5f + x2 * c;
-    c = 1.0f + x2 * c;
-    /* turn by q quarter turns: (sin, cos)(x + k pi/2) */
-    int k = (int)q & 3;
-    float a = (k & 1) ? c : s;
-    float b = (k & 1) ? s : c;
-    return (float2)((k & 2) ? -a : a, ((k + 1) & 2) ? -b : b);
-}
+/* (sin 2 pi t, cos 2 pi t) for finite t with |t| < 2^21 (kernels/util/trig_lanes.cl). */
+inline float2 sincos_turns(float t) { return sincos_turns_l1(t); }
 
 /* atan(t) for t in [0, 1]: t p(t^2), p fitted by iteratively reweighted least squares
  * for the least maximum relative error (1.5e-8 in exact arithmetic). */

@@ -72,7 +72,7 @@ run_scene cornell_box.json --denoise facet
 # microfacet G and sampling. The lights, render and statistical tests took over two
 # minutes each; the demo scenes above cover the render kernel.
 KERNEL_TESTS='Layout.*:Dielectric.ReciprocityWithEtaSquared:Models.Reciprocity:Environment.RotationAndConvention'
-KERNEL_TESTS+=':Microfacet.GeometryMatchesReference:Microfacet.SampleMatchesEvalAndPdf'
+KERNEL_TESTS+=':Microfacet.GeometryMatchesReference:Microfacet.SampleMatchesEvalAndPdf:Lanes.*'
 start=$SECONDS
 timeout -k 10 600 "$TESTS" --gtest_filter="$KERNEL_TESTS" --gtest_output="xml:$work/tests.xml" >"$work/tests.txt" 2>&1
 rc=$?

@@ -1,0 +1,25 @@
+/* The lane-generic bodies at W = 8: eight paths a work-item in float8 lanes (issue 29's
+ * packet form, prototyped in the bench's packet_render.cl), the same source the scalar
+ * kernels run at W = 1 (kernels/lanes/scalar.cl). The sampler's lane form reads the Sobol'
+ * table of kernels/util/sampler.cl. */
+#ifndef FACET_LANES_PACKET_CL
+#define FACET_LANES_PACKET_CL
+
+#include "kernels/lanes/scalar.cl"
+#include "kernels/util/sampler.cl"
+
+#define FC_LW 8
+#include "kernels/lanes/lanes_open.cl"
+#include "kernels/lanes/vec3_lanes.cl"
+#include "kernels/util/hash_lanes.cl"
+#include "kernels/util/trig_lanes.cl"
+#include "kernels/util/warp_lanes.cl"
+#include "kernels/util/frame_lanes.cl"
+#include "kernels/util/mis_lanes.cl"
+#include "kernels/trace/ray_lanes.cl"
+#include "kernels/lights/area_lanes.cl"
+#include "kernels/integrator/path_lanes.cl"
+#include "kernels/util/sampler_lanes.cl"
+#include "kernels/lanes/lanes_close.cl"
+
+#endif

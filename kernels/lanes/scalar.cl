@@ -1,0 +1,31 @@
+/* The lane-generic bodies at the widths the one-path-per-work-item kernels use: W = 1
+ * (their scalar functions are these), and W = 4 for the sampler's hashes, which scramble a
+ * dimension set's four coordinates in one uint4. kernels/lanes/packet.cl instantiates the
+ * same bodies at W = 8. */
+#ifndef FACET_LANES_SCALAR_CL
+#define FACET_LANES_SCALAR_CL
+
+#include "kernels/lanes/lanes.cl"
+#include "kernels/shared/render_layout.h"
+#include "kernels/util/math.cl"
+#include "kernels/util/sobol_table.cl"
+
+#define FC_LW 1
+#include "kernels/lanes/lanes_open.cl"
+#include "kernels/lanes/vec3_lanes.cl"
+#include "kernels/util/hash_lanes.cl"
+#include "kernels/util/trig_lanes.cl"
+#include "kernels/util/warp_lanes.cl"
+#include "kernels/util/frame_lanes.cl"
+#include "kernels/util/mis_lanes.cl"
+#include "kernels/trace/ray_lanes.cl"
+#include "kernels/lights/area_lanes.cl"
+#include "kernels/integrator/path_lanes.cl"
+#include "kernels/lanes/lanes_close.cl"
+
+#define FC_LW 4
+#include "kernels/lanes/lanes_open.cl"
+#include "kernels/util/hash_lanes.cl"
+#include "kernels/lanes/lanes_close.cl"
+
+#endif

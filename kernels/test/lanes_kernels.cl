@@ -1,0 +1,188 @@
+/* Test entry points for the lane-generic bodies (tests/lanes_test.cpp): each work-item
+ * runs eight elements through the W = 1 form, one at a time, and through the W = 8 form in
+ * float8 lanes, and writes both, up to four values an element. */
+#include "kernels/bsdf/lambert.cl"
+#include "kernels/lanes/packet.cl"
+#include "kernels/lights/area.cl"
+#include "kernels/trace/ray.cl"
+#include "kernels/util/frame.cl"
+#include "kernels/util/mis.cl"
+#include "kernels/util/sampler.cl"
+#include "kernels/util/trig.cl"
+#include "kernels/util/warp.cl"
+
+typedef struct {
+    float a[8], b[8], c[8], d[8];
+    uint k[8], m[8], n[8];
+} LanesIn;
+
+typedef struct {
+    float one[4][8];   /* value v of element j at W = 1 */
+    float eight[4][8]; /* the same at W = 8 */
+} LanesOut;
+
+#define IN8(f) vload8(0, in[i].f)
+#define INU8(f) vload8(0, in[i].f)
+#define OUT8(v, x) vstore8(x, 0, out[i].eight[v])
+
+/* Clears both sides, so that unused values compare equal. */
+inline void lanes_clear(__global LanesOut* o) {
+    for (int v = 0; v < 4; ++v)
+        for (int j = 0; j < 8; ++j) o->one[v][j] = o->eight[v][j] = 0.0f;
+}
+
+__kernel void lanes_sincos_turns(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        float2 sc = sincos_turns_l1(in[i].a[j]);
+        out[i].one[0][j] = sc.x;
+        out[i].one[1][j] = sc.y;
+    }
+    FcVec2x8 sc = sincos_turns_l8(IN8(a));
+    OUT8(0, sc.x);
+    OUT8(1, sc.y);
+}
+
+__kernel void lanes_cosine_hemisphere(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        float3 w = square_to_cosine_hemisphere_l1(in[i].a[j], in[i].b[j]);
+        out[i].one[0][j] = w.x;
+        out[i].one[1][j] = w.y;
+        out[i].one[2][j] = w.z;
+        out[i].one[3][j] = cosine_hemisphere_pdf_l1(in[i].c[j], w.z);
+    }
+    FcVec3x8 w = square_to_cosine_hemisphere_l8(IN8(a), IN8(b));
+    OUT8(0, w.x);
+    OUT8(1, w.y);
+    OUT8(2, w.z);
+    OUT8(3, cosine_hemisphere_pdf_l8(IN8(c), w.z));
+}
+
+__kernel void lanes_triangle_and_light(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        float2 b = square_to_triangle_l1(in[i].a[j], in[i].b[j]);
+        out[i].one[0][j] = b.x;
+        out[i].one[1][j] = b.y;
+        out[i].one[2][j] = area_light_pdf_solid_angle_l1(in[i].a[j], in[i].b[j], in[i].c[j], in[i].d[j]);
+        out[i].one[3][j] = (float)area_light_lit_l1((in[i].k[j] & 1u) != 0u, in[i].d[j]);
+    }
+    FcVec2x8 b = square_to_triangle_l8(IN8(a), IN8(b));
+    OUT8(0, b.x);
+    OUT8(1, b.y);
+    OUT8(2, area_light_pdf_solid_angle_l8(IN8(a), IN8(b), IN8(c), IN8(d)));
+    /* a W = 8 mask lane is -1 where a W = 1 one is 1 */
+    OUT8(3, 0.0f - convert_float8(area_light_lit_l8((INU8(k) & 1u) != 0u, IN8(d))));
+}
+
+__kernel void lanes_frame_and_offset(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        float3 n = (float3)(in[i].a[j], in[i].b[j], in[i].c[j]);
+        float3 s, t;
+        frame_from_normal_l1(n, &s, &t);
+        float3 p = offset_ray_origin_l1(s * in[i].d[j], n);
+        out[i].one[0][j] = s.x + 2.0f * t.y; /* every component reaches an output */
+        out[i].one[1][j] = s.y + 2.0f * t.z;
+        out[i].one[2][j] = s.z + 2.0f * t.x;
+        out[i].one[3][j] = p.x + p.y + p.z;
+    }
+    FcVec3x8 n = vec3_l8(IN8(a), IN8(b), IN8(c));
+    FcVec3x8 s, t;
+    frame_from_normal_l8(n, &s, &t);
+    FcVec3x8 p = offset_ray_origin_l8(vec3_scale_l8(s, IN8(d)), n);
+    OUT8(0, s.x + 2.0f * t.y);
+    OUT8(1, s.y + 2.0f * t.z);
+    OUT8(2, s.z + 2.0f * t.x);
+    OUT8(3, p.x + p.y + p.z);
+}
+
+__kernel void lanes_power_heuristic(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) out[i].one[0][j] = power_heuristic_l1(in[i].a[j], in[i].b[j]);
+    OUT8(0, power_heuristic_l8(IN8(a), IN8(b)));
+}
+
+/* The path's weights; the strategy (uniform across a work-item's lanes) is the work-item's
+ * index mod 3. */
+__kernel void lanes_path_weights(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    uint strategy = i % 3u;
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        out[i].one[0][j] = light_strategy_weight_l1(strategy, in[i].a[j], in[i].b[j]);
+        out[i].one[1][j] = bsdf_strategy_weight_l1(strategy, in[i].a[j], in[i].b[j]);
+        out[i].one[2][j] = roulette_survival_l1((float3)(in[i].a[j], in[i].b[j], in[i].c[j]), in[i].d[j]);
+    }
+    OUT8(0, light_strategy_weight_l8(strategy, IN8(a), IN8(b)));
+    OUT8(1, bsdf_strategy_weight_l8(strategy, IN8(a), IN8(b)));
+    OUT8(2, roulette_survival_l8(vec3_l8(IN8(a), IN8(b), IN8(c)), IN8(d)));
+}
+
+/* The W = 8 sampler against the scalar sampler_get4 (coordinates in a uint4's lanes). */
+__kernel void lanes_sampler_get4(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        Sampler s = sampler_init(FC_SAMPLER_SOBOL, in[i].k[j], in[i].m[j], in[i].n[j]);
+        float4 u = sampler_get4(&s, in[i].n[j] % 37u);
+        out[i].one[0][j] = u.x;
+        out[i].one[1][j] = u.y;
+        out[i].one[2][j] = u.z;
+        out[i].one[3][j] = u.w;
+    }
+    uint seed[8], index_reversed[8];
+    for (int j = 0; j < 8; ++j) {
+        Sampler s = sampler_init(FC_SAMPLER_SOBOL, in[i].k[j], in[i].m[j], in[i].n[j]);
+        seed[j] = s.seed;
+        index_reversed[j] = s.index_reversed;
+    }
+    float8 u[4];
+    sampler_get4_l8(vload8(0, seed), vload8(0, index_reversed), INU8(n) % 37u, u);
+    for (int v = 0; v < 4; ++v) OUT8(v, u[v]);
+}
+
+/* The hashes at widths 1, 4 and 8, as bit patterns. */
+__kernel void lanes_hashes(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        uint a = in[i].k[j], b = in[i].m[j];
+        out[i].one[0][j] = as_float(hash_pair_l1(a, b));
+        out[i].one[1][j] = as_float(laine_karras_l1(a, b));
+        out[i].one[2][j] = as_float(coordinate_seed_l1(a, b & 3u));
+        out[i].one[3][j] = as_float(reverse_bits_l1(a) ^ (uint)mix64_l1(((ulong)b << 32) | a));
+    }
+    uint8 a = INU8(k), b = INU8(m);
+    OUT8(0, as_float8(hash_pair_l8(a, b)));
+    OUT8(1, as_float8(laine_karras_l8(a, b)));
+    OUT8(2, as_float8(coordinate_seed_l8(a, b & 3u)));
+    OUT8(3, as_float8(reverse_bits_l8(a) ^ convert_uint8(mix64_l8((convert_ulong8(b) << 32) | convert_ulong8(a)))));
+}
+
+/* The W = 4 hashes the scalar sampler uses (its coordinates in the lanes), lanes 0-3 and
+ * 4-7 as two uint4, against W = 1. */
+__kernel void lanes_hashes4(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        uint a = in[i].k[j], b = in[i].m[j];
+        out[i].one[0][j] = as_float(laine_karras_l1(a, b));
+        out[i].one[1][j] = as_float(coordinate_seed_l1(a, b & 3u));
+        out[i].one[2][j] = as_float(reverse_bits_l1(a));
+        out[i].one[3][j] = as_float(hash32_l1(a));
+    }
+    for (uint h = 0; h < 2u; ++h) {
+        uint4 a = vload4(h, in[i].k), b = vload4(h, in[i].m);
+        vstore4(as_float4(laine_karras_l4(a, b)), h, out[i].eight[0]);
+        vstore4(as_float4(coordinate_seed_l4(a, b & 3u)), h, out[i].eight[1]);
+        vstore4(as_float4(reverse_bits_l4(a)), h, out[i].eight[2]);
+        vstore4(as_float4(hash32_l4(a)), h, out[i].eight[3]);
+    }
+}

@@ -1,0 +1,164 @@
+// The lane-generic kernel bodies (kernels/lanes/lanes.cl, issue 29): each runs at W = 1 in
+// the scalar kernels and at W = 8 in the packet form, and the two must compute the same
+// bits, element for element, on ordinary and edge inputs (zeros, the disk's centre, signed
+// zeros, infinite and zero densities, normals along the axes, points near the origin).
+// The W = 8 sampler must also give the scalar sampler_get4's points (there the coordinates,
+// not the paths, fill the lanes).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "tests/cl_test_env.hpp"
+
+namespace facet {
+namespace {
+
+struct LanesIn {
+    float a[8], b[8], c[8], d[8];
+    std::uint32_t k[8], m[8], n[8];
+};
+struct LanesOut {
+    float one[4][8];
+    float eight[4][8];
+};
+
+constexpr int kGroups = 1024;  // 8192 elements
+
+// Fills every field; `edge` values go first, element by element, into field a..d.
+std::vector<LanesIn> inputs(float lo, float hi, const std::vector<std::vector<float>>& edge = {}) {
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> u(lo, hi);
+    std::vector<LanesIn> in(kGroups);
+    for (std::size_t e = 0; e < in.size() * 8; ++e) {
+        LanesIn& g = in[e / 8];
+        const std::size_t j = e % 8;
+        float* f[4] = {&g.a[j], &g.b[j], &g.c[j], &g.d[j]};
+        for (int v = 0; v < 4; ++v) *f[v] = u(rng);
+        if (e < edge.size())
+            for (std::size_t v = 0; v < edge[e].size() && v < 4; ++v) *f[v] = edge[e][v];
+        g.k[j] = rng(), g.m[j] = rng(), g.n[j] = rng() % 100000u;
+    }
+    return in;
+}
+
+// Runs `kernel` and counts the elements whose W = 1 and W = 8 values differ in any bit.
+int mismatches(const char* kernel, const std::vector<LanesIn>& in, int values) {
+    std::vector<LanesOut> out = test::run_elementwise<LanesIn, LanesOut>("kernels/test/lanes_kernels.cl", kernel, in);
+    int bad = 0;
+    for (std::size_t g = 0; g < out.size(); ++g)
+        for (int j = 0; j < 8; ++j)
+            for (int v = 0; v < values; ++v) {
+                std::uint32_t x, y;
+                std::memcpy(&x, &out[g].one[v][j], 4);
+                std::memcpy(&y, &out[g].eight[v][j], 4);
+                if (x != y && bad++ < 5)
+                    ADD_FAILURE() << kernel << " element " << g * 8 + j << " value " << v << ": W=1 "
+                                  << out[g].one[v][j] << ", W=8 " << out[g].eight[v][j];
+            }
+    return bad;
+}
+
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+TEST(Lanes, SincosTurnsSameBitsAtWidths1And8) {
+    EXPECT_EQ(
+        mismatches(
+            "lanes_sincos_turns",
+            inputs(-1.0f, 2.0f,
+                   {{0.0f}, {-0.0f}, {0.25f}, {0.5f}, {0.75f}, {1.0f}, {0.125f}, {-0.375f}, {1e-30f}, {1.9999999f}}),
+            2),
+        0);
+}
+
+TEST(Lanes, CosineHemisphereSameBitsAtWidths1And8) {
+    // a, b: the square; c: wo.z for the density
+    EXPECT_EQ(mismatches("lanes_cosine_hemisphere",
+                         inputs(0.0f, 1.0f,
+                                {{0.5f, 0.5f, 1.0f},
+                                 {0.0f, 0.0f, 0.5f},
+                                 {0.5f, 0.0f, 0.5f},
+                                 {0.0f, 0.5f, -0.5f},
+                                 {0.9999999f, 0.5f, 0.0f},
+                                 {0.25f, 0.75f, -0.0f}}),
+                         4),
+              0);
+}
+
+TEST(Lanes, TriangleAndAreaLightSameBitsAtWidths1And8) {
+    // a, b: the square (and pick pdf, area); c: distance; d: cosine at the light
+    EXPECT_EQ(mismatches("lanes_triangle_and_light",
+                         inputs(-1.0f, 1.0f,
+                                {{0.0f, 0.0f, 1.0f, 0.0f},
+                                 {1.0f, 1.0f, 0.0f, -0.0f},
+                                 {0.5f, 0.5f, 2.0f, -1.0f},
+                                 {0.5f, 0.5f, 2.0f, 1e-30f}}),
+                         4),
+              0);
+}
+
+TEST(Lanes, FrameAndOffsetSameBitsAtWidths1And8) {
+    // a, b, c: the normal (normalised below); d: the point's scale, near the origin and far
+    std::vector<LanesIn> in = inputs(-1.0f, 1.0f,
+                                     {{0.0f, 0.0f, 1.0f, 0.0f},
+                                      {0.0f, 0.0f, -1.0f, 1e-3f},
+                                      {1.0f, 0.0f, 0.0f, 1e4f},
+                                      {0.0f, 1.0f, -0.0f, -1e4f},
+                                      {0.0f, 0.0f, 0.0f, 0.03125f}});
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> scale(-6.0f, 6.0f);
+    for (LanesIn& g : in)
+        for (int j = 0; j < 8; ++j) {
+            const float len = std::sqrt(g.a[j] * g.a[j] + g.b[j] * g.b[j] + g.c[j] * g.c[j]);
+            if (len > 1e-3f) g.a[j] /= len, g.b[j] /= len, g.c[j] /= len;
+        }
+    for (std::size_t e = 5; e < in.size() * 8; ++e) in[e / 8].d[e % 8] = std::pow(10.0f, scale(rng));
+    EXPECT_EQ(mismatches("lanes_frame_and_offset", in, 4), 0);
+}
+
+TEST(Lanes, PowerHeuristicSameBitsAtWidths1And8) {
+    EXPECT_EQ(mismatches("lanes_power_heuristic",
+                         inputs(0.0f, 10.0f,
+                                {{0.0f, 0.0f},
+                                 {kInf, 1.0f},
+                                 {kInf, kInf},
+                                 {1.0f, kInf},
+                                 {0.0f, 2.0f},
+                                 {3.0f, 0.0f},
+                                 {1e30f, 1e30f},
+                                 {1e-30f, 1e-30f}}),
+                         1),
+              0);
+}
+
+TEST(Lanes, PathWeightsSameBitsAtWidths1And8) {
+    // a, b: the two densities (and throughput); c: throughput; d: eta scale; every strategy
+    EXPECT_EQ(mismatches("lanes_path_weights",
+                         inputs(0.0f, 4.0f,
+                                {{0.0f, 0.0f},
+                                 {kInf, 1.0f},
+                                 {1.0f, kInf},
+                                 {kInf, kInf},
+                                 {0.0f, 3.0f},
+                                 {0.0f, 0.0f},
+                                 {kInf, 0.0f},
+                                 {2.0f, 0.0f},
+                                 {0.0f, 2.0f}}),
+                         3),
+              0);
+}
+
+TEST(Lanes, SamplerGet4GivesTheScalarSamplersPoints) {
+    EXPECT_EQ(mismatches("lanes_sampler_get4", inputs(0.0f, 1.0f), 4), 0);
+}
+
+TEST(Lanes, HashesSameBitsAtWidths1And8) { EXPECT_EQ(mismatches("lanes_hashes", inputs(0.0f, 1.0f), 4), 0); }
+
+TEST(Lanes, HashesSameBitsAtWidths1And4) { EXPECT_EQ(mismatches("lanes_hashes4", inputs(0.0f, 1.0f), 4), 0); }
+
+}  // namespace
+}  // namespace facet
