@@ -1,10 +1,12 @@
-// Issue 29's packet prototype in the renderer (kernels/bench/packet_render.cl): the
-// Cornell box rendered by render_pass (one path per work-item) and by packet_pass (eight
-// paths per work-item in float8 lanes), alternated, same seed and samples.
+// Issue 29's packet paths (kernels/integrator/packet_paths.cl): the Cornell box rendered by
+// render_pass (one path per work-item) and by packet_pass (eight paths per work-item in
+// float8 lanes), alternated, same seed and samples.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <string>
 
 #include "bench/bench.hpp"
 #include "host/bvh/bvh.hpp"
@@ -28,7 +30,9 @@ nlohmann::json bench_packet(ClContext& ctx, const BvhOptions& bvh_options, bool 
     const std::size_t pixels = std::size_t(size) * size;
     const std::size_t floats = film_floats(pixels);  // render_pass's accumulation layout
     std::vector<float> sums(floats);
-    const ProgramBuild build = build_program(ctx, "kernels/bench/packet_render.cl", scene_program_prelude(scene, bvh));
+    std::vector<std::string> prelude = scene_program_prelude(scene, bvh);
+    prelude.push_back("#define FC_PACKET_PATHS 1");
+    const ProgramBuild build = build_program(ctx, kRenderProgram, prelude);
     cl::Kernel kernel(build.program, "packet_pass");
     const SceneBuffers buffers = upload_scene(ctx.context(), dev);
     cl::Buffer accum(ctx.context(), CL_MEM_READ_WRITE, floats * sizeof(float));
@@ -54,7 +58,13 @@ nlohmann::json bench_packet(ClContext& ctx, const BvhOptions& bvh_options, bool 
         ctx.queue().enqueueReadBuffer(accum, CL_TRUE, 0, floats * sizeof(float), sums.data());
         return s;
     };
+    // the scalar form: a renderer with packets turned off (host/render/packet_paths.hpp)
+    const char* was = std::getenv("FACET_PACKET_PATHS");
+    const std::string saved = was ? was : "";
+    setenv("FACET_PACKET_PATHS", "0", 1);
     Renderer renderer(ctx, scene, bvh);
+    if (was) setenv("FACET_PACKET_PATHS", saved.c_str(), 1);
+    else unsetenv("FACET_PACKET_PATHS");
     auto scalar_render = [&]() {
         renderer.reset();
         render_fixed(renderer, spp);

@@ -37,6 +37,11 @@ expect info-bvh-layout 0 "bvh layout +8-wide .*float boxes \(32 triangles: quant
     env -u FACET_BVH_QUANTISED "$FACET" info "$SCENES/cornell_box.json"
 expect info-bvh-layout-forced 0 "quantised boxes \(FACET_BVH_QUANTISED=1\)" -- \
     env FACET_BVH_QUANTISED=1 "$FACET" info "$SCENES/cornell_box.json"
+# Packets of paths where the kernel covers the scene (host/render/packet_paths.hpp).
+expect info-paths-packets 0 "paths +in packets of 8 on CPUs" -- \
+    env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/cornell_box.json"
+expect info-paths-scalar 0 "paths +one a work-item \(packets of 8 need" -- \
+    env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/material_grid.json"
 
 # A bare OBJ renders with a default camera and light.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$tmp/tet.obj"

@@ -2,10 +2,12 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <string>
 
 #include "host/bvh/bvh.hpp"
 #include "host/cli/commands.hpp"
 #include "host/render/features.hpp"
+#include "host/render/packet_paths.hpp"
 #include "host/readers/load_scene.hpp"
 #include "host/scene/device_scene.hpp"
 #include "host/scene/material.hpp"
@@ -77,6 +79,19 @@ int run_info(const InfoOptions& opt) {
                forced && *forced
                    ? fmt::format("FACET_BVH_QUANTISED={}", forced)
                    : fmt::format("{} triangles: quantised above {}", wide.layout_triangles, kQuantiseAboveTriangles));
+    // How `facet render` runs the paths on such a CPU (packet_paths_for).
+    DeviceDesc cpu;
+    cpu.type = CL_DEVICE_TYPE_CPU;
+    const char* packets_off = std::getenv("FACET_PACKET_PATHS");
+    fmt::print("paths       {}\n",
+               packet_paths_for(cpu, 8, scene_features(scene), dev.params.sampler, false)
+                   ? fmt::format("in packets of 8 on CPUs with 8-wide vectors (launches of {} spp or more); one a "
+                                 "work-item on GPUs",
+                                 kPacketMinSamples)
+               : packets_off && std::string(packets_off) == "0"
+                   ? std::string("one a work-item (FACET_PACKET_PATHS=0)")
+                   : std::string("one a work-item (packets of 8 need area lights, Lambertian materials and the sobol "
+                                 "sampler alone)"));
     fmt::print("image       {}x{}, {} spp, max depth {}\n", scene.settings.width, scene.settings.height,
                scene.settings.spp, scene.settings.max_depth);
     fmt::print("device mem  {:.2f} MiB (bvh {:.2f}, shading {:.2f}, textures {:.2f}, film {:.2f})\n",

@@ -108,6 +108,7 @@ DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, co
         stats_.compile_seconds = std::max(stats_.compile_seconds, s.compile_seconds);
         stats_.upload_seconds = std::max(stats_.upload_seconds, s.upload_seconds);
         stats_.features = s.features;
+        stats_.packet_paths = stats_.packet_paths || s.packet_paths;
     }
 }
 

@@ -108,6 +108,8 @@ std::string describe_features(FeatureMask mask) {
     return out.empty() ? "none" : out;
 }
 
+FeatureMask area_lights_feature() { return kAREA_LIGHTS; }
+
 std::vector<std::string> feature_names() {
     std::vector<std::string> out;
     for (const Feature& f : kFeatures) out.push_back(lower(f.name));

@@ -34,4 +34,7 @@ std::string describe_features(FeatureMask mask);
 // The names of every feature, lower case, in list order.
 std::vector<std::string> feature_names();
 
+// The one-feature mask of triangle area lights (FC_HAS_AREA_LIGHTS).
+FeatureMask area_lights_feature();
+
 }  // namespace facet

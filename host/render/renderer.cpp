@@ -9,6 +9,7 @@
 #include "host/error.hpp"
 #include "host/film/film_layout.hpp"
 #include "host/render/features.hpp"
+#include "host/render/packet_paths.hpp"
 
 namespace facet {
 namespace {
@@ -33,6 +34,9 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
 
     stats_.features = generic ? all_features() : scene_features(scene);
     std::vector<std::string> prelude = scene_program_prelude(scene, bvh, generic);
+    stats_.packet_paths = packet_paths_for(ctx.desc(), ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>(),
+                                           stats_.features, dev.params.sampler, generic);
+    if (stats_.packet_paths) prelude.push_back("#define FC_PACKET_PATHS 1");
     prelude.insert(prelude.end(), extra_prelude.begin(), extra_prelude.end());
     build_ = build_program(ctx, kRenderProgram, prelude);
     stats_.compile_seconds = build_.seconds;
@@ -45,8 +49,12 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
         local_size_ = std::max<std::size_t>(1, std::min<std::size_t>(64, max_wg));
         scene_ = upload_scene(ctx.context(), dev);
         accum_ = cl::Buffer(ctx.context(), CL_MEM_READ_WRITE, accum_bytes);
-        // render_pass(FC_SCENE_KERNEL_PARAMS, accum)
+        // render_pass(FC_SCENE_KERNEL_PARAMS, accum), and packet_pass likewise
         kernel_.setArg(bind_scene(kernel_, scene_), accum_);
+        if (stats_.packet_paths) {
+            packet_kernel_ = cl::Kernel(program_, "packet_pass");
+            packet_kernel_.setArg(bind_scene(packet_kernel_, scene_), accum_);
+        }
     });
     reset();
     stats_.upload_seconds = seconds_since(start);
@@ -104,7 +112,9 @@ void Renderer::launch_samples(std::uint64_t first, std::uint32_t count, std::uin
         // specialise kernels per launch geometry (PoCL does) then build them once.
         std::size_t items = std::size_t(p.row_count) * params_.width;
         std::size_t global = (items + local_size_ - 1) / local_size_ * local_size_;
-        ctx_.queue().enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global), cl::NDRange(local_size_));
+        const bool packets = stats_.packet_paths && count >= kPacketMinSamples;
+        ctx_.queue().enqueueNDRangeKernel(packets ? packet_kernel_ : kernel_, cl::NullRange, cl::NDRange(global),
+                                          cl::NDRange(local_size_));
         ctx_.queue().finish();
     });
 }

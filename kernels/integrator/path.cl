@@ -221,4 +221,13 @@ __kernel void render_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     squares[pixels + pixel] += square[1];
 }
 
+/* Paths in packets of eight, for the programs the host picks them for
+ * (host/render/packet_paths.hpp). */
+#ifndef FC_PACKET_PATHS
+#define FC_PACKET_PATHS 0
+#endif
+#if FC_PACKET_PATHS
+#include "kernels/integrator/packet_paths.cl"
+#endif
+
 #endif

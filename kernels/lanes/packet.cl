@@ -1,5 +1,5 @@
 /* The lane-generic bodies at W = 8: eight paths a work-item in float8 lanes (issue 29's
- * packet form, prototyped in the bench's packet_render.cl), the same source the scalar
+ * packet paths, kernels/integrator/packet_paths.cl), the same source the scalar
  * kernels run at W = 1 (kernels/lanes/scalar.cl). The sampler's lane form reads the Sobol'
  * table of kernels/util/sampler.cl. */
 #ifndef FACET_LANES_PACKET_CL

@@ -1,30 +1,39 @@
-/* Issue 29's packet prototype in the real renderer: render_pass's paths for a scene of
- * Lambertian materials and triangle area lights, eight paths per work-item in float8
- * lanes, with regeneration. Trace, surface, camera ray and accumulation per lane (facet's
- * scalar functions); the sampler, light sampling, the BSDF and roulette in lanes. A
- * measurement, not a product kernel. Its formulas are the lane-generic bodies that the scalar
- * kernels run at W = 1 (kernels/lanes/packet.cl); the path loop's steps are its own. */
+/* Paths in packets (issue 29): render_pass's paths, eight a work-item in float8 lanes with
+ * regeneration (a lane takes its work-item's next sample when its path ends; Novák et al.
+ * 2010), for the programs whose scenes it covers: Lambertian materials, triangle area lights
+ * and the Sobol' sampler, on CPUs with 8-wide vectors (host/render/packet_paths.hpp picks it;
+ * path.cl includes this file when FC_PACKET_PATHS is 1). The trace, the surface, the emission
+ * met, the camera ray and the film's sum run per lane through the scalar functions; the
+ * sampler, the frame, light sampling, the BSDF and roulette in lanes, through the
+ * lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). Every sample
+ * is the scalar path's, the same operations but for the order of a few additions:
+ * PacketRender.* demands each pixel within 1e-4 of render_pass's. */
+#ifndef FACET_INTEGRATOR_PACKET_PATHS_CL
+#define FACET_INTEGRATOR_PACKET_PATHS_CL
+
 #include "kernels/integrator/path.cl"
 #include "kernels/lanes/packet.cl"
 
-#define W 8
+#define FC_PACKET_W 8          /* paths a work-item */
 #define PATH_ENDED 0xfffffffeu /* depth[j] of a lane whose path ended and is not yet added */
 
 typedef FcVec3x8 L3;
 
 #define l3 vec3_l8
 #define l3_dot vec3_dot_l8
-inline L3 l3_load(const float* a) { return l3(vload8(0, a), vload8(0, a + W), vload8(0, a + 2 * W)); }
+inline L3 l3_load(const float* a) {
+    return l3(vload8(0, a), vload8(0, a + FC_PACKET_W), vload8(0, a + 2 * FC_PACKET_W));
+}
 inline void l3_store(L3 v, float* a) {
     vstore8(v.x, 0, a);
-    vstore8(v.y, 0, a + W);
-    vstore8(v.z, 0, a + 2 * W);
+    vstore8(v.y, 0, a + FC_PACKET_W);
+    vstore8(v.z, 0, a + 2 * FC_PACKET_W);
 }
-inline float3 lane3(const float* a, int j) { return (float3)(a[j], a[W + j], a[2 * W + j]); }
+inline float3 lane3(const float* a, int j) { return (float3)(a[j], a[FC_PACKET_W + j], a[2 * FC_PACKET_W + j]); }
 inline void set_lane3(float* a, int j, float3 v) {
     a[j] = v.x;
-    a[W + j] = v.y;
-    a[2 * W + j] = v.z;
+    a[FC_PACKET_W + j] = v.y;
+    a[2 * FC_PACKET_W + j] = v.z;
 }
 
 __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
@@ -41,11 +50,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     const uint end = params->sample_begin + params->sample_count;
 
     /* per-lane state, in arrays (lane j at [j], 3-vectors as x[0..7] y[8..15] z[16..23]) */
-    float o[3 * W], d[3 * W], thr[3 * W], rad[3 * W], p[3 * W], ng[3 * W], ns[3 * W], alb[3 * W];
-    float prev_pdf[W], fweight[W];
-    uint index[W], depth[W], seed[W], irev[W];
-    int active[W], alive[W];
-    for (int j = 0; j < W; ++j) {
+    float o[3 * FC_PACKET_W], d[3 * FC_PACKET_W], thr[3 * FC_PACKET_W], rad[3 * FC_PACKET_W], p[3 * FC_PACKET_W],
+        ng[3 * FC_PACKET_W], ns[3 * FC_PACKET_W], alb[3 * FC_PACKET_W];
+    float prev_pdf[FC_PACKET_W], fweight[FC_PACKET_W];
+    uint index[FC_PACKET_W], depth[FC_PACKET_W], seed[FC_PACKET_W], irev[FC_PACKET_W];
+    int active[FC_PACKET_W], alive[FC_PACKET_W];
+    for (int j = 0; j < FC_PACKET_W; ++j) {
         index[j] = params->sample_begin + (uint)j;
         active[j] = index[j] < end;
         alive[j] = 0; /* start a sample */
@@ -54,13 +64,13 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     for (;;) {
         /* A: finished lanes accumulate, then take their next sample */
         bool any_active = false;
-        for (int j = 0; j < W; ++j) {
+        for (int j = 0; j < FC_PACKET_W; ++j) {
             if (!active[j]) continue;
             if (!alive[j]) {
                 if (depth[j] == PATH_ENDED) { /* a finished path: add it */
                     uint idx = index[j];
                     film_add_sample(lane3(rad, j), fweight[j], params->clamp, &sum[idx & 1u], &square[idx & 1u]);
-                    index[j] += W;
+                    index[j] += FC_PACKET_W;
                     if (index[j] >= end) {
                         active[j] = 0;
                         continue;
@@ -84,7 +94,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         if (!any_active) break;
 
         /* B: per lane, the closest hit, its surface and emission */
-        for (int j = 0; j < W; ++j) {
+        for (int j = 0; j < FC_PACKET_W; ++j) {
             if (!active[j] || !alive[j]) continue;
             float3 oo = lane3(o, j), dd = lane3(d, j);
             Hit hit;
@@ -137,11 +147,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         sampler_get4_l8(sd, ir, 2u + 2u * dep, ub);
 
         /* the light: picked and read per lane */
-        float lp0[3 * W], le1[3 * W], le2[3 * W], ln[3 * W], lc[3 * W], lpick[W], larea[W];
-        uint lflags[W];
-        float upick[W];
+        float lp0[3 * FC_PACKET_W], le1[3 * FC_PACKET_W], le2[3 * FC_PACKET_W], ln[3 * FC_PACKET_W],
+            lc[3 * FC_PACKET_W], lpick[FC_PACKET_W], larea[FC_PACKET_W];
+        uint lflags[FC_PACKET_W];
+        float upick[FC_PACKET_W];
         vstore8(ul[0], 0, upick);
-        for (int j = 0; j < W; ++j) {
+        for (int j = 0; j < FC_PACKET_W; ++j) {
             __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])];
             set_lane3(lp0, j, load3(l->p0));
             set_lane3(le1, j, load3(l->e1));
@@ -180,8 +191,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         float8 tmax = sqrt(l3_dot(seg, seg));
         ok &= tmax > 0.0f;
         L3 sd8 = l3(seg.x / tmax, seg.y / tmax, seg.z / tmax);
-        float cx[3 * W], so_a[3 * W], sd_a[3 * W], tmax_a[W];
-        int oka[W];
+        float cx[3 * FC_PACKET_W], so_a[3 * FC_PACKET_W], sd_a[3 * FC_PACKET_W], tmax_a[FC_PACKET_W];
+        int oka[FC_PACKET_W];
         l3_store(contrib, cx);
         l3_store(so, so_a);
         l3_store(sd8, sd_a);
@@ -189,7 +200,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         vstore8(ok, 0, oka);
 
         /* D: shadow rays per lane */
-        for (int j = 0; j < W; ++j) {
+        for (int j = 0; j < FC_PACKET_W; ++j) {
             if (!oka[j]) continue;
             if (!scene_trace_any(sc, lane3(so_a, j), lane3(sd_a, j), tmax_a[j],
                                  alpha_ray_seed(seed[j], irev[j], depth[j], 1u)))
@@ -211,9 +222,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         l3_store(nwi, d);
         l3_store(offset_ray_origin_l8(PP, NG), o);
         vstore8(cosine_hemisphere_pdf_l8(wo_z, dz), 0, prev_pdf);
-        int conta[W];
+        int conta[FC_PACKET_W];
         vstore8(cont, 0, conta);
-        for (int j = 0; j < W; ++j) {
+        for (int j = 0; j < FC_PACKET_W; ++j) {
             if (!active[j] || !alive[j]) continue;
             if (!conta[j]) {
                 alive[j] = 0;
@@ -230,3 +241,5 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     squares[pixel] += square[0];
     squares[pixels + pixel] += square[1];
 }
+
+#endif

@@ -1,0 +1,17 @@
+#include "host/render/packet_paths.hpp"
+
+#include <cstdlib>
+#include <cstring>
+
+#include "kernels/shared/render_layout.h"
+
+namespace facet {
+
+bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
+                      std::uint32_t sampler, bool generic) {
+    if (const char* env = std::getenv("FACET_PACKET_PATHS"); env && std::strcmp(env, "0") == 0) return false;
+    return !generic && features == area_lights_feature() && sampler == FC_SAMPLER_SOBOL &&
+           (device.type & CL_DEVICE_TYPE_CPU) != 0 && native_float_vector_width >= 8;
+}
+
+}  // namespace facet

@@ -1,0 +1,28 @@
+// Which renders run their paths in packets (issue 29): eight paths a work-item in float8
+// lanes (kernels/integrator/packet_paths.cl), where one path a work-item (render_pass)
+// leaves a CPU's vector units scalar. Policy only: the kernel computes render_pass's
+// samples (PacketRender.* checks it).
+#pragma once
+
+#include <cstdint>
+
+#include "host/cl/runtime.hpp"
+#include "host/render/features.hpp"
+
+namespace facet {
+
+// Launches of fewer samples a pixel than this run render_pass: a packet of eight lanes
+// would leave some idle for every path.
+inline constexpr std::uint32_t kPacketMinSamples = 8;
+
+// Whether a program with these features, for this sampler (FC_SAMPLER_*), runs packets on
+// this device: its features are the packet kernel's (triangle area lights and Lambertian
+// materials: no other flag of kernels/shared/feature_flags.h), the sampler is Sobol' (the
+// lanes' sampler), the program is specialised, and the device is a CPU whose native float
+// vectors are 8 wide or more (where the BVH is 8-wide too: host/bvh/bvh_width.hpp; on GPUs
+// a work-item's float8 is eight lanes' scalar work). FACET_PACKET_PATHS=0 turns packets off
+// (for comparisons).
+bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
+                      std::uint32_t sampler, bool generic);
+
+}  // namespace facet
