@@ -12,6 +12,7 @@
 #include "host/bvh/bvh.hpp"
 #include "host/film/film_layout.hpp"
 #include "host/render/features.hpp"
+#include "host/render/packet_paths.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/render/scene_buffers.hpp"
@@ -49,7 +50,7 @@ nlohmann::json bench_packet(ClContext& ctx, const BvhOptions& bvh_options, bool 
             p.row_begin = row;
             p.row_count = std::min(rows, size - row);
             ctx.queue().enqueueWriteBuffer(buffers.params, CL_TRUE, 0, sizeof p, &p);
-            const std::size_t items = std::size_t(p.row_count) * size;
+            const std::size_t items = std::size_t(p.row_count) * packet_items_per_row(size);
             ctx.queue().enqueueNDRangeKernel(kernel, cl::NullRange, cl::NDRange((items + 63) / 64 * 64),
                                              cl::NDRange(64));
         }

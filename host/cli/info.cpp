@@ -85,9 +85,7 @@ int run_info(const InfoOptions& opt) {
     const char* packets_off = std::getenv("FACET_PACKET_PATHS");
     fmt::print("paths       {}\n",
                packet_paths_for(cpu, 8, scene_features(scene), dev.params.sampler, false)
-                   ? fmt::format("in packets of 8 on CPUs with 8-wide vectors (launches of {} spp or more); one a "
-                                 "work-item on GPUs",
-                                 kPacketMinSamples)
+                   ? std::string("in packets of 8 on CPUs with 8-wide vectors; one a work-item on GPUs")
                : packets_off && std::string(packets_off) == "0"
                    ? std::string("one a work-item (FACET_PACKET_PATHS=0)")
                    : std::string("one a work-item (packets of 8 need area lights, Lambertian materials and the sobol "

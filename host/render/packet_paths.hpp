@@ -11,9 +11,8 @@
 
 namespace facet {
 
-// Launches of fewer samples a pixel than this run render_pass: a packet of eight lanes
-// would leave some idle for every path.
-inline constexpr std::uint32_t kPacketMinSamples = 8;
+// packet_pass's work-items: one for every 8 pixels of a row (a pixel a lane).
+inline std::uint32_t packet_items_per_row(std::uint32_t width) { return (width + 7u) / 8u; }
 
 // Whether a program with these features, for this sampler (FC_SAMPLER_*), runs packets on
 // this device: its features are the packet kernel's (triangle area lights and Lambertian

@@ -44,17 +44,13 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
 
     auto start = Clock::now();
     cl_call("uploading the scene", [&] {
-        kernel_ = cl::Kernel(program_, "render_pass");
+        kernel_ = cl::Kernel(program_, stats_.packet_paths ? "packet_pass" : "render_pass");
         std::size_t max_wg = kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(ctx.device());
         local_size_ = std::max<std::size_t>(1, std::min<std::size_t>(64, max_wg));
         scene_ = upload_scene(ctx.context(), dev);
         accum_ = cl::Buffer(ctx.context(), CL_MEM_READ_WRITE, accum_bytes);
-        // render_pass(FC_SCENE_KERNEL_PARAMS, accum), and packet_pass likewise
+        // render_pass(FC_SCENE_KERNEL_PARAMS, accum), or packet_pass likewise
         kernel_.setArg(bind_scene(kernel_, scene_), accum_);
-        if (stats_.packet_paths) {
-            packet_kernel_ = cl::Kernel(program_, "packet_pass");
-            packet_kernel_.setArg(bind_scene(packet_kernel_, scene_), accum_);
-        }
     });
     reset();
     stats_.upload_seconds = seconds_since(start);
@@ -110,11 +106,10 @@ void Renderer::launch_samples(std::uint64_t first, std::uint32_t count, std::uin
         ctx_.queue().enqueueWriteBuffer(scene_.params, CL_TRUE, 0, sizeof p, &p);
         // A fixed work-group size and a global size rounded up to it: drivers that
         // specialise kernels per launch geometry (PoCL does) then build them once.
-        std::size_t items = std::size_t(p.row_count) * params_.width;
+        std::size_t items =
+            std::size_t(p.row_count) * (stats_.packet_paths ? packet_items_per_row(params_.width) : params_.width);
         std::size_t global = (items + local_size_ - 1) / local_size_ * local_size_;
-        const bool packets = stats_.packet_paths && count >= kPacketMinSamples;
-        ctx_.queue().enqueueNDRangeKernel(packets ? packet_kernel_ : kernel_, cl::NullRange, cl::NDRange(global),
-                                          cl::NDRange(local_size_));
+        ctx_.queue().enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global), cl::NDRange(local_size_));
         ctx_.queue().finish();
     });
 }

@@ -22,7 +22,7 @@ struct RenderStats {
     std::uint64_t samples_per_pixel = 0;  // samples added to every pixel so far
     double compile_seconds = 0.0;         // building the render program
     std::uint32_t features = 0;           // the program's features (FeatureMask)
-    bool packet_paths = false;            // launches of kPacketMinSamples or more run packet_pass
+    bool packet_paths = false;            // packet_pass renders, not render_pass
     double upload_seconds = 0.0;
     double render_seconds = 0.0;  // time inside render passes
 };
@@ -95,9 +95,8 @@ private:
     std::size_t local_size_ = 64;  // work-group size of every launch
     ProgramBuild build_;
     cl::Program program_;
-    cl::Kernel kernel_;         // render_pass
-    cl::Kernel packet_kernel_;  // packet_pass, in programs with packet paths
-    SceneBuffers scene_;        // the parameter block and the scene's arrays
+    cl::Kernel kernel_;   // render_pass, or packet_pass (stats_.packet_paths)
+    SceneBuffers scene_;  // the parameter block and the scene's arrays
     cl::Buffer accum_;
     RenderStats stats_;
 };

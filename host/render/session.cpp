@@ -10,7 +10,6 @@
 #include "host/util/clock.hpp"
 #include "host/film/error_metrics.hpp"
 #include "host/render/film_identity.hpp"
-#include "host/render/packet_paths.hpp"
 #include "host/render/progressive.hpp"
 
 namespace facet {
@@ -105,14 +104,12 @@ DenoisedImage RenderSession::denoised(const DenoiseSettings& settings) const {
 // PoCL and other drivers compile a kernel for its launch geometry at its first launch:
 // one launch of a row, its samples then dropped, keeps that compile out of the first
 // pass's measured time (and out of the time limit). One sample for every device of
-// every rank, so that each of them launches; with packet paths, a second launch of
-// kPacketMinSamples each, so that packet_pass is compiled too.
+// every rank, so that each of them launches.
 void RenderSession::warm_up() {
     const auto t = Clock::now();
     const std::uint32_t devices =
         std::uint32_t(std::max<std::size_t>(group_->devices().size() * std::size_t(group_->ranks().size()), 1));
     group_->launch(devices, 0, 1);
-    if (group_->stats().packet_paths) group_->launch(devices * kPacketMinSamples, 0, 1);
     group_->reset();
     warmup_s_ = seconds_since(t);
 }

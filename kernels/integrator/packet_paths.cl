@@ -1,6 +1,6 @@
-/* Paths in packets (issue 29): render_pass's paths, eight a work-item in float8 lanes with
- * regeneration (a lane takes its work-item's next sample when its path ends; Novák et al.
- * 2010), for the programs whose scenes it covers: Lambertian materials, triangle area lights
+/* Paths in packets (issue 29): render_pass's paths, eight a work-item in float8 lanes, one
+ * pixel a lane, with regeneration (a lane starts its pixel's next sample when its path ends;
+ * Novák et al. 2010), for the programs whose scenes it covers: Lambertian materials, triangle area lights
  * and the Sobol' sampler, on CPUs with 8-wide vectors (host/render/packet_paths.hpp picks it;
  * path.cl includes this file when FC_PACKET_PATHS is 1). The trace, the surface, the emission
  * met, the camera ray and the film's sum run per lane through the scalar functions; the
@@ -36,17 +36,24 @@ inline void set_lane3(float* a, int j, float3 v) {
     a[2 * FC_PACKET_W + j] = v.z;
 }
 
+/* The work-items a row of the image needs: one for every FC_PACKET_W pixels. */
+inline uint packet_items_per_row(uint width) { return (width + FC_PACKET_W - 1u) / FC_PACKET_W; }
+
+/* Work-item g renders FC_PACKET_W consecutive pixels of a row, one a lane: lane j takes pixel
+ * x0 + j's samples [sample_begin, sample_begin + sample_count) in order, each starting when
+ * the lane's last path ends. The lanes are busy from a launch's first sample (one sample a
+ * pixel fills them), and idle only in each work-item's last paths. */
 __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
+    const uint groups = packet_items_per_row(params->width);
     uint gid = get_global_id(0);
-    uint x = gid % params->width;
-    uint y = params->row_begin + gid / params->width;
-    if (gid / params->width >= params->row_count || y >= params->height) return;
+    uint x0 = (gid % groups) * FC_PACKET_W;
+    uint y = params->row_begin + gid / groups;
+    if (gid / groups >= params->row_count || y >= params->height) return;
     SceneView scv = FC_SCENE_VIEW_INIT;
     const SceneView* sc = &scv;
     __constant const FcRenderParams* P = params;
-    uint pixel = y * params->width + x;
-    float4 sum[2] = {(float4)(0.0f), (float4)(0.0f)};
-    float square[2] = {0.0f, 0.0f};
+    float4 sum[FC_PACKET_W][2]; /* each lane's pixel's two half-sums and second moments */
+    float square[FC_PACKET_W][2];
     const uint end = params->sample_begin + params->sample_count;
 
     /* per-lane state, in arrays (lane j at [j], 3-vectors as x[0..7] y[8..15] z[16..23]) */
@@ -56,10 +63,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     uint index[FC_PACKET_W], depth[FC_PACKET_W], seed[FC_PACKET_W], irev[FC_PACKET_W];
     int active[FC_PACKET_W], alive[FC_PACKET_W];
     for (int j = 0; j < FC_PACKET_W; ++j) {
-        index[j] = params->sample_begin + (uint)j;
-        active[j] = index[j] < end;
+        index[j] = params->sample_begin;
+        active[j] = x0 + (uint)j < params->width && index[j] < end;
         alive[j] = 0; /* start a sample */
         depth[j] = 0u;
+        sum[j][0] = sum[j][1] = (float4)(0.0f);
+        square[j][0] = square[j][1] = 0.0f;
     }
     for (;;) {
         /* A: finished lanes accumulate, then take their next sample */
@@ -69,18 +78,18 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             if (!alive[j]) {
                 if (depth[j] == PATH_ENDED) { /* a finished path: add it */
                     uint idx = index[j];
-                    film_add_sample(lane3(rad, j), fweight[j], params->clamp, &sum[idx & 1u], &square[idx & 1u]);
-                    index[j] += FC_PACKET_W;
+                    film_add_sample(lane3(rad, j), fweight[j], params->clamp, &sum[j][idx & 1u], &square[j][idx & 1u]);
+                    index[j] += 1u;
                     if (index[j] >= end) {
                         active[j] = 0;
                         continue;
                     }
                 }
-                Sampler s = sampler_init(params->sampler, params->seed, pixel, index[j]);
+                Sampler s = sampler_init(params->sampler, params->seed, y * params->width + x0 + (uint)j, index[j]);
                 seed[j] = s.seed;
                 irev[j] = s.index_reversed;
                 float3 oo, dd;
-                fweight[j] = pixel_sample_ray(params, x, y, &s, &oo, &dd);
+                fweight[j] = pixel_sample_ray(params, x0 + (uint)j, y, &s, &oo, &dd);
                 set_lane3(o, j, oo);
                 set_lane3(d, j, dd);
                 set_lane3(thr, j, (float3)(1.0f));
@@ -234,12 +243,15 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             depth[j] += 1u;
         }
     }
-    accum[pixel] += sum[0];
     uint pixels = params->width * params->height;
-    accum[pixels + pixel] += sum[1];
     __global float* squares = (__global float*)(accum + 2u * pixels);
-    squares[pixel] += square[0];
-    squares[pixels + pixel] += square[1];
+    for (uint j = 0; j < FC_PACKET_W && x0 + j < params->width; ++j) {
+        uint pixel = y * params->width + x0 + j;
+        accum[pixel] += sum[j][0];
+        accum[pixels + pixel] += sum[j][1];
+        squares[pixel] += square[j][0];
+        squares[pixels + pixel] += square[j][1];
+    }
 }
 
 #endif
