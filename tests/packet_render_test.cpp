@@ -112,8 +112,15 @@ TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
         const FeatureMask bit = 1u << (std::find(names.begin(), names.end(), name) - names.begin());
         EXPECT_FALSE(packet_paths_for(cpu, 8, area | bit, FC_SAMPLER_SOBOL, false));
     }
-    ScopedEnv off("FACET_PACKET_PATHS", "0");
-    EXPECT_FALSE(packet_paths_for(cpu, 8, area, FC_SAMPLER_SOBOL, false));
+    {
+        ScopedEnv off("FACET_PACKET_PATHS", "0");
+        EXPECT_FALSE(packet_paths_for(cpu, 8, area, FC_SAMPLER_SOBOL, false));
+    }
+    // forced on (for the Oclgrind tier): any device, but only where the kernel covers the program
+    ScopedEnv on("FACET_PACKET_PATHS", "1");
+    EXPECT_TRUE(packet_paths_for(gpu, 1, area, FC_SAMPLER_SOBOL, false));
+    EXPECT_FALSE(packet_paths_for(cpu, 8, all_features(), FC_SAMPLER_SOBOL, false));
+    EXPECT_FALSE(packet_paths_for(cpu, 8, area, FC_SAMPLER_INDEPENDENT, false));
 }
 
 }  // namespace

@@ -9,9 +9,11 @@ namespace facet {
 
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
                       std::uint32_t sampler, bool generic) {
-    if (const char* env = std::getenv("FACET_PACKET_PATHS"); env && std::strcmp(env, "0") == 0) return false;
-    return !generic && features == area_lights_feature() && sampler == FC_SAMPLER_SOBOL &&
-           (device.type & CL_DEVICE_TYPE_CPU) != 0 && native_float_vector_width >= 8;
+    const char* env = std::getenv("FACET_PACKET_PATHS");
+    if (env && std::strcmp(env, "0") == 0) return false;
+    const bool covered = !generic && features == area_lights_feature() && sampler == FC_SAMPLER_SOBOL;
+    if (env && std::strcmp(env, "1") == 0) return covered;
+    return covered && (device.type & CL_DEVICE_TYPE_CPU) != 0 && native_float_vector_width >= 8;
 }
 
 }  // namespace facet

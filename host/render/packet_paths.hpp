@@ -20,7 +20,8 @@ inline std::uint32_t packet_items_per_row(std::uint32_t width) { return (width +
 // lanes' sampler), the program is specialised, and the device is a CPU whose native float
 // vectors are 8 wide or more (where the BVH is 8-wide too: host/bvh/bvh_width.hpp; on GPUs
 // a work-item's float8 is eight lanes' scalar work). FACET_PACKET_PATHS=0 turns packets off
-// (for comparisons).
+// (for comparisons); FACET_PACKET_PATHS=1 runs them on any device where the rest holds (for
+// checks: the Oclgrind tier runs packet_pass on its simulated device, whose vectors are 1 wide).
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
                       std::uint32_t sampler, bool generic);
 

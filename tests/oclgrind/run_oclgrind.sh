@@ -3,8 +3,8 @@
 # Oclgrind, an OpenCL device simulator that checks every memory access (out of bounds,
 # invalid or unaligned), API errors (--check-api) and data races. A second OpenCL
 # implementation also catches what PoCL tolerates and a GPU driver would not.
-#   1. each demo scene, 8x8 pixels at 2 spp (and the generic program and the denoiser
-#      once), by the CLI;
+#   1. each demo scene, 8x8 pixels at 2 spp (and the generic program, the packet paths and
+#      the denoiser once), by the CLI;
 #   2. the kernel unit tests that fit (KERNEL_TESTS below) in facet_tests.
 # Any message in Oclgrind's log fails the tier. Oclgrind is picked alone through an ICD
 # file (OCL_ICD_VENDORS), so no selector is needed. Exit 77 (skipped) without oclgrind.
@@ -64,6 +64,12 @@ for s in cornell_box.json cornell_box.obj furnace_sphere.json glass_metal_sky.js
     run_scene "$s"
 done
 run_scene cornell_box.json --generic
+# Packet paths (kernels/integrator/packet_paths.cl), forced on: Oclgrind's vectors are 1 wide,
+# where facet would not pick them (host/render/packet_paths.hpp).
+export FACET_PACKET_PATHS=1
+echo "FACET_PACKET_PATHS=1:"
+run_scene cornell_box.json
+unset FACET_PACKET_PATHS
 # The AOV pass and facet's denoiser (padded planes, 8-pixel vector loads and stores)
 run_scene cornell_box.json --denoise facet
 
