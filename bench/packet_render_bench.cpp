@@ -99,7 +99,7 @@ nlohmann::json bench_packet(ClContext& ctx, const BvhOptions& bvh_options, bool 
         rejected += double(sums[4 * i + 3]) + double(sums[4 * (pixels + i) + 3]);
     }
     const double msamples = double(pixels) * spp * 1e-6;
-    bench_print("\n### Packet prototype: the Cornell box at {}², {} spp (issue 29)\n\n", size, spp);
+    bench_print("\n### Packet paths: the Cornell box at {}², {} spp (issue 29)\n\n", size, spp);
     bench_print("| kernel | median s | Msamples/s |\n|---|---|---|\n");
     bench_print("| render_pass (1 path a work-item) | {:.3f} | {:.3f} |\n", ms, msamples / ms);
     bench_print("| packet_pass (8 paths a work-item, float8 lanes) | {:.3f} | {:.3f} |\n", mp, msamples / mp);
