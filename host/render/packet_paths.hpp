@@ -8,11 +8,14 @@
 
 #include "host/cl/runtime.hpp"
 #include "host/render/features.hpp"
+#include "kernels/shared/render_layout.h"
 
 namespace facet {
 
-// packet_pass's work-items: one for every 8 pixels of a row (a pixel a lane).
-inline std::uint32_t packet_items_per_row(std::uint32_t width) { return (width + 7u) / 8u; }
+// packet_pass's work-items: one for every FC_PACKET_WIDTH pixels of a row (a pixel a lane).
+inline std::uint32_t packet_items_per_row(std::uint32_t width) {
+    return (width + FC_PACKET_WIDTH - 1u) / FC_PACKET_WIDTH;
+}
 
 // Whether a program with these features, for this sampler (FC_SAMPLER_*), runs packets on
 // this device: its features are the packet kernel's (triangle area lights and Lambertian

@@ -6,16 +6,16 @@
  * met, the camera ray and the film's sum run per lane through the scalar functions; the
  * sampler, the frame, light sampling, the BSDF and roulette in lanes, through the
  * lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). Every sample
- * is the scalar path's, the same operations but for the order of a few additions:
- * PacketRender.* demands each pixel within 1e-4 of render_pass's. */
+ * is the scalar path's, up to the rounding of a few operations written by component here and
+ * on float3 there: PacketRender.* demands each pixel within 1e-4 of render_pass's. */
 #ifndef FACET_INTEGRATOR_PACKET_PATHS_CL
 #define FACET_INTEGRATOR_PACKET_PATHS_CL
 
 #include "kernels/integrator/path.cl"
 #include "kernels/lanes/packet.cl"
 
-#define FC_PACKET_W 8          /* paths a work-item */
-#define PATH_ENDED 0xfffffffeu /* depth[j] of a lane whose path ended and is not yet added */
+#define FC_PACKET_W FC_PACKET_WIDTH /* paths a work-item (kernels/shared/render_layout.h) */
+#define PATH_ENDED 0xfffffffeu      /* depth[j] of a lane whose path ended and is not yet added */
 
 typedef FcVec3x8 L3;
 
