@@ -1,8 +1,8 @@
 // Issue 29's packet paths (kernels/integrator/packet_paths.cl: eight paths a work-item in
 // float8 lanes, its formulas the lane-generic bodies of kernels/lanes/) against the scalar
-// form (render_pass, one path a work-item): the same samples of the Cornell box, so the same
-// image up to the order of a few additions. Every pixel channel must agree to 1e-4 relative,
-// no sample may be rejected, and the images' means must agree to 1e-6. The bench
+// form (render_pass, one path a work-item): the same samples of the Cornell box and of
+// Lambertian spheres, so the same image up to the order of a few additions. Every pixel channel must agree to 1e-4
+// relative, no sample may be rejected, and the images' means must agree to 1e-6. The bench
 // (`facet_bench --only packet`) times the two. And the policy that picks packets
 // (host/render/packet_paths.hpp).
 #include <gtest/gtest.h>
@@ -48,19 +48,20 @@ private:
 bool packets_here() {
     ClContext& ctx = test::context();
     return packet_paths_for(ctx.desc(), ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>(),
-                            area_lights_feature(), FC_SAMPLER_SOBOL, false);
+                            feature::kAREA_LIGHTS, true, FC_SAMPLER_SOBOL, false);
 }
 
-TEST(PacketRender, SameImageAsTheScalarKernel) {
+// Renders `scene` at 37x29 in passes of 1, 2 and 21 samples by packet_pass and by render_pass
+// and compares the images.
+void expect_packets_match_the_scalar_kernel(Scene scene, const char* name) {
     if (!packets_here()) GTEST_SKIP() << "this device runs no packets (not a CPU with 8-wide vectors)";
-    Scene scene = load_scene(test::scenes_dir() + "/cornell_box.json");
-    // 37 wide: the last work-item of a row has 5 pixels; passes of 1, 2 and 21 samples
+    // 37 wide: the last work-item of a row has 5 pixels
     const std::uint32_t width = 37, height = 29, spp = 24;
     scene.settings.width = width;
     scene.settings.height = height;
     const Bvh bvh = build_bvh(scene.vertices, BvhOptions{});
     Renderer packets(test::context(), scene, bvh);
-    ASSERT_TRUE(packets.stats().packet_paths) << "the Cornell box on this CPU should run packets";
+    ASSERT_TRUE(packets.stats().packet_paths) << name << " on this CPU should run packets";
     for (std::uint32_t pass : {1u, 2u, 21u}) packets.render(pass);
     std::vector<float> scalar_image;
     {
@@ -84,7 +85,7 @@ TEST(PacketRender, SameImageAsTheScalarKernel) {
     }
     mean_scalar /= double(packet_image.size());
     mean_packet /= double(packet_image.size());
-    std::printf("[ packet   ] Cornell box %ux%u %u spp: means %.7f (scalar) / %.7f (packet), %d values differ\n", width,
+    std::printf("[ packet   ] %s %ux%u %u spp: means %.7f (scalar) / %.7f (packet), %d values differ\n", name, width,
                 height, spp, mean_scalar, mean_packet, differ);
     EXPECT_EQ(differ, 0);
     EXPECT_EQ(rejected, 0.0);
@@ -92,35 +93,56 @@ TEST(PacketRender, SameImageAsTheScalarKernel) {
     EXPECT_NEAR(mean_packet, mean_scalar, 1e-6 * mean_scalar);
 }
 
+TEST(PacketRender, SameImageAsTheScalarKernel) {
+    expect_packets_match_the_scalar_kernel(load_scene(test::scenes_dir() + "/cornell_box.json"), "Cornell box");
+}
+
+// Spheres (their own surface and ray offsets) with Lambertian materials: material_grid with
+// every material turned Lambertian, its diffuse colour kept. Rays escape past the backdrop.
+TEST(PacketRender, SameImageAsTheScalarKernelWithSpheres) {
+    Scene scene = load_scene(test::scenes_dir() + "/material_grid.json");
+    for (Material& m : scene.materials) {
+        m.diffuse_model = FC_DIFFUSE_LAMBERT;
+        m.specular_model = FC_SPECULAR_NONE;
+        m.metallic = 0.0f;
+    }
+    ASSERT_EQ(scene_features(scene), feature::kAREA_LIGHTS | feature::kSPHERES);
+    expect_packets_match_the_scalar_kernel(scene, "material_grid, Lambertian");
+}
+
 TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
     DeviceDesc cpu, gpu;
     cpu.type = CL_DEVICE_TYPE_CPU;
     gpu.type = CL_DEVICE_TYPE_GPU;
-    const FeatureMask area = area_lights_feature();
-    EXPECT_TRUE(packet_paths_for(cpu, 8, area, FC_SAMPLER_SOBOL, false));
-    EXPECT_TRUE(packet_paths_for(cpu, 16, area, FC_SAMPLER_SOBOL, false));
-    EXPECT_FALSE(packet_paths_for(cpu, 4, area, FC_SAMPLER_SOBOL, false));            // SSE only
-    EXPECT_FALSE(packet_paths_for(gpu, 8, area, FC_SAMPLER_SOBOL, false));            // one path a work-item
-    EXPECT_FALSE(packet_paths_for(cpu, 8, area, FC_SAMPLER_INDEPENDENT, false));      // the lanes' sampler is Sobol'
-    EXPECT_FALSE(packet_paths_for(cpu, 8, area, FC_SAMPLER_SOBOL, true));             // the generic program
-    EXPECT_FALSE(packet_paths_for(cpu, 8, all_features(), FC_SAMPLER_SOBOL, false));  // other materials, lights
-    EXPECT_FALSE(packet_paths_for(cpu, 8, 0, FC_SAMPLER_SOBOL, false));               // no area light
-    for (const std::string& name : feature_names()) {
-        if (name == "area_lights") continue;
-        SCOPED_TRACE(name);
-        const auto names = feature_names();
-        const FeatureMask bit = 1u << (std::find(names.begin(), names.end(), name) - names.begin());
-        EXPECT_FALSE(packet_paths_for(cpu, 8, area | bit, FC_SAMPLER_SOBOL, false));
+    using namespace feature;
+    const FeatureMask area = kAREA_LIGHTS;
+    EXPECT_TRUE(packet_paths_for(cpu, 8, area, true, FC_SAMPLER_SOBOL, false));
+    EXPECT_TRUE(packet_paths_for(cpu, 8, area | kSPHERES, true, FC_SAMPLER_SOBOL, false));
+    EXPECT_TRUE(packet_paths_for(cpu, 16, area, true, FC_SAMPLER_SOBOL, false));
+    EXPECT_FALSE(packet_paths_for(cpu, 4, area, true, FC_SAMPLER_SOBOL, false));        // SSE only
+    EXPECT_FALSE(packet_paths_for(gpu, 8, area, true, FC_SAMPLER_SOBOL, false));        // one path a work-item
+    EXPECT_FALSE(packet_paths_for(cpu, 8, area, true, FC_SAMPLER_INDEPENDENT, false));  // the lanes' sampler is Sobol'
+    EXPECT_FALSE(packet_paths_for(cpu, 8, area, true, FC_SAMPLER_SOBOL, true));         // the generic program
+    EXPECT_FALSE(packet_paths_for(cpu, 8, area | kSPHERES, false, FC_SAMPLER_SOBOL, false));  // an emitting sphere
+    EXPECT_FALSE(packet_paths_for(cpu, 8, all_features(), true, FC_SAMPLER_SOBOL, false));    // other materials, lights
+    EXPECT_FALSE(packet_paths_for(cpu, 8, 0, true, FC_SAMPLER_SOBOL, false));                 // no area light
+    EXPECT_FALSE(packet_paths_for(cpu, 8, kSPHERES, true, FC_SAMPLER_SOBOL, false));
+    // every other feature turns packets off
+    const std::vector<std::string> names = feature_names();
+    for (std::size_t bit = 0; bit < names.size(); ++bit) {
+        SCOPED_TRACE(names[bit]);
+        EXPECT_EQ(packet_paths_for(cpu, 8, area | (1u << bit), true, FC_SAMPLER_SOBOL, false),
+                  names[bit] == "area_lights" || names[bit] == "spheres");
     }
     {
         ScopedEnv off("FACET_PACKET_PATHS", "0");
-        EXPECT_FALSE(packet_paths_for(cpu, 8, area, FC_SAMPLER_SOBOL, false));
+        EXPECT_FALSE(packet_paths_for(cpu, 8, area, true, FC_SAMPLER_SOBOL, false));
     }
     // forced on (for the Oclgrind tier): any device, but only where the kernel covers the program
     ScopedEnv on("FACET_PACKET_PATHS", "1");
-    EXPECT_TRUE(packet_paths_for(gpu, 1, area, FC_SAMPLER_SOBOL, false));
-    EXPECT_FALSE(packet_paths_for(cpu, 8, all_features(), FC_SAMPLER_SOBOL, false));
-    EXPECT_FALSE(packet_paths_for(cpu, 8, area, FC_SAMPLER_INDEPENDENT, false));
+    EXPECT_TRUE(packet_paths_for(gpu, 1, area, true, FC_SAMPLER_SOBOL, false));
+    EXPECT_FALSE(packet_paths_for(cpu, 8, all_features(), true, FC_SAMPLER_SOBOL, false));
+    EXPECT_FALSE(packet_paths_for(cpu, 8, area, true, FC_SAMPLER_INDEPENDENT, false));
 }
 
 }  // namespace

@@ -84,12 +84,11 @@ int run_info(const InfoOptions& opt) {
     cpu.type = CL_DEVICE_TYPE_CPU;
     const char* packets_off = std::getenv("FACET_PACKET_PATHS");
     fmt::print("paths       {}\n",
-               packet_paths_for(cpu, 8, scene_features(scene), dev.params.sampler, false)
+               packet_paths_for(cpu, 8, scene_features(scene), lights_are_triangles(scene), dev.params.sampler, false)
                    ? std::string("in packets of 8 on CPUs with 8-wide vectors; one a work-item on GPUs")
                : packets_off && std::string(packets_off) == "0"
                    ? std::string("one a work-item (FACET_PACKET_PATHS=0)")
-                   : std::string("one a work-item (packets of 8 need area lights, Lambertian materials and the sobol "
-                                 "sampler alone)"));
+                   : fmt::format("one a work-item ({})", packet_paths_requirements()));
     fmt::print("image       {}x{}, {} spp, max depth {}\n", scene.settings.width, scene.settings.height,
                scene.settings.spp, scene.settings.max_depth);
     fmt::print("device mem  {:.2f} MiB (bvh {:.2f}, shading {:.2f}, textures {:.2f}, film {:.2f})\n",

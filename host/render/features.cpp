@@ -21,9 +21,7 @@ struct Feature {
 constexpr Feature kFeatures[] = {FC_FEATURE_LIST(FC_FEATURE_ENTRY)};
 #undef FC_FEATURE_ENTRY
 
-#define FC_FEATURE_BIT(name, bit) constexpr FeatureMask k##name = 1u << bit;
-FC_FEATURE_LIST(FC_FEATURE_BIT)
-#undef FC_FEATURE_BIT
+using namespace feature;
 
 }  // namespace
 
@@ -107,8 +105,6 @@ std::string describe_features(FeatureMask mask) {
     }
     return out.empty() ? "none" : out;
 }
-
-FeatureMask area_lights_feature() { return kAREA_LIGHTS; }
 
 std::vector<std::string> feature_names() {
     std::vector<std::string> out;

@@ -7,11 +7,19 @@
 #include <vector>
 
 #include "host/scene/scene.hpp"
+#include "kernels/shared/feature_flags.h"
 
 namespace facet {
 
 using FeatureMask = std::uint32_t;
 struct Bvh;
+
+// One mask a feature: feature::kAREA_LIGHTS is FC_HAS_AREA_LIGHTS's bit, and so on.
+namespace feature {
+#define FC_FEATURE_BIT(name, bit) inline constexpr FeatureMask k##name = 1u << bit;
+FC_FEATURE_LIST(FC_FEATURE_BIT)
+#undef FC_FEATURE_BIT
+}  // namespace feature
 
 // Every feature of the closed list.
 FeatureMask all_features();
@@ -33,8 +41,5 @@ std::string describe_features(FeatureMask mask);
 
 // The names of every feature, lower case, in list order.
 std::vector<std::string> feature_names();
-
-// The one-feature mask of triangle area lights (FC_HAS_AREA_LIGHTS).
-FeatureMask area_lights_feature();
 
 }  // namespace facet

@@ -7,13 +7,26 @@
 
 namespace facet {
 
+FeatureMask packet_features() { return feature::kAREA_LIGHTS | feature::kSPHERES; }
+
+bool lights_are_triangles(const Scene& scene) {
+    for (const FcLight& l : scene.lights)
+        if (l.type != FC_LIGHT_AREA_TRIANGLE) return false;
+    return true;
+}
+
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
-                      std::uint32_t sampler, bool generic) {
+                      bool triangle_lights, std::uint32_t sampler, bool generic) {
     const char* env = std::getenv("FACET_PACKET_PATHS");
     if (env && std::strcmp(env, "0") == 0) return false;
-    const bool covered = !generic && features == area_lights_feature() && sampler == FC_SAMPLER_SOBOL;
+    const bool covered = !generic && (features & feature::kAREA_LIGHTS) != 0 && (features & ~packet_features()) == 0 &&
+                         triangle_lights && sampler == FC_SAMPLER_SOBOL;
     if (env && std::strcmp(env, "1") == 0) return covered;
     return covered && (device.type & CL_DEVICE_TYPE_CPU) != 0 && native_float_vector_width >= 8;
+}
+
+const char* packet_paths_requirements() {
+    return "packets of 8 need triangle area lights, Lambertian materials and the sobol sampler alone";
 }
 
 }  // namespace facet

@@ -35,7 +35,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
     stats_.features = generic ? all_features() : scene_features(scene);
     std::vector<std::string> prelude = scene_program_prelude(scene, bvh, generic);
     stats_.packet_paths = packet_paths_for(ctx.desc(), ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>(),
-                                           stats_.features, dev.params.sampler, generic);
+                                           stats_.features, lights_are_triangles(scene), dev.params.sampler, generic);
     if (stats_.packet_paths) prelude.push_back("#define FC_PACKET_PATHS 1");
     prelude.insert(prelude.end(), extra_prelude.begin(), extra_prelude.end());
     build_ = build_program(ctx, kRenderProgram, prelude);
@@ -46,7 +46,10 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
     cl_call("uploading the scene", [&] {
         kernel_ = cl::Kernel(program_, stats_.packet_paths ? "packet_pass" : "render_pass");
         std::size_t max_wg = kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(ctx.device());
-        local_size_ = std::max<std::size_t>(1, std::min<std::size_t>(64, max_wg));
+        // 64 pixels a work-group in either form (a packet work-item renders FC_PACKET_WIDTH of
+        // them): larger groups of packets leave a CPU thread idle at the end of each launch.
+        const std::size_t group = stats_.packet_paths ? 64 / FC_PACKET_WIDTH : 64;
+        local_size_ = std::max<std::size_t>(1, std::min<std::size_t>(group, max_wg));
         scene_ = upload_scene(ctx.context(), dev);
         accum_ = cl::Buffer(ctx.context(), CL_MEM_READ_WRITE, accum_bytes);
         // render_pass(FC_SCENE_KERNEL_PARAMS, accum), or packet_pass likewise

@@ -1,13 +1,14 @@
-/* Paths in packets (issue 29): render_pass's paths, eight a work-item in float8 lanes, one
- * pixel a lane, with regeneration (a lane starts its pixel's next sample when its path ends;
- * Novák et al. 2010), for the programs whose scenes it covers: Lambertian materials, triangle area lights
- * and the Sobol' sampler, on CPUs with 8-wide vectors (host/render/packet_paths.hpp picks it;
- * path.cl includes this file when FC_PACKET_PATHS is 1). The trace, the surface, the emission
- * met, the camera ray and the film's sum run per lane through the scalar functions; the
- * sampler, the frame, light sampling, the BSDF and roulette in lanes, through the
- * lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). Every sample
- * is the scalar path's, up to the rounding of a few operations written by component here and
- * on float3 there: PacketRender.* demands each pixel within 1e-4 of render_pass's. */
+/* Paths in packets (issue 29): render_pass's paths, eight a work-item in float8 lanes, with
+ * regeneration (a lane starts the next path when its own ends; Novák et al. 2010), for the
+ * programs whose scenes it covers: Lambertian materials, triangle area lights, triangles and
+ * spheres, and the Sobol' sampler, on CPUs with 8-wide vectors (host/render/packet_paths.hpp
+ * picks it; path.cl includes this file when FC_PACKET_PATHS is 1). The trace, the surface,
+ * the emission met, the camera ray and the film's sum run per lane through the scalar
+ * functions; the sampler, the frame, light sampling, the BSDF and roulette in lanes, through
+ * the lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). Every
+ * sample is the scalar path's, up to the rounding of a few operations written by component
+ * here and on float3 there, and the order in which a pixel's samples are added:
+ * PacketRender.* demands each pixel within 1e-4 of render_pass's. */
 #ifndef FACET_INTEGRATOR_PACKET_PATHS_CL
 #define FACET_INTEGRATOR_PACKET_PATHS_CL
 
@@ -39,10 +40,12 @@ inline void set_lane3(float* a, int j, float3 v) {
 /* The work-items a row of the image needs: one for every FC_PACKET_W pixels. */
 inline uint packet_items_per_row(uint width) { return (width + FC_PACKET_W - 1u) / FC_PACKET_W; }
 
-/* Work-item g renders FC_PACKET_W consecutive pixels of a row, one a lane: lane j takes pixel
- * x0 + j's samples [sample_begin, sample_begin + sample_count) in order, each starting when
- * the lane's last path ends. The lanes are busy from a launch's first sample (one sample a
- * pixel fills them), and idle only in each work-item's last paths. */
+/* Work-item g renders samples [sample_begin, sample_begin + sample_count) of FC_PACKET_W
+ * consecutive pixels of a row (fewer at the row's end). Their paths form one queue, sample by
+ * sample, each sample's pixels in order; a lane takes the queue's next path when its last one
+ * ends, whichever pixel that is. So the lanes stay busy until the work-item's last eight paths,
+ * however the path lengths fall among the pixels, and a row's last work-item fills its lanes
+ * too. Each pixel's samples are added to its sums as their paths end, not in index order. */
 __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     const uint groups = packet_items_per_row(params->width);
     uint gid = get_global_id(0);
@@ -52,93 +55,106 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     SceneView scv = FC_SCENE_VIEW_INIT;
     const SceneView* sc = &scv;
     __constant const FcRenderParams* P = params;
-    float4 sum[FC_PACKET_W][2]; /* each lane's pixel's two half-sums and second moments */
+    float4 sum[FC_PACKET_W][2]; /* each pixel's two half-sums and second moments */
     float square[FC_PACKET_W][2];
-    const uint end = params->sample_begin + params->sample_count;
 
     /* per-lane state, in arrays (lane j at [j], 3-vectors as x[0..7] y[8..15] z[16..23]) */
     float o[3 * FC_PACKET_W], d[3 * FC_PACKET_W], thr[3 * FC_PACKET_W], rad[3 * FC_PACKET_W], p[3 * FC_PACKET_W],
         ng[3 * FC_PACKET_W], ns[3 * FC_PACKET_W], alb[3 * FC_PACKET_W];
+#if FC_HAS_SPHERES
+    float org[3 * FC_PACKET_W]; /* the new rays' origin: a sphere's hit has its own offset (surface_offset) */
+#endif
     float prev_pdf[FC_PACKET_W], fweight[FC_PACKET_W];
-    uint index[FC_PACKET_W], depth[FC_PACKET_W], seed[FC_PACKET_W], irev[FC_PACKET_W];
+    uint slot[FC_PACKET_W], index[FC_PACKET_W], depth[FC_PACKET_W], seed[FC_PACKET_W], irev[FC_PACKET_W];
     int active[FC_PACKET_W], alive[FC_PACKET_W];
+    /* the queue: path q is sample sample_begin + q / pixels of pixel x0 + q % pixels */
+    const uint pixels_here = min((uint)FC_PACKET_W, params->width - x0);
+    const uint queue = pixels_here * params->sample_count;
+    uint next = 0u;
     for (int j = 0; j < FC_PACKET_W; ++j) {
-        index[j] = params->sample_begin;
-        active[j] = x0 + (uint)j < params->width && index[j] < end;
-        alive[j] = 0; /* start a sample */
+        active[j] = 1;
+        alive[j] = 0; /* start a path */
         depth[j] = 0u;
+        slot[j] = 0u;
+        index[j] = 0u;
         sum[j][0] = sum[j][1] = (float4)(0.0f);
         square[j][0] = square[j][1] = 0.0f;
     }
     for (;;) {
-        /* A: finished lanes accumulate, then take their next sample */
+        /* A: per lane, until it has a surface to shade or the queue is empty: a finished path
+         * is added to its pixel's half and the queue's next path started; the ray is traced and
+         * the emission met added. A path that ends here (it escapes, or reaches max_depth) is
+         * replaced at once, so that the lanes' work below runs on full lanes. */
         bool any_active = false;
         for (int j = 0; j < FC_PACKET_W; ++j) {
-            if (!active[j]) continue;
-            if (!alive[j]) {
-                if (depth[j] == PATH_ENDED) { /* a finished path: add it */
-                    uint idx = index[j];
-                    film_add_sample(lane3(rad, j), fweight[j], params->clamp, &sum[j][idx & 1u], &square[j][idx & 1u]);
-                    index[j] += 1u;
-                    if (index[j] >= end) {
-                        active[j] = 0;
-                        continue;
+            while (active[j]) {
+                if (!alive[j]) {
+                    if (depth[j] == PATH_ENDED) {
+                        uint k = slot[j], h = index[j] & 1u;
+                        film_add_sample(lane3(rad, j), fweight[j], params->clamp, &sum[k][h], &square[k][h]);
                     }
+                    if (next >= queue) {
+                        active[j] = 0;
+                        break;
+                    }
+                    slot[j] = next % pixels_here;
+                    index[j] = params->sample_begin + next / pixels_here;
+                    next += 1u;
+                    Sampler sm =
+                        sampler_init(params->sampler, params->seed, y * params->width + x0 + slot[j], index[j]);
+                    seed[j] = sm.seed;
+                    irev[j] = sm.index_reversed;
+                    float3 oo, dd;
+                    fweight[j] = pixel_sample_ray(params, x0 + slot[j], y, &sm, &oo, &dd);
+                    set_lane3(o, j, oo);
+                    set_lane3(d, j, dd);
+                    set_lane3(thr, j, (float3)(1.0f));
+                    set_lane3(rad, j, (float3)(0.0f));
+                    prev_pdf[j] = INFINITY;
+                    depth[j] = 0u;
+                    alive[j] = 1;
                 }
-                Sampler s = sampler_init(params->sampler, params->seed, y * params->width + x0 + (uint)j, index[j]);
-                seed[j] = s.seed;
-                irev[j] = s.index_reversed;
-                float3 oo, dd;
-                fweight[j] = pixel_sample_ray(params, x0 + (uint)j, y, &s, &oo, &dd);
-                set_lane3(o, j, oo);
-                set_lane3(d, j, dd);
-                set_lane3(thr, j, (float3)(1.0f));
-                set_lane3(rad, j, (float3)(0.0f));
-                prev_pdf[j] = INFINITY;
-                depth[j] = 0u;
-                alive[j] = 1;
+                float3 oo = lane3(o, j), dd = lane3(d, j);
+                Hit hit;
+                if (!scene_trace_closest(sc, oo, dd, INFINITY, alpha_ray_seed(seed[j], irev[j], depth[j], 0u), &hit)) {
+                    alive[j] = 0;
+                    depth[j] = PATH_ENDED;
+                    continue;
+                }
+                Surface s = scene_surface_at(sc, &hit, oo, dd);
+                __global const FcMaterial* m = &sc->materials[s.material];
+                float3 wo = -dd;
+                float3 le = area_light_radiance(load3(m->emission), m->flags, s.ng, wo);
+                if (!is_black(le) && s.light >= 0) {
+                    float w = 1.0f;
+                    if (depth[j] > 0u) {
+                        float light_pdf = light_pdf_hit(sc, s.light, oo, hit.t, dot(s.ng, wo));
+                        w = bsdf_strategy_weight(P->strategy, prev_pdf[j], light_pdf);
+                    }
+                    set_lane3(rad, j, lane3(rad, j) + lane3(thr, j) * le * w);
+                }
+                if (depth[j] >= P->max_depth) {
+                    alive[j] = 0;
+                    depth[j] = PATH_ENDED;
+                    continue;
+                }
+                /* two-sided: the side the ray came from (the frame follows in lanes) */
+                if (dot(s.ng, wo) < 0.0f) {
+                    s.ng = -s.ng;
+                    s.ns = -s.ns;
+                }
+                set_lane3(alb, j, load3(m->diffuse));
+#if FC_HAS_SPHERES
+                set_lane3(org, j, surface_offset(&s, s.ng)); /* no refraction: every ray leaves on ng's side */
+#endif
+                set_lane3(p, j, s.p);
+                set_lane3(ng, j, s.ng);
+                set_lane3(ns, j, s.ns);
+                break;
             }
-            any_active = true;
+            any_active |= active[j] != 0;
         }
         if (!any_active) break;
-
-        /* B: per lane, the closest hit, its surface and emission */
-        for (int j = 0; j < FC_PACKET_W; ++j) {
-            if (!active[j] || !alive[j]) continue;
-            float3 oo = lane3(o, j), dd = lane3(d, j);
-            Hit hit;
-            if (!scene_trace_closest(sc, oo, dd, INFINITY, alpha_ray_seed(seed[j], irev[j], depth[j], 0u), &hit)) {
-                alive[j] = 0;
-                depth[j] = PATH_ENDED;
-                continue;
-            }
-            Surface s = surface_at(sc, &hit);
-            __global const FcMaterial* m = &sc->materials[s.material];
-            float3 wo = -dd;
-            float3 le = area_light_radiance(load3(m->emission), m->flags, s.ng, wo);
-            if (!is_black(le) && s.light >= 0) {
-                float w = 1.0f;
-                if (depth[j] > 0u) {
-                    float light_pdf = light_pdf_hit(sc, s.light, oo, hit.t, dot(s.ng, wo));
-                    w = bsdf_strategy_weight(P->strategy, prev_pdf[j], light_pdf);
-                }
-                set_lane3(rad, j, lane3(rad, j) + lane3(thr, j) * le * w);
-            }
-            if (depth[j] >= P->max_depth) {
-                alive[j] = 0;
-                depth[j] = PATH_ENDED;
-                continue;
-            }
-            /* two-sided: the side the ray came from */
-            if (dot(s.ng, wo) < 0.0f) {
-                s.ng = -s.ng;
-                s.ns = -s.ns;
-            }
-            set_lane3(p, j, s.p);
-            set_lane3(ng, j, s.ng);
-            set_lane3(ns, j, s.ns);
-            set_lane3(alb, j, load3(m->diffuse));
-        }
 
         /* C: in lanes, the frame, the light sample and the BSDF sample */
         int8 live = (vload8(0, alive) != 0) & (vload8(0, active) != 0);
@@ -150,6 +166,11 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         L3 S, Tt;
         frame_from_normal_l8(N, &S, &Tt);
         float8 wo_z = l3_dot(wo, N);
+#if FC_HAS_SPHERES
+        L3 so = l3_load(org);
+#else
+        L3 so = offset_ray_origin_l8(PP, NG); /* every ray leaves on ng's side */
+#endif
         uint8 dep = vload8(0, depth), sd = vload8(0, seed), ir = vload8(0, irev);
         float8 ul[4], ub[4];
         sampler_get4_l8(sd, ir, 1u + 2u * dep, ul);
@@ -192,7 +213,6 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         float8 k = select((float8)(0.0f), fabs(wi_z) * w / pdf_l, ok);
         L3 contrib = l3(T.x * A.x * f_scale * LC.x * k, T.y * A.y * f_scale * LC.y * k, T.z * A.z * f_scale * LC.z * k);
         /* the shadow rays, in lanes: from the offset point to the offset point on the light */
-        L3 so = offset_ray_origin_l8(PP, NG);
         int8 back = cl < 0.0f;
         L3 tn = l3(select(-LN.x, LN.x, back), select(-LN.y, LN.y, back), select(-LN.z, LN.z, back));
         L3 target = offset_ray_origin_l8(point, tn);
@@ -229,7 +249,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         T2 = l3(select(T2.x, T2.x / survive, rr), select(T2.y, T2.y / survive, rr), select(T2.z, T2.z / survive, rr));
         l3_store(T2, thr);
         l3_store(nwi, d);
-        l3_store(offset_ray_origin_l8(PP, NG), o);
+        l3_store(so, o);
         vstore8(cosine_hemisphere_pdf_l8(wo_z, dz), 0, prev_pdf);
         int conta[FC_PACKET_W];
         vstore8(cont, 0, conta);
