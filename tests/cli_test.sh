@@ -42,6 +42,9 @@ expect info-paths-packets 0 "paths +in packets of 8 on CPUs" -- \
     env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/cornell_box.json"
 expect info-paths-scalar 0 "paths +one a work-item \(packets of 8 need" -- \
     env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/material_grid.json"
+# A Lambertian sphere lit by an emitting sphere: spheres are covered, sphere lights are not.
+expect info-paths-sphere-light 0 "paths +one a work-item \(packets of 8 need" -- \
+    env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/furnace_sphere.json"
 
 # A bare OBJ renders with a default camera and light.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$tmp/tet.obj"
