@@ -26,7 +26,7 @@ bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_wid
 }
 
 const char* packet_paths_requirements() {
-    return "packets of 8 need triangle area lights, Lambertian materials and the sobol sampler alone";
+    return "packets of 8 need Lambertian materials lit by emitting triangles alone, and the sobol sampler";
 }
 
 }  // namespace facet
