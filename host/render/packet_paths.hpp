@@ -12,7 +12,7 @@
 
 namespace facet {
 
-// packet_pass's work-items: one for every FC_PACKET_WIDTH pixels of a row (a pixel a lane).
+// packet_pass's work-items: one for every FC_PACKET_WIDTH pixels of a row.
 inline std::uint32_t packet_items_per_row(std::uint32_t width) {
     return (width + FC_PACKET_WIDTH - 1u) / FC_PACKET_WIDTH;
 }

@@ -43,8 +43,8 @@ enum { FC_SAMPLER_LIST(FC_RENDER_ENUM_VALUE) FC_SAMPLER_COUNT };
  * are clamped to it): 2^24 samples of it sum to 1.7e37, finite like the sums. */
 #define FC_MAX_SQUARE 1e30f
 
-/* Paths a work-item of packet_pass (kernels/integrator/packet_paths.cl): one pixel a lane,
- * so a row of the image takes ceil(width / FC_PACKET_WIDTH) work-items. */
+/* Paths a work-item of packet_pass (kernels/integrator/packet_paths.cl), which renders as
+ * many pixels of a row, so a row takes ceil(width / FC_PACKET_WIDTH) work-items. */
 #define FC_PACKET_WIDTH 8
 
 /* A pinhole, thin-lens or orthographic camera. `right` and `up` span half the image
