@@ -24,17 +24,20 @@ namespace {
 
 using namespace test::env;
 
-const double kLevel = test::chi2::sidak(0.01, 7);
+const double kLevel = test::chi2::sidak(0.01, 10);
 
+// Cells of bu x bv texels, or with sub > 1 of bu x bv cells of a grid sub times finer than
+// the texels (sub = 2: quarters of a texel, inside which the bilinear lookup's density
+// varies).
 test::chi2::Result chi_square(const EnvironmentMap& e, int bu, int bv, std::uint32_t seed,
-                              std::uint64_t n_target = 2000000) {
-    const int w = e.params.width, h = e.params.height;
+                              std::uint64_t n_target = 2000000, int sub = 1) {
+    const int w = e.params.width * sub, h = e.params.height * sub;
     EXPECT_TRUE(w % bu == 0 && h % bv == 0) << "cells must tile the map";
     const int nu = w / bu, nv = h / bv;
-    // expected shares from env_pdf at the texel centres
+    // expected shares from env_pdf at the texel (or sub-texel) centres
     std::vector<cl_float4> dirs;
     std::vector<double> wts;
-    texel_centres(e, dirs, wts);
+    texel_centres(e, dirs, wts, sub);
     std::vector<cl_float4> ev = eval_batch(e, dirs);
     std::vector<double> mass(std::size_t(nu) * nv, 0.0);
     for (int y = 0; y < nv * bv; ++y)
@@ -58,6 +61,7 @@ test::chi2::Result chi_square(const EnvironmentMap& e, int bu, int bv, std::uint
     k.setArg(5, cl_int(bu));
     k.setArg(6, cl_int(bv));
     k.setArg(7, bins);
+    k.setArg(8, cl_int(sub));
     ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(items));
     std::vector<cl_uint> b(n);
     ctx.queue().enqueueReadBuffer(bins, CL_TRUE, 0, n * sizeof(cl_uint), b.data());
@@ -119,6 +123,32 @@ TEST(EnvironmentChi2, ChiSquareCompensated) {
     auto c = chi_square(flat, 2, 2, 17u);
     std::printf("[ chi2     ] compensated constant map 64x32 (plain fallback), 2x2-texel cells: %s\n",
                 c.message.c_str());
+    EXPECT_TRUE(c.ok) << c.message;
+}
+
+// The bilinear lookup's sampling inside a texel (env_bilinear_in_texel): cells of a quarter
+// texel, where the density is bilinear between the values at the quarter's corners, on the
+// sun and sky (the sun's few texels hold most of the power, with steep gradients between
+// them), plain and with MIS compensation's texel choice, and on a smooth map.
+TEST(EnvironmentChi2, ChiSquareBilinearInsideTexels) {
+    SunSkyParams p;
+    EnvironmentMap sky = sun_sky_environment(p, 128);
+    set_environment_rotation(sky, test_rotation());
+    set_environment_filter(sky, FC_ENV_FILTER_BILINEAR);
+    auto a = chi_square(sky, 1, 1, 18u, 4000000, 2);
+    std::printf("[ chi2     ] bilinear sun and sky 128x64, quarter-texel cells: %s\n", a.message.c_str());
+    EXPECT_TRUE(a.ok) << a.message;
+    EnvironmentMap comp = sky;
+    comp.distribution = compensated_environment_distribution(sky);
+    auto b = chi_square(comp, 1, 1, 19u, 4000000, 2);
+    std::printf("[ chi2     ] bilinear compensated sun and sky 128x64, quarter-texel cells: %s\n", b.message.c_str());
+    EXPECT_TRUE(b.ok) << b.message;
+    std::vector<std::string> warnings;
+    EnvironmentMap smooth = environment_from_pixels(64, 32, smooth_map(64, 32), glm::vec3(1.0f, 0.5f, 2.0f),
+                                                    test_rotation(), "smooth", warnings);
+    set_environment_filter(smooth, FC_ENV_FILTER_BILINEAR);
+    auto c = chi_square(smooth, 1, 1, 20u, 2000000, 2);
+    std::printf("[ chi2     ] bilinear smooth 64x32, quarter-texel cells: %s\n", c.message.c_str());
     EXPECT_TRUE(c.ok) << c.message;
 }
 

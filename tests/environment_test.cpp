@@ -12,6 +12,7 @@
 
 #include "tests/environment_test_util.hpp"
 #include "host/error.hpp"
+#include "host/util/color.hpp"
 #include "host/image/image_io.hpp"
 #include "host/readers/environment_file.hpp"
 #include "host/scene/sky.hpp"
@@ -337,6 +338,58 @@ TEST(Environment, BilinearLookup) {
     set_environment_filter(e, FC_ENV_FILTER_NEAREST);
     EXPECT_EQ(double(eval_batch(e, {dirs[1]})[0].s[0]), value(6, 3));
     EXPECT_THROW(set_environment_filter(e, 7), Error);
+}
+
+// The bilinear lookup's sampling follows the interpolation inside a texel
+// (env_bilinear_in_texel): the luminance of a light sample's radiance over its pdf, the
+// environment-only estimate of the integral of the luminance over the sphere, is then
+// nearly constant, as it is for the nearest lookup, where radiance and density are both
+// constant over a texel. With a uniform point inside the picked texel (the sampling before 4
+// December 2026) its spread on the sun and sky was several times the nearest lookup's.
+struct RatioSpread {
+    double mean = 0.0, rel_sd = 0.0;
+};
+RatioSpread luminance_over_pdf(const EnvironmentMap& e, std::size_t n) {
+    SampleBatch b = sample_batch(e, n, 21u);
+    double s = 0.0, s2 = 0.0;
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double pdf = b.dir_pdf[i].s[3];
+        if (!(pdf > 0.0)) continue;
+        const double r = luminance(b.radiance[i].s[0], b.radiance[i].s[1], b.radiance[i].s[2]) / pdf;
+        s += r;
+        s2 += r * r;
+        ++k;
+    }
+    RatioSpread out;
+    out.mean = s / double(k);
+    out.rel_sd = std::sqrt(std::max(s2 / double(k) - out.mean * out.mean, 0.0)) / out.mean;
+    return out;
+}
+
+TEST(Environment, BilinearSamplingFollowsTheInterpolation) {
+    SunSkyParams p;
+    EnvironmentMap nearest = sun_sky_environment(p, 256);
+    set_environment_rotation(nearest, test_rotation());
+    EnvironmentMap bilinear = nearest;
+    set_environment_filter(bilinear, FC_ENV_FILTER_BILINEAR);
+    const RatioSpread a = luminance_over_pdf(nearest, 1u << 18), b = luminance_over_pdf(bilinear, 1u << 18);
+    std::printf(
+        "[ env      ] sun and sky 256x128, luminance / pdf: nearest %.5g (relative sd %.4f), bilinear %.5g "
+        "(relative sd %.4f)\n",
+        a.mean, a.rel_sd, b.mean, b.rel_sd);
+    // both estimate 4 pi times the mean luminance
+    EXPECT_NEAR(a.mean / (4.0 * kPi * nearest.mean_luminance), 1.0, 1e-3);
+    EXPECT_NEAR(b.mean / (4.0 * kPi * bilinear.mean_luminance), 1.0, 1e-3);
+    EXPECT_LT(b.rel_sd, 2.0 * a.rel_sd + 1e-3) << "the density does not follow the interpolated luminance";
+    // the same on a smooth map, and with MIS compensation's texel choice
+    const RatioSpread c = luminance_over_pdf(smooth_env(256, 128, test_rotation()), 1u << 16);
+    EnvironmentMap smooth = smooth_env(256, 128, test_rotation());
+    set_environment_filter(smooth, FC_ENV_FILTER_BILINEAR);
+    const RatioSpread d = luminance_over_pdf(smooth, 1u << 16);
+    std::printf("[ env      ] smooth 256x128, luminance / pdf relative sd: nearest %.4f, bilinear %.4f\n", c.rel_sd,
+                d.rel_sd);
+    EXPECT_LT(d.rel_sd, 2.0 * c.rel_sd + 1e-3);
 }
 
 TEST(Environment, SanitisesBadTexels) {

@@ -107,9 +107,12 @@ inline std::vector<cl_float4> eval_batch(const EnvironmentMap& e, const std::vec
 
 // World directions of every texel centre of a map (row-major), and the midpoint rule's
 // solid-angle weight sin(theta) dtheta dphi of each: exact for the piecewise-constant
-// p(u, v) / sin(theta) density.
-inline void texel_centres(const EnvironmentMap& e, std::vector<cl_float4>& dirs, std::vector<double>& weights) {
-    const int w = e.params.width, h = e.params.height;
+// p(u, v) / sin(theta) density. With sub > 1, the centres of a grid sub times finer: at
+// sub = 2 the quarters of each texel, on which the bilinear lookup's p(u, v) is bilinear,
+// so that the rule is exact for it too.
+inline void texel_centres(const EnvironmentMap& e, std::vector<cl_float4>& dirs, std::vector<double>& weights,
+                          int sub = 1) {
+    const int w = e.params.width * sub, h = e.params.height * sub;
     dirs.clear();
     weights.clear();
     for (int y = 0; y < h; ++y)

@@ -268,7 +268,8 @@ def world(bpy, env, sky_exr):
     if "sky" not in env or "rotate" in env or isinstance(env.get("scale", 1.0), list):
         raise SystemExit("only an unrotated sky with a scalar scale is translated")
     if facet_scene.env_filter(env) != "nearest":
-        raise SystemExit("only facet's nearest environment lookup is translated (Cycles' Closest)")
+        raise SystemExit("only facet's nearest environment lookup is translated (Cycles' Closest): "
+                         "give the scene's environment \"filter\": \"nearest\"")
     bg.inputs["Strength"].default_value = float(env.get("scale", 1.0))
     tex = nt.nodes.new("ShaderNodeTexEnvironment")
     tex.interpolation = "Closest"

@@ -107,8 +107,9 @@ void JsonLoader::environment(const Json& v, const std::string& path) {
         set_environment_scale(scene.environment, scale);
     }
     set_environment_rotation(scene.environment, world_to_map);
-    // A map is read at the nearest texel unless the scene asks for bilinear lookups.
-    int filter = FC_ENV_FILTER_NEAREST;
+    // A map is read bilinearly between texel centres unless the scene asks for the nearest
+    // texel (docs/environment.md, "Lookup: nearest or bilinear").
+    int filter = FC_ENV_FILTER_BILINEAR;
     if (v.contains("filter")) {
         const std::string name = r.string(v["filter"], k("filter"));
         if (name == "nearest") filter = FC_ENV_FILTER_NEAREST;

@@ -214,6 +214,12 @@ void build_environment_distribution(EnvironmentMap& env) {
         env.mean_luminance = p.enabled ? luminance(double(p.scale[0]), double(p.scale[1]), double(p.scale[2])) : 0.0;
         return;
     }
+    // The bilinear lookup's texels carry their mean luminance (scale included) in the fourth
+    // float: env_sample spreads a picked texel's samples in proportion to the interpolated
+    // luminance, and env_pdf divides by this mean (kernels/lights/environment.cl).
+    const std::vector<double> lum = texel_luminance(env);
+    for (std::size_t i = 0; i < lum.size(); ++i)
+        env.texels[4 * i + 3] = p.filter == FC_ENV_FILTER_BILINEAR ? float(lum[i]) : 0.0f;
     double mean = 0.0;
     const double total = build_cdfs(env, 0.0, env.distribution, &mean);
     p.total = float(total / (double(p.width) * p.height));

@@ -5,8 +5,11 @@
 // docs/environment.md explains units, sanitising and the distribution.
 //
 // Buffers uploaded to the device:
-//  - texels: 4 floats a texel (R, G, B, 0), linear radiance before `scale`, top row
-//    (theta = 0) first, width x height texels (one zero texel when width == 0).
+//  - texels: 4 floats a texel (R, G, B, m), linear radiance before `scale`, top row
+//    (theta = 0) first, width x height texels (one zero texel when width == 0); m is 0
+//    for the nearest lookup and, for the bilinear one, the mean over the texel's square of
+//    the interpolated luminance (scale included), which env_sample and env_pdf divide by
+//    (build_environment_distribution writes it).
 //  - distribution (floats), for a map of W x H texels:
 //      [0, H]                              the marginal cdf over rows: H + 1 entries,
 //                                          cdf[0] = 0, cdf[H] = 1

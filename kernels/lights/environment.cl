@@ -5,14 +5,20 @@
  *
  * - Constant environment (width == 0): radiance `scale` from every direction, sampled
  *   uniformly over the sphere, pdf 1 / (4 pi) (0 when the radiance is black).
- * - Equirectangular map: nearest-texel lookup (the default: the radiance piecewise
- *   constant over the texels, like the sampling density) or bilinear between texel
- *   centres (`filter`, opt-in: smooth reflections, as Mitsuba 3 and Cycles look maps
- *   up; docs/environment.md says what it costs in noise). Sampling picks a texel from a
+ * - Equirectangular map (`filter`): bilinear between texel centres (scene files' default:
+ *   smooth reflections, as Mitsuba 3 and Cycles look maps up) or the nearest texel (the
+ *   radiance piecewise constant over the texels, like the texel-picking density; a little
+ *   faster: docs/environment.md). Sampling picks a texel from a
  *   piecewise-constant 2D distribution over luminance x sin(theta) (for the bilinear
  *   lookup the luminance integrated over the texel; a marginal cdf over
  *   rows, a conditional cdf per row; pbrt-v3 section 14.2.4, Pharr, Jakob, Humphreys
- *   2016) and a uniform point in it. The density in (u, v) converts to solid angle with
+ *   2016) and a point in it: uniform for the nearest lookup; for the bilinear one with
+ *   density in proportion to the interpolated luminance, so that radiance over pdf stays
+ *   nearly constant inside a texel as it does for the nearest lookup (each quarter of the
+ *   texel is a bilinear patch between the values at its corners: the quarter chosen by
+ *   its integral, the point by the bilinear warp of pbrt-v4's SampleBilinear, Pharr, Jakob
+ *   and Humphreys 2023; Mitsuba 3's continuous 2D distributions follow the interpolation
+ *   likewise). The density in (u, v) converts to solid angle with
  *   the Jacobian of the equirectangular map, d(omega) = 2 pi^2 sin(theta) du dv:
  *     p(omega) = p(u, v) / (2 pi^2 sin(theta)).
  *   Directions at the poles (sin(theta) == 0) get pdf 0.
@@ -119,15 +125,39 @@ inline float env_texel_pdf(__constant const FcEnvironment* env, __global const f
     return isfinite(pdf) ? pdf : 0.0f;
 }
 
-/* Solid-angle density with which env_sample produces `dir`. The texel buffer is not
- * needed: the density lives in the cdfs. */
-inline float env_pdf(__constant const FcEnvironment* env, __global const float* dist, float3 dir) {
+/* The density inside texel t relative to a uniform one, at a point whose looked-up
+ * radiance (scale included) is `value`: 1 for the nearest lookup; for the bilinear one the
+ * interpolated luminance over its mean over the texel's square (the texel's fourth float,
+ * written by the host: host/scene/environment_map.cpp). */
+inline float env_in_texel_density(__constant const FcEnvironment* env, __global const float4* texels, int2 t,
+                                  float3 value) {
+    if (env->filter != FC_ENV_FILTER_BILINEAR) return 1.0f;
+    float mean = texels[t.y * env->width + t.x].w;
+    return mean > 0.0f ? luminance(value) / mean : 0.0f;
+}
+
+/* The pdf of env_sample at a direction in texel t, where the lookup gives `value` (scale
+ * included). */
+inline float env_point_pdf(__constant const FcEnvironment* env, __global const float4* texels,
+                           __global const float* dist, int2 t, float sin_theta, float3 value) {
+    float pdf = env_texel_pdf(env, dist, t, sin_theta);
+    if (env->filter == FC_ENV_FILTER_BILINEAR && pdf > 0.0f) {
+        pdf *= env_in_texel_density(env, texels, t, value);
+        pdf = isfinite(pdf) ? pdf : 0.0f;
+    }
+    return pdf;
+}
+
+/* Solid-angle density with which env_sample produces `dir`. */
+inline float env_pdf(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
+                     float3 dir) {
     if (!env->enabled) return 0.0f;
     if (env->width == 0) return is_black(load3c(env->scale)) ? 0.0f : FC_INV_4PI;
     float sin_theta;
     float2 uv;
     int2 t = env_locate(env, dir, &sin_theta, &uv);
-    return env_texel_pdf(env, dist, t, sin_theta);
+    if (env->filter != FC_ENV_FILTER_BILINEAR) return env_texel_pdf(env, dist, t, sin_theta);
+    return env_point_pdf(env, texels, dist, t, sin_theta, env_lookup(env, texels, uv, t) * load3c(env->scale));
 }
 
 /* env_radiance and env_pdf of one direction by one lookup (a ray that escaped after a
@@ -144,8 +174,9 @@ inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global con
     float sin_theta;
     float2 uv;
     int2 t = env_locate(env, dir, &sin_theta, &uv);
-    *pdf = env_texel_pdf(env, dist, t, sin_theta);
-    return env_lookup(env, texels, uv, t) * scale;
+    float3 value = env_lookup(env, texels, uv, t) * scale;
+    *pdf = env_point_pdf(env, texels, dist, t, sin_theta, value);
+    return value;
 }
 
 /* The interval i of a non-decreasing cdf with cdf[i] <= u < cdf[i + 1] (never one of zero
@@ -174,6 +205,67 @@ inline float env_remap(__global const float* cdf, int i, float u) {
     float w = cdf[i + 1] - cdf[i];
     float t = (w > 0.0f) ? (u - cdf[i]) / w : 0.5f;
     return clamp(t, 0.0f, FC_ONE_MINUS_EPSILON);
+}
+
+/* x in [0, 1) with density in proportion to (1 - x) a + x b (a, b >= 0, not both 0), by
+ * inverting its cdf (pbrt-v4's SampleLinear); u where both are 0. */
+inline float env_sample_linear(float u, float a, float b) {
+    if (!(a + b > 0.0f)) return u;
+    if (u == 0.0f && a == 0.0f) return 0.0f;
+    float x = u * (a + b) / (a + sqrt(mix(a * a, b * b, u)));
+    return clamp(x, 0.0f, FC_ONE_MINUS_EPSILON);
+}
+
+/* Chooses between two parts of weights a and b with u, and rescales u into the part
+ * chosen: returns 1 for b. */
+inline int env_choose(float a, float b, float* u) {
+    float p = (a + b > 0.0f) ? a / (a + b) : 0.5f;
+    if (*u < p) {
+        *u = fmin(*u / p, FC_ONE_MINUS_EPSILON);
+        return 0;
+    }
+    *u = clamp((*u - p) / (1.0f - p), 0.0f, FC_ONE_MINUS_EPSILON);
+    return 1;
+}
+
+/* The point of texel (x, y), in [0, 1)^2 across it, of the bilinear lookup's sample: d
+ * uniform in, out with density the interpolated luminance over its mean. The
+ * interpolation between the centres of the 3 x 3 texels around is, on each quarter of the
+ * texel, bilinear between the values at the quarter's corners: g[b][a] at (a / 2, b / 2)
+ * of the texel (a along u, b along v), the mean of the centres around that point. A
+ * quarter is chosen by its integral (the mean of its corners), v's half first, then u's,
+ * and the point inside it by the bilinear warp: v from the marginal (linear between the
+ * corners' row sums), then u from the conditional at that v. Each step is monotone in its
+ * coordinate, so the sampler's strata stay together. */
+inline float2 env_bilinear_in_texel(__constant const FcEnvironment* env, __global const float4* texels, int x, int y,
+                                    float2 d) {
+    /* the neighbours' columns wrapped around, their rows clamped, as env_lookup reads them */
+    int w = env->width, h = env->height;
+    int c0 = x == 0 ? w - 1 : x - 1, c2 = x == w - 1 ? 0 : x + 1;
+    __global const float4* r0 = texels + max(y - 1, 0) * w;
+    __global const float4* r1 = texels + y * w;
+    __global const float4* r2 = texels + min(y + 1, h - 1) * w;
+    float3 k = load3c(env->scale) * (float3)(0.2126f, 0.7152f, 0.0722f); /* luminance() with the scale */
+    float l00 = dot(r0[c0].xyz, k), l01 = dot(r0[x].xyz, k), l02 = dot(r0[c2].xyz, k);
+    float l10 = dot(r1[c0].xyz, k), l11 = dot(r1[x].xyz, k), l12 = dot(r1[c2].xyz, k);
+    float l20 = dot(r2[c0].xyz, k), l21 = dot(r2[x].xyz, k), l22 = dot(r2[c2].xyz, k);
+    /* g_ba: the value at (a / 2, b / 2) of the texel */
+    float g01 = 0.5f * (l01 + l11), g10 = 0.5f * (l10 + l11), g12 = 0.5f * (l11 + l12), g21 = 0.5f * (l11 + l21);
+    float g00 = 0.25f * (l00 + l01 + l10 + l11), g02 = 0.25f * (l01 + l02 + l11 + l12);
+    float g20 = 0.25f * (l10 + l11 + l20 + l21), g22 = 0.25f * (l11 + l12 + l21 + l22);
+    float top = g00 + 2.0f * g01 + g02 + g10 + 2.0f * l11 + g12; /* the two upper quarters' corner sums */
+    float bottom = g10 + 2.0f * l11 + g12 + g20 + 2.0f * g21 + g22;
+    if (!(top + bottom > 0.0f)) return d;
+    float dx = d.x, dy = d.y;
+    int qb = env_choose(top, bottom, &dy);
+    /* the chosen half's rows of corner values: upper (e0 e1 e2) and lower (f0 f1 f2) */
+    float e0 = qb ? g10 : g00, e1 = qb ? l11 : g01, e2 = qb ? g12 : g02;
+    float f0 = qb ? g20 : g10, f1 = qb ? g21 : l11, f2 = qb ? g22 : g12;
+    int qa = env_choose(e0 + e1 + f0 + f1, e1 + e2 + f1 + f2, &dx);
+    float w00 = qa ? e1 : e0, w10 = qa ? e2 : e1, w01 = qa ? f1 : f0, w11 = qa ? f2 : f1;
+    float t = env_sample_linear(dy, w00 + w10, w01 + w11);
+    float s = env_sample_linear(dx, mix(w00, w01, t), mix(w10, w11, t));
+    return (float2)(0.5f * ((float)qa + s), 0.5f * ((float)qb + t));
 }
 
 /* Samples a direction toward the environment: returns the radiance along it, `dir`
@@ -205,14 +297,20 @@ inline float3 env_sample(__constant const FcEnvironment* env, __global const flo
     __global const float* cond = dist + (h + 1) + y * (w + 1);
     int x = env_find_interval(cond, guides + (gm + 1u) + (uint)y * (gc + 1u), gc, u.x);
     float du = env_remap(cond, x, u.x);
+    if (env->filter == FC_ENV_FILTER_BILINEAR) {
+        float2 in = env_bilinear_in_texel(env, texels, x, y, (float2)(du, dv));
+        du = in.x;
+        dv = in.y;
+    }
     float2 uv = (float2)(((float)x + du) / (float)w, ((float)y + dv) / (float)h);
     *dir = normalize_or(env_map_to_dir(env, env_uv_to_map_dir(uv)), (float3)(0.0f, 1.0f, 0.0f));
     /* radiance and pdf of the direction produced, by the lookup of env_radiance/env_pdf */
     float sin_theta;
     float2 uv_back;
     int2 t = env_locate(env, *dir, &sin_theta, &uv_back);
-    *pdf = env_texel_pdf(env, dist, t, sin_theta);
-    return env_lookup(env, texels, uv_back, t) * load3c(env->scale);
+    float3 value = env_lookup(env, texels, uv_back, t) * load3c(env->scale);
+    *pdf = env_point_pdf(env, texels, dist, t, sin_theta, value);
+    return value;
 }
 
 #endif

@@ -16,7 +16,7 @@ __kernel void env_sample_batch(__constant const FcEnvironment* env, __global con
     float3 L = env_sample(env, texels, dist, rng_float2(&rng), &dir, &pdf);
     dir_pdf[i] = (float4)(dir, pdf);
     radiance[i] = (float4)(L, 0.0f);
-    eval[i] = (float4)(env_radiance(env, texels, dir), env_pdf(env, dist, dir));
+    eval[i] = (float4)(env_radiance(env, texels, dir), env_pdf(env, texels, dist, dir));
 }
 
 /* (env_radiance, env_pdf) at each direction of `dirs` (xyz). */
@@ -24,19 +24,20 @@ __kernel void env_eval_batch(__constant const FcEnvironment* env, __global const
                              __global const float* dist, __global const float4* dirs, __global float4* out) {
     uint i = (uint)get_global_id(0);
     float3 d = dirs[i].xyz;
-    out[i] = (float4)(env_radiance(env, texels, d), env_pdf(env, dist, d));
+    out[i] = (float4)(env_radiance(env, texels, d), env_pdf(env, texels, dist, d));
 }
 
 /* `per_item` samples per work-item, each binned by its texel in blocks of bu x bv
  * texels: bin = (y / bv) * (width / bu) + x / bu, with `cells` = the number of bins for
  * a refused sample (pdf 0) and cells + 1 for an invalid one (non-finite or negative).
- * The texel is found from the map-frame direction by the documented convention. */
+ * The texel is found from the map-frame direction by the documented convention; with
+ * sub > 1 the "texels" are those of a grid sub times finer (sub x sub cells a texel). */
 __kernel void env_sample_bins(__constant const FcEnvironment* env, __global const float4* texels,
-                              __global const float* dist, uint seed, uint per_item, int bu, int bv,
-                              __global uint* bins) {
+                              __global const float* dist, uint seed, uint per_item, int bu, int bv, __global uint* bins,
+                              int sub) {
     uint g = (uint)get_global_id(0);
     Rng rng = rng_init(seed, g, 0x6368u);
-    int w = env->width, h = env->height;
+    int w = env->width * sub, h = env->height * sub;
     uint cells = (uint)((w / bu) * (h / bv));
     for (uint k = 0; k < per_item; ++k) {
         float3 dir;
