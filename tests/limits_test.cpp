@@ -269,12 +269,12 @@ TEST(Limits, EnvironmentScale) {
                  {"g.json: environment.sky.width"});
 }
 
-// Environment filter: a map is read bilinearly unless the scene asks for "nearest"; any
-// other name is an error naming the key and the choices.
+// Environment filter: a map is read at the nearest texel unless the scene asks for
+// "bilinear"; any other name is an error naming the key and the choices.
 TEST(Limits, EnvironmentFilter) {
     TempDir d;
     const std::string sky = R"("environment": {"sky": {"width": 64})";
-    EXPECT_EQ(load_scene(scene(d, "a.json", sky + "}," + kQuad)).environment.params.filter, FC_ENV_FILTER_BILINEAR);
+    EXPECT_EQ(load_scene(scene(d, "a.json", sky + "}," + kQuad)).environment.params.filter, FC_ENV_FILTER_NEAREST);
     EXPECT_EQ(load_scene(scene(d, "b.json", sky + R"(, "filter": "nearest"},)" + kQuad)).environment.params.filter,
               FC_ENV_FILTER_NEAREST);
     EXPECT_EQ(load_scene(scene(d, "c.json", sky + R"(, "filter": "bilinear"},)" + kQuad)).environment.params.filter,

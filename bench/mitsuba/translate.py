@@ -438,7 +438,7 @@ def sky_args(sky):
 
 
 def env_filter(env):
-    return env.get("filter", "bilinear")   # facet's default since 4 December 2026
+    return env.get("filter", "nearest")
 
 
 def sky_file(env):

@@ -104,8 +104,6 @@ void apply_environment_choice(const EnvironmentChoice& choice, Scene& scene) {
         what = fmt::format("the map {} scaled by {:g}", choice.source, strength);
     }
     set_environment_rotation(scene.environment, world_to_map);
-    // maps are read bilinearly, as in scene files (docs/environment.md)
-    if (scene.environment.params.width > 0) set_environment_filter(scene.environment, FC_ENV_FILTER_BILINEAR);
     if (choice.rotation_degrees) what += fmt::format(", turned {:g} degrees about +y", *choice.rotation_degrees);
     const bool key = std::find(scene.material_names.begin(), scene.material_names.end(), "default_light") !=
                      scene.material_names.end();

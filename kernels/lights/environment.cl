@@ -5,10 +5,10 @@
  *
  * - Constant environment (width == 0): radiance `scale` from every direction, sampled
  *   uniformly over the sphere, pdf 1 / (4 pi) (0 when the radiance is black).
- * - Equirectangular map (`filter`): bilinear between texel centres (scene files' default:
- *   smooth reflections, as Mitsuba 3 and Cycles look maps up) or the nearest texel (the
- *   radiance piecewise constant over the texels, like the texel-picking density; a little
- *   faster: docs/environment.md). Sampling picks a texel from a
+ * - Equirectangular map (`filter`): the nearest texel (the default: the radiance piecewise
+ *   constant over the texels, like the texel-picking density) or bilinear between texel
+ *   centres (opt-in: smooth reflections, as Mitsuba 3 and Cycles look maps up; slower:
+ *   docs/environment.md). Sampling picks a texel from a
  *   piecewise-constant 2D distribution over luminance x sin(theta) (for the bilinear
  *   lookup the luminance integrated over the texel; a marginal cdf over
  *   rows, a conditional cdf per row; pbrt-v3 section 14.2.4, Pharr, Jakob, Humphreys
