@@ -40,10 +40,10 @@ expect info-bvh-layout-forced 0 "quantised boxes \(FACET_BVH_QUANTISED=1\)" -- \
 # Packets of paths where the kernel covers the scene (host/render/packet_paths.hpp).
 expect info-paths-packets 0 "paths +in packets of 8 on CPUs" -- \
     env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/cornell_box.json"
-expect info-paths-scalar 0 "paths +one a work-item \(packets of 8 need" -- \
+expect info-paths-scalar 0 "paths +one a work-item \(packets need" -- \
     env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/material_grid.json"
 # A Lambertian sphere lit by an emitting sphere: spheres are covered, sphere lights are not.
-expect info-paths-sphere-light 0 "paths +one a work-item \(packets of 8 need" -- \
+expect info-paths-sphere-light 0 "paths +one a work-item \(packets need" -- \
     env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/furnace_sphere.json"
 
 # A bare OBJ renders with a default camera and light.

@@ -51,17 +51,20 @@ bool packets_here() {
                             feature::kAREA_LIGHTS, true, FC_SAMPLER_SOBOL, false);
 }
 
-// Renders `scene` at 37x29 in passes of 1, 2 and 21 samples by packet_pass and by render_pass
-// and compares the images.
-void expect_packets_match_the_scalar_kernel(Scene scene, const char* name) {
+// Renders `scene` at 37x29 in passes of 1, 2 and 21 samples by packet_pass, in packets of
+// `packet_width` (FACET_PACKET_WIDTH: both widths run on any CPU that runs packets), and by
+// render_pass, and compares the images.
+void expect_packets_match_the_scalar_kernel(Scene scene, const char* name, const char* packet_width) {
     if (!packets_here()) GTEST_SKIP() << "this device runs no packets (not a CPU with 8-wide vectors)";
-    // 37 wide: the last work-item of a row has 5 pixels
+    // 37 wide: the last work-item of a row has 5 pixels (at 16: 5)
     const std::uint32_t width = 37, height = 29, spp = 24;
     scene.settings.width = width;
     scene.settings.height = height;
     const Bvh bvh = build_bvh(scene.vertices, BvhOptions{});
+    ScopedEnv lanes("FACET_PACKET_WIDTH", packet_width);
     Renderer packets(test::context(), scene, bvh);
     ASSERT_TRUE(packets.stats().packet_paths) << name << " on this CPU should run packets";
+    ASSERT_EQ(packets.stats().packet_width, std::uint32_t(std::stoi(packet_width)));
     for (std::uint32_t pass : {1u, 2u, 21u}) packets.render(pass);
     std::vector<float> scalar_image;
     {
@@ -85,8 +88,8 @@ void expect_packets_match_the_scalar_kernel(Scene scene, const char* name) {
     }
     mean_scalar /= double(packet_image.size());
     mean_packet /= double(packet_image.size());
-    std::printf("[ packet   ] %s %ux%u %u spp: means %.7f (scalar) / %.7f (packet), %d values differ\n", name, width,
-                height, spp, mean_scalar, mean_packet, differ);
+    std::printf("[ packet   ] %s %ux%u %u spp, packets of %s: means %.7f (scalar) / %.7f (packet), %d values differ\n",
+                name, width, height, spp, packet_width, mean_scalar, mean_packet, differ);
     EXPECT_EQ(differ, 0);
     EXPECT_EQ(rejected, 0.0);
     EXPECT_GT(mean_scalar, 0.01);  // a lit image, not two black ones
@@ -94,7 +97,8 @@ void expect_packets_match_the_scalar_kernel(Scene scene, const char* name) {
 }
 
 TEST(PacketRender, SameImageAsTheScalarKernel) {
-    expect_packets_match_the_scalar_kernel(load_scene(test::scenes_dir() + "/cornell_box.json"), "Cornell box");
+    for (const char* w : {"8", "16"})
+        expect_packets_match_the_scalar_kernel(load_scene(test::scenes_dir() + "/cornell_box.json"), "Cornell box", w);
 }
 
 // Spheres (their own surface and ray offsets) with Lambertian materials: material_grid with
@@ -107,7 +111,7 @@ TEST(PacketRender, SameImageAsTheScalarKernelWithSpheres) {
         m.metallic = 0.0f;
     }
     ASSERT_EQ(scene_features(scene), feature::kAREA_LIGHTS | feature::kSPHERES);
-    expect_packets_match_the_scalar_kernel(scene, "material_grid, Lambertian");
+    for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(scene, "material_grid, Lambertian", w);
 }
 
 TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
@@ -137,6 +141,18 @@ TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
     {
         ScopedEnv off("FACET_PACKET_PATHS", "0");
         EXPECT_FALSE(packet_paths_for(cpu, 8, area, true, FC_SAMPLER_SOBOL, false));
+    }
+    // the width: 16 where the native float vectors are 16 wide (AVX-512), else 8; the variable chooses
+    EXPECT_EQ(packet_width_for(8), 8u);
+    EXPECT_EQ(packet_width_for(16), 16u);
+    EXPECT_EQ(packet_width_for(32), 16u);
+    {
+        ScopedEnv narrow("FACET_PACKET_WIDTH", "8");
+        EXPECT_EQ(packet_width_for(16), 8u);
+    }
+    {
+        ScopedEnv wide("FACET_PACKET_WIDTH", "16");
+        EXPECT_EQ(packet_width_for(8), 16u);
     }
     // forced on (for the Oclgrind tier): any device, but only where the kernel covers the program
     ScopedEnv on("FACET_PACKET_PATHS", "1");

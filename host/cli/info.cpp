@@ -85,7 +85,8 @@ int run_info(const InfoOptions& opt) {
     const char* packets_off = std::getenv("FACET_PACKET_PATHS");
     fmt::print("paths       {}\n",
                packet_paths_for(cpu, 8, scene_features(scene), lights_are_triangles(scene), dev.params.sampler, false)
-                   ? std::string("in packets of 8 on CPUs with 8-wide vectors; one a work-item on GPUs")
+                   ? std::string("in packets of 8 on CPUs with 8-wide vectors, of 16 with 16-wide ones; one a "
+                                 "work-item on GPUs")
                : packets_off && std::string(packets_off) == "0"
                    ? std::string("one a work-item (FACET_PACKET_PATHS=0)")
                    : fmt::format("one a work-item ({})", packet_paths_requirements()));

@@ -97,7 +97,9 @@ void print_header(const RenderJob& job) {
         scene.triangle_count(), scene.spheres.empty() ? "" : fmt::format("{} spheres, ", scene.spheres.size()),
         scene.lights.size(), bvh.stats.nodes, bvh.stats.build_seconds);
     say(stdout, "kernels  {} program ({}{}), built in {:.2f} s\n", job.opt.generic ? "generic" : "specialised",
-        describe_features(group.stats().features), group.stats().packet_paths ? "; paths in packets of 8" : "",
+        describe_features(group.stats().features),
+        group.stats().packet_paths ? fmt::format("; paths in packets of {}", group.stats().packet_width)
+                                   : std::string(),
         group.stats().compile_seconds);
     if (!job.opt.resume.empty())
         say(stdout, "resumed  {} spp from {}\n", group.stats().samples_per_pixel, job.opt.resume);

@@ -109,6 +109,7 @@ DeviceGroup::DeviceGroup(std::vector<ClContext> contexts, const Scene& scene, co
         stats_.upload_seconds = std::max(stats_.upload_seconds, s.upload_seconds);
         stats_.features = s.features;
         stats_.packet_paths = stats_.packet_paths || s.packet_paths;
+        stats_.packet_width = std::max(stats_.packet_width, s.packet_width);
     }
 }
 

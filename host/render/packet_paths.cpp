@@ -25,8 +25,16 @@ bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_wid
     return covered && (device.type & CL_DEVICE_TYPE_CPU) != 0 && native_float_vector_width >= 8;
 }
 
+std::uint32_t packet_width_for(unsigned native_float_vector_width) {
+    if (const char* env = std::getenv("FACET_PACKET_WIDTH")) {
+        if (std::strcmp(env, "8") == 0) return 8u;
+        if (std::strcmp(env, "16") == 0) return 16u;
+    }
+    return native_float_vector_width >= 16 ? 16u : 8u;
+}
+
 const char* packet_paths_requirements() {
-    return "packets of 8 need Lambertian materials lit by emitting triangles alone, and the sobol sampler";
+    return "packets need Lambertian materials lit by emitting triangles alone, and the sobol sampler";
 }
 
 }  // namespace facet

@@ -1,5 +1,5 @@
-// Which renders run their paths in packets (issue 29): eight paths a work-item in float8
-// lanes (kernels/integrator/packet_paths.cl), where one path a work-item (render_pass)
+// Which renders run their paths in packets (issue 29): 8 or 16 paths a work-item in float8 or
+// float16 lanes (kernels/integrator/packet_paths.cl), where one path a work-item (render_pass)
 // leaves a CPU's vector units scalar. Policy only: the kernel computes render_pass's
 // samples (PacketRender.* checks it).
 #pragma once
@@ -12,10 +12,15 @@
 
 namespace facet {
 
-// packet_pass's work-items: one for every FC_PACKET_WIDTH pixels of a row.
-inline std::uint32_t packet_items_per_row(std::uint32_t width) {
-    return (width + FC_PACKET_WIDTH - 1u) / FC_PACKET_WIDTH;
+// packet_pass's work-items: one for every `packet_width` pixels of a row.
+inline std::uint32_t packet_items_per_row(std::uint32_t width, std::uint32_t packet_width) {
+    return (width + packet_width - 1u) / packet_width;
 }
+
+// The packets' width on a device whose native float vectors are this wide: 16 where they are
+// 16 wide or more (AVX-512), else 8 (the program's FC_PACKET_WIDTH). FACET_PACKET_WIDTH=8 or
+// 16 chooses it (for comparisons, and for tests of the 16-wide form on any CPU).
+std::uint32_t packet_width_for(unsigned native_float_vector_width);
 
 // The features packet_pass covers: triangle area lights (required: the lanes sample them) and
 // spheres; its materials are Lambertian (no other lobe's feature), lit by no environment or

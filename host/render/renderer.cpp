@@ -34,9 +34,14 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
 
     stats_.features = generic ? all_features() : scene_features(scene);
     std::vector<std::string> prelude = scene_program_prelude(scene, bvh, generic);
-    stats_.packet_paths = packet_paths_for(ctx.desc(), ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>(),
-                                           stats_.features, lights_are_triangles(scene), dev.params.sampler, generic);
-    if (stats_.packet_paths) prelude.push_back("#define FC_PACKET_PATHS 1");
+    const unsigned native_width = ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>();
+    stats_.packet_paths = packet_paths_for(ctx.desc(), native_width, stats_.features, lights_are_triangles(scene),
+                                           dev.params.sampler, generic);
+    if (stats_.packet_paths) {
+        stats_.packet_width = packet_width_for(native_width);
+        prelude.push_back("#define FC_PACKET_PATHS 1");
+        prelude.push_back(fmt::format("#define FC_PACKET_WIDTH {}", stats_.packet_width));
+    }
     prelude.insert(prelude.end(), extra_prelude.begin(), extra_prelude.end());
     build_ = build_program(ctx, kRenderProgram, prelude);
     stats_.compile_seconds = build_.seconds;
@@ -46,9 +51,9 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
     cl_call("uploading the scene", [&] {
         kernel_ = cl::Kernel(program_, stats_.packet_paths ? "packet_pass" : "render_pass");
         std::size_t max_wg = kernel_.getWorkGroupInfo<CL_KERNEL_WORK_GROUP_SIZE>(ctx.device());
-        // 64 pixels a work-group in either form (a packet work-item renders FC_PACKET_WIDTH of
+        // 64 pixels a work-group in either form (a packet work-item renders packet_width of
         // them): larger groups of packets leave a CPU thread idle at the end of each launch.
-        const std::size_t group = stats_.packet_paths ? 64 / FC_PACKET_WIDTH : 64;
+        const std::size_t group = stats_.packet_paths ? 64 / stats_.packet_width : 64;
         local_size_ = std::max<std::size_t>(1, std::min<std::size_t>(group, max_wg));
         scene_ = upload_scene(ctx.context(), dev);
         accum_ = cl::Buffer(ctx.context(), CL_MEM_READ_WRITE, accum_bytes);
@@ -110,7 +115,8 @@ void Renderer::launch_samples(std::uint64_t first, std::uint32_t count, std::uin
         // A fixed work-group size and a global size rounded up to it: drivers that
         // specialise kernels per launch geometry (PoCL does) then build them once.
         std::size_t items =
-            std::size_t(p.row_count) * (stats_.packet_paths ? packet_items_per_row(params_.width) : params_.width);
+            std::size_t(p.row_count) *
+            (stats_.packet_paths ? packet_items_per_row(params_.width, stats_.packet_width) : params_.width);
         std::size_t global = (items + local_size_ - 1) / local_size_ * local_size_;
         ctx_.queue().enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global), cl::NDRange(local_size_));
         ctx_.queue().finish();

@@ -23,6 +23,7 @@ struct RenderStats {
     double compile_seconds = 0.0;         // building the render program
     std::uint32_t features = 0;           // the program's features (FeatureMask)
     bool packet_paths = false;            // packet_pass renders, not render_pass
+    std::uint32_t packet_width = 0;       // its paths a work-item (8 or 16), with packet_paths
     double upload_seconds = 0.0;
     double render_seconds = 0.0;  // time inside render passes
 };

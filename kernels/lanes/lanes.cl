@@ -3,19 +3,19 @@
  * on AVX CPUs) while every other kernel, and every GPU, runs the same source at W = 1.
  *
  * A generic body is a file of this folder that is included between lanes_open.cl and
- * lanes_close.cl with FC_LW set to the width (1, 4 or 8). Inside it:
- * - LFLOAT, LINT, LUINT, LULONG are the lane types (float, float4 or float8, ...);
+ * lanes_close.cl with FC_LW set to the width (1, 4, 8 or 16). Inside it:
+ * - LFLOAT, LINT, LUINT, LULONG are the lane types (float, float4, float8 or float16, ...);
  * - LVEC3 is a 3-vector of lanes: float3 at W = 1, FcVec3x4 / FcVec3x8 (three vectors of
  *   lanes, structure of arrays) above, with the members .x, .y, .z either way; LVEC2 the
  *   same with two;
- * - LNAME(f) is f's name at this width: f_l1, f_l4, f_l8;
+ * - LNAME(f) is f's name at this width: f_l1, f_l4, f_l8, f_l16;
  * - a comparison gives a lane mask (1 or -1 where true, 0 where false): combine masks
  *   with & | ~ only, pick with select(), and test with LNAME(lanes_any) (OpenCL's any()
  *   reads a scalar's sign bit, which a scalar comparison's 1 does not set).
  * Branches on lane values become selects, so a width-8 call computes what eight width-1
  * calls compute, the same operations in the same order: the tests demand the same bits
  * (tests/lanes_test.cpp). The scalar kernels call the W = 1 forms through their usual
- * functions (kernels/lanes/scalar.cl); kernels/lanes/packet.cl instantiates W = 8. */
+ * functions (kernels/lanes/scalar.cl); kernels/lanes/packet.cl instantiates W = FC_PACKET_WIDTH (8 or 16). */
 #ifndef FACET_LANES_LANES_CL
 #define FACET_LANES_LANES_CL
 
@@ -30,8 +30,16 @@ typedef struct {
 } FcVec2x8;
 
 typedef struct {
+    float16 x, y;
+} FcVec2x16;
+
+typedef struct {
     float4 x, y, z;
 } FcVec3x4;
+
+typedef struct {
+    float16 x, y, z;
+} FcVec3x16;
 
 typedef struct {
     float8 x, y, z;

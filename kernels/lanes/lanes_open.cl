@@ -51,8 +51,23 @@
 #define LAS_INT as_int8
 #define LLOAD(a) vload8(0, a)
 #define LSTORE(v, a) vstore8(v, 0, a)
+#elif FC_LW == 16
+#define LFLOAT float16
+#define LINT int16
+#define LUINT uint16
+#define LULONG ulong16
+#define LVEC2 FcVec2x16
+#define LVEC3 FcVec3x16
+#define LCONVERT_FLOAT convert_float16
+#define LCONVERT_INT convert_int16
+#define LCONVERT_UINT convert_uint16
+#define LCONVERT_ULONG convert_ulong16
+#define LAS_FLOAT as_float16
+#define LAS_INT as_int16
+#define LLOAD(a) vload16(0, a)
+#define LSTORE(v, a) vstore16(v, 0, a)
 #else
-#error "FC_LW must be 1, 4 or 8"
+#error "FC_LW must be 1, 4, 8 or 16"
 #endif
 #define LNAME(f) FC_LANES_NAME(f, FC_LW)
 

@@ -1,4 +1,5 @@
-/* The lane-generic bodies at W = 8: eight paths a work-item in float8 lanes (issue 29's
+/* The lane-generic bodies at W = FC_PACKET_WIDTH (8, or 16 on AVX-512 CPUs): that many paths a
+ * work-item in float8 or float16 lanes (issue 29's
  * packet paths, kernels/integrator/packet_paths.cl), the same source the scalar
  * kernels run at W = 1 (kernels/lanes/scalar.cl). The sampler's lane form reads the Sobol'
  * table of kernels/util/sampler.cl. */
@@ -6,9 +7,10 @@
 #define FACET_LANES_PACKET_CL
 
 #include "kernels/lanes/scalar.cl"
+#include "kernels/shared/render_layout.h"
 #include "kernels/util/sampler.cl"
 
-#define FC_LW 8
+#define FC_LW FC_PACKET_WIDTH
 #include "kernels/lanes/lanes_open.cl"
 #include "kernels/lanes/vec3_lanes.cl"
 #include "kernels/util/hash_lanes.cl"

@@ -44,8 +44,12 @@ enum { FC_SAMPLER_LIST(FC_RENDER_ENUM_VALUE) FC_SAMPLER_COUNT };
 #define FC_MAX_SQUARE 1e30f
 
 /* Paths a work-item of packet_pass (kernels/integrator/packet_paths.cl), which renders as
- * many pixels of a row, so a row takes ceil(width / FC_PACKET_WIDTH) work-items. */
+ * many pixels of a row, so a row takes ceil(width / FC_PACKET_WIDTH) work-items: 8, or 16 on
+ * CPUs whose native float vectors are 16 wide (AVX-512), where the host defines it in the
+ * program's prelude (host/render/packet_paths.hpp, packet_width_for). */
+#ifndef FC_PACKET_WIDTH
 #define FC_PACKET_WIDTH 8
+#endif
 
 /* A pinhole, thin-lens or orthographic camera. `right` and `up` span half the image
  * plane: for a perspective camera at distance 1 along `forward` (so |up| =
