@@ -19,37 +19,20 @@
 #define FC_PACKET_W FC_PACKET_WIDTH /* paths a work-item (kernels/shared/render_layout.h) */
 #define PATH_ENDED 0xfffffffeu      /* depth[j] of a lane whose path ended and is not yet added */
 
-/* The packet's lane types and the lane bodies' names at its width (kernels/lanes/packet.cl). */
-#if FC_PACKET_W == 16
-typedef float16 PFLOAT;
-typedef int16 PINT;
-typedef uint16 PUINT;
-typedef FcVec3x16 L3;
-typedef FcVec2x16 L2;
-#define PLOAD(a) vload16(0, a)
-#define PSTORE(v, a) vstore16(v, 0, a)
-#define PCONVERT_INT convert_int16
-#elif FC_PACKET_W == 8
-typedef float8 PFLOAT;
-typedef int8 PINT;
-typedef uint8 PUINT;
-typedef FcVec3x8 L3;
-typedef FcVec2x8 L2;
-#define PLOAD(a) vload8(0, a)
-#define PSTORE(v, a) vstore8(v, 0, a)
-#define PCONVERT_INT convert_int8
-#else
-#error "FC_PACKET_WIDTH must be 8 or 16"
-#endif
-#define PN(f) FC_LANES_NAME(f, FC_PACKET_W)
+/* The packet's lane types (LFLOAT, LINT, LUINT, LVEC2, LVEC3, LLOAD, LSTORE) and the lane
+ * bodies' names (LNAME) at its width, as kernels/lanes/packet.cl instantiated them; closed at
+ * the end of this file. */
+#define FC_LW FC_PACKET_W
+#include "kernels/lanes/lanes_open.cl"
+typedef LVEC3 L3;
 
-#define l3 PN(vec3)
-#define l3_dot PN(vec3_dot)
-inline L3 l3_load(const float* a) { return l3(PLOAD(a), PLOAD(a + FC_PACKET_W), PLOAD(a + 2 * FC_PACKET_W)); }
+#define l3 LNAME(vec3)
+#define l3_dot LNAME(vec3_dot)
+inline L3 l3_load(const float* a) { return l3(LLOAD(a), LLOAD(a + FC_PACKET_W), LLOAD(a + 2 * FC_PACKET_W)); }
 inline void l3_store(L3 v, float* a) {
-    PSTORE(v.x, a);
-    PSTORE(v.y, a + FC_PACKET_W);
-    PSTORE(v.z, a + 2 * FC_PACKET_W);
+    LSTORE(v.x, a);
+    LSTORE(v.y, a + FC_PACKET_W);
+    LSTORE(v.z, a + 2 * FC_PACKET_W);
 }
 inline float3 lane3(const float* a, int j) { return (float3)(a[j], a[FC_PACKET_W + j], a[2 * FC_PACKET_W + j]); }
 inline void set_lane3(float* a, int j, float3 v) {
@@ -178,31 +161,31 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         if (!any_active) break;
 
         /* C: in lanes, the frame, the light sample and the BSDF sample */
-        PINT live = (PLOAD(alive) != 0) & (PLOAD(active) != 0);
+        LINT live = (LLOAD(alive) != 0) & (LLOAD(active) != 0);
         L3 D = l3_load(d), N = l3_load(ns), NG = l3_load(ng), PP = l3_load(p), A = l3_load(alb), T = l3_load(thr);
         L3 wo = l3(-D.x, -D.y, -D.z);
         /* the shading frame; ns = ng where wo is below ns */
-        PFLOAT wz = l3_dot(wo, N);
-        N = PN(vec3_select)(N, NG, wz <= 0.0f);
+        LFLOAT wz = l3_dot(wo, N);
+        N = LNAME(vec3_select)(N, NG, wz <= 0.0f);
         L3 S, Tt;
-        PN(frame_from_normal)(N, &S, &Tt);
-        PFLOAT wo_z = l3_dot(wo, N);
+        LNAME(frame_from_normal)(N, &S, &Tt);
+        LFLOAT wo_z = l3_dot(wo, N);
 #if FC_HAS_SPHERES
         L3 so = l3_load(org);
 #else
-        L3 so = PN(offset_ray_origin)(PP, NG); /* every ray leaves on ng's side */
+        L3 so = LNAME(offset_ray_origin)(PP, NG); /* every ray leaves on ng's side */
 #endif
-        PUINT dep = PLOAD(depth), sd = PLOAD(seed), ir = PLOAD(irev);
-        PFLOAT ul[4], ub[4];
-        PN(sampler_get4)(sd, ir, 1u + 2u * dep, ul);
-        PN(sampler_get4)(sd, ir, 2u + 2u * dep, ub);
+        LUINT dep = LLOAD(depth), sd = LLOAD(seed), ir = LLOAD(irev);
+        LFLOAT ul[4], ub[4];
+        LNAME(sampler_get4)(sd, ir, 1u + 2u * dep, ul);
+        LNAME(sampler_get4)(sd, ir, 2u + 2u * dep, ub);
 
         /* the light: picked and read per lane */
         float lp0[3 * FC_PACKET_W], le1[3 * FC_PACKET_W], le2[3 * FC_PACKET_W], ln[3 * FC_PACKET_W],
             lc[3 * FC_PACKET_W], lpick[FC_PACKET_W], larea[FC_PACKET_W];
         uint lflags[FC_PACKET_W];
         float upick[FC_PACKET_W];
-        PSTORE(ul[0], upick);
+        LSTORE(ul[0], upick);
         for (int j = 0; j < FC_PACKET_W; ++j) {
             __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])];
             set_lane3(lp0, j, load3(l->p0));
@@ -214,31 +197,31 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             larea[j] = l->area;
             lflags[j] = l->flags;
         }
-        L2 bary = PN(square_to_triangle)(ul[1], ul[2]);
-        PFLOAT b0 = bary.x, b1 = bary.y;
+        LVEC2 bary = LNAME(square_to_triangle)(ul[1], ul[2]);
+        LFLOAT b0 = bary.x, b1 = bary.y;
         L3 LP = l3_load(lp0), E1 = l3_load(le1), E2 = l3_load(le2), LN = l3_load(ln), LC = l3_load(lc);
         L3 point = l3(LP.x + b0 * E1.x + b1 * E2.x, LP.y + b0 * E1.y + b1 * E2.y, LP.z + b0 * E1.z + b1 * E2.z);
         L3 to = l3(point.x - PP.x, point.y - PP.y, point.z - PP.z);
-        PFLOAT d2 = l3_dot(to, to);
-        PFLOAT dist = sqrt(d2);
+        LFLOAT d2 = l3_dot(to, to);
+        LFLOAT dist = sqrt(d2);
         L3 wi = l3(to.x / dist, to.y / dist, to.z / dist);
-        PFLOAT cl = l3_dot(LN, wi);
-        PFLOAT pdf_l = PN(area_light_pdf_solid_angle)(PLOAD(lpick), PLOAD(larea), dist, cl);
-        PINT lit = PN(area_light_lit)((PLOAD(lflags) & FC_MAT_TWO_SIDED_EMISSION) != 0u, -cl); /* toward -wi */
-        PFLOAT side = l3_dot(NG, wi);
-        PFLOAT wi_z = l3_dot(wi, N);
-        PFLOAT f_scale = FC_INV_PI;
-        PINT ok = live & (d2 > 0.0f) & (pdf_l > 0.0f) & isfinite(pdf_l) & lit & (side > 0.0f) & (wi_z * side > 0.0f) &
+        LFLOAT cl = l3_dot(LN, wi);
+        LFLOAT pdf_l = LNAME(area_light_pdf_solid_angle)(LLOAD(lpick), LLOAD(larea), dist, cl);
+        LINT lit = LNAME(area_light_lit)((LLOAD(lflags) & FC_MAT_TWO_SIDED_EMISSION) != 0u, -cl); /* toward -wi */
+        LFLOAT side = l3_dot(NG, wi);
+        LFLOAT wi_z = l3_dot(wi, N);
+        LFLOAT f_scale = FC_INV_PI;
+        LINT ok = live & (d2 > 0.0f) & (pdf_l > 0.0f) & isfinite(pdf_l) & lit & (side > 0.0f) & (wi_z * side > 0.0f) &
                   (wo_z > 0.0f) & (wi_z > 0.0f);
-        PFLOAT w = PN(light_strategy_weight)(P->strategy, pdf_l, PN(cosine_hemisphere_pdf)(wo_z, wi_z));
-        PFLOAT k = select((PFLOAT)(0.0f), fabs(wi_z) * w / pdf_l, ok);
+        LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, LNAME(cosine_hemisphere_pdf)(wo_z, wi_z));
+        LFLOAT k = select((LFLOAT)(0.0f), fabs(wi_z) * w / pdf_l, ok);
         L3 contrib = l3(T.x * A.x * f_scale * LC.x * k, T.y * A.y * f_scale * LC.y * k, T.z * A.z * f_scale * LC.z * k);
         /* the shadow rays, in lanes: from the offset point to the offset point on the light */
-        PINT back = cl < 0.0f;
+        LINT back = cl < 0.0f;
         L3 tn = l3(select(-LN.x, LN.x, back), select(-LN.y, LN.y, back), select(-LN.z, LN.z, back));
-        L3 target = PN(offset_ray_origin)(point, tn);
+        L3 target = LNAME(offset_ray_origin)(point, tn);
         L3 seg = l3(target.x - so.x, target.y - so.y, target.z - so.z);
-        PFLOAT tmax = sqrt(l3_dot(seg, seg));
+        LFLOAT tmax = sqrt(l3_dot(seg, seg));
         ok &= tmax > 0.0f;
         L3 sdir = l3(seg.x / tmax, seg.y / tmax, seg.z / tmax);
         float cx[3 * FC_PACKET_W], so_a[3 * FC_PACKET_W], sd_a[3 * FC_PACKET_W], tmax_a[FC_PACKET_W];
@@ -246,8 +229,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         l3_store(contrib, cx);
         l3_store(so, so_a);
         l3_store(sdir, sd_a);
-        PSTORE(tmax, tmax_a);
-        PSTORE(ok, oka);
+        LSTORE(tmax, tmax_a);
+        LSTORE(ok, oka);
 
         /* D: shadow rays per lane */
         for (int j = 0; j < FC_PACKET_W; ++j) {
@@ -258,22 +241,22 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         }
 
         /* E: the BSDF sample (cosine hemisphere), throughput and roulette, in lanes */
-        L3 dir_local = PN(square_to_cosine_hemisphere)(ub[0], ub[1]);
-        PFLOAT dz = dir_local.z;
-        L3 nwi = PN(vec3_combine)(dir_local.x, S, dir_local.y, Tt, dz, N);
-        PFLOAT nside = l3_dot(NG, nwi);
-        PINT cont = live & (wo_z > 0.0f) & (dz > 0.0f) & (nside * dz > 0.0f);
+        L3 dir_local = LNAME(square_to_cosine_hemisphere)(ub[0], ub[1]);
+        LFLOAT dz = dir_local.z;
+        L3 nwi = LNAME(vec3_combine)(dir_local.x, S, dir_local.y, Tt, dz, N);
+        LFLOAT nside = l3_dot(NG, nwi);
+        LINT cont = live & (wo_z > 0.0f) & (dz > 0.0f) & (nside * dz > 0.0f);
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);
-        PINT rr = PCONVERT_INT(dep + 1u >= P->rr_depth);
-        PFLOAT survive = PN(roulette_survival)(T2, 1.0f); /* no refraction: eta_scale 1 */
-        cont &= select((PINT)(-1), ub[3] < survive, rr);
+        LINT rr = LCONVERT_INT(dep + 1u >= P->rr_depth);
+        LFLOAT survive = LNAME(roulette_survival)(T2, 1.0f); /* no refraction: eta_scale 1 */
+        cont &= select((LINT)(-1), ub[3] < survive, rr);
         T2 = l3(select(T2.x, T2.x / survive, rr), select(T2.y, T2.y / survive, rr), select(T2.z, T2.z / survive, rr));
         l3_store(T2, thr);
         l3_store(nwi, d);
         l3_store(so, o);
-        PSTORE(PN(cosine_hemisphere_pdf)(wo_z, dz), prev_pdf);
+        LSTORE(LNAME(cosine_hemisphere_pdf)(wo_z, dz), prev_pdf);
         int conta[FC_PACKET_W];
-        PSTORE(cont, conta);
+        LSTORE(cont, conta);
         for (int j = 0; j < FC_PACKET_W; ++j) {
             if (!active[j] || !alive[j]) continue;
             if (!conta[j]) {
@@ -294,5 +277,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         squares[pixels + pixel] += square[j][1];
     }
 }
+
+#include "kernels/lanes/lanes_close.cl"
 
 #endif

@@ -125,43 +125,21 @@ inline float env_texel_pdf(__constant const FcEnvironment* env, __global const f
     return isfinite(pdf) ? pdf : 0.0f;
 }
 
-/* The density inside texel t relative to a uniform one, at a point whose looked-up
- * radiance (scale included) is `value`: 1 for the nearest lookup; for the bilinear one the
- * interpolated luminance over its mean over the texel's square (the texel's fourth float,
- * written by the host: host/scene/environment_map.cpp). */
-inline float env_in_texel_density(__constant const FcEnvironment* env, __global const float4* texels, int2 t,
-                                  float3 value) {
-    if (env->filter != FC_ENV_FILTER_BILINEAR) return 1.0f;
-    float mean = texels[t.y * env->width + t.x].w;
-    return mean > 0.0f ? luminance(value) / mean : 0.0f;
-}
-
 /* The pdf of env_sample at a direction in texel t, where the lookup gives `value` (scale
- * included). */
+ * included): the texel's, and for the bilinear lookup times the density inside the texel
+ * relative to a uniform one, the interpolated luminance over its mean over the texel's square
+ * (the texel's fourth float, written by the host: host/scene/environment_map.cpp). */
 inline float env_point_pdf(__constant const FcEnvironment* env, __global const float4* texels,
                            __global const float* dist, int2 t, float sin_theta, float3 value) {
     float pdf = env_texel_pdf(env, dist, t, sin_theta);
-    if (env->filter == FC_ENV_FILTER_BILINEAR && pdf > 0.0f) {
-        pdf *= env_in_texel_density(env, texels, t, value);
-        pdf = isfinite(pdf) ? pdf : 0.0f;
-    }
-    return pdf;
+    if (env->filter != FC_ENV_FILTER_BILINEAR || !(pdf > 0.0f)) return pdf;
+    float mean = texels[t.y * env->width + t.x].w;
+    pdf = mean > 0.0f ? pdf * (luminance(value) / mean) : 0.0f;
+    return isfinite(pdf) ? pdf : 0.0f;
 }
 
-/* Solid-angle density with which env_sample produces `dir`. */
-inline float env_pdf(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
-                     float3 dir) {
-    if (!env->enabled) return 0.0f;
-    if (env->width == 0) return is_black(load3c(env->scale)) ? 0.0f : FC_INV_4PI;
-    float sin_theta;
-    float2 uv;
-    int2 t = env_locate(env, dir, &sin_theta, &uv);
-    if (env->filter != FC_ENV_FILTER_BILINEAR) return env_texel_pdf(env, dist, t, sin_theta);
-    return env_point_pdf(env, texels, dist, t, sin_theta, env_lookup(env, texels, uv, t) * load3c(env->scale));
-}
-
-/* env_radiance and env_pdf of one direction by one lookup (a ray that escaped after a
- * BSDF sample needs both). */
+/* Solid-angle density with which env_sample produces `dir`, and the radiance along it, by one
+ * lookup (a ray that escaped after a BSDF sample needs both). */
 inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global const float4* texels,
                                __global const float* dist, float3 dir, float* pdf) {
     *pdf = 0.0f;
@@ -177,6 +155,14 @@ inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global con
     float3 value = env_lookup(env, texels, uv, t) * scale;
     *pdf = env_point_pdf(env, texels, dist, t, sin_theta, value);
     return value;
+}
+
+/* Solid-angle density with which env_sample produces `dir` (env_radiance_pdf's). */
+inline float env_pdf(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
+                     float3 dir) {
+    float pdf;
+    env_radiance_pdf(env, texels, dist, dir, &pdf);
+    return pdf;
 }
 
 /* The interval i of a non-decreasing cdf with cdf[i] <= u < cdf[i + 1] (never one of zero
