@@ -49,6 +49,8 @@ expect info-paths-sphere-light 0 "paths +one a work-item \(packets need" -- \
 # A bare OBJ renders with a default camera and light.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' >"$tmp/tet.obj"
 expect render-obj 0 "wrote" -- "$FACET" render "$tmp/tet.obj" "${small[@]}" --out "$tmp/tet.exr"
+# Its Lambertian grey under the default key light and white environment runs in packets.
+expect info-paths-bare-obj 0 "paths +in packets of 8 on CPUs" -- env -u FACET_PACKET_PATHS "$FACET" info "$tmp/tet.obj"
 # With no light in the file: a key light and a white environment, said on stdout; --env replaces it.
 lit=(--width 24 --height 24 --spp 2)
 expect obj-default-lighting 0 "light +the file has no lights: .*white environment of radiance 0\.5 \(--env" -- \

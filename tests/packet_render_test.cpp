@@ -20,8 +20,10 @@
 #include "host/render/packet_paths.hpp"
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
+#include "host/scene/environment_map.hpp"
 #include "kernels/shared/render_layout.h"
 #include "tests/cl_test_env.hpp"
+#include "tests/temp_dir.hpp"
 #include "tests/test_paths.hpp"
 
 namespace facet {
@@ -101,17 +103,58 @@ TEST(PacketRender, SameImageAsTheScalarKernel) {
         expect_packets_match_the_scalar_kernel(load_scene(test::scenes_dir() + "/cornell_box.json"), "Cornell box", w);
 }
 
-// Spheres (their own surface and ray offsets) with Lambertian materials: material_grid with
-// every material turned Lambertian, its diffuse colour kept. Rays escape past the backdrop.
-TEST(PacketRender, SameImageAsTheScalarKernelWithSpheres) {
-    Scene scene = load_scene(test::scenes_dir() + "/material_grid.json");
+// Every material of `scene` Lambertian, its diffuse colour kept (a black one made grey).
+void make_lambertian(Scene& scene) {
     for (Material& m : scene.materials) {
         m.diffuse_model = FC_DIFFUSE_LAMBERT;
         m.specular_model = FC_SPECULAR_NONE;
         m.metallic = 0.0f;
+        if (m.diffuse == glm::vec3(0.0f)) m.diffuse = glm::vec3(0.5f);
     }
+}
+
+// Spheres (their own surface and ray offsets) with Lambertian materials: material_grid with
+// every material turned Lambertian, its diffuse colour kept. Rays escape past the backdrop.
+TEST(PacketRender, SameImageAsTheScalarKernelWithSpheres) {
+    Scene scene = load_scene(test::scenes_dir() + "/material_grid.json");
+    make_lambertian(scene);
     ASSERT_EQ(scene_features(scene), feature::kAREA_LIGHTS | feature::kSPHERES);
     for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(scene, "material_grid, Lambertian", w);
+}
+
+// Lit by the environment alone: spheres_sky's sun and sky (a map sampled per lane by
+// env_sample, met by escaping rays), its spheres Lambertian, with the map read at the
+// nearest texel and bilinearly.
+TEST(PacketRender, SameImageAsTheScalarKernelUnderTheSky) {
+    Scene scene = load_scene(test::scenes_dir() + "/spheres_sky.json");
+    make_lambertian(scene);
+    ASSERT_EQ(scene_features(scene), feature::kENVIRONMENT | feature::kSPHERES);
+    ASSERT_TRUE(lights_in_packets(scene));
+    for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(scene, "spheres_sky, Lambertian", w);
+    set_environment_filter(scene.environment, FC_ENV_FILTER_BILINEAR);
+    expect_packets_match_the_scalar_kernel(scene, "spheres_sky, Lambertian, bilinear sky", "16");
+}
+
+// A bare model, as `facet render model.obj` first meets one: the default key light (two
+// emitting triangles) and the uniform white environment (host/readers/default_lighting.hpp),
+// so a light sample picks either.
+TEST(PacketRender, SameImageAsTheScalarKernelForABareModel) {
+    test::TempDir dir;
+    Scene scene = load_scene(dir.write("tet.obj",
+                                       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                       "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"));
+    ASSERT_EQ(scene_features(scene), feature::kAREA_LIGHTS | feature::kENVIRONMENT);
+    ASSERT_TRUE(lights_in_packets(scene));
+    for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(scene, "a bare tetrahedron", w);
+}
+
+// The lights packet_pass samples: emitting triangles and the environment, not an emitting
+// sphere (furnace_sphere's) nor a punctual light (gltf_materials' point light).
+TEST(PacketRender, LightsInPackets) {
+    EXPECT_TRUE(lights_in_packets(load_scene(test::scenes_dir() + "/cornell_box.json")));
+    EXPECT_TRUE(lights_in_packets(load_scene(test::scenes_dir() + "/spheres_sky.json")));
+    EXPECT_FALSE(lights_in_packets(load_scene(test::scenes_dir() + "/furnace_sphere.json")));
+    EXPECT_FALSE(lights_in_packets(load_scene(test::scenes_dir() + "/gltf_materials.gltf")));
 }
 
 TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
@@ -129,14 +172,16 @@ TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
     EXPECT_FALSE(packet_paths_for(cpu, 8, area, true, FC_SAMPLER_SOBOL, true));         // the generic program
     EXPECT_FALSE(packet_paths_for(cpu, 8, area | kSPHERES, false, FC_SAMPLER_SOBOL, false));  // an emitting sphere
     EXPECT_FALSE(packet_paths_for(cpu, 8, all_features(), true, FC_SAMPLER_SOBOL, false));    // other materials, lights
-    EXPECT_FALSE(packet_paths_for(cpu, 8, 0, true, FC_SAMPLER_SOBOL, false));                 // no area light
+    EXPECT_TRUE(packet_paths_for(cpu, 8, kENVIRONMENT, true, FC_SAMPLER_SOBOL, false));       // lit by the sky alone
+    EXPECT_TRUE(packet_paths_for(cpu, 8, area | kENVIRONMENT | kSPHERES, true, FC_SAMPLER_SOBOL, false));
+    EXPECT_FALSE(packet_paths_for(cpu, 8, 0, true, FC_SAMPLER_SOBOL, false));  // no light the lanes sample
     EXPECT_FALSE(packet_paths_for(cpu, 8, kSPHERES, true, FC_SAMPLER_SOBOL, false));
     // every other feature turns packets off
     const std::vector<std::string> names = feature_names();
     for (std::size_t bit = 0; bit < names.size(); ++bit) {
         SCOPED_TRACE(names[bit]);
         EXPECT_EQ(packet_paths_for(cpu, 8, area | (1u << bit), true, FC_SAMPLER_SOBOL, false),
-                  names[bit] == "area_lights" || names[bit] == "spheres");
+                  names[bit] == "area_lights" || names[bit] == "spheres" || names[bit] == "environment");
     }
     {
         ScopedEnv off("FACET_PACKET_PATHS", "0");

@@ -7,20 +7,21 @@
 
 namespace facet {
 
-FeatureMask packet_features() { return feature::kAREA_LIGHTS | feature::kSPHERES; }
+FeatureMask packet_features() { return feature::kAREA_LIGHTS | feature::kENVIRONMENT | feature::kSPHERES; }
 
-bool lights_are_triangles(const Scene& scene) {
+bool lights_in_packets(const Scene& scene) {
     for (const FcLight& l : scene.lights)
-        if (l.type != FC_LIGHT_AREA_TRIANGLE) return false;
+        if (l.type != FC_LIGHT_AREA_TRIANGLE && l.type != FC_LIGHT_ENVIRONMENT) return false;
     return true;
 }
 
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
-                      bool triangle_lights, std::uint32_t sampler, bool generic) {
+                      bool packet_lights, std::uint32_t sampler, bool generic) {
     const char* env = std::getenv("FACET_PACKET_PATHS");
     if (env && std::strcmp(env, "0") == 0) return false;
-    const bool covered = !generic && (features & feature::kAREA_LIGHTS) != 0 && (features & ~packet_features()) == 0 &&
-                         triangle_lights && sampler == FC_SAMPLER_SOBOL;
+    const bool lit = (features & (feature::kAREA_LIGHTS | feature::kENVIRONMENT)) != 0;
+    const bool covered =
+        !generic && lit && (features & ~packet_features()) == 0 && packet_lights && sampler == FC_SAMPLER_SOBOL;
     if (env && std::strcmp(env, "1") == 0) return covered;
     return covered && (device.type & CL_DEVICE_TYPE_CPU) != 0 && native_float_vector_width >= 8;
 }
@@ -34,7 +35,7 @@ std::uint32_t packet_width_for(unsigned native_float_vector_width) {
 }
 
 const char* packet_paths_requirements() {
-    return "packets need Lambertian materials lit by emitting triangles alone, and the sobol sampler";
+    return "packets need Lambertian materials lit by emitting triangles or the environment alone, and the sobol sampler";
 }
 
 }  // namespace facet

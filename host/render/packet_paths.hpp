@@ -22,25 +22,26 @@ inline std::uint32_t packet_items_per_row(std::uint32_t width, std::uint32_t pac
 // 16 chooses it (for comparisons, and for tests of the 16-wide form on any CPU).
 std::uint32_t packet_width_for(unsigned native_float_vector_width);
 
-// The features packet_pass covers: triangle area lights (required: the lanes sample them) and
-// spheres; its materials are Lambertian (no other lobe's feature), lit by no environment or
-// punctual light, and untextured.
+// The features packet_pass covers: triangle area lights and the environment (the lights
+// it samples; a program needs one of them) and spheres; its materials are Lambertian (no
+// other lobe's feature), lit by no punctual light, and untextured.
 FeatureMask packet_features();
 
-// Whether every light of `scene` is an emitting triangle (its lights are those the lanes
-// sample; emitting spheres are area lights too, of another shape).
-bool lights_are_triangles(const Scene& scene);
+// Whether every light of `scene` is one packet_pass samples: an emitting triangle or the
+// environment (emitting spheres are area lights too, of another shape).
+bool lights_in_packets(const Scene& scene);
 
 // Whether a program with these features, for this sampler (FC_SAMPLER_*), runs packets on
-// this device: its features are within packet_features() and include area lights, which are
-// all triangles, the sampler is Sobol' (the lanes' sampler), the program is specialised, and
-// the device is a CPU whose native float vectors are 8 wide or more (where the BVH is 8-wide
-// too: host/bvh/bvh_width.hpp; on GPUs a work-item's float8 is eight lanes' scalar work).
+// this device: its features are within packet_features() and include area lights or the
+// environment, every light is one of those (`packet_lights`: lights_in_packets), the
+// sampler is Sobol' (the lanes' sampler), the program is specialised, and the device is a
+// CPU whose native float vectors are 8 wide or more (where the BVH is 8-wide too:
+// host/bvh/bvh_width.hpp; on GPUs a work-item's float8 is eight lanes' scalar work).
 // FACET_PACKET_PATHS=0 turns packets off (for comparisons); FACET_PACKET_PATHS=1 runs them on
 // any device where the rest holds (for checks: the Oclgrind tier runs packet_pass on its
 // simulated device, whose vectors are 1 wide).
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
-                      bool triangle_lights, std::uint32_t sampler, bool generic);
+                      bool packet_lights, std::uint32_t sampler, bool generic);
 
 // What packet_paths_for asks, said for `facet info` when a program does not run packets.
 const char* packet_paths_requirements();

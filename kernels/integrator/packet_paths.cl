@@ -1,15 +1,16 @@
 /* Paths in packets (issue 29): render_pass's paths, FC_PACKET_WIDTH a work-item (8 in float8
  * lanes, 16 in float16 on AVX-512 CPUs), with
  * regeneration (a lane starts the next path when its own ends; Novák et al. 2010), for the
- * programs whose scenes it covers: Lambertian materials, triangle area lights, triangles and
- * spheres, and the Sobol' sampler, on CPUs with 8- or 16-wide vectors (host/render/packet_paths.hpp
- * picks it; path.cl includes this file when FC_PACKET_PATHS is 1). The trace, the surface,
- * the emission met, the camera ray and the film's sum run per lane through the scalar
- * functions; the sampler, the frame, light sampling, the BSDF and roulette in lanes, through
- * the lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). Every
- * sample is the scalar path's, up to the rounding of a few operations written by component
- * here and on float3 there, and the order in which a pixel's samples are added:
- * PacketRender.* demands each pixel within 1e-4 of render_pass's. */
+ * programs whose scenes it covers: Lambertian materials, lit by triangle area lights and the
+ * environment, triangles and spheres, and the Sobol' sampler, on CPUs with 8- or 16-wide
+ * vectors (host/render/packet_paths.hpp picks it; path.cl includes this file when
+ * FC_PACKET_PATHS is 1). The trace, the surface, the emission met (or the environment, when
+ * a ray escapes), the camera ray, the environment's sample and the film's sum run per lane
+ * through the scalar functions; the sampler, the frame, a triangle light's sample, MIS, the
+ * BSDF and roulette in lanes, through the lane-generic bodies the scalar path runs at W = 1
+ * (kernels/lanes/packet.cl). Every sample is the scalar path's, up to the rounding of a few
+ * operations written by component here and on float3 there, and the order in which a
+ * pixel's samples are added: PacketRender.* demands each pixel within 1e-4 of render_pass's. */
 #ifndef FACET_INTEGRATOR_PACKET_PATHS_CL
 #define FACET_INTEGRATOR_PACKET_PATHS_CL
 
@@ -39,6 +40,32 @@ inline void set_lane3(float* a, int j, float3 v) {
     a[j] = v.x;
     a[FC_PACKET_W + j] = v.y;
     a[2 * FC_PACKET_W + j] = v.z;
+}
+
+/* Lane j's fields of triangle light l, for its sample in lanes. */
+inline void packet_triangle_light(__global const FcLight* l, int j, float* lp0, float* le1, float* le2, float* ln,
+                                  float* lc, float* lpick, float* larea, uint* lflags) {
+    set_lane3(lp0, j, load3(l->p0));
+    set_lane3(le1, j, load3(l->e1));
+    set_lane3(le2, j, load3(l->e2));
+    set_lane3(ln, j, load3(l->n));
+    set_lane3(lc, j, load3(l->color));
+    lpick[j] = l->pick_pdf;
+    larea[j] = l->area;
+    lflags[j] = l->flags;
+}
+
+/* Lane j's triangle fields where it sampled no triangle: values that keep the triangle's
+ * arithmetic in lanes finite, its results not used. */
+inline void packet_no_triangle_light(int j, float* lp0, float* le1, float* le2, float* ln, float* lpick, float* larea,
+                                     uint* lflags) {
+    set_lane3(lp0, j, (float3)(0.0f));
+    set_lane3(le1, j, (float3)(0.0f));
+    set_lane3(le2, j, (float3)(0.0f));
+    set_lane3(ln, j, (float3)(0.0f, 0.0f, 1.0f));
+    lpick[j] = 1.0f;
+    larea[j] = 1.0f;
+    lflags[j] = 0u;
 }
 
 /* The work-items a row of the image needs: one for every FC_PACKET_W pixels. */
@@ -121,6 +148,16 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 float3 oo = lane3(o, j), dd = lane3(d, j);
                 Hit hit;
                 if (!scene_trace_closest(sc, oo, dd, INFINITY, alpha_ray_seed(seed[j], irev[j], depth[j], 0u), &hit)) {
+#if FC_HAS_ENVIRONMENT
+                    /* escaped: the environment, MIS-weighted against light sampling (path_radiance's) */
+                    float env_pdf_d;
+                    float3 le = env_radiance_pdf(&P->environment, sc->env_texels, sc->env_dist, dd, &env_pdf_d);
+                    if (!is_black(le)) {
+                        float light_pdf = environment_pick_pdf(sc) * env_pdf_d;
+                        float w = depth[j] > 0u ? bsdf_strategy_weight(P->strategy, prev_pdf[j], light_pdf) : 1.0f;
+                        set_lane3(rad, j, lane3(rad, j) + lane3(thr, j) * le * w);
+                    }
+#endif
                     alive[j] = 0;
                     depth[j] = PATH_ENDED;
                     continue;
@@ -128,6 +165,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 Surface s = scene_surface_at(sc, &hit, oo, dd);
                 __global const FcMaterial* m = &sc->materials[s.material];
                 float3 wo = -dd;
+#if FC_HAS_AREA_LIGHTS
                 float3 le = area_light_radiance(load3(m->emission), m->flags, s.ng, wo);
                 if (!is_black(le) && s.light >= 0) {
                     float w = 1.0f;
@@ -137,6 +175,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                     }
                     set_lane3(rad, j, lane3(rad, j) + lane3(thr, j) * le * w);
                 }
+#endif
                 if (depth[j] >= P->max_depth) {
                     alive[j] = 0;
                     depth[j] = PATH_ENDED;
@@ -180,22 +219,50 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LNAME(sampler_get4)(sd, ir, 1u + 2u * dep, ul);
         LNAME(sampler_get4)(sd, ir, 2u + 2u * dep, ub);
 
-        /* the light: picked and read per lane */
+        /* the light: picked and read per lane; an environment sampled per lane (env_sample), a
+         * triangle's point below in lanes */
         float lp0[3 * FC_PACKET_W], le1[3 * FC_PACKET_W], le2[3 * FC_PACKET_W], ln[3 * FC_PACKET_W],
             lc[3 * FC_PACKET_W], lpick[FC_PACKET_W], larea[FC_PACKET_W];
         uint lflags[FC_PACKET_W];
         float upick[FC_PACKET_W];
         LSTORE(ul[0], upick);
+#if FC_HAS_ENVIRONMENT
+        /* lanes that picked the environment: its direction and density (pick included) */
+        float ewi[3 * FC_PACKET_W], epdf[FC_PACKET_W], eu1[FC_PACKET_W], eu2[FC_PACKET_W];
+        int envl[FC_PACKET_W];
+        LSTORE(ul[1], eu1);
+        LSTORE(ul[2], eu2);
+#endif
         for (int j = 0; j < FC_PACKET_W; ++j) {
-            __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])];
-            set_lane3(lp0, j, load3(l->p0));
-            set_lane3(le1, j, load3(l->e1));
-            set_lane3(le2, j, load3(l->e2));
-            set_lane3(ln, j, load3(l->n));
-            set_lane3(lc, j, load3(l->color));
-            lpick[j] = l->pick_pdf;
-            larea[j] = l->area;
-            lflags[j] = l->flags;
+#if FC_HAS_ENVIRONMENT
+            /* A lane with no path (the queue is empty) samples nothing: it goes as an
+             * environment lane of zero density, since the environment's sample is not cheap. */
+            envl[j] = -1;
+            epdf[j] = 0.0f;
+            if (active[j] && alive[j]) {
+                __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])];
+                if (l->type != FC_LIGHT_ENVIRONMENT) {
+                    envl[j] = 0;
+                    packet_triangle_light(l, j, lp0, le1, le2, ln, lc, lpick, larea, lflags);
+                    continue;
+                }
+                float3 wi, li;
+                float pdf;
+                li = env_sample(&P->environment, sc->env_texels, sc->env_dist, (float2)(eu1[j], eu2[j]), &wi, &pdf);
+                set_lane3(lc, j, li);
+                set_lane3(ewi, j, wi);
+                /* sample_light's test: a density and a radiance that carry something */
+                const float lpdf = pdf * l->pick_pdf;
+                if (lpdf > 0.0f && isfinite(lpdf) && !is_black(li) && all_finite(li)) epdf[j] = lpdf;
+            } else {
+                set_lane3(lc, j, (float3)(0.0f));
+                set_lane3(ewi, j, (float3)(0.0f, 0.0f, 1.0f));
+            }
+            packet_no_triangle_light(j, lp0, le1, le2, ln, lpick, larea, lflags);
+#else
+            packet_triangle_light(&sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])], j, lp0, le1, le2,
+                                  ln, lc, lpick, larea, lflags);
+#endif
         }
         LVEC2 bary = LNAME(square_to_triangle)(ul[1], ul[2]);
         LFLOAT b0 = bary.x, b1 = bary.y;
@@ -208,22 +275,34 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LFLOAT cl = l3_dot(LN, wi);
         LFLOAT pdf_l = LNAME(area_light_pdf_solid_angle)(LLOAD(lpick), LLOAD(larea), dist, cl);
         LINT lit = LNAME(area_light_lit)((LLOAD(lflags) & FC_MAT_TWO_SIDED_EMISSION) != 0u, -cl); /* toward -wi */
+        LINT ok = (d2 > 0.0f) & lit;
+#if FC_HAS_ENVIRONMENT
+        const LINT is_env = LLOAD(envl);
+        wi = LNAME(vec3_select)(wi, l3_load(ewi), is_env);
+        pdf_l = select(pdf_l, LLOAD(epdf), is_env);
+        ok = select(ok, (LINT)(-1), is_env);
+#endif
         LFLOAT side = l3_dot(NG, wi);
         LFLOAT wi_z = l3_dot(wi, N);
         LFLOAT f_scale = FC_INV_PI;
-        LINT ok = live & (d2 > 0.0f) & (pdf_l > 0.0f) & isfinite(pdf_l) & lit & (side > 0.0f) & (wi_z * side > 0.0f) &
-                  (wo_z > 0.0f) & (wi_z > 0.0f);
+        ok &= live & (pdf_l > 0.0f) & isfinite(pdf_l) & (side > 0.0f) & (wi_z * side > 0.0f) & (wo_z > 0.0f) &
+              (wi_z > 0.0f);
         LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, LNAME(cosine_hemisphere_pdf)(wo_z, wi_z));
         LFLOAT k = select((LFLOAT)(0.0f), fabs(wi_z) * w / pdf_l, ok);
         L3 contrib = l3(T.x * A.x * f_scale * LC.x * k, T.y * A.y * f_scale * LC.y * k, T.z * A.z * f_scale * LC.z * k);
-        /* the shadow rays, in lanes: from the offset point to the offset point on the light */
+        /* the shadow rays, in lanes: from the offset point to the offset point on a triangle */
         LINT back = cl < 0.0f;
         L3 tn = l3(select(-LN.x, LN.x, back), select(-LN.y, LN.y, back), select(-LN.z, LN.z, back));
         L3 target = LNAME(offset_ray_origin)(point, tn);
         L3 seg = l3(target.x - so.x, target.y - so.y, target.z - so.z);
         LFLOAT tmax = sqrt(l3_dot(seg, seg));
-        ok &= tmax > 0.0f;
         L3 sdir = l3(seg.x / tmax, seg.y / tmax, seg.z / tmax);
+#if FC_HAS_ENVIRONMENT
+        /* toward the environment: along the sampled direction, unbounded */
+        sdir = LNAME(vec3_select)(sdir, wi, is_env);
+        tmax = select(tmax, (LFLOAT)(INFINITY), is_env);
+#endif
+        ok &= tmax > 0.0f;
         float cx[3 * FC_PACKET_W], so_a[3 * FC_PACKET_W], sd_a[3 * FC_PACKET_W], tmax_a[FC_PACKET_W];
         int oka[FC_PACKET_W];
         l3_store(contrib, cx);

@@ -69,6 +69,8 @@ run_scene cornell_box.json --generic
 export FACET_PACKET_PATHS=1
 echo "FACET_PACKET_PATHS=1:"
 run_scene cornell_box.json
+# the environment in packets: met by escaping rays and sampled per lane (a generated sky map)
+run_scene cornell_box.json --env sky
 unset FACET_PACKET_PATHS
 # The AOV pass and facet's denoiser (padded planes, 8-pixel vector loads and stores)
 run_scene cornell_box.json --denoise facet
