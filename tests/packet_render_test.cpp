@@ -21,6 +21,7 @@
 #include "host/render/progressive.hpp"
 #include "host/render/renderer.hpp"
 #include "host/scene/environment_map.hpp"
+#include "host/scene/texture.hpp"
 #include "kernels/shared/render_layout.h"
 #include "tests/cl_test_env.hpp"
 #include "tests/temp_dir.hpp"
@@ -135,6 +136,28 @@ TEST(PacketRender, SameImageAsTheScalarKernelUnderTheSky) {
     expect_packets_match_the_scalar_kernel(scene, "spheres_sky, Lambertian, bilinear sky", "16");
 }
 
+// Textured Lambertian materials: material_grid made Lambertian, a 4 x 4 checker of two colours
+// (repeating) on every material's base colour and on its lights' emission, so the spheres'
+// colours (their uv from the normal), the backdrop's and the lights' light samples (read per
+// lane at the sampled point) come from the texture, filtered by each path's ray cone.
+TEST(PacketRender, SameImageAsTheScalarKernelTextured) {
+    Scene scene = load_scene(test::scenes_dir() + "/material_grid.json");
+    make_lambertian(scene);
+    std::vector<float> rgba;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) {
+            const bool odd = ((x + y) & 1) != 0;
+            rgba.insert(rgba.end(), {odd ? 0.9f : 0.2f, 0.6f, odd ? 0.1f : 0.8f, 1.0f});
+        }
+    scene.textures.push_back(make_texture(4, 4, rgba));
+    for (Material& m : scene.materials) {
+        m.textures.base_color = 0;
+        m.textures.emission = 0;
+    }
+    ASSERT_EQ(scene_features(scene), feature::kAREA_LIGHTS | feature::kSPHERES | feature::kTEXTURES);
+    for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(scene, "material_grid, textured", w);
+}
+
 // A bare model, as `facet render model.obj` first meets one: the default key light (two
 // emitting triangles) and the uniform white environment (host/readers/default_lighting.hpp),
 // so a light sample picks either.
@@ -181,7 +204,8 @@ TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
     for (std::size_t bit = 0; bit < names.size(); ++bit) {
         SCOPED_TRACE(names[bit]);
         EXPECT_EQ(packet_paths_for(cpu, 8, area | (1u << bit), true, FC_SAMPLER_SOBOL, false),
-                  names[bit] == "area_lights" || names[bit] == "spheres" || names[bit] == "environment");
+                  names[bit] == "area_lights" || names[bit] == "spheres" || names[bit] == "environment" ||
+                      names[bit] == "textures");
     }
     {
         ScopedEnv off("FACET_PACKET_PATHS", "0");

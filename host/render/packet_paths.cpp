@@ -7,7 +7,9 @@
 
 namespace facet {
 
-FeatureMask packet_features() { return feature::kAREA_LIGHTS | feature::kENVIRONMENT | feature::kSPHERES; }
+FeatureMask packet_features() {
+    return feature::kAREA_LIGHTS | feature::kENVIRONMENT | feature::kSPHERES | feature::kTEXTURES;
+}
 
 bool lights_in_packets(const Scene& scene) {
     for (const FcLight& l : scene.lights)
@@ -35,7 +37,8 @@ std::uint32_t packet_width_for(unsigned native_float_vector_width) {
 }
 
 const char* packet_paths_requirements() {
-    return "packets need Lambertian materials lit by emitting triangles or the environment alone, and the sobol sampler";
+    return "packets need Lambertian materials without alpha, lit by emitting triangles or the environment alone, and the "
+           "sobol sampler";
 }
 
 }  // namespace facet

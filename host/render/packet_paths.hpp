@@ -23,8 +23,8 @@ inline std::uint32_t packet_items_per_row(std::uint32_t width, std::uint32_t pac
 std::uint32_t packet_width_for(unsigned native_float_vector_width);
 
 // The features packet_pass covers: triangle area lights and the environment (the lights
-// it samples; a program needs one of them) and spheres; its materials are Lambertian (no
-// other lobe's feature), lit by no punctual light, and untextured.
+// it samples; a program needs one of them), spheres and textures; its materials are
+// Lambertian (no other lobe's feature), without alpha (cut-outs), lit by no punctual light.
 FeatureMask packet_features();
 
 // Whether every light of `scene` is one packet_pass samples: an emitting triangle or the

@@ -1,10 +1,10 @@
 /* Paths in packets (issue 29): render_pass's paths, FC_PACKET_WIDTH a work-item (8 in float8
  * lanes, 16 in float16 on AVX-512 CPUs), with
  * regeneration (a lane starts the next path when its own ends; Novák et al. 2010), for the
- * programs whose scenes it covers: Lambertian materials, lit by triangle area lights and the
- * environment, triangles and spheres, and the Sobol' sampler, on CPUs with 8- or 16-wide
+ * programs whose scenes it covers: Lambertian materials, textured or not, lit by triangle area
+ * lights and the environment, triangles and spheres, and the Sobol' sampler, on CPUs with 8- or 16-wide
  * vectors (host/render/packet_paths.hpp picks it; path.cl includes this file when
- * FC_PACKET_PATHS is 1). The trace, the surface, the emission met (or the environment, when
+ * FC_PACKET_PATHS is 1). The trace, the surface and its textures, the emission met (or the environment, when
  * a ray escapes), the camera ray, the environment's sample and the film's sum run per lane
  * through the scalar functions; the sampler, the frame, a triangle light's sample, MIS, the
  * BSDF and roulette in lanes, through the lane-generic bodies the scalar path runs at W = 1
@@ -42,14 +42,23 @@ inline void set_lane3(float* a, int j, float3 v) {
     a[2 * FC_PACKET_W + j] = v.z;
 }
 
-/* Lane j's fields of triangle light l, for its sample in lanes. */
-inline void packet_triangle_light(__global const FcLight* l, int j, float* lp0, float* le1, float* le2, float* ln,
-                                  float* lc, float* lpick, float* larea, uint* lflags) {
+/* Lane j's fields of triangle light l, for its sample in lanes at point u of the square (its
+ * emission texture, if any, read there per lane: sample_light's). */
+inline void packet_triangle_light(const SceneView* sc, __global const FcLight* l, int j, float2 u, float* lp0,
+                                  float* le1, float* le2, float* ln, float* lc, float* lpick, float* larea,
+                                  uint* lflags) {
     set_lane3(lp0, j, load3(l->p0));
     set_lane3(le1, j, load3(l->e1));
     set_lane3(le2, j, load3(l->e2));
     set_lane3(ln, j, load3(l->n));
+#if FC_HAS_TEXTURES
+    set_lane3(lc, j,
+              load3(l->color) * emission_texture_at(sc, l->prim, sc->shading[l->prim].material, square_to_triangle(u)));
+#else
+    (void)sc;
+    (void)u;
     set_lane3(lc, j, load3(l->color));
+#endif
     lpick[j] = l->pick_pdf;
     larea[j] = l->area;
     lflags[j] = l->flags;
@@ -96,6 +105,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     float org[3 * FC_PACKET_W]; /* the new rays' origin: a sphere's hit has its own offset (surface_offset) */
 #endif
     float prev_pdf[FC_PACKET_W], fweight[FC_PACKET_W];
+#if FC_HAS_TEXTURES
+    float plen[FC_PACKET_W]; /* each path's length from the camera: its ray cone (texture filtering) */
+#endif
     uint slot[FC_PACKET_W], index[FC_PACKET_W], depth[FC_PACKET_W], seed[FC_PACKET_W], irev[FC_PACKET_W];
     int active[FC_PACKET_W], alive[FC_PACKET_W];
     /* the queue: path q is sample sample_begin + q / pixels of pixel x0 + q % pixels */
@@ -142,6 +154,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                     set_lane3(thr, j, (float3)(1.0f));
                     set_lane3(rad, j, (float3)(0.0f));
                     prev_pdf[j] = INFINITY;
+#if FC_HAS_TEXTURES
+                    plen[j] = 0.0f;
+#endif
                     depth[j] = 0u;
                     alive[j] = 1;
                 }
@@ -163,10 +178,23 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                     continue;
                 }
                 Surface s = scene_surface_at(sc, &hit, oo, dd);
+#if FC_HAS_TEXTURES
+                /* the textured material, path_radiance's (a private copy per lane) */
+                plen[j] += hit.t;
+                FcMaterial mat = sc->materials[s.material];
+                apply_textures(sc, &hit, s.material, dd, ray_cone_width(P, plen[j]), &s.ns, &mat);
+                const float3 m_emission = load3p(mat.emission), m_diffuse = load3p(mat.diffuse);
+                const uint m_flags = mat.flags;
+#else
                 __global const FcMaterial* m = &sc->materials[s.material];
+                const float3 m_emission = load3(m->emission), m_diffuse = load3(m->diffuse);
+                const uint m_flags = m->flags;
+#endif
+                (void)m_emission; /* read below in programs with area lights */
+                (void)m_flags;
                 float3 wo = -dd;
 #if FC_HAS_AREA_LIGHTS
-                float3 le = area_light_radiance(load3(m->emission), m->flags, s.ng, wo);
+                float3 le = area_light_radiance(m_emission, m_flags, s.ng, wo);
                 if (!is_black(le) && s.light >= 0) {
                     float w = 1.0f;
                     if (depth[j] > 0u) {
@@ -186,7 +214,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                     s.ng = -s.ng;
                     s.ns = -s.ns;
                 }
-                set_lane3(alb, j, load3(m->diffuse));
+                set_lane3(alb, j, m_diffuse);
 #if FC_HAS_SPHERES
                 set_lane3(org, j, surface_offset(&s, s.ng)); /* no refraction: every ray leaves on ng's side */
 #endif
@@ -226,12 +254,13 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         uint lflags[FC_PACKET_W];
         float upick[FC_PACKET_W];
         LSTORE(ul[0], upick);
+        float lu1[FC_PACKET_W], lu2[FC_PACKET_W]; /* the light sample's point, lane by lane */
+        LSTORE(ul[1], lu1);
+        LSTORE(ul[2], lu2);
 #if FC_HAS_ENVIRONMENT
         /* lanes that picked the environment: its direction and density (pick included) */
-        float ewi[3 * FC_PACKET_W], epdf[FC_PACKET_W], eu1[FC_PACKET_W], eu2[FC_PACKET_W];
+        float ewi[3 * FC_PACKET_W], epdf[FC_PACKET_W];
         int envl[FC_PACKET_W];
-        LSTORE(ul[1], eu1);
-        LSTORE(ul[2], eu2);
 #endif
         for (int j = 0; j < FC_PACKET_W; ++j) {
 #if FC_HAS_ENVIRONMENT
@@ -243,12 +272,13 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])];
                 if (l->type != FC_LIGHT_ENVIRONMENT) {
                     envl[j] = 0;
-                    packet_triangle_light(l, j, lp0, le1, le2, ln, lc, lpick, larea, lflags);
+                    packet_triangle_light(sc, l, j, (float2)(lu1[j], lu2[j]), lp0, le1, le2, ln, lc, lpick, larea,
+                                          lflags);
                     continue;
                 }
                 float3 wi, li;
                 float pdf;
-                li = env_sample(&P->environment, sc->env_texels, sc->env_dist, (float2)(eu1[j], eu2[j]), &wi, &pdf);
+                li = env_sample(&P->environment, sc->env_texels, sc->env_dist, (float2)(lu1[j], lu2[j]), &wi, &pdf);
                 set_lane3(lc, j, li);
                 set_lane3(ewi, j, wi);
                 /* sample_light's test: a density and a radiance that carry something */
@@ -260,8 +290,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             }
             packet_no_triangle_light(j, lp0, le1, le2, ln, lpick, larea, lflags);
 #else
-            packet_triangle_light(&sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])], j, lp0, le1, le2,
-                                  ln, lc, lpick, larea, lflags);
+            packet_triangle_light(sc, &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])], j,
+                                  (float2)(lu1[j], lu2[j]), lp0, le1, le2, ln, lc, lpick, larea, lflags);
 #endif
         }
         LVEC2 bary = LNAME(square_to_triangle)(ul[1], ul[2]);
