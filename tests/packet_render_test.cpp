@@ -158,6 +158,58 @@ TEST(PacketRender, SameImageAsTheScalarKernelTextured) {
     for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(scene, "material_grid, textured", w);
 }
 
+// Cut-outs: the textured material_grid with every triangle's material (the backdrop's and
+// the lights') cut out where the checker's alpha is below 0.5 (mask) or present with
+// probability 0.6 (blend, the alpha test's own random numbers per ray): the closest and
+// shadow rays pass the holes lane by lane, and a light's sample is weighted by its coverage
+// at the sampled point. Spheres have no uv alpha.
+TEST(PacketRender, SameImageAsTheScalarKernelCutOut) {
+    Scene scene = load_scene(test::scenes_dir() + "/material_grid.json");
+    make_lambertian(scene);
+    std::vector<float> rgba;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) rgba.insert(rgba.end(), {0.7f, 0.6f, 0.5f, ((x + y) & 1) != 0 ? 0.2f : 1.0f});
+    scene.textures.push_back(make_texture(4, 4, rgba));
+    for (std::size_t k = 0; k < scene.materials.size(); ++k) {
+        Material& m = scene.materials[k];
+        m.textures.alpha = 0;
+        m.alpha_mode = k % 2 == 0 ? FC_ALPHA_MASK : FC_ALPHA_BLEND;
+        m.alpha = k % 2 == 0 ? 1.0f : 0.6f;
+    }
+    ASSERT_EQ(scene_features(scene) & feature::kALPHA, feature::kALPHA);
+    ASSERT_EQ(scene_features(scene) & ~packet_features(), 0u);
+    for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(scene, "material_grid, cut out", w);
+}
+
+// Punctual lights (delta: no MIS, the shadow ray stopped short of a point light): the glTF
+// test scene's point light beside its emitting triangles, its materials made Lambertian; then
+// a spot and a directional light in its place, and the BSDF-only strategy, under which a
+// delta light still counts.
+TEST(PacketRender, SameImageAsTheScalarKernelWithPunctualLights) {
+    Scene scene = load_scene(test::scenes_dir() + "/gltf_materials.gltf");
+    make_lambertian(scene);
+    ASSERT_EQ(scene_features(scene) & ~packet_features(), 0u) << describe_features(scene_features(scene));
+    ASSERT_NE(scene_features(scene) & feature::kPUNCTUAL_LIGHTS, 0u);
+    ASSERT_TRUE(lights_in_packets(scene));
+    for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(scene, "gltf_materials, point light", w);
+    ASSERT_FALSE(scene.punctual_lights.empty());
+    for (PunctualLight& l : scene.punctual_lights) {
+        l.type = FC_LIGHT_SPOT;  // down its default axis, -y
+        l.inner_degrees = 20.0f;
+        l.outer_degrees = 60.0f;
+    }
+    build_lights(scene);
+    expect_packets_match_the_scalar_kernel(scene, "gltf_materials, spot light", "16");
+    for (PunctualLight& l : scene.punctual_lights) {
+        l.type = FC_LIGHT_DIRECTIONAL;
+        l.direction = glm::vec3(0.3f, -1.0f, -0.4f);
+    }
+    build_lights(scene);
+    expect_packets_match_the_scalar_kernel(scene, "gltf_materials, directional light", "16");
+    scene.settings.strategy = FC_STRATEGY_BSDF;
+    expect_packets_match_the_scalar_kernel(scene, "gltf_materials, directional light, BSDF sampling", "8");
+}
+
 // A bare model, as `facet render model.obj` first meets one: the default key light (two
 // emitting triangles) and the uniform white environment (host/readers/default_lighting.hpp),
 // so a light sample picks either.
@@ -171,13 +223,13 @@ TEST(PacketRender, SameImageAsTheScalarKernelForABareModel) {
     for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(scene, "a bare tetrahedron", w);
 }
 
-// The lights packet_pass samples: emitting triangles and the environment, not an emitting
-// sphere (furnace_sphere's) nor a punctual light (gltf_materials' point light).
+// The lights packet_pass samples: emitting triangles, the environment and punctual lights
+// (gltf_materials' point light), not an emitting sphere (furnace_sphere's).
 TEST(PacketRender, LightsInPackets) {
     EXPECT_TRUE(lights_in_packets(load_scene(test::scenes_dir() + "/cornell_box.json")));
     EXPECT_TRUE(lights_in_packets(load_scene(test::scenes_dir() + "/spheres_sky.json")));
     EXPECT_FALSE(lights_in_packets(load_scene(test::scenes_dir() + "/furnace_sphere.json")));
-    EXPECT_FALSE(lights_in_packets(load_scene(test::scenes_dir() + "/gltf_materials.gltf")));
+    EXPECT_TRUE(lights_in_packets(load_scene(test::scenes_dir() + "/gltf_materials.gltf")));
 }
 
 TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
@@ -205,7 +257,7 @@ TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
         SCOPED_TRACE(names[bit]);
         EXPECT_EQ(packet_paths_for(cpu, 8, area | (1u << bit), true, FC_SAMPLER_SOBOL, false),
                   names[bit] == "area_lights" || names[bit] == "spheres" || names[bit] == "environment" ||
-                      names[bit] == "textures");
+                      names[bit] == "textures" || names[bit] == "alpha" || names[bit] == "punctual_lights");
     }
     {
         ScopedEnv off("FACET_PACKET_PATHS", "0");

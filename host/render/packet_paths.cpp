@@ -8,12 +8,15 @@
 namespace facet {
 
 FeatureMask packet_features() {
-    return feature::kAREA_LIGHTS | feature::kENVIRONMENT | feature::kSPHERES | feature::kTEXTURES;
+    return feature::kAREA_LIGHTS | feature::kPUNCTUAL_LIGHTS | feature::kENVIRONMENT | feature::kSPHERES |
+           feature::kTEXTURES | feature::kALPHA;
 }
 
 bool lights_in_packets(const Scene& scene) {
     for (const FcLight& l : scene.lights)
-        if (l.type != FC_LIGHT_AREA_TRIANGLE && l.type != FC_LIGHT_ENVIRONMENT) return false;
+        if (l.type != FC_LIGHT_AREA_TRIANGLE && l.type != FC_LIGHT_ENVIRONMENT && l.type != FC_LIGHT_POINT &&
+            l.type != FC_LIGHT_SPOT && l.type != FC_LIGHT_DIRECTIONAL)
+            return false;
     return true;
 }
 
@@ -21,7 +24,7 @@ bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_wid
                       bool packet_lights, std::uint32_t sampler, bool generic) {
     const char* env = std::getenv("FACET_PACKET_PATHS");
     if (env && std::strcmp(env, "0") == 0) return false;
-    const bool lit = (features & (feature::kAREA_LIGHTS | feature::kENVIRONMENT)) != 0;
+    const bool lit = (features & (feature::kAREA_LIGHTS | feature::kPUNCTUAL_LIGHTS | feature::kENVIRONMENT)) != 0;
     const bool covered =
         !generic && lit && (features & ~packet_features()) == 0 && packet_lights && sampler == FC_SAMPLER_SOBOL;
     if (env && std::strcmp(env, "1") == 0) return covered;
@@ -37,8 +40,7 @@ std::uint32_t packet_width_for(unsigned native_float_vector_width) {
 }
 
 const char* packet_paths_requirements() {
-    return "packets need Lambertian materials without alpha, lit by emitting triangles or the environment alone, and the "
-           "sobol sampler";
+    return "packets need Lambertian materials, no emitting spheres, and the sobol sampler";
 }
 
 }  // namespace facet

@@ -22,24 +22,24 @@ inline std::uint32_t packet_items_per_row(std::uint32_t width, std::uint32_t pac
 // 16 chooses it (for comparisons, and for tests of the 16-wide form on any CPU).
 std::uint32_t packet_width_for(unsigned native_float_vector_width);
 
-// The features packet_pass covers: triangle area lights and the environment (the lights
-// it samples; a program needs one of them), spheres and textures; its materials are
-// Lambertian (no other lobe's feature), without alpha (cut-outs), lit by no punctual light.
+// The features packet_pass covers: triangle area lights, punctual lights and the environment
+// (the lights it samples; a program needs one of them), spheres, textures and alpha
+// (cut-outs); its materials are Lambertian (no other lobe's feature).
 FeatureMask packet_features();
 
-// Whether every light of `scene` is one packet_pass samples: an emitting triangle or the
-// environment (emitting spheres are area lights too, of another shape).
+// Whether every light of `scene` is one packet_pass samples: an emitting triangle, a point,
+// spot or directional light, or the environment (emitting spheres are area lights too, of
+// another shape, which it does not sample).
 bool lights_in_packets(const Scene& scene);
 
 // Whether a program with these features, for this sampler (FC_SAMPLER_*), runs packets on
-// this device: its features are within packet_features() and include area lights or the
-// environment, every light is one of those (`packet_lights`: lights_in_packets), the
-// sampler is Sobol' (the lanes' sampler), the program is specialised, and the device is a
-// CPU whose native float vectors are 8 wide or more (where the BVH is 8-wide too:
-// host/bvh/bvh_width.hpp; on GPUs a work-item's float8 is eight lanes' scalar work).
-// FACET_PACKET_PATHS=0 turns packets off (for comparisons); FACET_PACKET_PATHS=1 runs them on
-// any device where the rest holds (for checks: the Oclgrind tier runs packet_pass on its
-// simulated device, whose vectors are 1 wide).
+// this device: its features are within packet_features() and include a light, every light is
+// one packet_pass samples (`packet_lights`: lights_in_packets), the sampler is Sobol' (the
+// lanes' sampler), the program is specialised, and the device is a CPU whose native float
+// vectors are 8 wide or more (where the BVH is 8-wide too: host/bvh/bvh_width.hpp; on GPUs a
+// work-item's float8 is eight lanes' scalar work). FACET_PACKET_PATHS=0 turns packets off (for
+// comparisons); FACET_PACKET_PATHS=1 runs them on any device where the rest holds (for checks:
+// the Oclgrind tier runs packet_pass on its simulated device, whose vectors are 1 wide).
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
                       bool packet_lights, std::uint32_t sampler, bool generic);
 

@@ -1,16 +1,17 @@
 /* Paths in packets (issue 29): render_pass's paths, FC_PACKET_WIDTH a work-item (8 in float8
- * lanes, 16 in float16 on AVX-512 CPUs), with
- * regeneration (a lane starts the next path when its own ends; Novák et al. 2010), for the
- * programs whose scenes it covers: Lambertian materials, textured or not, lit by triangle area
- * lights and the environment, triangles and spheres, and the Sobol' sampler, on CPUs with 8- or 16-wide
- * vectors (host/render/packet_paths.hpp picks it; path.cl includes this file when
- * FC_PACKET_PATHS is 1). The trace, the surface and its textures, the emission met (or the environment, when
- * a ray escapes), the camera ray, the environment's sample and the film's sum run per lane
- * through the scalar functions; the sampler, the frame, a triangle light's sample, MIS, the
- * BSDF and roulette in lanes, through the lane-generic bodies the scalar path runs at W = 1
- * (kernels/lanes/packet.cl). Every sample is the scalar path's, up to the rounding of a few
- * operations written by component here and on float3 there, and the order in which a
- * pixel's samples are added: PacketRender.* demands each pixel within 1e-4 of render_pass's. */
+ * lanes, 16 in float16 on AVX-512 CPUs), with regeneration (a lane starts the next path when
+ * its own ends; Novák et al. 2010), for the programs whose scenes it covers: Lambertian
+ * materials, textured or not, cut out or not, lit by triangle area lights, the environment
+ * and punctual lights, made of triangles and spheres, with the Sobol' sampler, on CPUs with
+ * 8- or 16-wide vectors (host/render/packet_paths.hpp picks it; path.cl includes this file
+ * when FC_PACKET_PATHS is 1). The trace, the surface and its textures, the emission met (or
+ * the environment, when a ray escapes), the camera ray, the environment's and a punctual
+ * light's sample and the film's sum run per lane through the scalar functions; the sampler,
+ * the frame, a triangle light's sample, MIS, the BSDF and roulette in lanes, through the
+ * lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). Every sample
+ * is the scalar path's, up to the rounding of a few operations written by component here and
+ * on float3 there, and the order in which a pixel's samples are added: PacketRender.*
+ * demands each pixel within 1e-4 of render_pass's. */
 #ifndef FACET_INTEGRATOR_PACKET_PATHS_CL
 #define FACET_INTEGRATOR_PACKET_PATHS_CL
 
@@ -43,7 +44,7 @@ inline void set_lane3(float* a, int j, float3 v) {
 }
 
 /* Lane j's fields of triangle light l, for its sample in lanes at point u of the square (its
- * emission texture, if any, read there per lane: sample_light's). */
+ * emission texture and its alpha coverage, if any, read there per lane: sample_light's). */
 inline void packet_triangle_light(const SceneView* sc, __global const FcLight* l, int j, float2 u, float* lp0,
                                   float* le1, float* le2, float* ln, float* lc, float* lpick, float* larea,
                                   uint* lflags) {
@@ -55,9 +56,14 @@ inline void packet_triangle_light(const SceneView* sc, __global const FcLight* l
     set_lane3(lc, j,
               load3(l->color) * emission_texture_at(sc, l->prim, sc->shading[l->prim].material, square_to_triangle(u)));
 #else
+    set_lane3(lc, j, load3(l->color));
+#endif
+#if FC_HAS_ALPHA
+    set_lane3(lc, j, lane3(lc, j) * alpha_light_coverage(sc, l->prim, square_to_triangle(u)));
+#endif
+#if !FC_HAS_TEXTURES && !FC_HAS_ALPHA
     (void)sc;
     (void)u;
-    set_lane3(lc, j, load3(l->color));
 #endif
     lpick[j] = l->pick_pdf;
     larea[j] = l->area;
@@ -76,6 +82,46 @@ inline void packet_no_triangle_light(int j, float* lp0, float* le1, float* le2, 
     larea[j] = 1.0f;
     lflags[j] = 0u;
 }
+
+/* The lights a lane samples per lane, where the program has them: the environment and the
+ * punctual lights. */
+#define FC_PACKET_LANE_LIGHTS (FC_HAS_ENVIRONMENT || FC_HAS_PUNCTUAL_LIGHTS)
+
+#if FC_PACKET_LANE_LIGHTS
+/* Light l, the environment or a punctual light, sampled as sample_light does from point p at u
+ * of the square: the radiance (a punctual light's irradiance at normal incidence), the
+ * direction in *wi, the density in *pdf (pick included; 0 where the sample carries nothing,
+ * sample_light's test), the shadow ray's length in *tmax (sample_direct's: short of a point
+ * light, unbounded otherwise) and in *delta whether it is a delta light (-1) or not (0). */
+inline float3 packet_lane_light(const SceneView* sc, __global const FcLight* l, float3 p, float2 u, float3* wi,
+                                float* pdf, float* tmax, int* delta) {
+    float3 li = (float3)(0.0f);
+    float lpdf = 0.0f;
+    *wi = (float3)(0.0f, 0.0f, 1.0f);
+    *tmax = INFINITY;
+    *delta = 0;
+    (void)p;
+    (void)u;
+#if FC_HAS_ENVIRONMENT
+    if (l->type == FC_LIGHT_ENVIRONMENT) {
+        float pdf_dir;
+        li = env_sample(&sc->params->environment, sc->env_texels, sc->env_dist, u, wi, &pdf_dir);
+        lpdf = pdf_dir * l->pick_pdf;
+    }
+#endif
+#if FC_HAS_PUNCTUAL_LIGHTS
+    if (l->type == FC_LIGHT_POINT || l->type == FC_LIGHT_SPOT || l->type == FC_LIGHT_DIRECTIONAL) {
+        float dist;
+        li = punctual_light_irradiance(l, p, wi, &dist);
+        lpdf = l->pick_pdf;
+        *delta = -1;
+        *tmax = isfinite(dist) ? dist * (1.0f - 1e-5f) : dist;
+    }
+#endif
+    *pdf = lpdf > 0.0f && isfinite(lpdf) && !is_black(li) && all_finite(li) ? lpdf : 0.0f;
+    return li;
+}
+#endif
 
 /* The work-items a row of the image needs: one for every FC_PACKET_W pixels. */
 inline uint packet_items_per_row(uint width) { return (width + FC_PACKET_W - 1u) / FC_PACKET_W; }
@@ -257,36 +303,35 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         float lu1[FC_PACKET_W], lu2[FC_PACKET_W]; /* the light sample's point, lane by lane */
         LSTORE(ul[1], lu1);
         LSTORE(ul[2], lu2);
-#if FC_HAS_ENVIRONMENT
-        /* lanes that picked the environment: its direction and density (pick included) */
-        float ewi[3 * FC_PACKET_W], epdf[FC_PACKET_W];
-        int envl[FC_PACKET_W];
+#if FC_PACKET_LANE_LIGHTS
+        /* lanes whose light is sampled per lane: its direction, density (pick included; 0 for
+         * nothing), shadow ray length, and whether it is a delta light */
+        float xwi[3 * FC_PACKET_W], xpdf[FC_PACKET_W], xtmax[FC_PACKET_W];
+        int xl[FC_PACKET_W], xdelta[FC_PACKET_W];
 #endif
         for (int j = 0; j < FC_PACKET_W; ++j) {
-#if FC_HAS_ENVIRONMENT
-            /* A lane with no path (the queue is empty) samples nothing: it goes as an
-             * environment lane of zero density, since the environment's sample is not cheap. */
-            envl[j] = -1;
-            epdf[j] = 0.0f;
+#if FC_PACKET_LANE_LIGHTS
+            /* A lane with no path (the queue is empty) samples nothing: it goes as a per-lane
+             * light of zero density, since such a sample is not cheap. */
+            xl[j] = -1;
+            xpdf[j] = 0.0f;
+            xtmax[j] = INFINITY;
+            xdelta[j] = 0;
+            set_lane3(xwi, j, (float3)(0.0f, 0.0f, 1.0f));
+            set_lane3(lc, j, (float3)(0.0f));
             if (active[j] && alive[j]) {
                 __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])];
-                if (l->type != FC_LIGHT_ENVIRONMENT) {
-                    envl[j] = 0;
+                if (l->type == FC_LIGHT_AREA_TRIANGLE) {
+                    xl[j] = 0;
                     packet_triangle_light(sc, l, j, (float2)(lu1[j], lu2[j]), lp0, le1, le2, ln, lc, lpick, larea,
                                           lflags);
                     continue;
                 }
-                float3 wi, li;
-                float pdf;
-                li = env_sample(&P->environment, sc->env_texels, sc->env_dist, (float2)(lu1[j], lu2[j]), &wi, &pdf);
-                set_lane3(lc, j, li);
-                set_lane3(ewi, j, wi);
-                /* sample_light's test: a density and a radiance that carry something */
-                const float lpdf = pdf * l->pick_pdf;
-                if (lpdf > 0.0f && isfinite(lpdf) && !is_black(li) && all_finite(li)) epdf[j] = lpdf;
-            } else {
-                set_lane3(lc, j, (float3)(0.0f));
-                set_lane3(ewi, j, (float3)(0.0f, 0.0f, 1.0f));
+                float3 wi;
+                set_lane3(lc, j,
+                          packet_lane_light(sc, l, lane3(p, j), (float2)(lu1[j], lu2[j]), &wi, &xpdf[j], &xtmax[j],
+                                            &xdelta[j]));
+                set_lane3(xwi, j, wi);
             }
             packet_no_triangle_light(j, lp0, le1, le2, ln, lpick, larea, lflags);
 #else
@@ -306,11 +351,11 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LFLOAT pdf_l = LNAME(area_light_pdf_solid_angle)(LLOAD(lpick), LLOAD(larea), dist, cl);
         LINT lit = LNAME(area_light_lit)((LLOAD(lflags) & FC_MAT_TWO_SIDED_EMISSION) != 0u, -cl); /* toward -wi */
         LINT ok = (d2 > 0.0f) & lit;
-#if FC_HAS_ENVIRONMENT
-        const LINT is_env = LLOAD(envl);
-        wi = LNAME(vec3_select)(wi, l3_load(ewi), is_env);
-        pdf_l = select(pdf_l, LLOAD(epdf), is_env);
-        ok = select(ok, (LINT)(-1), is_env);
+#if FC_PACKET_LANE_LIGHTS
+        const LINT is_x = LLOAD(xl);
+        wi = LNAME(vec3_select)(wi, l3_load(xwi), is_x);
+        pdf_l = select(pdf_l, LLOAD(xpdf), is_x);
+        ok = select(ok, (LINT)(-1), is_x);
 #endif
         LFLOAT side = l3_dot(NG, wi);
         LFLOAT wi_z = l3_dot(wi, N);
@@ -318,6 +363,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         ok &= live & (pdf_l > 0.0f) & isfinite(pdf_l) & (side > 0.0f) & (wi_z * side > 0.0f) & (wo_z > 0.0f) &
               (wi_z > 0.0f);
         LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, LNAME(cosine_hemisphere_pdf)(wo_z, wi_z));
+#if FC_HAS_PUNCTUAL_LIGHTS
+        w = select(w, (LFLOAT)(1.0f), LLOAD(xdelta)); /* a delta light: no MIS, under any strategy */
+#endif
         LFLOAT k = select((LFLOAT)(0.0f), fabs(wi_z) * w / pdf_l, ok);
         L3 contrib = l3(T.x * A.x * f_scale * LC.x * k, T.y * A.y * f_scale * LC.y * k, T.z * A.z * f_scale * LC.z * k);
         /* the shadow rays, in lanes: from the offset point to the offset point on a triangle */
@@ -327,10 +375,11 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         L3 seg = l3(target.x - so.x, target.y - so.y, target.z - so.z);
         LFLOAT tmax = sqrt(l3_dot(seg, seg));
         L3 sdir = l3(seg.x / tmax, seg.y / tmax, seg.z / tmax);
-#if FC_HAS_ENVIRONMENT
-        /* toward the environment: along the sampled direction, unbounded */
-        sdir = LNAME(vec3_select)(sdir, wi, is_env);
-        tmax = select(tmax, (LFLOAT)(INFINITY), is_env);
+#if FC_PACKET_LANE_LIGHTS
+        /* toward a per-lane light: along its direction, to its distance (unbounded for the
+         * environment and a directional light) */
+        sdir = LNAME(vec3_select)(sdir, wi, is_x);
+        tmax = select(tmax, LLOAD(xtmax), is_x);
 #endif
         ok &= tmax > 0.0f;
         float cx[3 * FC_PACKET_W], so_a[3 * FC_PACKET_W], sd_a[3 * FC_PACKET_W], tmax_a[FC_PACKET_W];
