@@ -12,9 +12,11 @@
 
 namespace facet {
 
-// packet_pass's work-items: one for every `packet_width` pixels of a row.
-inline std::uint32_t packet_items_per_row(std::uint32_t width, std::uint32_t packet_width) {
-    return (width + packet_width - 1u) / packet_width;
+// packet_pass's work-items for a row of `width` pixels in a launch of `samples` samples per
+// pixel: one for every fc_packet_pixels (kernels/shared/render_layout.h) pixels.
+inline std::uint32_t packet_items_per_row(std::uint32_t width, std::uint32_t packet_width, std::uint32_t samples) {
+    const std::uint32_t run = fc_packet_pixels(packet_width, width, samples);
+    return (width + run - 1u) / run;
 }
 
 // The packets' width on a device whose native float vectors are this wide: 16 where they are

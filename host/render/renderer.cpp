@@ -116,7 +116,7 @@ void Renderer::launch_samples(std::uint64_t first, std::uint32_t count, std::uin
         // specialise kernels per launch geometry (PoCL does) then build them once.
         std::size_t items =
             std::size_t(p.row_count) *
-            (stats_.packet_paths ? packet_items_per_row(params_.width, stats_.packet_width) : params_.width);
+            (stats_.packet_paths ? packet_items_per_row(params_.width, stats_.packet_width, count) : params_.width);
         std::size_t global = (items + local_size_ - 1) / local_size_ * local_size_;
         ctx_.queue().enqueueNDRangeKernel(kernel_, cl::NullRange, cl::NDRange(global), cl::NDRange(local_size_));
         ctx_.queue().finish();

@@ -123,26 +123,27 @@ inline float3 packet_lane_light(const SceneView* sc, __global const FcLight* l, 
 }
 #endif
 
-/* The work-items a row of the image needs: one for every FC_PACKET_W pixels. */
-inline uint packet_items_per_row(uint width) { return (width + FC_PACKET_W - 1u) / FC_PACKET_W; }
-
-/* Work-item g renders samples [sample_begin, sample_begin + sample_count) of FC_PACKET_W
- * consecutive pixels of a row (fewer at the row's end). Their paths form one queue, sample by
- * sample, each sample's pixels in order; a lane takes the queue's next path when its last one
- * ends, whichever pixel that is. So the lanes stay busy until the work-item's last eight paths,
- * however the path lengths fall among the pixels, and a row's last work-item fills its lanes
- * too. Each pixel's samples are added to its sums as their paths end, not in index order. */
+/* Work-item g renders samples [sample_begin, sample_begin + sample_count) of fc_packet_pixels
+ * consecutive pixels of a row (fewer at the row's end): FC_PACKET_W, or a multiple of it when
+ * the launch has few samples per pixel, so that each lane gets FC_PACKET_PATHS_PER_LANE paths
+ * or more. Their paths form one queue, sample by sample, each sample's pixels in order; a lane
+ * takes the queue's next path when its last one ends, whichever pixel that is. So the lanes
+ * stay busy until the work-item's last paths, however the path lengths fall among the
+ * pixels, and a row's last work-item fills its lanes too. A path's sample is added to its
+ * pixel's half in the accumulation buffer as the path ends (the work-item alone writes its
+ * pixels in a launch), not in index order. */
 __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
-    const uint groups = packet_items_per_row(params->width);
+    const uint run = fc_packet_pixels(FC_PACKET_W, params->width, params->sample_count);
+    const uint groups = (params->width + run - 1u) / run;
     uint gid = get_global_id(0);
-    uint x0 = (gid % groups) * FC_PACKET_W;
+    uint x0 = (gid % groups) * run;
     uint y = params->row_begin + gid / groups;
     if (gid / groups >= params->row_count || y >= params->height) return;
     SceneView scv = FC_SCENE_VIEW_INIT;
     const SceneView* sc = &scv;
     __constant const FcRenderParams* P = params;
-    float4 sum[FC_PACKET_W][2]; /* each pixel's two half-sums and second moments */
-    float square[FC_PACKET_W][2];
+    const uint pixels = params->width * params->height;
+    __global float* squares = (__global float*)(accum + 2u * pixels); /* the second moments */
 
     /* per-lane state, in arrays (lane j at [j], 3-vectors as x[0..W-1] y[W..2W-1] z[2W..3W-1]) */
     float o[3 * FC_PACKET_W], d[3 * FC_PACKET_W], thr[3 * FC_PACKET_W], rad[3 * FC_PACKET_W], p[3 * FC_PACKET_W],
@@ -157,7 +158,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     uint slot[FC_PACKET_W], index[FC_PACKET_W], depth[FC_PACKET_W], seed[FC_PACKET_W], irev[FC_PACKET_W];
     int active[FC_PACKET_W], alive[FC_PACKET_W];
     /* the queue: path q is sample sample_begin + q / pixels of pixel x0 + q % pixels */
-    const uint pixels_here = min((uint)FC_PACKET_W, params->width - x0);
+    const uint pixels_here = min(run, params->width - x0);
     const uint queue = pixels_here * params->sample_count;
     uint next = 0u;
     for (int j = 0; j < FC_PACKET_W; ++j) {
@@ -166,8 +167,6 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         depth[j] = 0u;
         slot[j] = 0u;
         index[j] = 0u;
-        sum[j][0] = sum[j][1] = (float4)(0.0f);
-        square[j][0] = square[j][1] = 0.0f;
     }
     for (;;) {
         /* A: per lane, until it has a surface to shade or the queue is empty: a finished path
@@ -179,8 +178,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             while (active[j]) {
                 if (!alive[j]) {
                     if (depth[j] == PATH_ENDED) {
-                        uint k = slot[j], h = index[j] & 1u;
-                        film_add_sample(lane3(rad, j), fweight[j], params->clamp, &sum[k][h], &square[k][h]);
+                        const uint at = (index[j] & 1u) * pixels + y * params->width + x0 + slot[j];
+                        float4 sum = (float4)(0.0f);
+                        float square = 0.0f;
+                        film_add_sample(lane3(rad, j), fweight[j], params->clamp, &sum, &square);
+                        accum[at] += sum;
+                        squares[at] += square;
                     }
                     if (next >= queue) {
                         active[j] = 0;
@@ -424,15 +427,6 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             }
             depth[j] += 1u;
         }
-    }
-    uint pixels = params->width * params->height;
-    __global float* squares = (__global float*)(accum + 2u * pixels);
-    for (uint j = 0; j < FC_PACKET_W && x0 + j < params->width; ++j) {
-        uint pixel = y * params->width + x0 + j;
-        accum[pixel] += sum[j][0];
-        accum[pixels + pixel] += sum[j][1];
-        squares[pixel] += square[j][0];
-        squares[pixels + pixel] += square[j][1];
     }
 }
 

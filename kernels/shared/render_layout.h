@@ -43,13 +43,36 @@ enum { FC_SAMPLER_LIST(FC_RENDER_ENUM_VALUE) FC_SAMPLER_COUNT };
  * are clamped to it): 2^24 samples of it sum to 1.7e37, finite like the sums. */
 #define FC_MAX_SQUARE 1e30f
 
-/* Paths a work-item of packet_pass (kernels/integrator/packet_paths.cl), which renders as
- * many pixels of a row, so a row takes ceil(width / FC_PACKET_WIDTH) work-items: 8, or 16 on
+/* Paths a work-item of packet_pass (kernels/integrator/packet_paths.cl) runs at once, in
+ * lanes (it renders a multiple of as many pixels of a row: fc_packet_pixels): 8, or 16 on
  * CPUs whose native float vectors are 16 wide (AVX-512), where the host defines it in the
  * program's prelude (host/render/packet_paths.hpp, packet_width_for). */
 #ifndef FC_PACKET_WIDTH
 #define FC_PACKET_WIDTH 8
 #endif
+
+/* The least number of paths a packet_pass work-item's queue gives each lane. A lane idles
+ * once the queue is empty, until the work-item's last path ends: with one path a lane (a
+ * pass of one sample per pixel, as the progressive schedule's first passes are) the lanes
+ * idle about half the time, waiting for the packet's longest path (docs/performance.md). */
+#define FC_PACKET_PATHS_PER_LANE 16u
+
+/* The pixels of a row one packet_pass work-item renders in a launch of `samples` samples per
+ * pixel: `packet_width` times the least factor that gives every lane FC_PACKET_PATHS_PER_LANE
+ * paths, but no more than the row holds (a row of `width` pixels). */
+#if defined(__OPENCL_VERSION__) || defined(__OPENCL_C_VERSION__)
+inline uint fc_packet_pixels(uint packet_width, uint width, uint samples)
+#else
+static inline fc_uint fc_packet_pixels(fc_uint packet_width, fc_uint width, fc_uint samples)
+#endif
+{
+    const fc_uint s = samples > 0u ? samples : 1u;
+    const fc_uint row = (width + packet_width - 1u) / packet_width;
+    fc_uint m = (FC_PACKET_PATHS_PER_LANE + s - 1u) / s;
+    if (m > row) m = row;
+    if (m < 1u) m = 1u;
+    return packet_width * m;
+}
 
 /* A pinhole, thin-lens or orthographic camera. `right` and `up` span half the image
  * plane: for a perspective camera at distance 1 along `forward` (so |up| =
