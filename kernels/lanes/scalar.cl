@@ -1,6 +1,7 @@
 /* The lane-generic bodies at the widths the one-path-per-work-item kernels use: W = 1
  * (their scalar functions are these), and W = 4 for the sampler's hashes, which scramble a
- * dimension set's four coordinates in one uint4. kernels/lanes/packet.cl instantiates the
+ * dimension set's four coordinates in one uint4, and for the ray/triangle test, which meets
+ * a leaf block's four triangles at once (kernels/trace/triangle.cl). kernels/lanes/packet.cl instantiates the
  * same bodies at W = 8. */
 #ifndef FACET_LANES_SCALAR_CL
 #define FACET_LANES_SCALAR_CL
@@ -25,7 +26,9 @@
 
 #define FC_LW 4
 #include "kernels/lanes/lanes_open.cl"
+#include "kernels/lanes/vec3_lanes.cl"
 #include "kernels/util/hash_lanes.cl"
+#include "kernels/trace/triangle_lanes.cl"
 #include "kernels/lanes/lanes_close.cl"
 
 #endif

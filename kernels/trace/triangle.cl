@@ -58,83 +58,19 @@ inline Tri4 tri4_load(__global const float4* rows, const TriRay* r) {
     return p;
 }
 
-/* gamma(n) = n eps / (1 - n eps), eps = 2^-24: bounds of n roundings (pbrt-v3 3.9.1). */
-#define FC_GAMMA2 1.1920930376163766e-07f
-#define FC_GAMMA3 1.788139663006007e-07f
-#define FC_GAMMA5 2.9802331269482156e-07f
+/* The test's body, written once over lanes (kernels/trace/triangle_lanes.cl): tri_hit_l4
+ * here, at the packet's width in kernels/lanes/packet.cl. */
+#include "kernels/lanes/scalar.cl"
 
-/* a*b - c*d with an error under 1.5 ulps, so its sign is exact (Kahan's algorithm
- * with fma); the paper falls back to double precision instead, which OpenCL C 1.2
- * devices need not have. */
-inline float4 diff_of_products4(float4 a, float4 b, float4 c, float4 d) {
-    float4 cd = c * d;
-    float4 err = fma(-c, d, cd);
-    return fma(a, b, -cd) + err;
-}
-
-/* Lanes hit with t < tmax and t above its rounding error (below): -1 in the mask; their distance in *t and their scaled
- * barycentrics (edge functions v, w of vertices b and c, and their sum det) for
- * tri4_weights(). Lanes whose three vertices are equal (a block's padding) never hit. */
+/* Lanes hit with t < tmax and t above its rounding error: -1 in the mask; their distance in
+ * *t and their scaled barycentrics (edge functions v, w of vertices b and c, and their sum
+ * det) for tri4_weights(). Lanes whose three vertices are equal (a block's padding) never
+ * hit. */
 __attribute__((always_inline)) inline int4 tri4_hit(const TriRay* r, const Tri4* p, float tmax, float4* t_out,
                                                     float4* v_out, float4* w_out, float4* det_out) {
-    /* No fma contraction: the edge functions of a shared edge must be exact negatives
-     * of each other in the two triangles (OpenCL C contracts by default). */
-#pragma OPENCL FP_CONTRACT OFF
-    /* Translate to the origin, then shear. */
-    float4 az = p->az - r->oz, bz = p->bz - r->oz, cz = p->cz - r->oz;
-    float4 ax = (p->ax - r->ox) - r->sx * az, ay = (p->ay - r->oy) - r->sy * az;
-    float4 bx = (p->bx - r->ox) - r->sx * bz, by = (p->by - r->oy) - r->sy * bz;
-    float4 cx = (p->cx - r->ox) - r->sx * cz, cy = (p->cy - r->oy) - r->sy * cz;
-
-    /* Scaled barycentrics: the edge functions. */
-    float4 u = cx * by - cy * bx;
-    float4 v = ax * cy - ay * cx;
-    float4 w = bx * ay - by * ax;
-    const int4 on_edge = (u == 0.0f) | (v == 0.0f) | (w == 0.0f);
-    if (any(on_edge)) { /* recompute those lanes exactly-signed */
-        u = select(u, diff_of_products4(cx, by, cy, bx), on_edge);
-        v = select(v, diff_of_products4(ax, cy, ay, cx), on_edge);
-        w = select(w, diff_of_products4(bx, ay, by, ax), on_edge);
-    }
-    /* Inside: the three edge functions of one sign (zero counts as either). The masks
-     * are built without a vector NOT: Oclgrind 21.10 evaluates `xor <4 x i1> m, true`,
-     * which LLVM makes of ~mask, to lanes of 1 or -2 instead of -1 and 0. */
-    const float4 det = u + v + w;
-    const int4 inside = ((u >= 0.0f) & (v >= 0.0f) & (w >= 0.0f)) | ((u <= 0.0f) & (v <= 0.0f) & (w <= 0.0f));
-
-    /* Scaled distance, divided by det (no lane traps on a zero det: it is a miss). */
-    az *= r->sz;
-    bz *= r->sz;
-    cz *= r->sz;
-    const float4 tt = u * az + v * bz + w * cz;
-    float4 t = tt / det;
-    /* Edge functions ~ size^2 times distances ~ size overflow past ~5e12 (the scene
-     * format allows 1e18): then weight the distances by the barycentrics instead. */
-    const int4 overflow = isinf(tt) | isnan(tt);
-    if (any(overflow)) t = select(t, (u / det) * az + (v / det) * bz + (w / det) * cz, overflow);
-    /* A hit nearer than the rounding error of t is no hit (pbrt-v3 section 3.9.6, its
-     * deltaT, with the error of the edge functions and of the sheared coordinates): a ray
-     * leaving a surface whose origin offset (ray.cl) is below the rounding of the other
-     * triangles' coordinates cannot hit that surface again. The edge function terms are
-     * divided by det before they meet the distances, so that the bound does not overflow
-     * at the scene format's 1e18. Only blocks with a hit pay for it (most have none). */
-    int4 hit = inside & (det != 0.0f) & (t > 0.0f) & (t < tmax);
-    if (any(hit)) {
-        const float4 max_x = fmax(fmax(fabs(ax), fabs(bx)), fabs(cx));
-        const float4 max_y = fmax(fmax(fabs(ay), fabs(by)), fabs(cy));
-        const float4 max_z = fmax(fmax(fabs(az), fabs(bz)), fabs(cz));
-        const float4 inv_det = fabs(1.0f / det);
-        const float4 delta_x = FC_GAMMA5 * (max_x + max_z), delta_y = FC_GAMMA5 * (max_y + max_z);
-        const float4 delta_e = 2.0f * (FC_GAMMA2 * max_x * max_y + delta_y * max_x + delta_x * max_y) * inv_det;
-        const float4 max_e = fmax(fmax(fabs(u), fabs(v)), fabs(w)) * inv_det;
-        const float4 delta_t = 3.0f * (FC_GAMMA3 * max_e * max_z + delta_e * max_z + FC_GAMMA3 * max_z * max_e);
-        hit &= t > delta_t;
-    }
-    *t_out = t;
-    *v_out = v;
-    *w_out = w;
-    *det_out = det;
-    return hit;
+    return tri_hit_l4((float4)(r->ox), (float4)(r->oy), (float4)(r->oz), (float4)(r->sx), (float4)(r->sy),
+                      (float4)(r->sz), p->ax, p->ay, p->az, p->bx, p->by, p->bz, p->cx, p->cy, p->cz, (float4)(tmax),
+                      t_out, v_out, w_out, det_out);
 }
 
 /* The barycentric weights u (of vertex b) and v (of c) of lane `lane`. */
