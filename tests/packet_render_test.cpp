@@ -48,6 +48,14 @@ private:
     std::string was_;
 };
 
+// A tree of this node width (4 or 8), quantised (8-wide) or not.
+BvhOptions nodes(int width, int quantised) {
+    BvhOptions o;
+    o.width = width;
+    o.quantised = quantised;
+    return o;
+}
+
 bool packets_here() {
     ClContext& ctx = test::context();
     return packet_paths_for(ctx.desc(), ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>(),
@@ -56,14 +64,18 @@ bool packets_here() {
 
 // Renders `scene` at 37x29 in passes of 1, 2 and 21 samples by packet_pass, in packets of
 // `packet_width` (FACET_PACKET_WIDTH: both widths run on any CPU that runs packets), and by
-// render_pass, and compares the images.
-void expect_packets_match_the_scalar_kernel(Scene scene, const char* name, const char* packet_width) {
+// render_pass, and compares the images. The tree is 8-wide with float boxes unless `bvh_options`
+// say otherwise: what `facet render` builds for such a scene on CPUs that run packets, and the
+// nodes the packets' rays are traced through together (kernels/trace/packet_trace.cl); on
+// 4-wide nodes they are traced one by one.
+void expect_packets_match_the_scalar_kernel(Scene scene, const char* name, const char* packet_width,
+                                            BvhOptions bvh_options = nodes(8, 0)) {
     if (!packets_here()) GTEST_SKIP() << "this device runs no packets (not a CPU with 8-wide vectors)";
     // 37 wide: the last work-item of a row has 5 pixels (at 16: 5)
     const std::uint32_t width = 37, height = 29, spp = 24;
     scene.settings.width = width;
     scene.settings.height = height;
-    const Bvh bvh = build_bvh(scene.vertices, BvhOptions{});
+    const Bvh bvh = build_bvh(scene.vertices, bvh_options);
     ScopedEnv lanes("FACET_PACKET_WIDTH", packet_width);
     Renderer packets(test::context(), scene, bvh);
     ASSERT_TRUE(packets.stats().packet_paths) << name << " on this CPU should run packets";
@@ -102,6 +114,16 @@ void expect_packets_match_the_scalar_kernel(Scene scene, const char* name, const
 TEST(PacketRender, SameImageAsTheScalarKernel) {
     for (const char* w : {"8", "16"})
         expect_packets_match_the_scalar_kernel(load_scene(test::scenes_dir() + "/cornell_box.json"), "Cornell box", w);
+}
+
+// The Cornell box on the other node layouts: quantised 8-wide nodes (rays traced in packets,
+// the boxes decoded per child) and 4-wide ones (rays traced one by one).
+TEST(PacketRender, SameImageAsTheScalarKernelOnEveryNodeLayout) {
+    const Scene scene = load_scene(test::scenes_dir() + "/cornell_box.json");
+    for (const char* w : {"8", "16"}) {
+        expect_packets_match_the_scalar_kernel(scene, "Cornell box, quantised 8-wide nodes", w, nodes(8, 1));
+        expect_packets_match_the_scalar_kernel(scene, "Cornell box, 4-wide nodes", w, nodes(4, 0));
+    }
 }
 
 // Every material of `scene` Lambertian, its diffuse colour kept (a black one made grey).

@@ -39,6 +39,11 @@ std::uint32_t packet_width_for(unsigned native_float_vector_width) {
     return native_float_vector_width >= 16 ? 16u : 8u;
 }
 
+bool packet_trace_enabled() {
+    const char* env = std::getenv("FACET_PACKET_TRACE");
+    return !(env && std::strcmp(env, "0") == 0);
+}
+
 const char* packet_paths_requirements() {
     return "packets need Lambertian materials, no emitting spheres, and the sobol sampler";
 }

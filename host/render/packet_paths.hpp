@@ -45,6 +45,11 @@ bool lights_in_packets(const Scene& scene);
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
                       bool packet_lights, std::uint32_t sampler, bool generic);
 
+// Whether packet_pass traces its rays in packets where it can (kernels/trace/packet_trace.cl:
+// on 8-wide nodes, without cut-outs); FACET_PACKET_TRACE=0 traces them one by one (for
+// comparisons).
+bool packet_trace_enabled();
+
 // What packet_paths_for asks, said for `facet info` when a program does not run packets.
 const char* packet_paths_requirements();
 

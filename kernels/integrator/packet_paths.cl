@@ -4,9 +4,11 @@
  * materials, textured or not, cut out or not, lit by triangle area lights, the environment
  * and punctual lights, made of triangles and spheres, with the Sobol' sampler, on CPUs with
  * 8- or 16-wide vectors (host/render/packet_paths.hpp picks it; path.cl includes this file
- * when FC_PACKET_PATHS is 1). The trace, the surface and its textures, the emission met (or
- * the environment, when a ray escapes), the camera ray, the environment's and a punctual
- * light's sample and the film's sum run per lane through the scalar functions; the sampler,
+ * when FC_PACKET_PATHS is 1). The lanes' rays meet the triangles' tree together
+ * (kernels/trace/packet_trace.cl: the same tests, so the same hits but where two triangles
+ * tie); the shadow rays, the surface and its textures, the emission met (or the environment,
+ * when a ray escapes), the camera ray, the environment's and a punctual light's sample and
+ * the film's sum run per lane through the scalar functions; the sampler,
  * the frame, a triangle light's sample, MIS, the BSDF and roulette in lanes, through the
  * lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). Every sample
  * is the scalar path's, up to the rounding of a few operations written by component here and
@@ -41,6 +43,56 @@ inline void set_lane3(float* a, int j, float3 v) {
     a[j] = v.x;
     a[FC_PACKET_W + j] = v.y;
     a[2 * FC_PACKET_W + j] = v.z;
+}
+
+/* Rays in packets through the triangles' tree (kernels/trace/packet_trace.cl): on, unless the
+ * host turns it off (FACET_PACKET_TRACE=0, for comparisons), on CPUs' 8-wide nodes, and not
+ * in programs with cut-outs (whose alpha test runs per ray). */
+#ifndef FC_PACKET_TRACE
+#define FC_PACKET_TRACE 1
+#endif
+#if FC_PACKET_TRACE && FC_W == 8 && !FC_HAS_ALPHA
+#define FC_PACKET_TRACE_ON 1
+#include "kernels/trace/packet_trace.cl"
+#else
+#define FC_PACKET_TRACE_ON 0
+#endif
+
+/* The nearest hits of lanes `need` of the rays (o, d: lane arrays), scene_trace_closest's
+ * for each lane, in hits[j]; the bits of the lanes that hit. With few lanes, or without
+ * packet traversal, lane by lane. */
+inline uint packet_trace_closest(const SceneView* sc, const float* o, const float* d, uint need, const uint* seed,
+                                 const uint* irev, const uint* depth, Hit* hits) {
+    uint met = 0u;
+#if FC_PACKET_TRACE_ON
+    if (popcount(need) >= FC_PACKET_TRACE_MIN) {
+        for (uint rest = need; rest; rest &= rest - 1u) {
+            const uint j = lowest_bit(rest);
+            hits[j].t = INFINITY; /* trace_closest_alpha's start */
+            hits[j].u = 0.0f;
+            hits[j].v = 0.0f;
+            hits[j].prim = -1;
+            hits[j].tri = -1;
+            hits[j].inst = -1;
+        }
+        met = packet_trace_bvh(sc->nodes, o, d, need, hits);
+        for (uint rest = need; rest; rest &= rest - 1u) {
+            const uint j = lowest_bit(rest);
+            if ((met >> j) & 1u) hits[j].prim = sc->tris[hits[j].tri].prim;
+            if (scene_trace_closest_past_triangles(sc, lane3(o, j), lane3(d, j),
+                                                   alpha_ray_seed(seed[j], irev[j], depth[j], 0u), &hits[j]))
+                met |= 1u << j;
+        }
+        return met;
+    }
+#endif
+    for (uint rest = need; rest; rest &= rest - 1u) {
+        const uint j = lowest_bit(rest);
+        if (scene_trace_closest(sc, lane3(o, j), lane3(d, j), INFINITY, alpha_ray_seed(seed[j], irev[j], depth[j], 0u),
+                                &hits[j]))
+            met |= 1u << j;
+    }
+    return met;
 }
 
 /* Lane j's fields of triangle light l, for its sample in lanes at point u of the square (its
@@ -169,49 +221,57 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         index[j] = 0u;
     }
     for (;;) {
-        /* A: per lane, until it has a surface to shade or the queue is empty: a finished path
-         * is added to its pixel's half and the queue's next path started; the ray is traced and
-         * the emission met added. A path that ends here (it escapes, or reaches max_depth) is
-         * replaced at once, so that the lanes' work below runs on full lanes. */
-        bool any_active = false;
-        for (int j = 0; j < FC_PACKET_W; ++j) {
-            while (active[j]) {
-                if (!alive[j]) {
-                    if (depth[j] == PATH_ENDED) {
-                        const uint at = (index[j] & 1u) * pixels + y * params->width + x0 + slot[j];
-                        float4 sum = (float4)(0.0f);
-                        float square = 0.0f;
-                        film_add_sample(lane3(rad, j), fweight[j], params->clamp, &sum, &square);
-                        accum[at] += sum;
-                        squares[at] += square;
-                    }
-                    if (next >= queue) {
-                        active[j] = 0;
-                        break;
-                    }
-                    slot[j] = next % pixels_here;
-                    index[j] = params->sample_begin + next / pixels_here;
-                    next += 1u;
-                    Sampler sm =
-                        sampler_init(params->sampler, params->seed, y * params->width + x0 + slot[j], index[j]);
-                    seed[j] = sm.seed;
-                    irev[j] = sm.index_reversed;
-                    float3 oo, dd;
-                    fweight[j] = pixel_sample_ray(params, x0 + slot[j], y, &sm, &oo, &dd);
-                    set_lane3(o, j, oo);
-                    set_lane3(d, j, dd);
-                    set_lane3(thr, j, (float3)(1.0f));
-                    set_lane3(rad, j, (float3)(0.0f));
-                    prev_pdf[j] = INFINITY;
-#if FC_HAS_TEXTURES
-                    plen[j] = 0.0f;
-#endif
+        /* A: until every lane has a surface to shade or the queue is empty: a finished path is
+         * added to its pixel's half and the queue's next path started (per lane); the rays are
+         * traced (in a packet: packet_trace_closest) and the emission met added (per lane). A
+         * path that ends here (it escapes, or reaches max_depth) is replaced at once and its
+         * new ray traced in the next pass, so that the lanes' work below runs on full lanes. */
+        uint need = 0u; /* the lanes whose ray is to be traced */
+        for (int j = 0; j < FC_PACKET_W; ++j)
+            if (active[j] && alive[j]) need |= 1u << j;
+        for (;;) {
+            for (int j = 0; j < FC_PACKET_W; ++j) {
+                if (!active[j] || alive[j]) continue;
+                if (depth[j] == PATH_ENDED) {
+                    const uint at = (index[j] & 1u) * pixels + y * params->width + x0 + slot[j];
+                    float4 sum = (float4)(0.0f);
+                    float square = 0.0f;
+                    film_add_sample(lane3(rad, j), fweight[j], params->clamp, &sum, &square);
+                    accum[at] += sum;
+                    squares[at] += square;
                     depth[j] = 0u;
-                    alive[j] = 1;
                 }
+                if (next >= queue) {
+                    active[j] = 0;
+                    continue;
+                }
+                slot[j] = next % pixels_here;
+                index[j] = params->sample_begin + next / pixels_here;
+                next += 1u;
+                Sampler sm = sampler_init(params->sampler, params->seed, y * params->width + x0 + slot[j], index[j]);
+                seed[j] = sm.seed;
+                irev[j] = sm.index_reversed;
+                float3 oo, dd;
+                fweight[j] = pixel_sample_ray(params, x0 + slot[j], y, &sm, &oo, &dd);
+                set_lane3(o, j, oo);
+                set_lane3(d, j, dd);
+                set_lane3(thr, j, (float3)(1.0f));
+                set_lane3(rad, j, (float3)(0.0f));
+                prev_pdf[j] = INFINITY;
+#if FC_HAS_TEXTURES
+                plen[j] = 0.0f;
+#endif
+                depth[j] = 0u;
+                alive[j] = 1;
+                need |= 1u << j;
+            }
+            if (!need) break;
+            Hit hits[FC_PACKET_W];
+            const uint met = packet_trace_closest(sc, o, d, need, seed, irev, depth, hits);
+            for (uint rest = need; rest; rest &= rest - 1u) {
+                const int j = (int)lowest_bit(rest);
                 float3 oo = lane3(o, j), dd = lane3(d, j);
-                Hit hit;
-                if (!scene_trace_closest(sc, oo, dd, INFINITY, alpha_ray_seed(seed[j], irev[j], depth[j], 0u), &hit)) {
+                if (!((met >> j) & 1u)) {
 #if FC_HAS_ENVIRONMENT
                     /* escaped: the environment, MIS-weighted against light sampling (path_radiance's) */
                     float env_pdf_d;
@@ -226,6 +286,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                     depth[j] = PATH_ENDED;
                     continue;
                 }
+                Hit hit = hits[j];
                 Surface s = scene_surface_at(sc, &hit, oo, dd);
 #if FC_HAS_TEXTURES
                 /* the textured material, path_radiance's (a private copy per lane) */
@@ -270,10 +331,11 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 set_lane3(p, j, s.p);
                 set_lane3(ng, j, s.ng);
                 set_lane3(ns, j, s.ns);
-                break;
             }
-            any_active |= active[j] != 0;
+            need = 0u;
         }
+        bool any_active = false;
+        for (int j = 0; j < FC_PACKET_W; ++j) any_active |= active[j] != 0;
         if (!any_active) break;
 
         /* C: in lanes, the frame, the light sample and the BSDF sample */
@@ -393,7 +455,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LSTORE(tmax, tmax_a);
         LSTORE(ok, oka);
 
-        /* D: shadow rays per lane */
+        /* D: shadow rays per lane (kernels/trace/packet_trace.cl: not in packets) */
         for (int j = 0; j < FC_PACKET_W; ++j) {
             if (!oka[j]) continue;
             if (!scene_trace_any(sc, lane3(so_a, j), lane3(sd_a, j), tmax_a[j],

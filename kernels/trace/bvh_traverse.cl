@@ -312,14 +312,15 @@ inline intW float_children_hit(__global const FcFloatNode* n, float3 o, float3 i
 #define FC_CHILD(c) (idx[c])
 #endif
 
-/* The traversal shared by trace_closest and trace_any. Per node: all boxes in one go,
+/* The traversal shared by trace_closest and trace_any, from node `start` (the root: 0; a
+ * packet's traversal, kernels/trace/packet_trace.cl, hands a subtree to single rays). Per node: all boxes in one go,
  * then the hit leaves (their hits shorten the ray before any inner child is entered),
  * then the hit inner children, nearest first: with one there is nothing to sort, with
  * two one comparison, with more an insertion sort. The others go on the stack with
  * their entry distance, and an entry farther than the nearest hit found since is
  * dropped when popped, without fetching its node. */
-inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit* hit, bool any,
-                      const AlphaTest* alpha) {
+inline bool trace_bvh_at(__global const FcBvhNode* buffer, int start, float3 o, float3 d, Hit* hit, bool any,
+                         const AlphaTest* alpha) {
     const BoxRay br = box_ray_setup(o, d);
     const TriRay tr = tri_ray_setup(o, d);
     __global const FcNode* nodes = (__global const FcNode*)buffer;
@@ -330,7 +331,7 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
     int stack_node[FC_STACK];
     float stack_t[FC_STACK];
     int sp = 0;
-    int node = 0;
+    int node = start;
     bool found = false;
     for (;;) {
         __global const FcNode* n = &nodes[node];
@@ -382,6 +383,12 @@ inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit*
     }
 }
 #undef FC_CHILD
+
+/* The traversal from the root. */
+inline bool trace_bvh(__global const FcBvhNode* buffer, float3 o, float3 d, Hit* hit, bool any,
+                      const AlphaTest* alpha) {
+    return trace_bvh_at(buffer, 0, o, d, hit, any, alpha);
+}
 
 /* trace_bvh on the tree whose buffer starts `root` FcBvhNode units into `buffer` (an
  * instanced mesh's BLAS, kernels/shared/instance_layout.h): its node and row indices count

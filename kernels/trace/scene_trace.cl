@@ -25,12 +25,10 @@
     (void)(seed)
 #endif
 
-/* Nearest hit with 0 < t < tmax that the alpha test keeps (kernels/trace/alpha_test.cl;
- * `alpha_seed` is the ray's seed): a triangle (hit->tri >= 0; hit->inst >= 0 when met in an
- * instance) or a sphere (FC_HIT_SPHERE). */
-inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed, Hit* hit) {
-    FC_WORLD_ALPHA(alpha_seed);
-    bool found = trace_closest_alpha(sc->nodes, sc->tris, o, d, tmax, hit, alpha);
+/* What lies past the triangles' tree, each only to beat hit->t: in programs built with
+ * FC_HAS_INSTANCES the instances, with FC_HAS_SPHERES the spheres. Whether one was nearer. */
+inline bool scene_trace_closest_past_triangles(const SceneView* sc, float3 o, float3 d, uint alpha_seed, Hit* hit) {
+    bool found = false;
 #if FC_HAS_INSTANCES
     if (trace_instances(sc, o, d, hit, false, alpha_seed)) found = true;
 #endif
@@ -40,13 +38,16 @@ inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float t
         found = true;
     }
 #endif
+    (void)sc;
+    (void)o;
+    (void)d;
+    (void)alpha_seed;
+    (void)hit;
     return found;
 }
 
-/* Whether anything that the alpha test keeps is hit with 0 < t < tmax (shadow rays). */
-inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
-    FC_WORLD_ALPHA(alpha_seed);
-    if (trace_any_alpha(sc->nodes, sc->tris, o, d, tmax, alpha)) return true;
+/* Whether anything past the triangles' tree (instances, spheres) is hit with 0 < t < tmax. */
+inline bool scene_trace_any_past_triangles(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
 #if FC_HAS_INSTANCES || FC_HAS_SPHERES
     Hit hit;
     hit.t = tmax;
@@ -60,7 +61,29 @@ inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax,
 #if FC_HAS_SPHERES
     if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, &hit, true)) return true;
 #endif
+    (void)sc;
+    (void)o;
+    (void)d;
+    (void)tmax;
+    (void)alpha_seed;
     return false;
+}
+
+/* Nearest hit with 0 < t < tmax that the alpha test keeps (kernels/trace/alpha_test.cl;
+ * `alpha_seed` is the ray's seed): a triangle (hit->tri >= 0; hit->inst >= 0 when met in an
+ * instance) or a sphere (FC_HIT_SPHERE). */
+inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed, Hit* hit) {
+    FC_WORLD_ALPHA(alpha_seed);
+    bool found = trace_closest_alpha(sc->nodes, sc->tris, o, d, tmax, hit, alpha);
+    if (scene_trace_closest_past_triangles(sc, o, d, alpha_seed, hit)) found = true;
+    return found;
+}
+
+/* Whether anything that the alpha test keeps is hit with 0 < t < tmax (shadow rays). */
+inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
+    FC_WORLD_ALPHA(alpha_seed);
+    if (trace_any_alpha(sc->nodes, sc->tris, o, d, tmax, alpha)) return true;
+    return scene_trace_any_past_triangles(sc, o, d, tmax, alpha_seed);
 }
 
 #undef FC_WORLD_ALPHA

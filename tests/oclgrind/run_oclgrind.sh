@@ -3,8 +3,9 @@
 # Oclgrind, an OpenCL device simulator that checks every memory access (out of bounds,
 # invalid or unaligned), API errors (--check-api) and data races. A second OpenCL
 # implementation also catches what PoCL tolerates and a GPU driver would not.
-#   1. each demo scene, 8x8 pixels at 2 spp (and the generic program, the packet paths and
-#      the denoiser once), by the CLI;
+#   1. each demo scene, 8x8 pixels at 2 spp (and the generic program, the packet paths, on
+#      4-wide nodes and on 8-wide ones, where their rays are traced in packets, and the
+#      denoiser once), by the CLI;
 #   2. the kernel unit tests that fit (KERNEL_TESTS below) in facet_tests.
 # Any message in Oclgrind's log fails the tier. Oclgrind is picked alone through an ICD
 # file (OCL_ICD_VENDORS), so no selector is needed. Exit 77 (skipped) without oclgrind.
@@ -71,7 +72,13 @@ echo "FACET_PACKET_PATHS=1:"
 run_scene cornell_box.json
 # the environment in packets: met by escaping rays and sampled per lane (a generated sky map)
 run_scene cornell_box.json --env sky
-unset FACET_PACKET_PATHS
+# the rays traced in packets (kernels/trace/packet_trace.cl), which needs the 8-wide nodes
+# facet builds for CPUs with 8-wide vectors (Oclgrind's device gets 4-wide ones): float and
+# quantised boxes
+export FACET_BVH_WIDTH=8
+run_scene cornell_box.json
+FACET_BVH_QUANTISED=1 run_scene cornell_box.json --env sky
+unset FACET_BVH_WIDTH FACET_PACKET_PATHS
 # The AOV pass and facet's denoiser (padded planes, 8-pixel vector loads and stores)
 run_scene cornell_box.json --denoise facet
 

@@ -1,0 +1,4 @@
+/* kernels/test/packet_trace_kernels.cl in packets of 16, quantised nodes. */
+#define FC_PACKET_WIDTH 16
+#define FC_BVH_QUANTISED 1
+#include "kernels/test/packet_trace_kernels.cl"
