@@ -40,6 +40,11 @@ expect info-bvh-layout-forced 0 "quantised boxes \(FACET_BVH_QUANTISED=1\)" -- \
 # Packets of paths where the kernel covers the scene (host/render/packet_paths.hpp).
 expect info-paths-packets 0 "paths +in packets of 8 on CPUs" -- \
     env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/cornell_box.json"
+# ...whose rays are traced in packets in small trees (kernels/trace/packet_trace.cl)
+expect info-packet-rays 0 "their rays traced in packets \(32 triangles: in packets up to 50000\)" -- \
+    env -u FACET_PACKET_PATHS -u FACET_PACKET_TRACE "$FACET" info "$SCENES/cornell_box.json"
+expect info-packet-rays-forced 0 "their rays traced one by one \(FACET_PACKET_TRACE=0\)" -- \
+    env -u FACET_PACKET_PATHS FACET_PACKET_TRACE=0 "$FACET" info "$SCENES/cornell_box.json"
 expect info-paths-scalar 0 "paths +one a work-item \(packets need" -- \
     env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/material_grid.json"
 # A Lambertian sphere lit by an emitting sphere: spheres are covered, sphere lights are not.

@@ -304,5 +304,23 @@ TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
     EXPECT_FALSE(packet_paths_for(cpu, 8, area, true, FC_SAMPLER_INDEPENDENT, false));
 }
 
+// The rays of a packet are traced together in small trees only (kPacketTraceUpToTriangles);
+// FACET_PACKET_TRACE says so whatever the size.
+TEST(PacketRender, RaysInPacketsInSmallTrees) {
+    ScopedEnv unset_first("FACET_PACKET_TRACE", "");
+    unsetenv("FACET_PACKET_TRACE");
+    EXPECT_TRUE(packet_trace_for(32));
+    EXPECT_TRUE(packet_trace_for(kPacketTraceUpToTriangles));
+    EXPECT_FALSE(packet_trace_for(kPacketTraceUpToTriangles + 1));
+    {
+        ScopedEnv off("FACET_PACKET_TRACE", "0");
+        EXPECT_FALSE(packet_trace_for(32));
+    }
+    {
+        ScopedEnv on("FACET_PACKET_TRACE", "1");
+        EXPECT_TRUE(packet_trace_for(1000000));
+    }
+}
+
 }  // namespace
 }  // namespace facet

@@ -14,6 +14,17 @@
 
 namespace facet {
 
+// How packet_pass traces its rays on 8-wide nodes (packet_trace_for), for `facet info`.
+static std::string packet_rays_said(FeatureMask features, std::size_t triangles) {
+    if (features & feature::kALPHA) return "their rays traced one by one (cut-outs)";
+    const char* env = std::getenv("FACET_PACKET_TRACE");
+    const std::string why =
+        env && (std::string(env) == "0" || std::string(env) == "1")
+            ? fmt::format("FACET_PACKET_TRACE={}", env)
+            : fmt::format("{} triangles: in packets up to {}", triangles, kPacketTraceUpToTriangles);
+    return fmt::format("their rays traced {} ({})", packet_trace_for(triangles) ? "in packets" : "one by one", why);
+}
+
 int run_info(const InfoOptions& opt) {
     Scene scene = load_scene(opt.scene);
     for (const std::string& w : scene.warnings) fmt::print(stderr, "facet: warning: {}\n", w);
@@ -85,8 +96,9 @@ int run_info(const InfoOptions& opt) {
     const char* packets_off = std::getenv("FACET_PACKET_PATHS");
     fmt::print("paths       {}\n",
                packet_paths_for(cpu, 8, scene_features(scene), lights_in_packets(scene), dev.params.sampler, false)
-                   ? std::string("in packets of 8 on CPUs with 8-wide vectors, of 16 with 16-wide ones; one a "
-                                 "work-item on GPUs")
+                   ? fmt::format("in packets of 8 on CPUs with 8-wide vectors, of 16 with 16-wide ones, {}; one a "
+                                 "work-item on GPUs",
+                                 packet_rays_said(scene_features(scene), b.triangles))
                : packets_off && std::string(packets_off) == "0"
                    ? std::string("one a work-item (FACET_PACKET_PATHS=0)")
                    : fmt::format("one a work-item ({})", packet_paths_requirements()));

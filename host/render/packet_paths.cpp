@@ -39,9 +39,12 @@ std::uint32_t packet_width_for(unsigned native_float_vector_width) {
     return native_float_vector_width >= 16 ? 16u : 8u;
 }
 
-bool packet_trace_enabled() {
-    const char* env = std::getenv("FACET_PACKET_TRACE");
-    return !(env && std::strcmp(env, "0") == 0);
+bool packet_trace_for(std::size_t tree_triangles) {
+    if (const char* env = std::getenv("FACET_PACKET_TRACE")) {
+        if (std::strcmp(env, "0") == 0) return false;
+        if (std::strcmp(env, "1") == 0) return true;
+    }
+    return tree_triangles <= kPacketTraceUpToTriangles;
 }
 
 const char* packet_paths_requirements() {

@@ -4,6 +4,7 @@
 // samples (PacketRender.* checks it).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "host/cl/runtime.hpp"
@@ -45,10 +46,17 @@ bool lights_in_packets(const Scene& scene);
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
                       bool packet_lights, std::uint32_t sampler, bool generic);
 
-// Whether packet_pass traces its rays in packets where it can (kernels/trace/packet_trace.cl:
-// on 8-wide nodes, without cut-outs); FACET_PACKET_TRACE=0 traces them one by one (for
-// comparisons).
-bool packet_trace_enabled();
+// The largest triangles' tree whose rays packet_pass traces in packets
+// (kernels/trace/packet_trace.cl). A packet meets every leaf one of its rays needs, so its
+// gain falls as the tree grows and its rays part: Cornell box (32 triangles) +3-6 %, Spot
+// (5.9 k) +19 %, the bunny (69 k) even, dragon_res2 (203 k) -13 % samples per second
+// (docs/performance.md, "Rays traced in packets").
+inline constexpr std::size_t kPacketTraceUpToTriangles = 50000;
+
+// Whether packet_pass traces its rays in packets, where it can (on 8-wide nodes, without
+// cut-outs), for a triangles' tree of this size: up to kPacketTraceUpToTriangles.
+// FACET_PACKET_TRACE=0 or 1 says so whatever the size (for comparisons and checks).
+bool packet_trace_for(std::size_t tree_triangles);
 
 // What packet_paths_for asks, said for `facet info` when a program does not run packets.
 const char* packet_paths_requirements();

@@ -41,7 +41,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
         stats_.packet_width = packet_width_for(native_width);
         prelude.push_back("#define FC_PACKET_PATHS 1");
         prelude.push_back(fmt::format("#define FC_PACKET_WIDTH {}", stats_.packet_width));
-        if (!packet_trace_enabled()) prelude.push_back("#define FC_PACKET_TRACE 0");
+        if (!packet_trace_for(bvh.stats.triangles)) prelude.push_back("#define FC_PACKET_TRACE 0");
     }
     prelude.insert(prelude.end(), extra_prelude.begin(), extra_prelude.end());
     build_ = build_program(ctx, kRenderProgram, prelude);
