@@ -335,6 +335,18 @@ inline Rays random_rays(const std::vector<glm::vec3>& soup, std::size_t count, f
     return rays;
 }
 
+// Nine small triangles in a 3 x 3 grid, each a little higher than the last: scenes of their
+// first 1, 7, 8 or 9 fill an 8-wide root with leaves or need a second node.
+inline std::vector<glm::vec3> nine_triangles() {
+    std::vector<glm::vec3> all;
+    for (int i = 0; i < 9; ++i) {
+        const glm::vec3 at(static_cast<float>(i % 3) * 1.5f, static_cast<float>(i / 3) * 1.5f,
+                           0.2f * static_cast<float>(i));
+        all.insert(all.end(), {at, at + glm::vec3(1.0f, 0.0f, 0.1f), at + glm::vec3(0.0f, 1.0f, -0.1f)});
+    }
+    return all;
+}
+
 // ---- layouts against each other -------------------------------------------------------
 
 // Two layouts' traversals over trees collapsed from the same binary tree (the same

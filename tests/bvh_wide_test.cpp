@@ -42,12 +42,7 @@ TEST(BvhWide, EightWideHitsEqualFourWideOnMeshes) {
 // root holds up to eight leaves, the ninth needs a second node; both widths against
 // brute force and against each other.
 TEST(BvhWide, EightWideSmallScenes) {
-    std::vector<glm::vec3> all;
-    for (int i = 0; i < 9; ++i) {
-        const glm::vec3 at(static_cast<float>(i % 3) * 1.5f, static_cast<float>(i / 3) * 1.5f,
-                           0.2f * static_cast<float>(i));
-        all.insert(all.end(), {at, at + glm::vec3(1.0f, 0.0f, 0.1f), at + glm::vec3(0.0f, 1.0f, -0.1f)});
-    }
+    const std::vector<glm::vec3> all = nine_triangles();
     for (std::size_t n : {1u, 7u, 8u, 9u})
         for (int leaf : {1, 8}) {
             SCOPED_TRACE(testing::Message() << n << " triangles, leaves of up to " << leaf);

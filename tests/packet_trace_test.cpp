@@ -134,12 +134,7 @@ TEST(PacketTrace, SameHitsOnDegenerateSoups) {
 
 // 1, 7, 8 and 9 triangles: a root of leaves alone, and one with an inner child.
 TEST(PacketTrace, SameHitsOnSmallScenes) {
-    std::vector<glm::vec3> all;
-    for (int i = 0; i < 9; ++i) {
-        const glm::vec3 at(static_cast<float>(i % 3) * 1.5f, static_cast<float>(i / 3) * 1.5f,
-                           0.2f * static_cast<float>(i));
-        all.insert(all.end(), {at, at + glm::vec3(1.0f, 0.0f, 0.1f), at + glm::vec3(0.0f, 1.0f, -0.1f)});
-    }
+    const std::vector<glm::vec3> all = nine_triangles();
     for (std::size_t n : {1u, 7u, 8u, 9u})
         for (int leaf : {1, 8}) {
             SCOPED_TRACE(testing::Message() << n << " triangles, leaves of up to " << leaf);

@@ -172,6 +172,15 @@ inline uint lane_bits_w(int4 m) { return lane_bits(m); }
 #error "FC_BVH_WIDTH must be 4 or 8"
 #endif
 
+/* The entry and exit distances tn, tf of a box test narrowed by one axis' entry t0 and exit
+ * t1, in lanes (children, or a packet's rays): NaN entries and exits are ignored (select
+ * keeps the running value where the comparison is false). */
+#define FC_SLAB_NARROW(tn, tf, t0, t1) \
+    do {                               \
+        tn = select(tn, t0, t0 > tn);  \
+        tf = select(tf, t1, t1 < tf);  \
+    } while (0)
+
 /* All children of a node at once: the node's boxes are structure-of-arrays, so each
  * slab is one FC_W-lane operation over the children. The near and far planes are
  * picked by the direction's signs through row indices set up once per ray (near[a],
@@ -193,12 +202,9 @@ inline intW slabs_hit(floatW nx, floatW fx, floatW ny, floatW fy, floatW nz, flo
     t1y *= FC_SLAB_SCALE;
     t1z *= FC_SLAB_SCALE;
     floatW tn = (floatW)(0.0f), tf = (floatW)(tmax);
-    tn = select(tn, t0x, t0x > tn);
-    tf = select(tf, t1x, t1x < tf);
-    tn = select(tn, t0y, t0y > tn);
-    tf = select(tf, t1y, t1y < tf);
-    tn = select(tn, t0z, t0z > tn);
-    tf = select(tf, t1z, t1z < tf);
+    FC_SLAB_NARROW(tn, tf, t0x, t1x);
+    FC_SLAB_NARROW(tn, tf, t0y, t1y);
+    FC_SLAB_NARROW(tn, tf, t0z, t1z);
     *tnear = tn;
     return tn <= tf;
 }

@@ -140,12 +140,9 @@ inline LINT packet_box_hit(const PacketRays* r, float lx, float ly, float lz, fl
     const LFLOAT t1x = select(bx, ax, r->nx) * FC_SLAB_SCALE, t1y = select(by, ay, r->ny) * FC_SLAB_SCALE,
                  t1z = select(bz, az, r->nz) * FC_SLAB_SCALE;
     LFLOAT tn = (LFLOAT)(0.0f), tf = t;
-    tn = select(tn, t0x, t0x > tn);
-    tf = select(tf, t1x, t1x < tf);
-    tn = select(tn, t0y, t0y > tn);
-    tf = select(tf, t1y, t1y < tf);
-    tn = select(tn, t0z, t0z > tn);
-    tf = select(tf, t1z, t1z < tf);
+    FC_SLAB_NARROW(tn, tf, t0x, t1x);
+    FC_SLAB_NARROW(tn, tf, t0y, t1y);
+    FC_SLAB_NARROW(tn, tf, t0z, t1z);
     *tnear = tn;
     return tn <= tf;
 }
@@ -156,6 +153,41 @@ typedef struct {
     LFLOAT t, u, v;
     LINT tri;
 } PacketHits;
+
+/* The packet's hits from hits[0..W-1] (every lane read; lanes not traced are not used). */
+inline PacketHits packet_hits_load(const Hit* hits) {
+    float t[FC_PACKET_W], u[FC_PACKET_W], v[FC_PACKET_W];
+    int tri[FC_PACKET_W];
+    for (int j = 0; j < FC_PACKET_W; ++j) {
+        t[j] = hits[j].t;
+        u[j] = hits[j].u;
+        v[j] = hits[j].v;
+        tri[j] = hits[j].tri;
+    }
+    PacketHits h;
+    h.t = LLOAD(t);
+    h.u = LLOAD(u);
+    h.v = LLOAD(v);
+    h.tri = LLOAD(tri);
+    return h;
+}
+
+/* Lanes `bits` of the packet's hits into hits[j]. */
+inline void packet_hits_store(const PacketHits* h, uint bits, Hit* hits) {
+    float t[FC_PACKET_W], u[FC_PACKET_W], v[FC_PACKET_W];
+    int tri[FC_PACKET_W];
+    LSTORE(h->t, t);
+    LSTORE(h->u, u);
+    LSTORE(h->v, v);
+    LSTORE(h->tri, tri);
+    for (uint rest = bits; rest; rest &= rest - 1u) {
+        const uint j = lowest_bit(rest);
+        hits[j].t = t[j];
+        hits[j].u = u[j];
+        hits[j].v = v[j];
+        hits[j].tri = tri[j];
+    }
+}
 
 /* The triangles of a leaf's `blocks` blocks from row `row` (the first `count` of them; all
  * four of every block where count is not known: padding never hits) against lanes m. */
@@ -200,21 +232,7 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
     __global const FcNode* nodes = (__global const FcNode*)buffer;
     __global const float4* rows = (__global const float4*)buffer;
     const PacketRays r = packet_rays_setup(o, d);
-    PacketHits h;
-    {
-        float t[FC_PACKET_W], u[FC_PACKET_W], v[FC_PACKET_W];
-        int tri[FC_PACKET_W];
-        for (int j = 0; j < FC_PACKET_W; ++j) {
-            t[j] = hits[j].t;
-            u[j] = hits[j].u;
-            v[j] = hits[j].v;
-            tri[j] = hits[j].tri;
-        }
-        h.t = LLOAD(t);
-        h.u = LLOAD(u);
-        h.v = LLOAD(v);
-        h.tri = LLOAD(tri);
-    }
+    PacketHits h = packet_hits_load(hits);
     uint found = 0u, alone = 0u; /* lanes that met a triangle: in packets, alone */
     int stack_node[FC_STACK];
     uint stack_bits[FC_STACK];
@@ -222,34 +240,16 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
     int node = 0;
     for (;;) {
         if (popcount(bits) < FC_PACKET_TRACE_MIN) {
-            /* the few rays left finish this subtree alone */
-            float t[FC_PACKET_W], u[FC_PACKET_W], v[FC_PACKET_W];
-            int tri[FC_PACKET_W];
-            LSTORE(h.t, t);
-            LSTORE(h.u, u);
-            LSTORE(h.v, v);
-            LSTORE(h.tri, tri);
+            /* the few rays left finish this subtree alone (every lane's hit so far stored, as
+             * every lane is loaded back) */
+            packet_hits_store(&h, 0xffffffffu >> (32 - FC_PACKET_W), hits);
             for (uint rest = bits; rest; rest &= rest - 1u) {
                 const uint j = lowest_bit(rest);
-                Hit one;
-                one.t = t[j];
-                one.u = u[j];
-                one.v = v[j];
-                one.tri = tri[j];
                 const float3 oj = (float3)(o[j], o[FC_PACKET_W + j], o[2 * FC_PACKET_W + j]);
                 const float3 dj = (float3)(d[j], d[FC_PACKET_W + j], d[2 * FC_PACKET_W + j]);
-                if (trace_bvh_at(buffer, node, oj, dj, &one, false, 0)) {
-                    alone |= 1u << j;
-                    t[j] = one.t;
-                    u[j] = one.u;
-                    v[j] = one.v;
-                    tri[j] = one.tri;
-                }
+                if (trace_bvh_at(buffer, node, oj, dj, &hits[j], false, 0)) alone |= 1u << j;
             }
-            h.t = LLOAD(t);
-            h.u = LLOAD(u);
-            h.v = LLOAD(v);
-            h.tri = LLOAD(tri);
+            h = packet_hits_load(hits);
         } else {
             const LINT m = packet_mask(bits);
             __global const FcNode* n = &nodes[node];
@@ -335,20 +335,8 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
         node = stack_node[sp];
         bits = stack_bits[sp];
     }
-    float t[FC_PACKET_W], u[FC_PACKET_W], v[FC_PACKET_W];
-    int tri[FC_PACKET_W];
-    LSTORE(h.t, t);
-    LSTORE(h.u, u);
-    LSTORE(h.v, v);
-    LSTORE(h.tri, tri);
     const uint met = found | alone;
-    for (uint rest = met; rest; rest &= rest - 1u) {
-        const uint j = lowest_bit(rest);
-        hits[j].t = t[j];
-        hits[j].u = u[j];
-        hits[j].v = v[j];
-        hits[j].tri = tri[j];
-    }
+    packet_hits_store(&h, met, hits);
     return met;
 }
 
