@@ -46,8 +46,9 @@ inline void set_lane3(float* a, int j, float3 v) {
 }
 
 /* Rays in packets through the triangles' tree (kernels/trace/packet_trace.cl): on, unless the
- * host turns it off (FACET_PACKET_TRACE=0, for comparisons), on CPUs' 8-wide nodes, and not
- * in programs with cut-outs (whose alpha test runs per ray). */
+ * host turns it off (in trees of over 50 000 triangles, or with FACET_PACKET_TRACE=0:
+ * host/render/packet_paths.hpp, packet_trace_for), on CPUs' 8-wide nodes, and not in programs
+ * with cut-outs (whose alpha test runs per ray). */
 #ifndef FC_PACKET_TRACE
 #define FC_PACKET_TRACE 1
 #endif

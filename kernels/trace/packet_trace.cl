@@ -9,7 +9,8 @@
  * on the Intel MIC Architecture"), so incoherent rays in a large tree do not drag a packet of
  * mostly idle lanes down it. In a small scene (the Cornell box's 32 triangles) a packet meets
  * each triangle once for all its rays, where a ray alone pays the traversal's bookkeeping for
- * a handful of tests.
+ * a handful of tests; in a large one the rays part after a few levels, and the host leaves
+ * trees of over 50 000 triangles to single rays (host/render/packet_paths.hpp).
  *
  * Every box test and triangle test is the single-ray traversal's, operation for operation
  * (slabs_hit's and tri_hit's bodies), so a ray meets the same triangles with the same
