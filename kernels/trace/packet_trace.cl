@@ -34,25 +34,11 @@
 #define FC_PACKET_TRACE_MIN 4
 #endif
 
-/* Bit j of the result: lane j of mask m is set. */
-#if defined(__AVX__) && defined(__clang__)
-typedef float fc_packet_v8sf __attribute__((__vector_size__(32)));
-inline uint packet_bits8(int8 m) {
-    return (uint)__builtin_ia32_movmskps256(__builtin_convertvector(as_float8(m), fc_packet_v8sf));
-}
+/* Bit j of the result: lane j of mask m is set (lane_bits_w of the 8-wide nodes' masks). */
 #if FC_PACKET_W == 8
-inline uint packet_bits(LINT m) { return packet_bits8(m); }
+inline uint packet_bits(LINT m) { return lane_bits_w(m); }
 #else
-inline uint packet_bits(LINT m) { return packet_bits8(m.lo) | (packet_bits8(m.hi) << 8); }
-#endif
-#else
-inline uint packet_bits(LINT m) {
-    int a[FC_PACKET_W];
-    LSTORE(m, a);
-    uint bits = 0u;
-    for (int j = 0; j < FC_PACKET_W; ++j) bits |= (a[j] != 0 ? 1u : 0u) << j;
-    return bits;
-}
+inline uint packet_bits(LINT m) { return lane_bits_w(m.lo) | (lane_bits_w(m.hi) << 8); }
 #endif
 
 /* The mask (-1) of the lanes whose bits are set. */
@@ -80,18 +66,12 @@ inline float packet_min(LFLOAT v) {
 /* Component k (0, 1, 2: x, y, z) of (x, y, z), lane by lane. */
 inline LFLOAT packet_axis(LFLOAT x, LFLOAT y, LFLOAT z, LINT k) { return select(select(x, y, k == 1), z, k == 2); }
 
-/* The same with k given by its masks k1 = (k == 1) and k2 = (k == 2). */
-inline LFLOAT packet_axis_m(float x, float y, float z, LINT k1, LINT k2) {
-    return select(select((LFLOAT)(x), (LFLOAT)(y), k1), (LFLOAT)(z), k2);
-}
-
 /* The packet's rays, set up once: the slab test's reciprocals and signs (box_ray_setup's) and
  * the triangle test's axes and shear (tri_ray_setup's), lane by lane. */
 typedef struct {
     LFLOAT ox, oy, oz, ix, iy, iz;
     LINT nx, ny, nz; /* the direction's negative components: the near plane is the box's max */
     LINT kx, ky, kz;
-    LINT kx1, kx2, ky1, ky2, kz1, kz2; /* k == 1 and k == 2 of each */
     LFLOAT tox, toy, toz, sx, sy, sz;
 } PacketRays;
 
@@ -118,12 +98,6 @@ inline PacketRays packet_rays_setup(const float* o, const float* d) {
     r.sx = packet_axis(dx, dy, dz, r.kx) / dk;
     r.sy = packet_axis(dx, dy, dz, r.ky) / dk;
     r.sz = 1.0f / dk;
-    r.kx1 = r.kx == 1;
-    r.kx2 = r.kx == 2;
-    r.ky1 = r.ky == 1;
-    r.ky2 = r.ky == 2;
-    r.kz1 = r.kz == 1;
-    r.kz2 = r.kz == 2;
     r.tox = packet_axis(r.ox, r.oy, r.oz, r.kx);
     r.toy = packet_axis(r.ox, r.oy, r.oz, r.ky);
     r.toz = packet_axis(r.ox, r.oy, r.oz, r.kz);
@@ -201,8 +175,9 @@ inline LINT packet_leaf_hit(__global const float4* rows, int row, int blocks, in
         const int n = min(count, 4);
         for (int k = 0; k < n; ++k) {
             /* vertex coordinate (row, lane k) along each lane's axes */
-#define FC_PK_AXIS(v, kk) \
-    packet_axis_m(b[4 * (3 * (v)) + k], b[4 * (3 * (v) + 1) + k], b[4 * (3 * (v) + 2) + k], r->kk##1, r->kk##2)
+#define FC_PK_AXIS(v, kk)                                                           \
+    packet_axis((LFLOAT)(b[4 * (3 * (v)) + k]), (LFLOAT)(b[4 * (3 * (v) + 1) + k]), \
+                (LFLOAT)(b[4 * (3 * (v) + 2) + k]), r->kk)
             LFLOAT t, vv, ww, det;
             LINT hit =
                 LNAME(tri_hit)(r->tox, r->toy, r->toz, r->sx, r->sy, r->sz, FC_PK_AXIS(0, kx), FC_PK_AXIS(0, ky),
