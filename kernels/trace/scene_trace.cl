@@ -46,29 +46,6 @@ inline bool scene_trace_closest_past_triangles(const SceneView* sc, float3 o, fl
     return found;
 }
 
-/* Whether anything past the triangles' tree (instances, spheres) is hit with 0 < t < tmax. */
-inline bool scene_trace_any_past_triangles(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
-#if FC_HAS_INSTANCES || FC_HAS_SPHERES
-    Hit hit;
-    hit.t = tmax;
-    hit.prim = -1;
-    hit.tri = -1;
-    hit.inst = -1;
-#endif
-#if FC_HAS_INSTANCES
-    if (trace_instances(sc, o, d, &hit, true, alpha_seed)) return true;
-#endif
-#if FC_HAS_SPHERES
-    if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, &hit, true)) return true;
-#endif
-    (void)sc;
-    (void)o;
-    (void)d;
-    (void)tmax;
-    (void)alpha_seed;
-    return false;
-}
-
 /* Nearest hit with 0 < t < tmax that the alpha test keeps (kernels/trace/alpha_test.cl;
  * `alpha_seed` is the ray's seed): a triangle (hit->tri >= 0; hit->inst >= 0 when met in an
  * instance) or a sphere (FC_HIT_SPHERE). */
@@ -83,7 +60,20 @@ inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float t
 inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
     FC_WORLD_ALPHA(alpha_seed);
     if (trace_any_alpha(sc->nodes, sc->tris, o, d, tmax, alpha)) return true;
-    return scene_trace_any_past_triangles(sc, o, d, tmax, alpha_seed);
+#if FC_HAS_INSTANCES || FC_HAS_SPHERES
+    Hit hit;
+    hit.t = tmax;
+    hit.prim = -1;
+    hit.tri = -1;
+    hit.inst = -1;
+#endif
+#if FC_HAS_INSTANCES
+    if (trace_instances(sc, o, d, &hit, true, alpha_seed)) return true;
+#endif
+#if FC_HAS_SPHERES
+    if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, &hit, true)) return true;
+#endif
+    return false;
 }
 
 #undef FC_WORLD_ALPHA
