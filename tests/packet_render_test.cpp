@@ -254,6 +254,46 @@ TEST(PacketRender, LightsInPackets) {
     EXPECT_TRUE(lights_in_packets(load_scene(test::scenes_dir() + "/gltf_materials.gltf")));
 }
 
+// The materials packet_pass shades: a Lambertian lobe alone. Models that have no feature of
+// their own (EON, the Lambert x (1 - F0) base, a material with no lobe) keep the scene on
+// render_pass, where packets shaded them as Lambertian: an EON sphere came out 13 % brighter.
+TEST(PacketRender, MaterialsInPackets) {
+    EXPECT_TRUE(materials_in_packets(load_scene(test::scenes_dir() + "/cornell_box.json")));
+    EXPECT_FALSE(materials_in_packets(load_scene(test::scenes_dir() + "/spheres_sky.json")));
+    test::TempDir dir;
+    auto sphere_of = [&](const std::string& file, const std::string& material, const std::string& unused) {
+        return load_scene(dir.write(file,
+                                    "{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n"
+                                    " \"materials\": {\"m\": " +
+                                        material + ", \"spare\": " + unused +
+                                        "},\n"
+                                        " \"shapes\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], "
+                                        "\"radius\": 1, \"material\": \"m\"}],\n"
+                                        " \"environment\": {\"constant\": [1, 1, 1]}}\n"));
+    };
+    const std::string lambert = "{\"model\": \"lambert\", \"diffuse\": [0.5, 0.5, 0.5]}";
+    const std::string eon = "{\"model\": \"eon\", \"diffuse\": [0.5, 0.5, 0.5], \"roughness\": 1}";
+    const Scene lambert_sphere = sphere_of("lambert.json", lambert, eon);  // the EON material unused
+    EXPECT_TRUE(materials_in_packets(lambert_sphere));
+    EXPECT_TRUE(scene_in_packets(lambert_sphere));
+    const Scene eon_sphere = sphere_of("eon.json", eon, lambert);
+    ASSERT_EQ(scene_features(eon_sphere), feature::kENVIRONMENT | feature::kSPHERES);  // no feature says EON
+    EXPECT_FALSE(materials_in_packets(eon_sphere));
+    EXPECT_FALSE(scene_in_packets(eon_sphere));
+    EXPECT_FALSE(materials_in_packets(sphere_of(
+        "coupled.json", "{\"model\": \"lambert\", \"diffuse_model\": \"lambert_1mf0\", \"diffuse\": [0.5, 0.5, 0.5]}",
+        lambert)));
+    EXPECT_FALSE(
+        materials_in_packets(sphere_of("none.json", "{\"model\": \"lambert\", \"diffuse_model\": \"none\"}", lambert)));
+    // the renderer keeps such a scene on render_pass, even with packets forced on
+    ScopedEnv on("FACET_PACKET_PATHS", "1");
+    Scene small = eon_sphere;
+    small.settings.width = 8;
+    small.settings.height = 8;
+    Renderer eon_render(test::context(), small, build_bvh(small.vertices, nodes(8, 0)));
+    EXPECT_FALSE(eon_render.stats().packet_paths);
+}
+
 TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
     DeviceDesc cpu, gpu;
     cpu.type = CL_DEVICE_TYPE_CPU;

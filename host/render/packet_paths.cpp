@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <vector>
 
 #include "kernels/shared/render_layout.h"
 
@@ -20,13 +21,27 @@ bool lights_in_packets(const Scene& scene) {
     return true;
 }
 
+bool materials_in_packets(const Scene& scene) {
+    std::vector<bool> used(scene.materials.size(), false);
+    mark_triangle_materials(scene, used);
+    for (const FcSphere& s : scene.spheres)
+        if (s.material >= 0 && std::size_t(s.material) < used.size()) used[std::size_t(s.material)] = true;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        if (used[i] && (m.diffuse_model != FC_DIFFUSE_LAMBERT || m.specular_model != FC_SPECULAR_NONE)) return false;
+    }
+    return true;
+}
+
+bool scene_in_packets(const Scene& scene) { return lights_in_packets(scene) && materials_in_packets(scene); }
+
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
-                      bool packet_lights, std::uint32_t sampler, bool generic) {
+                      bool packet_scene, std::uint32_t sampler, bool generic) {
     const char* env = std::getenv("FACET_PACKET_PATHS");
     if (env && std::strcmp(env, "0") == 0) return false;
     const bool lit = (features & (feature::kAREA_LIGHTS | feature::kPUNCTUAL_LIGHTS | feature::kENVIRONMENT)) != 0;
     const bool covered =
-        !generic && lit && (features & ~packet_features()) == 0 && packet_lights && sampler == FC_SAMPLER_SOBOL;
+        !generic && lit && (features & ~packet_features()) == 0 && packet_scene && sampler == FC_SAMPLER_SOBOL;
     if (env && std::strcmp(env, "1") == 0) return covered;
     return covered && (device.type & CL_DEVICE_TYPE_CPU) != 0 && native_float_vector_width >= 8;
 }

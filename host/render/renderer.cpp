@@ -35,7 +35,7 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
     stats_.features = generic ? all_features() : scene_features(scene);
     std::vector<std::string> prelude = scene_program_prelude(scene, bvh, generic);
     const unsigned native_width = ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>();
-    stats_.packet_paths = packet_paths_for(ctx.desc(), native_width, stats_.features, lights_in_packets(scene),
+    stats_.packet_paths = packet_paths_for(ctx.desc(), native_width, stats_.features, scene_in_packets(scene),
                                            dev.params.sampler, generic);
     if (stats_.packet_paths) {
         stats_.packet_width = packet_width_for(native_width);
