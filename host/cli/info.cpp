@@ -95,9 +95,10 @@ int run_info(const InfoOptions& opt) {
     cpu.type = CL_DEVICE_TYPE_CPU;
     const char* packets_off = std::getenv("FACET_PACKET_PATHS");
     fmt::print("paths       {}\n",
-               packet_paths_for(cpu, 8, scene_features(scene), scene_in_packets(scene), dev.params.sampler, false)
-                   ? fmt::format("in packets of 8 on CPUs with 8-wide vectors, of 16 with 16-wide ones, {}; one a "
-                                 "work-item on GPUs",
+               packet_paths_for(cpu, 8, scene_features(scene), lights_in_packets(scene), dev.params.sampler, false)
+                   ? fmt::format("in packets of 8 on CPUs with 8-wide vectors, of 16 with 16-wide ones, {}{}; one "
+                                 "a work-item on GPUs",
+                                 lambertian_materials(scene) ? "" : "BSDFs other than a Lambertian lobe per lane, ",
                                  packet_rays_said(scene_features(scene), b.triangles))
                : packets_off && std::string(packets_off) == "0"
                    ? std::string("one a work-item (FACET_PACKET_PATHS=0)")

@@ -1,5 +1,6 @@
 #include "host/render/packet_paths.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -9,8 +10,10 @@
 namespace facet {
 
 FeatureMask packet_features() {
-    return feature::kAREA_LIGHTS | feature::kPUNCTUAL_LIGHTS | feature::kENVIRONMENT | feature::kSPHERES |
-           feature::kTEXTURES | feature::kALPHA;
+    using namespace feature;
+    return kAREA_LIGHTS | kPUNCTUAL_LIGHTS | kENVIRONMENT | kSPHERES | kTEXTURES | kALPHA | kOREN_NAYAR |
+           kASHIKHMIN_SHIRLEY | kBLINN_PHONG | kMICROFACET | kBECKMANN | kMETALLIC | kCLEARCOAT | kSHEEN | kANISOTROPY |
+           kCLEARCOAT_TEXTURES | kSHEEN_TEXTURES | kSPECULAR_TEXTURES | kCLEARCOAT_NORMAL;
 }
 
 bool lights_in_packets(const Scene& scene) {
@@ -21,27 +24,27 @@ bool lights_in_packets(const Scene& scene) {
     return true;
 }
 
-bool materials_in_packets(const Scene& scene) {
+bool lambertian_materials(const Scene& scene) {
     std::vector<bool> used(scene.materials.size(), false);
     mark_triangle_materials(scene, used);
     for (const FcSphere& s : scene.spheres)
         if (s.material >= 0 && std::size_t(s.material) < used.size()) used[std::size_t(s.material)] = true;
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& m = scene.materials[i];
-        if (used[i] && (m.diffuse_model != FC_DIFFUSE_LAMBERT || m.specular_model != FC_SPECULAR_NONE)) return false;
+        const bool layered = m.clearcoat > 0.0f || std::max(m.sheen.x, std::max(m.sheen.y, m.sheen.z)) > 0.0f;
+        if (used[i] && (m.diffuse_model != FC_DIFFUSE_LAMBERT || m.specular_model != FC_SPECULAR_NONE || layered))
+            return false;
     }
     return true;
 }
 
-bool scene_in_packets(const Scene& scene) { return lights_in_packets(scene) && materials_in_packets(scene); }
-
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
-                      bool packet_scene, std::uint32_t sampler, bool generic) {
+                      bool packet_lights, std::uint32_t sampler, bool generic) {
     const char* env = std::getenv("FACET_PACKET_PATHS");
     if (env && std::strcmp(env, "0") == 0) return false;
     const bool lit = (features & (feature::kAREA_LIGHTS | feature::kPUNCTUAL_LIGHTS | feature::kENVIRONMENT)) != 0;
     const bool covered =
-        !generic && lit && (features & ~packet_features()) == 0 && packet_scene && sampler == FC_SAMPLER_SOBOL;
+        !generic && lit && (features & ~packet_features()) == 0 && packet_lights && sampler == FC_SAMPLER_SOBOL;
     if (env && std::strcmp(env, "1") == 0) return covered;
     return covered && (device.type & CL_DEVICE_TYPE_CPU) != 0 && native_float_vector_width >= 8;
 }
@@ -63,7 +66,7 @@ bool packet_trace_for(std::size_t tree_triangles) {
 }
 
 const char* packet_paths_requirements() {
-    return "packets need Lambertian materials, no emitting spheres, and the sobol sampler";
+    return "packets need no refracting material, no instances, no emitting spheres, and the sobol sampler";
 }
 
 }  // namespace facet

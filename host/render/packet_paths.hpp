@@ -27,7 +27,9 @@ std::uint32_t packet_width_for(unsigned native_float_vector_width);
 
 // The features packet_pass covers: triangle area lights, punctual lights and the environment
 // (the lights it samples; a program needs one of them), spheres, textures and alpha
-// (cut-outs); its materials are Lambertian (no other lobe's feature).
+// (cut-outs), and every material that does not refract: a Lambertian lobe in the lanes, any
+// other BSDF per lane (layers, metal and anisotropy included). Not dielectrics, volumes or
+// instances.
 FeatureMask packet_features();
 
 // Whether every light of `scene` is one packet_pass samples: an emitting triangle, a point,
@@ -35,25 +37,23 @@ FeatureMask packet_features();
 // another shape, which it does not sample).
 bool lights_in_packets(const Scene& scene);
 
-// Whether every material the scene's surfaces use is one whose BSDF packet_pass computes in its
-// lanes: a Lambertian lobe alone (diffuse model lambert, no specular lobe). Models without a
-// feature of their own (EON, the Lambert x (1 - F0) base, a custom material with no lobe)
-// would otherwise be shaded as Lambertian there.
-bool materials_in_packets(const Scene& scene);
-
-// What packet_pass samples and shades: lights_in_packets and materials_in_packets.
-bool scene_in_packets(const Scene& scene);
+// Whether every material the scene's surfaces use is a Lambertian lobe alone (diffuse model
+// lambert, no specular lobe, no layer): then packet_pass runs the BSDF in its lanes only; else
+// the renderer defines FC_PACKET_BSDF_PER_LANE and the other materials' BSDFs run per lane
+// (EON, the Lambert x (1 - F0) base and a lobe-less material among them, which have no feature
+// of their own).
+bool lambertian_materials(const Scene& scene);
 
 // Whether a program with these features, for this sampler (FC_SAMPLER_*), runs packets on
-// this device: its features are within packet_features() and include a light, every light and
-// material is one packet_pass samples and shades (`packet_scene`: scene_in_packets), the sampler is Sobol' (the
+// this device: its features are within packet_features() and include a light, every light is
+// one packet_pass samples (`packet_lights`: lights_in_packets), the sampler is Sobol' (the
 // lanes' sampler), the program is specialised, and the device is a CPU whose native float
 // vectors are 8 wide or more (where the BVH is 8-wide too: host/bvh/bvh_width.hpp; on GPUs a
 // work-item's float8 is eight lanes' scalar work). FACET_PACKET_PATHS=0 turns packets off (for
 // comparisons); FACET_PACKET_PATHS=1 runs them on any device where the rest holds (for checks:
 // the Oclgrind tier runs packet_pass on its simulated device, whose vectors are 1 wide).
 bool packet_paths_for(const DeviceDesc& device, unsigned native_float_vector_width, FeatureMask features,
-                      bool packet_scene, std::uint32_t sampler, bool generic);
+                      bool packet_lights, std::uint32_t sampler, bool generic);
 
 // The largest triangles' tree whose rays packet_pass traces in packets
 // (kernels/trace/packet_trace.cl). A packet meets every leaf one of its rays needs, so its

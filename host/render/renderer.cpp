@@ -35,12 +35,13 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
     stats_.features = generic ? all_features() : scene_features(scene);
     std::vector<std::string> prelude = scene_program_prelude(scene, bvh, generic);
     const unsigned native_width = ctx.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>();
-    stats_.packet_paths = packet_paths_for(ctx.desc(), native_width, stats_.features, scene_in_packets(scene),
+    stats_.packet_paths = packet_paths_for(ctx.desc(), native_width, stats_.features, lights_in_packets(scene),
                                            dev.params.sampler, generic);
     if (stats_.packet_paths) {
         stats_.packet_width = packet_width_for(native_width);
         prelude.push_back("#define FC_PACKET_PATHS 1");
         prelude.push_back(fmt::format("#define FC_PACKET_WIDTH {}", stats_.packet_width));
+        if (!lambertian_materials(scene)) prelude.push_back("#define FC_PACKET_BSDF_PER_LANE 1");
         if (!packet_trace_for(bvh.stats.triangles)) prelude.push_back("#define FC_PACKET_TRACE 0");
     }
     prelude.insert(prelude.end(), extra_prelude.begin(), extra_prelude.end());

@@ -1,16 +1,20 @@
 /* Paths in packets (issue 29): render_pass's paths, FC_PACKET_WIDTH a work-item (8 in float8
  * lanes, 16 in float16 on AVX-512 CPUs), with regeneration (a lane starts the next path when
- * its own ends; Novák et al. 2010), for the programs whose scenes it covers: Lambertian
- * materials, textured or not, cut out or not, lit by triangle area lights, the environment
- * and punctual lights, made of triangles and spheres, with the Sobol' sampler, on CPUs with
- * 8- or 16-wide vectors (host/render/packet_paths.hpp picks it; path.cl includes this file
- * when FC_PACKET_PATHS is 1). The lanes' rays meet the triangles' tree together
+ * its own ends; Novák et al. 2010), for the programs whose scenes it covers: any material
+ * that does not refract, textured or not, cut out or not, lit by triangle area lights, the
+ * environment and punctual lights, made of triangles and spheres, with the Sobol' sampler, on
+ * CPUs with 8- or 16-wide vectors (host/render/packet_paths.hpp picks it; path.cl includes
+ * this file when FC_PACKET_PATHS is 1). The lanes' rays meet the triangles' tree together
  * (kernels/trace/packet_trace.cl: the same tests, so the same hits but where two triangles
  * tie); the shadow rays, the surface and its textures, the emission met (or the environment,
  * when a ray escapes), the camera ray, the environment's and a punctual light's sample and
  * the film's sum run per lane through the scalar functions; the sampler,
- * the frame, a triangle light's sample, MIS, the BSDF and roulette in lanes, through the
- * lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). Every sample
+ * the frame, a triangle light's sample, MIS, a Lambertian BSDF and roulette in lanes, through
+ * the lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). In
+ * programs with other materials (FC_PACKET_BSDF_PER_LANE), a lane whose material is more than
+ * a Lambertian lobe keeps a copy of it, oriented and framed by surface_orient, and its BSDF
+ * is evaluated, weighed and sampled per lane by bsdf.cl's own functions, between the lanes'
+ * light sample and roulette. Every sample
  * is the scalar path's, up to the rounding of a few operations written by component here and
  * on float3 there, and the order in which a pixel's samples are added: PacketRender.*
  * demands each pixel within 1e-4 of render_pass's. */
@@ -21,7 +25,11 @@
 #include "kernels/lanes/packet.cl"
 
 #define FC_PACKET_W FC_PACKET_WIDTH /* paths a work-item (kernels/shared/render_layout.h) */
-#define PATH_ENDED 0xfffffffeu      /* depth[j] of a lane whose path ended and is not yet added */
+/* 1 where some material is more than a Lambertian lobe (host/render/packet_paths.hpp) */
+#ifndef FC_PACKET_BSDF_PER_LANE
+#define FC_PACKET_BSDF_PER_LANE 0
+#endif
+#define PATH_ENDED 0xfffffffeu /* depth[j] of a lane whose path ended and is not yet added */
 
 /* The packet's lane types (LFLOAT, LINT, LUINT, LVEC2, LVEC3, LLOAD, LSTORE) and the lane
  * bodies' names (LNAME) at its width, as kernels/lanes/packet.cl instantiated them; closed at
@@ -205,6 +213,13 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     float org[3 * FC_PACKET_W]; /* the new rays' origin: a sphere's hit has its own offset (surface_offset) */
 #endif
     float prev_pdf[FC_PACKET_W], fweight[FC_PACKET_W];
+#if FC_PACKET_BSDF_PER_LANE
+    /* lanes whose material is more than a Lambertian lobe: the material (textured, oriented),
+     * its shading frame (fs, ft and ns) and wo in it, and whether every lobe is a delta */
+    FcMaterial mats[FC_PACKET_W];
+    float fs[3 * FC_PACKET_W], ft[3 * FC_PACKET_W], wol[3 * FC_PACKET_W];
+    int gen[FC_PACKET_W], delta_bsdf[FC_PACKET_W];
+#endif
 #if FC_HAS_TEXTURES
     float plen[FC_PACKET_W]; /* each path's length from the camera: its ray cone (texture filtering) */
 #endif
@@ -320,6 +335,28 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                     depth[j] = PATH_ENDED;
                     continue;
                 }
+#if FC_PACKET_BSDF_PER_LANE
+                /* a material beyond a Lambertian lobe: oriented and framed as path_radiance does
+                 * (surface_orient), its BSDF evaluated and sampled per lane below */
+#if FC_HAS_TEXTURES
+                mats[j] = mat;
+#else
+                mats[j] = *m;
+#endif
+                gen[j] = !(mats[j].diffuse_model == FC_DIFFUSE_LAMBERT && mats[j].specular_model == FC_SPECULAR_NONE &&
+                           !bsdf_layered(&mats[j]));
+                if (gen[j]) {
+                    float3 wo_local;
+                    const Frame fr = surface_orient(&s, &mats[j], wo, &wo_local);
+                    set_lane3(fs, j, fr.s);
+                    set_lane3(ft, j, fr.t);
+                    set_lane3(wol, j, wo_local);
+                    delta_bsdf[j] = bsdf_is_delta(&mats[j]);
+                    s.ns = fr.n;
+                } else {
+                    delta_bsdf[j] = 0;
+                }
+#endif
                 /* two-sided: the side the ray came from (the frame follows in lanes) */
                 if (dot(s.ng, wo) < 0.0f) {
                     s.ng = -s.ng;
@@ -349,6 +386,14 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         L3 S, Tt;
         LNAME(frame_from_normal)(N, &S, &Tt);
         LFLOAT wo_z = l3_dot(wo, N);
+#if FC_PACKET_BSDF_PER_LANE
+        /* lanes with a BSDF of their own: the frame surface_orient gave it */
+        const LINT G = live & (LLOAD(gen) != 0);
+        N = LNAME(vec3_select)(N, l3_load(ns), G);
+        S = LNAME(vec3_select)(S, l3_load(fs), G);
+        Tt = LNAME(vec3_select)(Tt, l3_load(ft), G);
+        wo_z = select(wo_z, LLOAD(wol + 2 * FC_PACKET_W), G);
+#endif
 #if FC_HAS_SPHERES
         L3 so = l3_load(org);
 #else
@@ -385,7 +430,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             xdelta[j] = 0;
             set_lane3(xwi, j, (float3)(0.0f, 0.0f, 1.0f));
             set_lane3(lc, j, (float3)(0.0f));
-            if (active[j] && alive[j]) {
+#if FC_PACKET_BSDF_PER_LANE
+            const bool nee = !(gen[j] && delta_bsdf[j]); /* no light sample for a delta BSDF */
+#else
+            const bool nee = true;
+#endif
+            if (active[j] && alive[j] && nee) {
                 __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])];
                 if (l->type == FC_LIGHT_AREA_TRIANGLE) {
                     xl[j] = 0;
@@ -428,12 +478,45 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LFLOAT f_scale = FC_INV_PI;
         ok &= live & (pdf_l > 0.0f) & isfinite(pdf_l) & (side > 0.0f) & (wi_z * side > 0.0f) & (wo_z > 0.0f) &
               (wi_z > 0.0f);
+#if FC_PACKET_BSDF_PER_LANE
+        /* a lane's own BSDF at the light's direction, per lane (sample_direct's), where it
+         * has one; f and its density (for MIS) */
+        L3 F = l3(A.x * f_scale, A.y * f_scale, A.z * f_scale);
+        LFLOAT bsdf_pdf_l = LNAME(cosine_hemisphere_pdf)(wo_z, wi_z);
+        {
+            float wil[3 * FC_PACKET_W], fa[3 * FC_PACKET_W], pa[FC_PACKET_W];
+            int ga[FC_PACKET_W];
+            l3_store(l3(l3_dot(wi, S), l3_dot(wi, Tt), wi_z), wil);
+            LSTORE(ok & G, ga);
+            for (int j = 0; j < FC_PACKET_W; ++j) {
+                set_lane3(fa, j, (float3)(0.0f));
+                pa[j] = 0.0f;
+                if (!ga[j]) continue;
+                ga[j] = 0;
+                if (delta_bsdf[j]) continue;
+                const float3 f = bsdf_eval(&mats[j], lane3(wol, j), lane3(wil, j));
+                if (is_black(f)) continue;
+                set_lane3(fa, j, f);
+                if (P->strategy == FC_STRATEGY_MIS) pa[j] = bsdf_pdf(&mats[j], lane3(wol, j), lane3(wil, j));
+                ga[j] = -1;
+            }
+            ok = select(ok, LLOAD(ga), G);
+            F = LNAME(vec3_select)(F, l3_load(fa), G);
+            bsdf_pdf_l = select(bsdf_pdf_l, LLOAD(pa), G);
+        }
+        LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, bsdf_pdf_l);
+#else
         LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, LNAME(cosine_hemisphere_pdf)(wo_z, wi_z));
+#endif
 #if FC_HAS_PUNCTUAL_LIGHTS
         w = select(w, (LFLOAT)(1.0f), LLOAD(xdelta)); /* a delta light: no MIS, under any strategy */
 #endif
         LFLOAT k = select((LFLOAT)(0.0f), fabs(wi_z) * w / pdf_l, ok);
+#if FC_PACKET_BSDF_PER_LANE
+        L3 contrib = l3(T.x * F.x * LC.x * k, T.y * F.y * LC.y * k, T.z * F.z * LC.z * k);
+#else
         L3 contrib = l3(T.x * A.x * f_scale * LC.x * k, T.y * A.y * f_scale * LC.y * k, T.z * A.z * f_scale * LC.z * k);
+#endif
         /* the shadow rays, in lanes: from the offset point to the offset point on a triangle */
         LINT back = cl < 0.0f;
         L3 tn = l3(select(-LN.x, LN.x, back), select(-LN.y, LN.y, back), select(-LN.z, LN.z, back));
@@ -470,6 +553,40 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         L3 nwi = LNAME(vec3_combine)(dir_local.x, S, dir_local.y, Tt, dz, N);
         LFLOAT nside = l3_dot(NG, nwi);
         LINT cont = live & (wo_z > 0.0f) & (dz > 0.0f) & (nside * dz > 0.0f);
+        LFLOAT next_pdf = LNAME(cosine_hemisphere_pdf)(wo_z, dz);
+#if FC_PACKET_BSDF_PER_LANE
+        /* a lane's own BSDF sampled per lane (path_radiance's): the direction, its weight in A */
+        {
+            float u0[FC_PACKET_W], u1[FC_PACKET_W], u2[FC_PACKET_W], gwi[3 * FC_PACKET_W], gw[3 * FC_PACKET_W],
+                gp[FC_PACKET_W];
+            int ga[FC_PACKET_W];
+            LSTORE(ub[0], u0);
+            LSTORE(ub[1], u1);
+            LSTORE(ub[2], u2);
+            LSTORE(G, ga);
+            for (int j = 0; j < FC_PACKET_W; ++j) {
+                set_lane3(gwi, j, (float3)(0.0f, 0.0f, 1.0f));
+                set_lane3(gw, j, (float3)(0.0f));
+                gp[j] = 0.0f;
+                if (!ga[j]) continue;
+                ga[j] = 0;
+                BsdfSample bs;
+                if (!bsdf_sample(&mats[j], lane3(wol, j), (float3)(u0[j], u1[j], u2[j]), &bs)) continue;
+                const Frame fr = {lane3(fs, j), lane3(ft, j), lane3(ns, j)};
+                const float3 wi_world = frame_to_world(&fr, bs.wi);
+                /* the shading frame and the geometric normal agree on wi's side */
+                if (!(dot(lane3(ng, j), wi_world) * bs.wi.z > 0.0f)) continue;
+                set_lane3(gwi, j, wi_world);
+                set_lane3(gw, j, bs.weight);
+                gp[j] = bs.delta ? INFINITY : bs.pdf;
+                ga[j] = -1;
+            }
+            nwi = LNAME(vec3_select)(nwi, l3_load(gwi), G);
+            cont = select(cont, LLOAD(ga), G);
+            next_pdf = select(next_pdf, LLOAD(gp), G);
+            A = LNAME(vec3_select)(A, l3_load(gw), G);
+        }
+#endif
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);
         LINT rr = LCONVERT_INT(dep + 1u >= P->rr_depth);
         LFLOAT survive = LNAME(roulette_survival)(T2, 1.0f); /* no refraction: eta_scale 1 */
@@ -478,7 +595,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         l3_store(T2, thr);
         l3_store(nwi, d);
         l3_store(so, o);
-        LSTORE(LNAME(cosine_hemisphere_pdf)(wo_z, dz), prev_pdf);
+        LSTORE(next_pdf, prev_pdf);
         int conta[FC_PACKET_W];
         LSTORE(cont, conta);
         for (int j = 0; j < FC_PACKET_W; ++j) {

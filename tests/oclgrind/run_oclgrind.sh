@@ -4,8 +4,8 @@
 # invalid or unaligned), API errors (--check-api) and data races. A second OpenCL
 # implementation also catches what PoCL tolerates and a GPU driver would not.
 #   1. each demo scene, 8x8 pixels at 2 spp (and the generic program, the packet paths, on
-#      4-wide nodes and on 8-wide ones, where their rays are traced in packets, and the
-#      denoiser once), by the CLI;
+#      4-wide nodes and on 8-wide ones, where their rays are traced in packets, with BSDFs
+#      per lane, and the denoiser once), by the CLI;
 #   2. the kernel unit tests that fit (KERNEL_TESTS below) in facet_tests.
 # Any message in Oclgrind's log fails the tier. Oclgrind is picked alone through an ICD
 # file (OCL_ICD_VENDORS), so no selector is needed. Exit 77 (skipped) without oclgrind.
@@ -78,6 +78,10 @@ run_scene cornell_box.json --env sky
 export FACET_BVH_WIDTH=8
 run_scene cornell_box.json
 FACET_BVH_QUANTISED=1 run_scene cornell_box.json --env sky
+# every model but a refracting one, its BSDF per lane (a copy of each lane's material): the
+# area-lit grid of seven models, and the spheres under the sky
+run_scene material_grid.json
+run_scene spheres_sky.json
 unset FACET_BVH_WIDTH FACET_PACKET_PATHS
 # The AOV pass and facet's denoiser (padded planes, 8-pixel vector loads and stores)
 run_scene cornell_box.json --denoise facet
