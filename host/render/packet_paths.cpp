@@ -13,7 +13,7 @@ FeatureMask packet_features() {
     using namespace feature;
     return kAREA_LIGHTS | kPUNCTUAL_LIGHTS | kENVIRONMENT | kSPHERES | kTEXTURES | kALPHA | kOREN_NAYAR |
            kASHIKHMIN_SHIRLEY | kBLINN_PHONG | kMICROFACET | kBECKMANN | kMETALLIC | kCLEARCOAT | kSHEEN | kANISOTROPY |
-           kCLEARCOAT_TEXTURES | kSHEEN_TEXTURES | kSPECULAR_TEXTURES | kCLEARCOAT_NORMAL;
+           kCLEARCOAT_TEXTURES | kSHEEN_TEXTURES | kSPECULAR_TEXTURES | kCLEARCOAT_NORMAL | kDIELECTRIC | kVOLUME;
 }
 
 bool lights_in_packets(const Scene& scene) {
@@ -66,7 +66,7 @@ bool packet_trace_for(std::size_t tree_triangles) {
 }
 
 const char* packet_paths_requirements() {
-    return "packets need no refracting material, no instances, no emitting spheres, and the sobol sampler";
+    return "packets need no instances, no emitting spheres, and the sobol sampler";
 }
 
 }  // namespace facet

@@ -25,10 +25,14 @@
 #include "kernels/lanes/packet.cl"
 
 #define FC_PACKET_W FC_PACKET_WIDTH /* paths a work-item (kernels/shared/render_layout.h) */
-/* 1 where some material is more than a Lambertian lobe (host/render/packet_paths.hpp) */
+/* 1 where some material is more than a Lambertian lobe (host/render/packet_paths.hpp);
+ * dielectrics are */
 #ifndef FC_PACKET_BSDF_PER_LANE
-#define FC_PACKET_BSDF_PER_LANE 0
+#define FC_PACKET_BSDF_PER_LANE FC_HAS_DIELECTRIC
 #endif
+/* whether each lane keeps its rays' origins (spheres offset their own; refraction leaves from
+ * either side) */
+#define FC_PACKET_OWN_ORIGINS (FC_HAS_SPHERES || FC_HAS_DIELECTRIC)
 #define PATH_ENDED 0xfffffffeu /* depth[j] of a lane whose path ended and is not yet added */
 
 /* The packet's lane types (LFLOAT, LINT, LUINT, LVEC2, LVEC3, LLOAD, LSTORE) and the lane
@@ -209,8 +213,15 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     /* per-lane state, in arrays (lane j at [j], 3-vectors as x[0..W-1] y[W..2W-1] z[2W..3W-1]) */
     float o[3 * FC_PACKET_W], d[3 * FC_PACKET_W], thr[3 * FC_PACKET_W], rad[3 * FC_PACKET_W], p[3 * FC_PACKET_W],
         ng[3 * FC_PACKET_W], ns[3 * FC_PACKET_W], alb[3 * FC_PACKET_W];
-#if FC_HAS_SPHERES
-    float org[3 * FC_PACKET_W]; /* the new rays' origin: a sphere's hit has its own offset (surface_offset) */
+#if FC_PACKET_OWN_ORIGINS
+    /* the new rays' origin on ng's side (surface_offset: a sphere's hit has its own offset) */
+    float org[3 * FC_PACKET_W];
+#endif
+#if FC_HAS_DIELECTRIC
+    /* a refracting lane's: the origin on the far side, the product of etap^2 over its
+     * refractions (roulette's eta_scale), and whether its material is a dielectric */
+    float orgb[3 * FC_PACKET_W], eta[FC_PACKET_W];
+    int trans[FC_PACKET_W];
 #endif
     float prev_pdf[FC_PACKET_W], fweight[FC_PACKET_W];
 #if FC_PACKET_BSDF_PER_LANE
@@ -277,6 +288,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #if FC_HAS_TEXTURES
                 plen[j] = 0.0f;
 #endif
+#if FC_HAS_DIELECTRIC
+                eta[j] = 1.0f;
+#endif
                 depth[j] = 0u;
                 alive[j] = 1;
                 need |= 1u << j;
@@ -304,6 +318,15 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 }
                 Hit hit = hits[j];
                 Surface s = scene_surface_at(sc, &hit, oo, dd);
+#if FC_HAS_VOLUME
+                {
+                    /* met from behind: the segment ran inside a closed absorbing dielectric
+                     * (path_radiance's Beer-Lambert) */
+                    __global const FcMaterial* mv = &sc->materials[s.material];
+                    if (mv->specular_model == FC_SPECULAR_DIELECTRIC && dot(s.ng, dd) > 0.0f)
+                        set_lane3(thr, j, lane3(thr, j) * exp(-load3(mv->attenuation) * hit.t));
+                }
+#endif
 #if FC_HAS_TEXTURES
                 /* the textured material, path_radiance's (a private copy per lane) */
                 plen[j] += hit.t;
@@ -356,6 +379,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 } else {
                     delta_bsdf[j] = 0;
                 }
+#if FC_HAS_DIELECTRIC
+                trans[j] = gen[j] && bsdf_is_dielectric(&mats[j]);
+                set_lane3(orgb, j, surface_offset(&s, -s.ng)); /* after surface_orient's turn */
+#endif
 #endif
                 /* two-sided: the side the ray came from (the frame follows in lanes) */
                 if (dot(s.ng, wo) < 0.0f) {
@@ -363,8 +390,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                     s.ns = -s.ns;
                 }
                 set_lane3(alb, j, m_diffuse);
-#if FC_HAS_SPHERES
-                set_lane3(org, j, surface_offset(&s, s.ng)); /* no refraction: every ray leaves on ng's side */
+#if FC_PACKET_OWN_ORIGINS
+                set_lane3(org, j, surface_offset(&s, s.ng));
 #endif
                 set_lane3(p, j, s.p);
                 set_lane3(ng, j, s.ng);
@@ -394,7 +421,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         Tt = LNAME(vec3_select)(Tt, l3_load(ft), G);
         wo_z = select(wo_z, LLOAD(wol + 2 * FC_PACKET_W), G);
 #endif
-#if FC_HAS_SPHERES
+#if FC_PACKET_OWN_ORIGINS
         L3 so = l3_load(org);
 #else
         L3 so = LNAME(offset_ray_origin)(PP, NG); /* every ray leaves on ng's side */
@@ -476,8 +503,15 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LFLOAT side = l3_dot(NG, wi);
         LFLOAT wi_z = l3_dot(wi, N);
         LFLOAT f_scale = FC_INV_PI;
+#if FC_HAS_DIELECTRIC
+        /* a light behind the surface counts through a dielectric (sample_direct's test) */
+        const LINT through = G & (LLOAD(trans) != 0);
+        ok &= live & (pdf_l > 0.0f) & isfinite(pdf_l) & ((side > 0.0f) | ((side < 0.0f) & through)) &
+              (wi_z * side > 0.0f) & (wo_z > 0.0f) & ((wi_z > 0.0f) | through);
+#else
         ok &= live & (pdf_l > 0.0f) & isfinite(pdf_l) & (side > 0.0f) & (wi_z * side > 0.0f) & (wo_z > 0.0f) &
               (wi_z > 0.0f);
+#endif
 #if FC_PACKET_BSDF_PER_LANE
         /* a lane's own BSDF at the light's direction, per lane (sample_direct's), where it
          * has one; f and its density (for MIS) */
@@ -517,11 +551,17 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #else
         L3 contrib = l3(T.x * A.x * f_scale * LC.x * k, T.y * A.y * f_scale * LC.y * k, T.z * A.z * f_scale * LC.z * k);
 #endif
-        /* the shadow rays, in lanes: from the offset point to the offset point on a triangle */
+        /* the shadow rays, in lanes: from the offset point on wi's side to the offset point on a
+         * triangle */
+#if FC_HAS_DIELECTRIC
+        const L3 sso = LNAME(vec3_select)(so, l3_load(orgb), side < 0.0f);
+#else
+        const L3 sso = so;
+#endif
         LINT back = cl < 0.0f;
         L3 tn = l3(select(-LN.x, LN.x, back), select(-LN.y, LN.y, back), select(-LN.z, LN.z, back));
         L3 target = LNAME(offset_ray_origin)(point, tn);
-        L3 seg = l3(target.x - so.x, target.y - so.y, target.z - so.z);
+        L3 seg = l3(target.x - sso.x, target.y - sso.y, target.z - sso.z);
         LFLOAT tmax = sqrt(l3_dot(seg, seg));
         L3 sdir = l3(seg.x / tmax, seg.y / tmax, seg.z / tmax);
 #if FC_PACKET_LANE_LIGHTS
@@ -534,7 +574,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         float cx[3 * FC_PACKET_W], so_a[3 * FC_PACKET_W], sd_a[3 * FC_PACKET_W], tmax_a[FC_PACKET_W];
         int oka[FC_PACKET_W];
         l3_store(contrib, cx);
-        l3_store(so, so_a);
+        l3_store(sso, so_a);
         l3_store(sdir, sd_a);
         LSTORE(tmax, tmax_a);
         LSTORE(ok, oka);
@@ -560,6 +600,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             float u0[FC_PACKET_W], u1[FC_PACKET_W], u2[FC_PACKET_W], gwi[3 * FC_PACKET_W], gw[3 * FC_PACKET_W],
                 gp[FC_PACKET_W];
             int ga[FC_PACKET_W];
+#if FC_HAS_DIELECTRIC
+            int below[FC_PACKET_W]; /* a refraction: the next ray leaves from the far side */
+#endif
             LSTORE(ub[0], u0);
             LSTORE(ub[1], u1);
             LSTORE(ub[2], u2);
@@ -568,14 +611,23 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 set_lane3(gwi, j, (float3)(0.0f, 0.0f, 1.0f));
                 set_lane3(gw, j, (float3)(0.0f));
                 gp[j] = 0.0f;
+#if FC_HAS_DIELECTRIC
+                below[j] = 0;
+#endif
                 if (!ga[j]) continue;
                 ga[j] = 0;
                 BsdfSample bs;
                 if (!bsdf_sample(&mats[j], lane3(wol, j), (float3)(u0[j], u1[j], u2[j]), &bs)) continue;
                 const Frame fr = {lane3(fs, j), lane3(ft, j), lane3(ns, j)};
                 const float3 wi_world = frame_to_world(&fr, bs.wi);
-                /* the shading frame and the geometric normal agree on wi's side */
-                if (!(dot(lane3(ng, j), wi_world) * bs.wi.z > 0.0f)) continue;
+                /* the shading frame and the geometric normal agree on wi's side (a reflection
+                 * stays on wo's side, a refraction crosses) */
+                const float wi_side = dot(lane3(ng, j), wi_world);
+                if (!(wi_side * bs.wi.z > 0.0f)) continue;
+#if FC_HAS_DIELECTRIC
+                below[j] = wi_side < 0.0f ? -1 : 0;
+                if (bs.wi.z < 0.0f) eta[j] *= mats[j].ior * mats[j].ior;
+#endif
                 set_lane3(gwi, j, wi_world);
                 set_lane3(gw, j, bs.weight);
                 gp[j] = bs.delta ? INFINITY : bs.pdf;
@@ -585,11 +637,18 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             cont = select(cont, LLOAD(ga), G);
             next_pdf = select(next_pdf, LLOAD(gp), G);
             A = LNAME(vec3_select)(A, l3_load(gw), G);
+#if FC_HAS_DIELECTRIC
+            so = LNAME(vec3_select)(so, l3_load(orgb), LLOAD(below));
+#endif
         }
 #endif
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);
         LINT rr = LCONVERT_INT(dep + 1u >= P->rr_depth);
+#if FC_HAS_DIELECTRIC
+        LFLOAT survive = LNAME(roulette_survival)(T2, LLOAD(eta));
+#else
         LFLOAT survive = LNAME(roulette_survival)(T2, 1.0f); /* no refraction: eta_scale 1 */
+#endif
         cont &= select((LINT)(-1), ub[3] < survive, rr);
         T2 = l3(select(T2.x, T2.x / survive, rr), select(T2.y, T2.y / survive, rr), select(T2.z, T2.z / survive, rr));
         l3_store(T2, thr);

@@ -78,10 +78,11 @@ run_scene cornell_box.json --env sky
 export FACET_BVH_WIDTH=8
 run_scene cornell_box.json
 FACET_BVH_QUANTISED=1 run_scene cornell_box.json --env sky
-# every model but a refracting one, its BSDF per lane (a copy of each lane's material): the
-# area-lit grid of seven models, and the spheres under the sky
+# every model, its BSDF per lane (a copy of each lane's material): the area-lit grid of seven
+# models, the spheres under the sky, and glass and metals (refraction) under it
 run_scene material_grid.json
 run_scene spheres_sky.json
+run_scene glass_metal_sky.json
 unset FACET_BVH_WIDTH FACET_PACKET_PATHS
 # The AOV pass and facet's denoiser (padded planes, 8-pixel vector loads and stores)
 run_scene cornell_box.json --denoise facet
