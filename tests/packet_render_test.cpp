@@ -1,7 +1,8 @@
 // Issue 29's packet paths (kernels/integrator/packet_paths.cl: eight paths a work-item in
-// float8 lanes, its formulas the lane-generic bodies of kernels/lanes/) against the scalar
-// form (render_pass, one path a work-item): the same samples of the Cornell box and of
-// Lambertian spheres, so the same image up to the order of a few additions. Every pixel channel must agree to 1e-4
+// float8 lanes, its formulas the lane-generic bodies of kernels/lanes/, other BSDFs per lane)
+// against the scalar form (render_pass, one path a work-item): the same samples of the Cornell
+// box, of Lambertian spheres and of every other model, glass included, so the same image up to
+// the order of a few additions. Every pixel channel must agree to 1e-4
 // relative, no sample may be rejected, and the images' means must agree to 1e-6. The bench
 // (`facet_bench --only packet`) times the two. And the policy that picks packets
 // (host/render/packet_paths.hpp).
