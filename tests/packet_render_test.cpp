@@ -159,6 +159,17 @@ TEST(PacketRender, SameImageAsTheScalarKernelUnderTheSky) {
     expect_packets_match_the_scalar_kernel(scene, "spheres_sky, Lambertian, bilinear sky", "16");
 }
 
+// A 4 x 4 checker of two colours, opaque.
+TextureImage two_colour_checker() {
+    std::vector<float> rgba;
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) {
+            const bool odd = ((x + y) & 1) != 0;
+            rgba.insert(rgba.end(), {odd ? 0.9f : 0.2f, 0.6f, odd ? 0.1f : 0.8f, 1.0f});
+        }
+    return make_texture(4, 4, rgba);
+}
+
 // Textured Lambertian materials: material_grid made Lambertian, a 4 x 4 checker of two colours
 // (repeating) on every material's base colour and on its lights' emission, so the spheres'
 // colours (their uv from the normal), the backdrop's and the lights' light samples (read per
@@ -166,13 +177,7 @@ TEST(PacketRender, SameImageAsTheScalarKernelUnderTheSky) {
 TEST(PacketRender, SameImageAsTheScalarKernelTextured) {
     Scene scene = load_scene(test::scenes_dir() + "/material_grid.json");
     make_lambertian(scene);
-    std::vector<float> rgba;
-    for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 4; ++x) {
-            const bool odd = ((x + y) & 1) != 0;
-            rgba.insert(rgba.end(), {odd ? 0.9f : 0.2f, 0.6f, odd ? 0.1f : 0.8f, 1.0f});
-        }
-    scene.textures.push_back(make_texture(4, 4, rgba));
+    scene.textures.push_back(two_colour_checker());
     for (Material& m : scene.materials) {
         m.textures.base_color = 0;
         m.textures.emission = 0;
@@ -374,13 +379,7 @@ TEST(PacketRender, SameImageAsTheScalarKernelWithLayersAndMetal) {
     ASSERT_EQ(f & (feature::kCLEARCOAT | feature::kSHEEN | feature::kMETALLIC | feature::kANISOTROPY),
               feature::kCLEARCOAT | feature::kSHEEN | feature::kMETALLIC | feature::kANISOTROPY);
     for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(scene, "material_grid, layered", w);
-    std::vector<float> rgba;
-    for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 4; ++x) {
-            const bool odd = ((x + y) & 1) != 0;
-            rgba.insert(rgba.end(), {odd ? 0.9f : 0.2f, 0.6f, odd ? 0.1f : 0.8f, 1.0f});
-        }
-    scene.textures.push_back(make_texture(4, 4, rgba));
+    scene.textures.push_back(two_colour_checker());
     for (Material& m : scene.materials) m.textures.base_color = 0;
     ASSERT_NE(scene_features(scene) & feature::kTEXTURES, 0u);
     expect_packets_match_the_scalar_kernel(scene, "material_grid, layered, textured", "16");
