@@ -27,9 +27,8 @@ std::uint32_t packet_width_for(unsigned native_float_vector_width);
 
 // The features packet_pass covers: triangle area lights, punctual lights and the environment
 // (the lights it samples; a program needs one of them), spheres, textures and alpha
-// (cut-outs), and every material that does not refract: a Lambertian lobe in the lanes, any
-// other BSDF per lane (layers, metal and anisotropy included). Not dielectrics, volumes or
-// instances.
+// (cut-outs), and every material: a Lambertian lobe in the lanes, any other BSDF per lane
+// (layers, metal, anisotropy, glass and absorbing volumes included). Not instances.
 FeatureMask packet_features();
 
 // Whether every light of `scene` is one packet_pass samples: an emitting triangle, a point,

@@ -1,7 +1,7 @@
 /* Paths in packets (issue 29): render_pass's paths, FC_PACKET_WIDTH a work-item (8 in float8
  * lanes, 16 in float16 on AVX-512 CPUs), with regeneration (a lane starts the next path when
- * its own ends; Novák et al. 2010), for the programs whose scenes it covers: any material
- * that does not refract, textured or not, cut out or not, lit by triangle area lights, the
+ * its own ends; Novák et al. 2010), for the programs whose scenes it covers: any material,
+ * glass included, textured or not, cut out or not, lit by triangle area lights, the
  * environment and punctual lights, made of triangles and spheres, with the Sobol' sampler, on
  * CPUs with 8- or 16-wide vectors (host/render/packet_paths.hpp picks it; path.cl includes
  * this file when FC_PACKET_PATHS is 1). The lanes' rays meet the triangles' tree together
@@ -25,8 +25,8 @@
 #include "kernels/lanes/packet.cl"
 
 #define FC_PACKET_W FC_PACKET_WIDTH /* paths a work-item (kernels/shared/render_layout.h) */
-/* 1 where some material is more than a Lambertian lobe (host/render/packet_paths.hpp);
- * dielectrics are */
+/* 1 where some material is more than a Lambertian lobe (host/render/packet_paths.hpp), as
+ * every dielectric is */
 #ifndef FC_PACKET_BSDF_PER_LANE
 #define FC_PACKET_BSDF_PER_LANE FC_HAS_DIELECTRIC
 #endif
