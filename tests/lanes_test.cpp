@@ -152,6 +152,26 @@ TEST(Lanes, PathWeightsSameBitsAtWidths1And8) {
               0);
 }
 
+TEST(Lanes, SphereSameBitsAtWidths1And8) {
+    // a, b, c: the ray's origin and direction; d: the radius; with rays through the centre,
+    // grazing, starting on the sphere and of zero length
+    const std::vector<LanesIn> in = inputs(-1.0f, 1.0f,
+                                           {{0.0f, 0.0f, 0.0f, 0.0f},
+                                            {1.0f, 1.0f, 1.0f, 0.5f},
+                                            {0.5f, -0.5f, 0.0f, -0.5f},
+                                            {0.4f, 0.0f, -0.4f, 0.0f},
+                                            {1.0f, 0.0f, 0.0f, 1.8f}});
+    EXPECT_EQ(mismatches("lanes_sphere", in, 4), 0);
+    // and the test meets the sphere often enough to matter
+    std::vector<LanesOut> out =
+        test::run_elementwise<LanesIn, LanesOut>("kernels/test/lanes_kernels.cl", "lanes_sphere", in);
+    int hits = 0, misses = 0;
+    for (const LanesOut& g : out)
+        for (int j = 0; j < 8; ++j) (g.one[3][j] == 3.0f ? hits : misses) += 1;
+    EXPECT_GT(hits, 1000);
+    EXPECT_GT(misses, 1000);
+}
+
 TEST(Lanes, SamplerGet4GivesTheScalarSamplersPoints) {
     EXPECT_EQ(mismatches("lanes_sampler_get4", inputs(0.0f, 1.0f), 4), 0);
 }

@@ -70,6 +70,14 @@ inline void set_lane3(float* a, int j, float3 v) {
 #else
 #define FC_PACKET_TRACE_ON 0
 #endif
+/* The spheres' tree in packets too (kernels/trace/packet_sphere.cl), closest hits and shadow
+ * rays, in programs with spheres that trace in packets. */
+#if FC_PACKET_TRACE_ON && FC_HAS_SPHERES
+#define FC_PACKET_SPHERES 1
+#include "kernels/trace/packet_sphere.cl"
+#else
+#define FC_PACKET_SPHERES 0
+#endif
 
 /* The nearest hits of lanes `need` of the rays (o, d: lane arrays), scene_trace_closest's
  * for each lane, in hits[j]; the bits of the lanes that hit. With few lanes, or without
@@ -92,10 +100,27 @@ inline uint packet_trace_closest(const SceneView* sc, const float* o, const floa
         for (uint rest = need; rest; rest &= rest - 1u) {
             const uint j = lowest_bit(rest);
             if ((met >> j) & 1u) hits[j].prim = sc->tris[hits[j].tri].prim;
-            if (scene_trace_closest_past_triangles(sc, lane3(o, j), lane3(d, j),
-                                                   alpha_ray_seed(seed[j], irev[j], depth[j], 0u), &hits[j]))
+            if (scene_trace_closest_instances(sc, lane3(o, j), lane3(d, j),
+                                              alpha_ray_seed(seed[j], irev[j], depth[j], 0u), &hits[j]))
                 met |= 1u << j;
         }
+#if FC_PACKET_SPHERES
+        /* then the spheres, each lane's to beat its hit so far (scene_trace_closest's order) */
+        float t[FC_PACKET_W];
+        int prim[FC_PACKET_W];
+        for (int j = 0; j < FC_PACKET_W; ++j) t[j] = hits[j].t;
+        const uint on_sphere = packet_trace_spheres(sc->sphere_nodes, sc->spheres, o, d, need, t, false, t, prim);
+        for (uint rest = on_sphere; rest; rest &= rest - 1u) {
+            const uint j = lowest_bit(rest);
+            hits[j].t = t[j];
+            hits[j].u = 0.0f;
+            hits[j].v = 0.0f;
+            hits[j].prim = prim[j];
+            hits[j].tri = FC_HIT_SPHERE;
+            hits[j].inst = -1;
+        }
+        met |= on_sphere;
+#endif
         return met;
     }
 #endif
@@ -107,6 +132,23 @@ inline uint packet_trace_closest(const SceneView* sc, const float* o, const floa
     }
     return met;
 }
+
+#if FC_PACKET_SPHERES
+/* Which of lanes `bits` of the shadow rays (o, d: lane arrays, up to tmax[j]) meet a sphere:
+ * with few lanes, ray by ray. */
+inline uint packet_shadow_spheres(const SceneView* sc, const float* o, const float* d, const float* tmax, uint bits) {
+    if (popcount(bits) >= FC_PACKET_TRACE_MIN)
+        return packet_trace_spheres(sc->sphere_nodes, sc->spheres, o, d, bits, tmax, true, 0, 0);
+    uint blocked = 0u;
+    for (uint rest = bits; rest; rest &= rest - 1u) {
+        const uint j = lowest_bit(rest);
+        Hit hit;
+        hit.t = tmax[j];
+        if (trace_spheres(sc->sphere_nodes, sc->spheres, lane3(o, j), lane3(d, j), &hit, true)) blocked |= 1u << j;
+    }
+    return blocked;
+}
+#endif
 
 /* Lane j's fields of triangle light l, for its sample in lanes at point u of the square (its
  * emission texture and its alpha coverage, if any, read there per lane: sample_light's). */
@@ -579,12 +621,26 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LSTORE(tmax, tmax_a);
         LSTORE(ok, oka);
 
-        /* D: shadow rays per lane (kernels/trace/packet_trace.cl: not in packets) */
+        /* D: shadow rays, the triangles per lane (kernels/trace/packet_trace.cl: not in
+         * packets), then the spheres in a packet */
+        uint unblocked = 0u;
         for (int j = 0; j < FC_PACKET_W; ++j) {
             if (!oka[j]) continue;
+#if FC_PACKET_SPHERES
+            if (!scene_trace_any_triangles(sc, lane3(so_a, j), lane3(sd_a, j), tmax_a[j],
+                                           alpha_ray_seed(seed[j], irev[j], depth[j], 1u)))
+#else
             if (!scene_trace_any(sc, lane3(so_a, j), lane3(sd_a, j), tmax_a[j],
                                  alpha_ray_seed(seed[j], irev[j], depth[j], 1u)))
-                set_lane3(rad, j, lane3(rad, j) + lane3(cx, j));
+#endif
+                unblocked |= 1u << j;
+        }
+#if FC_PACKET_SPHERES
+        if (unblocked) unblocked &= ~packet_shadow_spheres(sc, so_a, sd_a, tmax_a, unblocked);
+#endif
+        for (uint rest = unblocked; rest; rest &= rest - 1u) {
+            const uint j = lowest_bit(rest);
+            set_lane3(rad, j, lane3(rad, j) + lane3(cx, j));
         }
 
         /* E: the BSDF sample (cosine hemisphere), throughput and roulette, in lanes */

@@ -20,6 +20,7 @@
 #include "kernels/util/mis_lanes.cl"
 #include "kernels/trace/ray_lanes.cl"
 #include "kernels/trace/triangle_lanes.cl"
+#include "kernels/trace/sphere_lanes.cl"
 #include "kernels/lights/area_lanes.cl"
 #include "kernels/integrator/path_lanes.cl"
 #include "kernels/util/sampler_lanes.cl"

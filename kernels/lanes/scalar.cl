@@ -20,6 +20,7 @@
 #include "kernels/util/frame_lanes.cl"
 #include "kernels/util/mis_lanes.cl"
 #include "kernels/trace/ray_lanes.cl"
+#include "kernels/trace/sphere_lanes.cl"
 #include "kernels/lights/area_lanes.cl"
 #include "kernels/integrator/path_lanes.cl"
 #include "kernels/lanes/lanes_close.cl"

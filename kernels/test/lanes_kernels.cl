@@ -5,6 +5,7 @@
 #include "kernels/lanes/packet.cl"
 #include "kernels/lights/area.cl"
 #include "kernels/trace/ray.cl"
+#include "kernels/trace/sphere.cl"
 #include "kernels/util/frame.cl"
 #include "kernels/util/mis.cl"
 #include "kernels/util/sampler.cl"
@@ -107,6 +108,37 @@ __kernel void lanes_power_heuristic(__global const LanesIn* in, __global LanesOu
     lanes_clear(out + i);
     for (int j = 0; j < 8; ++j) out[i].one[0][j] = power_heuristic_l1(in[i].a[j], in[i].b[j]);
     OUT8(0, power_heuristic_l8(IN8(a), IN8(b)));
+}
+
+/* A ray from 3 (a, b, c), toward the origin bent by (b, c, a), against the sphere of centre
+ * (0.1, -0.2, 0.3) and radius 1.2 + d, out to t = 4 + a: the roots and the hit where the
+ * line meets it (zero elsewhere), and the mask. */
+__kernel void lanes_sphere(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        const float a = in[i].a[j], b = in[i].b[j], c = in[i].c[j], d = in[i].d[j];
+        float t0, t1, t;
+        const int meets =
+            sphere_roots_l1(0.1f, -0.2f, 0.3f, 1.2f + d, 3.0f * a, 3.0f * b, 3.0f * c, b - a, c - b, a - c, &t0, &t1);
+        const int hit =
+            sphere_hit_l1(0.1f, -0.2f, 0.3f, 1.2f + d, 3.0f * a, 3.0f * b, 3.0f * c, b - a, c - b, a - c, 4.0f + a, &t);
+        out[i].one[0][j] = meets ? t0 : 0.0f;
+        out[i].one[1][j] = meets ? t1 : 0.0f;
+        out[i].one[2][j] = hit ? t : 0.0f;
+        out[i].one[3][j] = (float)meets + 2.0f * (float)hit;
+    }
+    const float8 a = IN8(a), b = IN8(b), c = IN8(c), d = IN8(d);
+    float8 t0, t1, t;
+    const int8 meets =
+        sphere_roots_l8(0.1f, -0.2f, 0.3f, 1.2f + d, 3.0f * a, 3.0f * b, 3.0f * c, b - a, c - b, a - c, &t0, &t1);
+    const int8 hit =
+        sphere_hit_l8(0.1f, -0.2f, 0.3f, 1.2f + d, 3.0f * a, 3.0f * b, 3.0f * c, b - a, c - b, a - c, 4.0f + a, &t);
+    OUT8(0, select((float8)(0.0f), t0, meets));
+    OUT8(1, select((float8)(0.0f), t1, meets));
+    OUT8(2, select((float8)(0.0f), t, hit));
+    /* a W = 8 mask lane is -1 where a W = 1 one is 1 */
+    OUT8(3, 0.0f - convert_float8(meets) - 2.0f * convert_float8(hit));
 }
 
 /* The path's weights; the strategy (uniform across a work-item's lanes) is the work-item's

@@ -164,6 +164,37 @@ inline void packet_hits_store(const PacketHits* h, uint bits, Hit* hits) {
     }
 }
 
+/* The step after a packet's node whose `inner` (> 0) inner children were entered by lanes
+ * child_bits, nearest at child_t: the nearest entered next (*node, *bits), the others pushed
+ * farthest first. With none, false (the caller pops). */
+inline bool packet_children_next(int* child, uint* child_bits, float* child_t, int inner, int* stack_node,
+                                 uint* stack_bits, int* sp, int* node, uint* bits) {
+    if (inner == 0) return false;
+    for (int a = 1; a < inner; ++a) {
+        const int cn = child[a];
+        const uint cb = child_bits[a];
+        const float ct = child_t[a];
+        int b = a;
+        for (; b > 0 && child_t[b - 1] < ct; --b) {
+            child[b] = child[b - 1];
+            child_bits[b] = child_bits[b - 1];
+            child_t[b] = child_t[b - 1];
+        }
+        child[b] = cn;
+        child_bits[b] = cb;
+        child_t[b] = ct;
+    }
+    for (int a = 0; a + 1 < inner; ++a)
+        if (*sp < FC_STACK) { /* always, by the builder */
+            stack_node[*sp] = child[a];
+            stack_bits[*sp] = child_bits[a];
+            ++*sp;
+        }
+    *node = child[inner - 1];
+    *bits = child_bits[inner - 1];
+    return true;
+}
+
 /* The triangles of a leaf's `blocks` blocks from row `row` (the first `count` of them; all
  * four of every block where count is not known: padding never hits) against lanes m. */
 inline LINT packet_leaf_hit(__global const float4* rows, int row, int blocks, int count, const PacketRays* r, LINT m,
@@ -278,32 +309,8 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
 #endif
                 found |= packet_bits(packet_leaf_hit(rows, row, blocks, count, &r, hc, &h));
             }
-            if (inner > 0) {
-                /* the nearest entered, the others pushed farthest first */
-                for (int a = 1; a < inner; ++a) {
-                    const int cn = child[a];
-                    const uint cb = child_bits[a];
-                    const float ct = child_t[a];
-                    int b = a;
-                    for (; b > 0 && child_t[b - 1] < ct; --b) {
-                        child[b] = child[b - 1];
-                        child_bits[b] = child_bits[b - 1];
-                        child_t[b] = child_t[b - 1];
-                    }
-                    child[b] = cn;
-                    child_bits[b] = cb;
-                    child_t[b] = ct;
-                }
-                for (int a = 0; a + 1 < inner; ++a)
-                    if (sp < FC_STACK) { /* always, by the builder */
-                        stack_node[sp] = child[a];
-                        stack_bits[sp] = child_bits[a];
-                        ++sp;
-                    }
-                node = child[inner - 1];
-                bits = child_bits[inner - 1];
+            if (packet_children_next(child, child_bits, child_t, inner, stack_node, stack_bits, &sp, &node, &bits))
                 continue;
-            }
         }
         /* the next entry */
         if (sp == 0) break;

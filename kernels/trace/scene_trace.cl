@@ -25,24 +25,31 @@
     (void)(seed)
 #endif
 
+/* The instances (in programs built with FC_HAS_INSTANCES), each only to beat hit->t: whether
+ * one was nearer. */
+inline bool scene_trace_closest_instances(const SceneView* sc, float3 o, float3 d, uint alpha_seed, Hit* hit) {
+#if FC_HAS_INSTANCES
+    return trace_instances(sc, o, d, hit, false, alpha_seed);
+#else
+    (void)sc;
+    (void)o;
+    (void)d;
+    (void)alpha_seed;
+    (void)hit;
+    return false;
+#endif
+}
+
 /* What lies past the triangles' tree, each only to beat hit->t: in programs built with
  * FC_HAS_INSTANCES the instances, with FC_HAS_SPHERES the spheres. Whether one was nearer. */
 inline bool scene_trace_closest_past_triangles(const SceneView* sc, float3 o, float3 d, uint alpha_seed, Hit* hit) {
-    bool found = false;
-#if FC_HAS_INSTANCES
-    if (trace_instances(sc, o, d, hit, false, alpha_seed)) found = true;
-#endif
+    bool found = scene_trace_closest_instances(sc, o, d, alpha_seed, hit);
 #if FC_HAS_SPHERES
     if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, hit, false)) {
         hit->inst = -1;
         found = true;
     }
 #endif
-    (void)sc;
-    (void)o;
-    (void)d;
-    (void)alpha_seed;
-    (void)hit;
     return found;
 }
 
@@ -56,21 +63,32 @@ inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float t
     return found;
 }
 
-/* Whether anything that the alpha test keeps is hit with 0 < t < tmax (shadow rays). */
-inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
+/* Whether a triangle, of the world or of an instance, that the alpha test keeps is hit with
+ * 0 < t < tmax: scene_trace_any without the spheres (which packets trace together,
+ * kernels/trace/packet_sphere.cl). */
+inline bool scene_trace_any_triangles(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
     FC_WORLD_ALPHA(alpha_seed);
     if (trace_any_alpha(sc->nodes, sc->tris, o, d, tmax, alpha)) return true;
-#if FC_HAS_INSTANCES || FC_HAS_SPHERES
+#if FC_HAS_INSTANCES
     Hit hit;
     hit.t = tmax;
     hit.prim = -1;
     hit.tri = -1;
     hit.inst = -1;
-#endif
-#if FC_HAS_INSTANCES
     if (trace_instances(sc, o, d, &hit, true, alpha_seed)) return true;
 #endif
+    return false;
+}
+
+/* Whether anything that the alpha test keeps is hit with 0 < t < tmax (shadow rays). */
+inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
+    if (scene_trace_any_triangles(sc, o, d, tmax, alpha_seed)) return true;
 #if FC_HAS_SPHERES
+    Hit hit;
+    hit.t = tmax;
+    hit.prim = -1;
+    hit.tri = -1;
+    hit.inst = -1;
     if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, &hit, true)) return true;
 #endif
     return false;

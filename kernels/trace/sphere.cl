@@ -14,6 +14,7 @@
 #ifndef FACET_TRACE_SPHERE_CL
 #define FACET_TRACE_SPHERE_CL
 
+#include "kernels/lanes/scalar.cl"
 #include "kernels/shared/sphere_layout.h"
 #include "kernels/trace/small_tree_traverse.cl"
 #include "kernels/util/math.cl"
@@ -28,34 +29,14 @@ inline float fc_gamma(int n) {
 }
 
 /* The two roots t0 <= t1 of |o + t d - c| = r (d need not be unit); false when the line
- * misses the sphere. */
+ * misses the sphere. The test is written once over lanes (sphere_lanes.cl). */
 inline bool sphere_roots(float3 c, float r, float3 o, float3 d, float* t0, float* t1) {
-    const float3 f = o - c;
-    const float a = dot(d, d);
-    const float b = dot(f, d); /* half the quadratic's b */
-    /* The centre to the line's closest point, and the discriminant from it. */
-    const float3 l = f - (b / a) * d;
-    const float ll = length(l);
-    const float disc = (r - ll) * (r + ll);
-    if (!(disc >= 0.0f)) return false;
-    /* c = |f|^2 - r^2, its sign exact once |f| - r is beyond rounding. */
-    const float lf = length(f);
-    const float cc = (lf - r) * (lf + r);
-    const float q = -(b + copysign(sqrt(a * disc), b));
-    float n0 = cc / q, n1 = q / a;
-    *t0 = fmin(n0, n1);
-    *t1 = fmax(n0, n1);
-    return true;
+    return sphere_roots_l1(c.x, c.y, c.z, r, o.x, o.y, o.z, d.x, d.y, d.z, t0, t1) != 0;
 }
 
 /* The nearest intersection with 0 < t < tmax, in *t. */
 inline bool sphere_hit(float3 c, float r, float3 o, float3 d, float tmax, float* t) {
-    float t0, t1;
-    if (!sphere_roots(c, r, o, d, &t0, &t1)) return false;
-    if (t0 > 0.0f && t0 < tmax) *t = t0;
-    else if (t1 > 0.0f && t1 < tmax) *t = t1;
-    else return false;
-    return true;
+    return sphere_hit_l1(c.x, c.y, c.z, r, o.x, o.y, o.z, d.x, d.y, d.z, tmax, t) != 0;
 }
 
 /* Tests the leaf's spheres [first, first + count), shortening hit->t. */
