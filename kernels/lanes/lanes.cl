@@ -45,6 +45,11 @@ typedef struct {
     float8 x, y, z;
 } FcVec3x8;
 
+#if defined(__AVX__) && defined(__clang__)
+/* eight floats as clang's x86 builtins take them (vec3_lanes.cl's lanes_any) */
+typedef float FcLanesV8sf __attribute__((__vector_size__(32)));
+#endif
+
 #define FC_LANES_PASTE(f, w) f##_l##w
 #define FC_LANES_NAME(f, w) FC_LANES_PASTE(f, w)
 
