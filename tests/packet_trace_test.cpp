@@ -2,7 +2,8 @@
 // single-ray traversal (bvh_traverse.cl): the same nearest hit, bit for bit (t, barycentrics,
 // triangle), but where two triangles' planes tie, for packets of 8 and 16 over float and
 // quantised 8-wide nodes, with every lane traced, some, or fewer than the packet needs (whose
-// rays then trace alone from the root), and rays incoherent, coherent, or from inside a mesh.
+// rays then trace alone from the root), and rays incoherent, coherent, or from inside a mesh;
+// and as shadow rays, blocked where the single ray meets a triangle.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -27,8 +28,10 @@ struct PacketResult {
     std::vector<int> met;
 };
 
-// The rays (a multiple of `width` of them), those with traced[i] != 0, in packets.
-PacketResult run_packets(const Bvh& bvh, const Rays& rays, const std::vector<int>& traced, int width) {
+// The rays (a multiple of `width` of them), those with traced[i] != 0, in packets: for their
+// nearest hits, or with `any` as shadow rays (then only `met`).
+PacketResult run_packets(const Bvh& bvh, const Rays& rays, const std::vector<int>& traced, int width,
+                         bool any = false) {
     auto& ctx = test::context();
     cl::Kernel k(test::program(packet_program(width, bvh.stats.quantised != 0)), "trace_rays_packet");
     const std::size_t n = rays.o.size();
@@ -38,6 +41,7 @@ PacketResult run_packets(const Bvh& bvh, const Rays& rays, const std::vector<int
     cl::Buffer met(ctx.context(), CL_MEM_WRITE_ONLY, n * sizeof(int));
     int arg = 0;
     for (cl::Buffer* b : {&nodes, &tris, &o, &d, &t, &out, &met}) k.setArg(arg++, *b);
+    k.setArg(arg, any ? 1 : 0);
     ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(n / static_cast<std::size_t>(width)));
     PacketResult p;
     p.r.hit.resize(n);
@@ -92,6 +96,16 @@ std::size_t expect_packets_match(const std::vector<glm::vec3>& soup, const BvhOp
                     ADD_FAILURE() << "ray " << i << (traced[i] ? "" : " (not traced)") << ": packet prim "
                                   << p.r.prim(i) << " t " << p.r.hit[i].x << " met " << p.met[i] << ", single prim "
                                   << single.prim(i) << " t " << single.hit[i].x;
+                }
+                // as shadow rays: blocked exactly where the single ray meets a triangle
+                const PacketResult a = run_packets(bvh, rays, traced, width, true);
+                failures = 0;
+                for (std::size_t i = 0; i < rays.o.size() && failures < 10; ++i) {
+                    const int blocked = traced[i] && single.prim(i) >= 0 ? 1 : 0;
+                    if (a.met[i] == blocked) continue;
+                    ++failures;
+                    ADD_FAILURE() << "shadow ray " << i << (traced[i] ? "" : " (not traced)") << ": packet met "
+                                  << a.met[i] << ", single prim " << single.prim(i);
                 }
             }
     }

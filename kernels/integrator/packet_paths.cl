@@ -4,9 +4,10 @@
  * glass included, textured or not, cut out or not, lit by triangle area lights, the
  * environment and punctual lights, made of triangles and spheres, with the Sobol' sampler, on
  * CPUs with 8- or 16-wide vectors (host/render/packet_paths.hpp picks it; path.cl includes
- * this file when FC_PACKET_PATHS is 1). The lanes' rays meet the triangles' tree together
- * (kernels/trace/packet_trace.cl: the same tests, so the same hits but where two triangles
- * tie); the shadow rays, the surface and its textures, the emission met (or the environment,
+ * this file when FC_PACKET_PATHS is 1). The lanes' rays, and their shadow rays, meet the
+ * triangles' tree and the spheres' together (kernels/trace/packet_trace.cl, packet_sphere.cl:
+ * the same tests, so the same hits but where two surfaces tie); the surface and its textures,
+ * the emission met (or the environment,
  * when a ray escapes), the camera ray, the environment's and a punctual light's sample and
  * the film's sum run per lane through the scalar functions; the sampler,
  * the frame, a triangle light's sample, MIS, a Lambertian BSDF and roulette in lanes, through
@@ -96,7 +97,7 @@ inline uint packet_trace_closest(const SceneView* sc, const float* o, const floa
             hits[j].tri = -1;
             hits[j].inst = -1;
         }
-        met = packet_trace_bvh(sc->nodes, o, d, need, hits);
+        met = packet_trace_bvh(sc->nodes, o, d, need, false, hits);
         for (uint rest = need; rest; rest &= rest - 1u) {
             const uint j = lowest_bit(rest);
             if ((met >> j) & 1u) hits[j].prim = sc->tris[hits[j].tri].prim;
@@ -133,22 +134,52 @@ inline uint packet_trace_closest(const SceneView* sc, const float* o, const floa
     return met;
 }
 
-#if FC_PACKET_SPHERES
-/* Which of lanes `bits` of the shadow rays (o, d: lane arrays, up to tmax[j]) meet a sphere:
- * with few lanes, ray by ray. */
-inline uint packet_shadow_spheres(const SceneView* sc, const float* o, const float* d, const float* tmax, uint bits) {
-    if (popcount(bits) >= FC_PACKET_TRACE_MIN)
-        return packet_trace_spheres(sc->sphere_nodes, sc->spheres, o, d, bits, tmax, true, 0, 0);
+/* Which of lanes `bits` of the shadow rays (o, d: lane arrays, each up to tmax[j]) are blocked:
+ * scene_trace_any's answer for each. With enough lanes and packet traversal, the triangles'
+ * tree and the spheres' in packets (a ray met leaves its packet), the instances per lane;
+ * otherwise lane by lane. */
+inline uint packet_trace_any(const SceneView* sc, const float* o, const float* d, const float* tmax, uint bits,
+                             const uint* seed, const uint* irev, const uint* depth) {
     uint blocked = 0u;
+#if FC_PACKET_TRACE_ON
+    if (popcount(bits) >= FC_PACKET_TRACE_MIN) {
+        Hit hits[FC_PACKET_W];
+        for (int j = 0; j < FC_PACKET_W; ++j) hits[j].t = tmax[j];
+        blocked = packet_trace_bvh(sc->nodes, o, d, bits, true, hits);
+#if FC_HAS_INSTANCES
+        for (uint rest = bits & ~blocked; rest; rest &= rest - 1u) {
+            const uint j = lowest_bit(rest);
+            Hit hit;
+            hit.t = tmax[j];
+            hit.prim = -1;
+            hit.tri = -1;
+            hit.inst = -1;
+            if (trace_instances(sc, lane3(o, j), lane3(d, j), &hit, true,
+                                alpha_ray_seed(seed[j], irev[j], depth[j], 1u)))
+                blocked |= 1u << j;
+        }
+#endif
+#if FC_PACKET_SPHERES
+        const uint open = bits & ~blocked;
+        if (popcount(open) >= FC_PACKET_TRACE_MIN)
+            return blocked | packet_trace_spheres(sc->sphere_nodes, sc->spheres, o, d, open, tmax, true, 0, 0);
+        for (uint rest = open; rest; rest &= rest - 1u) {
+            const uint j = lowest_bit(rest);
+            Hit hit;
+            hit.t = tmax[j];
+            if (trace_spheres(sc->sphere_nodes, sc->spheres, lane3(o, j), lane3(d, j), &hit, true)) blocked |= 1u << j;
+        }
+#endif
+        return blocked;
+    }
+#endif
     for (uint rest = bits; rest; rest &= rest - 1u) {
         const uint j = lowest_bit(rest);
-        Hit hit;
-        hit.t = tmax[j];
-        if (trace_spheres(sc->sphere_nodes, sc->spheres, lane3(o, j), lane3(d, j), &hit, true)) blocked |= 1u << j;
+        if (scene_trace_any(sc, lane3(o, j), lane3(d, j), tmax[j], alpha_ray_seed(seed[j], irev[j], depth[j], 1u)))
+            blocked |= 1u << j;
     }
     return blocked;
 }
-#endif
 
 /* Lane j's fields of triangle light l, for its sample in lanes at point u of the square (its
  * emission texture and its alpha coverage, if any, read there per lane: sample_light's). */
@@ -621,23 +652,11 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LSTORE(tmax, tmax_a);
         LSTORE(ok, oka);
 
-        /* D: shadow rays, the triangles per lane (kernels/trace/packet_trace.cl: not in
-         * packets), then the spheres in a packet */
-        uint unblocked = 0u;
-        for (int j = 0; j < FC_PACKET_W; ++j) {
-            if (!oka[j]) continue;
-#if FC_PACKET_SPHERES
-            if (!scene_trace_any_triangles(sc, lane3(so_a, j), lane3(sd_a, j), tmax_a[j],
-                                           alpha_ray_seed(seed[j], irev[j], depth[j], 1u)))
-#else
-            if (!scene_trace_any(sc, lane3(so_a, j), lane3(sd_a, j), tmax_a[j],
-                                 alpha_ray_seed(seed[j], irev[j], depth[j], 1u)))
-#endif
-                unblocked |= 1u << j;
-        }
-#if FC_PACKET_SPHERES
-        if (unblocked) unblocked &= ~packet_shadow_spheres(sc, so_a, sd_a, tmax_a, unblocked);
-#endif
+        /* D: shadow rays, in a packet where they can be */
+        uint shadow = 0u;
+        for (int j = 0; j < FC_PACKET_W; ++j)
+            if (oka[j]) shadow |= 1u << j;
+        const uint unblocked = shadow & ~packet_trace_any(sc, so_a, sd_a, tmax_a, shadow, seed, irev, depth);
         for (uint rest = unblocked; rest; rest &= rest - 1u) {
             const uint j = lowest_bit(rest);
             set_lane3(rad, j, lane3(rad, j) + lane3(cx, j));

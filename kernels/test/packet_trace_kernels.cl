@@ -16,10 +16,11 @@
 /* Work-item g traces rays [g W, g W + W) as one packet, those whose traced[i] is non-zero:
  * origins[i].xyz, dirs[i].xyz, dirs[i].w = tmax. out[i] = (t, u, v, as_float(prim)) as
  * trace_rays_bvh writes it (prim = -1 and t = tmax on a miss, and for rays not traced);
- * met[i] = whether packet_trace_bvh reported lane i hit. */
+ * met[i] = whether packet_trace_bvh reported lane i hit. With `any` non-zero, as shadow rays:
+ * met[i] only (out is then not the hits). */
 __kernel void trace_rays_packet(__global const FcBvhNode* nodes, __global const FcTriangle* tris,
                                 __global const float4* origins, __global const float4* dirs, __global const int* traced,
-                                __global float4* out, __global int* met) {
+                                __global float4* out, __global int* met, int any) {
     const size_t first = get_global_id(0) * FC_PACKET_W;
     float o[3 * FC_PACKET_W], d[3 * FC_PACKET_W];
     Hit hits[FC_PACKET_W];
@@ -40,9 +41,9 @@ __kernel void trace_rays_packet(__global const FcBvhNode* nodes, __global const 
         hits[j].inst = -1;
         if (traced[first + j]) bits |= 1u << j;
     }
-    const uint hit = packet_trace_bvh(nodes, o, d, bits, hits);
+    const uint hit = packet_trace_bvh(nodes, o, d, bits, any != 0, hits);
     for (int j = 0; j < FC_PACKET_W; ++j) {
-        const int prim = ((hit >> j) & 1u) ? tris[hits[j].tri].prim : -1;
+        const int prim = ((hit >> j) & 1u) && !any ? tris[hits[j].tri].prim : -1;
         out[first + j] = (float4)(hits[j].t, hits[j].u, hits[j].v, as_float(prim));
         met[first + j] = (int)((hit >> j) & 1u);
     }

@@ -229,18 +229,20 @@ inline LINT packet_leaf_hit(__global const float4* rows, int row, int blocks, in
 }
 
 /* Lanes `bits` of the rays (origins o, directions d: lane arrays, x of lane j at [j], y at
- * [W + j], z at [2W + j]) against the triangles' tree in `buffer`, for their nearest hits:
+ * [W + j], z at [2W + j]) against the triangles' tree in `buffer`. Nearest hits (any false):
  * hits[j] updated where a nearer triangle than hits[j].t is met (t, u, v, tri; prim and inst
- * left to the caller). Returns the bits of the lanes that met a triangle. No alpha test:
- * programs with cut-outs trace ray by ray (packet_paths.cl). Shadow rays are not traced in
- * packets either: a ray alone stops at its first blocker, a packet only at its last lane's,
- * and on the Cornell box and the bunny they measured no faster (docs/performance.md). */
-inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, const float* d, uint bits, Hit* hits) {
+ * left to the caller). Shadow rays (any true): whether a triangle nearer than hits[j].t is met
+ * at all; a lane met stops there (its t set to -infinity, which no box and no triangle is
+ * nearer than), and the packet when all have. Returns the bits of the lanes that met a
+ * triangle. No alpha test: programs with cut-outs trace ray by ray (packet_paths.cl). */
+inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, const float* d, uint bits, bool any,
+                             Hit* hits) {
     __global const FcNode* nodes = (__global const FcNode*)buffer;
     __global const float4* rows = (__global const float4*)buffer;
     const PacketRays r = packet_rays_setup(o, d);
     PacketHits h = packet_hits_load(hits);
     uint found = 0u, alone = 0u; /* lanes that met a triangle: in packets, alone */
+    const uint traced = bits;
     int stack_node[FC_STACK];
     uint stack_bits[FC_STACK];
     int sp = 0;
@@ -254,7 +256,10 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
                 const uint j = lowest_bit(rest);
                 const float3 oj = (float3)(o[j], o[FC_PACKET_W + j], o[2 * FC_PACKET_W + j]);
                 const float3 dj = (float3)(d[j], d[FC_PACKET_W + j], d[2 * FC_PACKET_W + j]);
-                if (trace_bvh_at(buffer, node, oj, dj, &hits[j], false, 0)) alone |= 1u << j;
+                if (trace_bvh_at(buffer, node, oj, dj, &hits[j], any, 0)) {
+                    alone |= 1u << j;
+                    if (any) hits[j].t = -INFINITY;
+                }
             }
             h = packet_hits_load(hits);
         } else {
@@ -307,8 +312,11 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
 #else
                 const int row = n->index[c], blocks = (cnt + 3) >> 2, count = cnt;
 #endif
-                found |= packet_bits(packet_leaf_hit(rows, row, blocks, count, &r, hc, &h));
+                const LINT met = packet_leaf_hit(rows, row, blocks, count, &r, hc, &h);
+                found |= packet_bits(met);
+                if (any) h.t = select(h.t, (LFLOAT)(-INFINITY), met);
             }
+            if (any && (found | alone) == traced) return found | alone;
             if (packet_children_next(child, child_bits, child_t, inner, stack_node, stack_bits, &sp, &node, &bits))
                 continue;
         }
@@ -319,7 +327,7 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
         bits = stack_bits[sp];
     }
     const uint met = found | alone;
-    packet_hits_store(&h, met, hits);
+    if (!any) packet_hits_store(&h, met, hits);
     return met;
 }
 

@@ -63,32 +63,21 @@ inline bool scene_trace_closest(const SceneView* sc, float3 o, float3 d, float t
     return found;
 }
 
-/* Whether a triangle, of the world or of an instance, that the alpha test keeps is hit with
- * 0 < t < tmax: scene_trace_any without the spheres (which packets trace together,
- * kernels/trace/packet_sphere.cl). */
-inline bool scene_trace_any_triangles(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
-    FC_WORLD_ALPHA(alpha_seed);
-    if (trace_any_alpha(sc->nodes, sc->tris, o, d, tmax, alpha)) return true;
-#if FC_HAS_INSTANCES
-    Hit hit;
-    hit.t = tmax;
-    hit.prim = -1;
-    hit.tri = -1;
-    hit.inst = -1;
-    if (trace_instances(sc, o, d, &hit, true, alpha_seed)) return true;
-#endif
-    return false;
-}
-
 /* Whether anything that the alpha test keeps is hit with 0 < t < tmax (shadow rays). */
 inline bool scene_trace_any(const SceneView* sc, float3 o, float3 d, float tmax, uint alpha_seed) {
-    if (scene_trace_any_triangles(sc, o, d, tmax, alpha_seed)) return true;
-#if FC_HAS_SPHERES
+    FC_WORLD_ALPHA(alpha_seed);
+    if (trace_any_alpha(sc->nodes, sc->tris, o, d, tmax, alpha)) return true;
+#if FC_HAS_INSTANCES || FC_HAS_SPHERES
     Hit hit;
     hit.t = tmax;
     hit.prim = -1;
     hit.tri = -1;
     hit.inst = -1;
+#endif
+#if FC_HAS_INSTANCES
+    if (trace_instances(sc, o, d, &hit, true, alpha_seed)) return true;
+#endif
+#if FC_HAS_SPHERES
     if (trace_spheres(sc->sphere_nodes, sc->spheres, o, d, &hit, true)) return true;
 #endif
     return false;
