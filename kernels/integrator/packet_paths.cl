@@ -7,9 +7,10 @@
  * this file when FC_PACKET_PATHS is 1). The lanes' rays, and their shadow rays, meet the
  * triangles' tree and the spheres' together (kernels/trace/packet_trace.cl, packet_sphere.cl:
  * the same tests, so the same hits but where two surfaces tie); the surface and its textures,
- * the emission met (or the environment,
- * when a ray escapes), the camera ray, the environment's and a punctual light's sample and
- * the film's sum run per lane through the scalar functions; the sampler,
+ * the emission met (or the environment, when a ray escapes), the camera ray (but its
+ * sample's coordinates, in lanes when four or more paths begin at once), the environment's and
+ * a punctual light's sample and the film's sum run per lane through the scalar functions; the
+ * sampler,
  * the frame, a triangle light's sample, MIS, a Lambertian BSDF and roulette in lanes, through
  * the lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). In
  * programs with other materials (FC_PACKET_BSDF_PER_LANE), a lane whose material is more than
@@ -319,6 +320,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         depth[j] = 0u;
         slot[j] = 0u;
         index[j] = 0u;
+        seed[j] = 0u;
+        irev[j] = 0u;
     }
     for (;;) {
         /* A: until every lane has a surface to shade or the queue is empty: a finished path is
@@ -326,7 +329,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
          * traced (in a packet: packet_trace_closest) and the emission met added (per lane). A
          * path that ends here (it escapes, or reaches max_depth) is replaced at once and its
          * new ray traced in the next pass, so that the lanes' work below runs on full lanes. */
-        uint need = 0u; /* the lanes whose ray is to be traced */
+        uint need = 0u;  /* the lanes whose ray is to be traced */
+        uint fresh = 0u; /* the lanes whose path has just begun: their camera ray to make */
         for (int j = 0; j < FC_PACKET_W; ++j)
             if (active[j] && alive[j]) need |= 1u << j;
         for (;;) {
@@ -348,13 +352,11 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 slot[j] = next % pixels_here;
                 index[j] = params->sample_begin + next / pixels_here;
                 next += 1u;
-                Sampler sm = sampler_init(params->sampler, params->seed, y * params->width + x0 + slot[j], index[j]);
+                const Sampler sm =
+                    sampler_init(params->sampler, params->seed, y * params->width + x0 + slot[j], index[j]);
                 seed[j] = sm.seed;
                 irev[j] = sm.index_reversed;
-                float3 oo, dd;
-                fweight[j] = pixel_sample_ray(params, x0 + slot[j], y, &sm, &oo, &dd);
-                set_lane3(o, j, oo);
-                set_lane3(d, j, dd);
+                fresh |= 1u << j; /* its camera ray below */
                 set_lane3(thr, j, (float3)(1.0f));
                 set_lane3(rad, j, (float3)(0.0f));
                 prev_pdf[j] = INFINITY;
@@ -367,6 +369,36 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 depth[j] = 0u;
                 alive[j] = 1;
                 need |= 1u << j;
+            }
+            if (fresh) {
+                /* the paths begun: their camera dimension set, in lanes when there are a few of
+                 * them (else per lane), then the filter and the camera per lane
+                 * (pixel_sample_ray's) */
+                float ucam[4 * FC_PACKET_W];
+                if (popcount(fresh) >= 4) {
+                    LFLOAT uc[4];
+                    LNAME(sampler_get4)(LLOAD(seed), LLOAD(irev), (LUINT)(FC_SET_CAMERA), uc);
+                    for (int k = 0; k < 4; ++k) LSTORE(uc[k], ucam + k * FC_PACKET_W);
+                }
+                for (uint rest = fresh; rest; rest &= rest - 1u) {
+                    const uint j = lowest_bit(rest);
+                    float4 u;
+                    if (popcount(fresh) >= 4) {
+                        u = (float4)(ucam[j], ucam[FC_PACKET_W + j], ucam[2 * FC_PACKET_W + j],
+                                     ucam[3 * FC_PACKET_W + j]);
+                    } else {
+                        Sampler sm; /* the Sobol' sampler's state (packets run no other) */
+                        sm.kind = params->sampler;
+                        sm.seed = seed[j];
+                        sm.index_reversed = irev[j];
+                        u = sampler_get4(&sm, FC_SET_CAMERA);
+                    }
+                    float3 oo, dd;
+                    fweight[j] = pixel_sample_ray_at(params, x0 + slot[j], y, u, &oo, &dd);
+                    set_lane3(o, j, oo);
+                    set_lane3(d, j, dd);
+                }
+                fresh = 0u;
             }
             if (!need) break;
             Hit hits[FC_PACKET_W];
