@@ -28,17 +28,14 @@ inline uint packet_trace_spheres(__global const FcBvhNode* buffer, __global cons
     LINT hit_prim = (LINT)(-1);
     uint found = 0u;
     const uint traced = bits;
-    int stack_node[FC_STACK];
-    uint stack_bits[FC_STACK];
-    int sp = 0;
+    PacketStack st;
+    st.sp = 0;
     int node = 0;
     for (;;) {
         const LINT m = packet_mask(bits);
         __global const FcBvhNode8* n = &nodes[node];
-        int child[8];
-        uint child_bits[8];
-        float child_t[8];
-        int inner = 0;
+        PacketChildren ch;
+        ch.n = 0;
         for (int c = 0; c < 8; ++c) {
             const float lx = n->lo_x[c], hx = n->hi_x[c];
             if (!(lx <= hx)) continue; /* an empty slot: inverted */
@@ -47,10 +44,7 @@ inline uint packet_trace_spheres(__global const FcBvhNode* buffer, __global cons
             if (!LNAME(lanes_any)(hc)) continue;
             const int cnt = n->count[c], first = n->index[c];
             if (cnt <= 0) {
-                child[inner] = first;
-                child_bits[inner] = packet_bits(hc);
-                child_t[inner] = packet_min(select((LFLOAT)(INFINITY), tn, hc));
-                ++inner;
+                packet_child_add(&ch, first, hc, tn);
                 continue;
             }
             for (int i = first; i < first + cnt; ++i) {
@@ -67,12 +61,7 @@ inline uint packet_trace_spheres(__global const FcBvhNode* buffer, __global cons
             }
             if (any && found == traced) return found;
         }
-        if (packet_children_next(child, child_bits, child_t, inner, stack_node, stack_bits, &sp, &node, &bits))
-            continue;
-        if (sp == 0) break;
-        --sp;
-        node = stack_node[sp];
-        bits = stack_bits[sp];
+        if (!packet_next(&ch, &st, &node, &bits)) break;
     }
     if (!any) {
         LSTORE(t, t_out);

@@ -164,34 +164,63 @@ inline void packet_hits_store(const PacketHits* h, uint bits, Hit* hits) {
     }
 }
 
-/* The step after a packet's node whose `inner` (> 0) inner children were entered by lanes
- * child_bits, nearest at child_t: the nearest entered next (*node, *bits), the others pushed
- * farthest first. With none, false (the caller pops). */
-inline bool packet_children_next(int* child, uint* child_bits, float* child_t, int inner, int* stack_node,
-                                 uint* stack_bits, int* sp, int* node, uint* bits) {
-    if (inner == 0) return false;
-    for (int a = 1; a < inner; ++a) {
-        const int cn = child[a];
-        const uint cb = child_bits[a];
-        const float ct = child_t[a];
-        int b = a;
-        for (; b > 0 && child_t[b - 1] < ct; --b) {
-            child[b] = child[b - 1];
-            child_bits[b] = child_bits[b - 1];
-            child_t[b] = child_t[b - 1];
-        }
-        child[b] = cn;
-        child_bits[b] = cb;
-        child_t[b] = ct;
+/* A packet traversal's stack: the nodes still to visit, each with the lanes that entered it. */
+typedef struct {
+    int node[FC_STACK];
+    uint bits[FC_STACK];
+    int sp;
+} PacketStack;
+
+/* The inner children of the node being visited that its lanes entered: each child's node, its
+ * lanes and their nearest entry distance. */
+typedef struct {
+    int node[8];
+    uint bits[8];
+    float t[8];
+    int n;
+} PacketChildren;
+
+/* Child `node`, entered by lanes `lanes` at distances tn. */
+__attribute__((always_inline)) inline void packet_child_add(PacketChildren* ch, int node, LINT lanes, LFLOAT tn) {
+    ch->node[ch->n] = node;
+    ch->bits[ch->n] = packet_bits(lanes);
+    ch->t[ch->n] = packet_min(select((LFLOAT)(INFINITY), tn, lanes));
+    ++ch->n;
+}
+
+/* The step after a node: its nearest entered child next (*node, *bits), the others pushed
+ * farthest first; with none, the stack's top. False when nothing is left. */
+__attribute__((always_inline)) inline bool packet_next(PacketChildren* ch, PacketStack* st, int* node, uint* bits) {
+    const int n = ch->n;
+    if (n == 0) {
+        if (st->sp == 0) return false;
+        --st->sp;
+        *node = st->node[st->sp];
+        *bits = st->bits[st->sp];
+        return true;
     }
-    for (int a = 0; a + 1 < inner; ++a)
-        if (*sp < FC_STACK) { /* always, by the builder */
-            stack_node[*sp] = child[a];
-            stack_bits[*sp] = child_bits[a];
-            ++*sp;
+    for (int a = 1; a < n; ++a) {
+        const int cn = ch->node[a];
+        const uint cb = ch->bits[a];
+        const float ct = ch->t[a];
+        int b = a;
+        for (; b > 0 && ch->t[b - 1] < ct; --b) {
+            ch->node[b] = ch->node[b - 1];
+            ch->bits[b] = ch->bits[b - 1];
+            ch->t[b] = ch->t[b - 1];
         }
-    *node = child[inner - 1];
-    *bits = child_bits[inner - 1];
+        ch->node[b] = cn;
+        ch->bits[b] = cb;
+        ch->t[b] = ct;
+    }
+    for (int a = 0; a + 1 < n; ++a)
+        if (st->sp < FC_STACK) { /* always, by the builder */
+            st->node[st->sp] = ch->node[a];
+            st->bits[st->sp] = ch->bits[a];
+            ++st->sp;
+        }
+    *node = ch->node[n - 1];
+    *bits = ch->bits[n - 1];
     return true;
 }
 
@@ -243,11 +272,12 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
     PacketHits h = packet_hits_load(hits);
     uint found = 0u, alone = 0u; /* lanes that met a triangle: in packets, alone */
     const uint traced = bits;
-    int stack_node[FC_STACK];
-    uint stack_bits[FC_STACK];
-    int sp = 0;
+    PacketStack st;
+    st.sp = 0;
     int node = 0;
     for (;;) {
+        PacketChildren ch;
+        ch.n = 0;
         if (popcount(bits) < FC_PACKET_TRACE_MIN) {
             /* the few rays left finish this subtree alone (every lane's hit so far stored, as
              * every lane is loaded back) */
@@ -274,10 +304,6 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
             __global const uchar* q = (__global const uchar*)n->q_lo_x; /* lo x, y, z, hi x, y, z: 8 bytes each */
             const ulong meta = as_ulong(vload2(0, n->meta));
 #endif
-            int child[8];
-            uint child_bits[8];
-            float child_t[8];
-            int inner = 0;
             for (int c = 0; c < 8; ++c) {
 #if FC_BVH_QUANTISED
                 const bool is_inner = ((inner_slots >> c) & 1u) != 0u;
@@ -298,13 +324,10 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
                 if (!LNAME(lanes_any)(hc)) continue;
                 if (is_inner) {
 #if FC_BVH_QUANTISED
-                    child[inner] = n->child_base + (int)popcount(inner_slots & ((1u << c) - 1u));
+                    packet_child_add(&ch, n->child_base + (int)popcount(inner_slots & ((1u << c) - 1u)), hc, tn);
 #else
-                    child[inner] = n->index[c];
+                    packet_child_add(&ch, n->index[c], hc, tn);
 #endif
-                    child_bits[inner] = packet_bits(hc);
-                    child_t[inner] = packet_min(select((LFLOAT)(INFINITY), tn, hc));
-                    ++inner;
                     continue;
                 }
 #if FC_BVH_QUANTISED
@@ -317,14 +340,8 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
                 if (any) h.t = select(h.t, (LFLOAT)(-INFINITY), met);
             }
             if (any && (found | alone) == traced) return found | alone;
-            if (packet_children_next(child, child_bits, child_t, inner, stack_node, stack_bits, &sp, &node, &bits))
-                continue;
         }
-        /* the next entry */
-        if (sp == 0) break;
-        --sp;
-        node = stack_node[sp];
-        bits = stack_bits[sp];
+        if (!packet_next(&ch, &st, &node, &bits)) break;
     }
     const uint met = found | alone;
     if (!any) packet_hits_store(&h, met, hits);
