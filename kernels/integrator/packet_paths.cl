@@ -10,16 +10,14 @@
  * the emission met (or the environment, when a ray escapes), the camera ray (but its
  * sample's coordinates, in lanes when four or more paths begin at once), the environment's and
  * a punctual light's sample and the film's sum run per lane through the scalar functions; the
- * sampler,
- * the frame, a triangle light's sample, MIS, a Lambertian BSDF and roulette in lanes, through
- * the lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). In
+ * sampler, the frame, a triangle light's sample, MIS, a Lambertian BSDF and roulette in lanes,
+ * through the lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). In
  * programs with other materials (FC_PACKET_BSDF_PER_LANE), a lane whose material is more than
  * a Lambertian lobe keeps a copy of it, oriented and framed by surface_orient, and its BSDF
  * is evaluated, weighed and sampled per lane by bsdf.cl's own functions, between the lanes'
- * light sample and roulette. Every sample
- * is the scalar path's, up to the rounding of a few operations written by component here and
- * on float3 there, and the order in which a pixel's samples are added: PacketRender.*
- * demands each pixel within 1e-4 of render_pass's. */
+ * light sample and roulette. Every sample is the scalar path's, up to the rounding of a few
+ * operations written by component here and on float3 there, and the order in which a pixel's
+ * samples are added: PacketRender.* demands each pixel within 1e-4 of render_pass's. */
 #ifndef FACET_INTEGRATOR_PACKET_PATHS_CL
 #define FACET_INTEGRATOR_PACKET_PATHS_CL
 
@@ -375,7 +373,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                  * them (else per lane), then the filter and the camera per lane
                  * (pixel_sample_ray's) */
                 float ucam[4 * FC_PACKET_W];
-                if (popcount(fresh) >= 4) {
+                const bool in_lanes = popcount(fresh) >= 4;
+                if (in_lanes) {
                     LFLOAT uc[4];
                     LNAME(sampler_get4)(LLOAD(seed), LLOAD(irev), (LUINT)(FC_SET_CAMERA), uc);
                     for (int k = 0; k < 4; ++k) LSTORE(uc[k], ucam + k * FC_PACKET_W);
@@ -383,7 +382,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 for (uint rest = fresh; rest; rest &= rest - 1u) {
                     const uint j = lowest_bit(rest);
                     float4 u;
-                    if (popcount(fresh) >= 4) {
+                    if (in_lanes) {
                         u = (float4)(ucam[j], ucam[FC_PACKET_W + j], ucam[2 * FC_PACKET_W + j],
                                      ucam[3 * FC_PACKET_W + j]);
                     } else {
