@@ -280,9 +280,9 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
         ch.n = 0;
         if (popcount(bits) < FC_PACKET_TRACE_MIN) {
             /* the few rays left finish this subtree alone (every lane's hit so far stored, as
-             * every lane is loaded back) */
+             * every lane is loaded back); a shadow ray already met has nothing left to find */
             packet_hits_store(&h, 0xffffffffu >> (32 - FC_PACKET_W), hits);
-            for (uint rest = bits; rest; rest &= rest - 1u) {
+            for (uint rest = any ? bits & ~(found | alone) : bits; rest; rest &= rest - 1u) {
                 const uint j = lowest_bit(rest);
                 const float3 oj = (float3)(o[j], o[FC_PACKET_W + j], o[2 * FC_PACKET_W + j]);
                 const float3 dj = (float3)(d[j], d[FC_PACKET_W + j], d[2 * FC_PACKET_W + j]);
