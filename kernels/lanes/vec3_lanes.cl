@@ -25,8 +25,8 @@ inline LVEC3 LNAME(vec3)(LFLOAT x, LFLOAT y, LFLOAT z) {
 }
 #if defined(__AVX__) && defined(__clang__) && FC_LW >= 8
 /* Whether any lane of a mask is set: its sign bits in one movmskps. PoCL 3.1 lowers any() to
- * a test of each lane's pair in turn, with a branch each (packet_sphere.cl's box tests spent a
- * quarter of their instructions there, callgrind). */
+ * a test of each lane's pair in turn, with a branch each (about a quarter of the instructions
+ * of packet_sphere.cl's box tests, read in PoCL's code under callgrind). */
 #if FC_LW == 8
 inline bool LNAME(lanes_any)(LINT m) {
     return __builtin_ia32_movmskps256(__builtin_convertvector(as_float8(m), FcLanesV8sf)) != 0;
