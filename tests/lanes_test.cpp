@@ -172,6 +172,30 @@ TEST(Lanes, SphereSameBitsAtWidths1And8) {
     EXPECT_GT(misses, 1000);
 }
 
+TEST(Lanes, EnvironmentLocateSameBitsAtWidths1And8) {
+    // a, b, c: a world direction (not unit: the angles do not need it); the axes, the poles
+    // and signed zeros first
+    EXPECT_EQ(mismatches("lanes_env_locate",
+                         inputs(-1.0f, 1.0f,
+                                {{0.0f, 0.0f, 0.0f},
+                                 {0.0f, 1.0f, 0.0f},
+                                 {0.0f, -1.0f, 0.0f},
+                                 {-0.0f, -0.0f, 1.0f},
+                                 {1.0f, 0.0f, -0.0f},
+                                 {-1.0f, -0.0f, -0.0f},
+                                 {0.5f, 0.5f, 0.5f}}),
+                         4),
+              0);
+}
+
+TEST(Lanes, EnvironmentDirectionSameBitsAtWidths1And8) {
+    // a, b: the map's (u, v), with its corners and edges
+    EXPECT_EQ(
+        mismatches("lanes_env_uv_to_dir",
+                   inputs(0.0f, 1.0f, {{0.0f, 0.0f}, {1.0f, 1.0f}, {0.5f, 0.0f}, {0.25f, 1.0f}, {0.75f, 0.5f}}), 3),
+        0);
+}
+
 TEST(Lanes, SamplerGet4GivesTheScalarSamplersPoints) {
     EXPECT_EQ(mismatches("lanes_sampler_get4", inputs(0.0f, 1.0f), 4), 0);
 }

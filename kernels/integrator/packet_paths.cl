@@ -7,10 +7,12 @@
  * this file when FC_PACKET_PATHS is 1). The lanes' rays, and their shadow rays, meet the
  * triangles' tree and the spheres' together (kernels/trace/packet_trace.cl, packet_sphere.cl:
  * the same tests, so the same hits but where two surfaces tie); the surface and its textures,
- * the emission met (or the environment, when a ray escapes), the camera ray (but its
- * sample's coordinates, in lanes when four or more paths begin at once), the environment's and
- * a punctual light's sample and the film's sum run per lane through the scalar functions; the
- * sampler, the frame, a triangle light's sample, MIS, a Lambertian BSDF and roulette in lanes,
+ * the emission met (or the environment map's texel, when a ray escapes), the camera ray (but
+ * its sample's coordinates, in lanes when four or more paths begin at once), the texel an
+ * environment sample picks, a punctual light's sample and the film's sum run per lane through
+ * the scalar functions; the sampler, the frame, a triangle light's sample, the environment
+ * map's directions (to and from the map's (u, v): kernels/lights/environment_lanes.cl), MIS, a
+ * Lambertian BSDF and roulette in lanes,
  * through the lane-generic bodies the scalar path runs at W = 1 (kernels/lanes/packet.cl). In
  * programs with other materials (FC_PACKET_BSDF_PER_LANE), a lane whose material is more than
  * a Lambertian lobe keeps a copy of it, oriented and framed by surface_orient, and its BSDF
@@ -220,6 +222,45 @@ inline void packet_no_triangle_light(int j, float* lp0, float* le1, float* le2, 
     lflags[j] = 0u;
 }
 
+#if FC_HAS_ENVIRONMENT
+/* Whether the environment is a map that escaped rays look up and light samples pick texels
+ * of: then the packet locates their directions in lanes (packet_env_locate,
+ * packet_env_directions), and reads the map per lane (env_map_radiance_pdf). */
+inline bool packet_env_map(__constant const FcEnvironment* env) { return env->enabled && env->width > 0; }
+
+/* The map's (u, v) (lane arrays uv: u then v) and sin(theta) of the lanes' directions dir:
+ * env_radiance_pdf's location, in lanes. */
+inline void packet_env_locate(__constant const FcEnvironment* env, const float* dir, float* uv, float* sin_theta) {
+    LFLOAT st;
+    const LVEC2 at = LNAME(env_map_dir_to_uv)(
+        LNAME(env_dir_to_map)(load3c(env->to_map[0]), load3c(env->to_map[1]), load3c(env->to_map[2]), l3_load(dir)),
+        &st);
+    LSTORE(at.x, uv);
+    LSTORE(at.y, uv + FC_PACKET_W);
+    LSTORE(st, sin_theta);
+}
+
+/* The directions of the map's points `suv` (env_sample_uv's, in lanes) in dir, and their
+ * location again (uv, sin_theta) for the lookup: env_sample's middle steps, in lanes. */
+inline void packet_env_directions(__constant const FcEnvironment* env, const float* suv, float* dir, float* uv,
+                                  float* sin_theta) {
+    const float3 r0 = load3c(env->to_map[0]), r1 = load3c(env->to_map[1]), r2 = load3c(env->to_map[2]);
+    const L3 w = LNAME(env_uv_to_dir)(r0, r1, r2, LNAME(vec2)(LLOAD(suv), LLOAD(suv + FC_PACKET_W)));
+    l3_store(w, dir);
+    LFLOAT st;
+    const LVEC2 at = LNAME(env_map_dir_to_uv)(LNAME(env_dir_to_map)(r0, r1, r2, w), &st);
+    LSTORE(at.x, uv);
+    LSTORE(at.y, uv + FC_PACKET_W);
+    LSTORE(st, sin_theta);
+}
+#endif
+
+/* A per-lane light's density, pick included, or 0 where its sample carries nothing
+ * (sample_light's test). */
+inline float packet_light_pdf(float3 li, float lpdf) {
+    return lpdf > 0.0f && isfinite(lpdf) && !is_black(li) && all_finite(li) ? lpdf : 0.0f;
+}
+
 /* The lights a lane samples per lane, where the program has them: the environment and the
  * punctual lights. */
 #define FC_PACKET_LANE_LIGHTS (FC_HAS_ENVIRONMENT || FC_HAS_PUNCTUAL_LIGHTS)
@@ -255,7 +296,7 @@ inline float3 packet_lane_light(const SceneView* sc, __global const FcLight* l, 
         *tmax = isfinite(dist) ? dist * (1.0f - 1e-5f) : dist;
     }
 #endif
-    *pdf = lpdf > 0.0f && isfinite(lpdf) && !is_black(li) && all_finite(li) ? lpdf : 0.0f;
+    *pdf = packet_light_pdf(li, lpdf);
     return li;
 }
 #endif
@@ -402,6 +443,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             if (!need) break;
             Hit hits[FC_PACKET_W];
             const uint met = packet_trace_closest(sc, o, d, need, seed, irev, depth, hits);
+#if FC_HAS_ENVIRONMENT
+            /* the escaped rays' directions on the map, in lanes */
+            float euv[2 * FC_PACKET_W], est[FC_PACKET_W];
+            const bool env_map = packet_env_map(&P->environment);
+            if (env_map && (need & ~met)) packet_env_locate(&P->environment, d, euv, est);
+#endif
             for (uint rest = need; rest; rest &= rest - 1u) {
                 const int j = (int)lowest_bit(rest);
                 float3 oo = lane3(o, j), dd = lane3(d, j);
@@ -409,7 +456,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #if FC_HAS_ENVIRONMENT
                     /* escaped: the environment, MIS-weighted against light sampling (path_radiance's) */
                     float env_pdf_d;
-                    float3 le = env_radiance_pdf(&P->environment, sc->env_texels, sc->env_dist, dd, &env_pdf_d);
+                    float3 le = env_map
+                                    ? env_map_radiance_pdf(&P->environment, sc->env_texels, sc->env_dist,
+                                                           (float2)(euv[j], euv[FC_PACKET_W + j]), est[j], &env_pdf_d)
+                                    : env_radiance_pdf(&P->environment, sc->env_texels, sc->env_dist, dd, &env_pdf_d);
                     if (!is_black(le)) {
                         float light_pdf = environment_pick_pdf(sc) * env_pdf_d;
                         float w = depth[j] > 0u ? bsdf_strategy_weight(P->strategy, prev_pdf[j], light_pdf) : 1.0f;
@@ -551,6 +601,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         float xwi[3 * FC_PACKET_W], xpdf[FC_PACKET_W], xtmax[FC_PACKET_W];
         int xl[FC_PACKET_W], xdelta[FC_PACKET_W];
 #endif
+#if FC_HAS_ENVIRONMENT
+        /* lanes that sample the map: env_sample_uv's point, and the light's pick density */
+        float suv[2 * FC_PACKET_W], spick[FC_PACKET_W];
+        uint xenv = 0u;
+        const bool env_sampled = packet_env_map(&P->environment) && P->environment.total > 0.0f;
+#endif
         for (int j = 0; j < FC_PACKET_W; ++j) {
 #if FC_PACKET_LANE_LIGHTS
             /* A lane with no path (the queue is empty) samples nothing: it goes as a per-lane
@@ -574,6 +630,19 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                                           lflags);
                     continue;
                 }
+#if FC_HAS_ENVIRONMENT
+                if (l->type == FC_LIGHT_ENVIRONMENT && env_sampled) {
+                    /* the map's point here, its direction and lookup after this loop */
+                    const float2 uv =
+                        env_sample_uv(&P->environment, sc->env_texels, sc->env_dist, (float2)(lu1[j], lu2[j]));
+                    suv[j] = uv.x;
+                    suv[FC_PACKET_W + j] = uv.y;
+                    spick[j] = l->pick_pdf;
+                    xenv |= 1u << j;
+                    packet_no_triangle_light(j, lp0, le1, le2, ln, lpick, larea, lflags);
+                    continue;
+                }
+#endif
                 float3 wi;
                 set_lane3(lc, j,
                           packet_lane_light(sc, l, lane3(p, j), (float2)(lu1[j], lu2[j]), &wi, &xpdf[j], &xtmax[j],
@@ -586,6 +655,23 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                                   (float2)(lu1[j], lu2[j]), lp0, le1, le2, ln, lc, lpick, larea, lflags);
 #endif
         }
+#if FC_HAS_ENVIRONMENT
+        if (xenv) {
+            /* the map's samples: their directions in lanes, then each one's radiance and density
+             * by the lookup of env_sample (per lane) */
+            float sdir[3 * FC_PACKET_W], luv[2 * FC_PACKET_W], lst[FC_PACKET_W];
+            packet_env_directions(&P->environment, suv, sdir, luv, lst);
+            for (uint rest = xenv; rest; rest &= rest - 1u) {
+                const uint j = lowest_bit(rest);
+                float pdf_dir;
+                const float3 li = env_map_radiance_pdf(&P->environment, sc->env_texels, sc->env_dist,
+                                                       (float2)(luv[j], luv[FC_PACKET_W + j]), lst[j], &pdf_dir);
+                set_lane3(lc, j, li);
+                set_lane3(xwi, j, lane3(sdir, j));
+                xpdf[j] = packet_light_pdf(li, pdf_dir * spick[j]);
+            }
+        }
+#endif
         LVEC2 bary = LNAME(square_to_triangle)(ul[1], ul[2]);
         LFLOAT b0 = bary.x, b1 = bary.y;
         L3 LP = l3_load(lp0), E1 = l3_load(le1), E2 = l3_load(le2), LN = l3_load(ln), LC = l3_load(lc);

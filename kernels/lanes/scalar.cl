@@ -22,6 +22,7 @@
 #include "kernels/trace/ray_lanes.cl"
 #include "kernels/trace/sphere_lanes.cl"
 #include "kernels/lights/area_lanes.cl"
+#include "kernels/lights/environment_lanes.cl"
 #include "kernels/integrator/path_lanes.cl"
 #include "kernels/lanes/lanes_close.cl"
 

@@ -35,36 +35,35 @@
 #include "kernels/util/math.cl"
 #include "kernels/util/trig.cl"
 
-#define FC_INV_2PI 0.15915494309189533577f
 #define FC_INV_4PI 0.07957747154594766788f
 #define FC_INV_2PI2 0.05066059182116888572f /* 1 / (2 pi^2) */
 
+/* The directions' conversions are lane-generic (kernels/lights/environment_lanes.cl): these
+ * are their W = 1 forms, to_map's rows read here. */
+
 /* World direction to the map's frame (rows of to_map). */
 inline float3 env_dir_to_map(__constant const FcEnvironment* env, float3 d) {
-    return (float3)(dot(load3c(env->to_map[0]), d), dot(load3c(env->to_map[1]), d), dot(load3c(env->to_map[2]), d));
+    return env_dir_to_map_l1(load3c(env->to_map[0]), load3c(env->to_map[1]), load3c(env->to_map[2]), d);
 }
 
 /* The map's frame back to world (the transpose: to_map is a rotation). */
 inline float3 env_map_to_dir(__constant const FcEnvironment* env, float3 m) {
-    return m.x * load3c(env->to_map[0]) + m.y * load3c(env->to_map[1]) + m.z * load3c(env->to_map[2]);
+    return env_map_to_dir_l1(load3c(env->to_map[0]), load3c(env->to_map[1]), load3c(env->to_map[2]), m);
 }
 
 /* Map-frame direction to (u, v) in [0, 1]^2:
- * d = (sin theta sin phi, cos theta, -sin theta cos phi), u = phi / 2pi, v = theta / pi.
- * Both angles by atan2_fast (kernels/util/trig.cl; theta from the horizontal length,
- * accurate near the poles where acos is not). */
+ * d = (sin theta sin phi, cos theta, -sin theta cos phi), u = phi / 2pi, v = theta / pi. */
 inline float2 env_map_dir_to_uv(float3 m) {
-    float phi = atan2_fast(m.x, -m.z);
-    if (phi < 0.0f) phi += 2.0f * FC_PI;
-    float theta = atan2_fast(sqrt(m.x * m.x + m.z * m.z), m.y);
-    return (float2)(phi * FC_INV_2PI, theta * FC_INV_PI);
+    float sin_theta;
+    return env_map_dir_to_uv_l1(m, &sin_theta);
 }
 
 /* (u, v) to the map-frame direction: phi = 2 pi u and theta = pi v in turns. */
-inline float3 env_uv_to_map_dir(float2 uv) {
-    float2 sc_phi = sincos_turns(uv.x);
-    float2 sc_theta = sincos_turns(0.5f * uv.y);
-    return (float3)(sc_theta.x * sc_phi.x, sc_theta.y, -sc_theta.x * sc_phi.y);
+inline float3 env_uv_to_map_dir(float2 uv) { return env_uv_to_map_dir_l1(uv); }
+
+/* (u, v) to the unit world direction. */
+inline float3 env_uv_to_dir(__constant const FcEnvironment* env, float2 uv) {
+    return env_uv_to_dir_l1(load3c(env->to_map[0]), load3c(env->to_map[1]), load3c(env->to_map[2]), uv);
 }
 
 /* The texel (x, y) holding (u, v), clamped into the map. */
@@ -77,9 +76,7 @@ inline int2 env_texel(__constant const FcEnvironment* env, float2 uv) {
 /* The texel world direction `dir` falls in, its (u, v), and sin(theta) in the map's
  * frame (from the horizontal component: accurate near the poles). */
 inline int2 env_locate(__constant const FcEnvironment* env, float3 dir, float* sin_theta, float2* uv) {
-    float3 m = env_dir_to_map(env, dir);
-    *sin_theta = sqrt(m.x * m.x + m.z * m.z);
-    *uv = env_map_dir_to_uv(m);
+    *uv = env_map_dir_to_uv_l1(env_dir_to_map(env, dir), sin_theta);
     return env_texel(env, *uv);
 }
 
@@ -138,6 +135,17 @@ inline float env_point_pdf(__constant const FcEnvironment* env, __global const f
     return isfinite(pdf) ? pdf : 0.0f;
 }
 
+/* The radiance (scale included) at the point (u, v) of a map (width > 0), sin(theta) there
+ * `sin_theta`, and in *pdf env_sample's density at that direction: env_radiance_pdf's and
+ * env_sample's lookup once the direction is located (the packet paths locate theirs in lanes). */
+inline float3 env_map_radiance_pdf(__constant const FcEnvironment* env, __global const float4* texels,
+                                   __global const float* dist, float2 uv, float sin_theta, float* pdf) {
+    const int2 t = env_texel(env, uv);
+    const float3 value = env_lookup(env, texels, uv, t) * load3c(env->scale);
+    *pdf = env_point_pdf(env, texels, dist, t, sin_theta, value);
+    return value;
+}
+
 /* Solid-angle density with which env_sample produces `dir`, and the radiance along it, by one
  * lookup (a ray that escaped after a BSDF sample needs both). */
 inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global const float4* texels,
@@ -150,11 +158,8 @@ inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global con
         return scale;
     }
     float sin_theta;
-    float2 uv;
-    int2 t = env_locate(env, dir, &sin_theta, &uv);
-    float3 value = env_lookup(env, texels, uv, t) * scale;
-    *pdf = env_point_pdf(env, texels, dist, t, sin_theta, value);
-    return value;
+    const float2 uv = env_map_dir_to_uv_l1(env_dir_to_map(env, dir), &sin_theta);
+    return env_map_radiance_pdf(env, texels, dist, uv, sin_theta, pdf);
 }
 
 /* Solid-angle density with which env_sample produces `dir` (env_radiance_pdf's). */
@@ -254,27 +259,12 @@ inline float2 env_bilinear_in_texel(__constant const FcEnvironment* env, __globa
     return (float2)(0.5f * ((float)qa + s), 0.5f * ((float)qb + t));
 }
 
-/* Samples a direction toward the environment: returns the radiance along it, `dir`
- * (world, unit) and its solid-angle pdf, which is 0 when nothing can be sampled (no
- * environment, a black map, or a direction that landed exactly on a pole). */
-inline float3 env_sample(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
-                         float2 u, float3* dir, float* pdf) {
+/* The point (u, v) of a map (width > 0, total > 0) that env_sample takes at u of the square:
+ * the row from the marginal cdf, the column from the row's conditional cdf, and the point
+ * inside the texel. */
+inline float2 env_sample_uv(__constant const FcEnvironment* env, __global const float4* texels,
+                            __global const float* dist, float2 u) {
     u = clamp(u, 0.0f, FC_ONE_MINUS_EPSILON);
-    *dir = (float3)(0.0f, 1.0f, 0.0f);
-    *pdf = 0.0f;
-    if (!env->enabled) return (float3)(0.0f);
-    if (env->width == 0) {
-        if (is_black(load3c(env->scale))) return (float3)(0.0f);
-        /* uniform sphere */
-        float z = 1.0f - 2.0f * u.x;
-        float r = safe_sqrt(1.0f - z * z);
-        float2 sc = sincos_turns(u.y);
-        *dir = (float3)(r * sc.y, r * sc.x, z);
-        *pdf = FC_INV_4PI;
-        return load3c(env->scale);
-    }
-    if (!(env->total > 0.0f)) return (float3)(0.0f);
-    /* row from the marginal cdf, column from the row's conditional cdf */
     int w = env->width, h = env->height;
     uint gm = env_guide_size((uint)h), gc = env_guide_size((uint)w);
     __global const float* guides = dist + (h + 1) + h * (w + 1);
@@ -288,15 +278,37 @@ inline float3 env_sample(__constant const FcEnvironment* env, __global const flo
         du = in.x;
         dv = in.y;
     }
-    float2 uv = (float2)(((float)x + du) / (float)w, ((float)y + dv) / (float)h);
-    *dir = normalize_or(env_map_to_dir(env, env_uv_to_map_dir(uv)), (float3)(0.0f, 1.0f, 0.0f));
-    /* radiance and pdf of the direction produced, by the lookup of env_radiance/env_pdf */
+    return (float2)(((float)x + du) / (float)w, ((float)y + dv) / (float)h);
+}
+
+/* Samples a direction toward the environment: returns the radiance along it, `dir`
+ * (world, unit) and its solid-angle pdf, which is 0 when nothing can be sampled (no
+ * environment, a black map, or a direction that landed exactly on a pole). A map's sample
+ * is env_sample_uv's point, turned into a direction (env_uv_to_dir) and located again
+ * (env_dir_to_map, env_map_dir_to_uv) for env_map_radiance_pdf's lookup, so that its
+ * radiance and pdf are those env_radiance_pdf gives that direction; the packet paths run the
+ * same steps, the middle two in lanes. */
+inline float3 env_sample(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
+                         float2 u, float3* dir, float* pdf) {
+    *dir = (float3)(0.0f, 1.0f, 0.0f);
+    *pdf = 0.0f;
+    if (!env->enabled) return (float3)(0.0f);
+    if (env->width == 0) {
+        if (is_black(load3c(env->scale))) return (float3)(0.0f);
+        /* uniform sphere */
+        u = clamp(u, 0.0f, FC_ONE_MINUS_EPSILON);
+        float z = 1.0f - 2.0f * u.x;
+        float r = safe_sqrt(1.0f - z * z);
+        float2 sc = sincos_turns(u.y);
+        *dir = (float3)(r * sc.y, r * sc.x, z);
+        *pdf = FC_INV_4PI;
+        return load3c(env->scale);
+    }
+    if (!(env->total > 0.0f)) return (float3)(0.0f);
+    *dir = env_uv_to_dir(env, env_sample_uv(env, texels, dist, u));
     float sin_theta;
-    float2 uv_back;
-    int2 t = env_locate(env, *dir, &sin_theta, &uv_back);
-    float3 value = env_lookup(env, texels, uv_back, t) * load3c(env->scale);
-    *pdf = env_point_pdf(env, texels, dist, t, sin_theta, value);
-    return value;
+    const float2 uv = env_map_dir_to_uv_l1(env_dir_to_map(env, *dir), &sin_theta);
+    return env_map_radiance_pdf(env, texels, dist, uv, sin_theta, pdf);
 }
 
 #endif

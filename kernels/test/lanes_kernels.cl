@@ -141,6 +141,48 @@ __kernel void lanes_sphere(__global const LanesIn* in, __global LanesOut* out) {
     OUT8(3, 0.0f - convert_float8(meets) - 2.0f * convert_float8(hit));
 }
 
+/* A rotation for the environment's to_map (rows), about the axis (1, 2, 2) / 3 by 0.7 rad. */
+#define LANES_ENV_ROWS                                                                \
+    (float3)(0.79097f, -0.37722f, 0.48174f), (float3)(0.48174f, 0.86936f, -0.11022f), \
+        (float3)(-0.37722f, 0.31925f, 0.86936f)
+
+/* The world direction (a, b, c) located on the map: u, v, sin(theta); and atan2_fast(a, b). */
+__kernel void lanes_env_locate(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        float st;
+        const float2 uv =
+            env_map_dir_to_uv_l1(env_dir_to_map_l1(LANES_ENV_ROWS, (float3)(in[i].a[j], in[i].b[j], in[i].c[j])), &st);
+        out[i].one[0][j] = uv.x;
+        out[i].one[1][j] = uv.y;
+        out[i].one[2][j] = st;
+        out[i].one[3][j] = atan2_fast_l1(in[i].a[j], in[i].b[j]);
+    }
+    float8 st;
+    const FcVec2x8 uv = env_map_dir_to_uv_l8(env_dir_to_map_l8(LANES_ENV_ROWS, vec3_l8(IN8(a), IN8(b), IN8(c))), &st);
+    OUT8(0, uv.x);
+    OUT8(1, uv.y);
+    OUT8(2, st);
+    OUT8(3, atan2_fast_l8(IN8(a), IN8(b)));
+}
+
+/* The map's point (a, b) to its world direction. */
+__kernel void lanes_env_uv_to_dir(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        const float3 w = env_uv_to_dir_l1(LANES_ENV_ROWS, (float2)(in[i].a[j], in[i].b[j]));
+        out[i].one[0][j] = w.x;
+        out[i].one[1][j] = w.y;
+        out[i].one[2][j] = w.z;
+    }
+    const FcVec3x8 w = env_uv_to_dir_l8(LANES_ENV_ROWS, vec2_l8(IN8(a), IN8(b)));
+    OUT8(0, w.x);
+    OUT8(1, w.y);
+    OUT8(2, w.z);
+}
+
 /* The path's weights; the strategy (uniform across a work-item's lanes) is the work-item's
  * index mod 3. */
 __kernel void lanes_path_weights(__global const LanesIn* in, __global LanesOut* out) {

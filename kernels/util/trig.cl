@@ -21,30 +21,8 @@
 /* (sin 2 pi t, cos 2 pi t) for finite t with |t| < 2^21 (kernels/util/trig_lanes.cl). */
 inline float2 sincos_turns(float t) { return sincos_turns_l1(t); }
 
-/* atan(t) for t in [0, 1]: t p(t^2), p fitted by iteratively reweighted least squares
- * for the least maximum relative error (1.5e-8 in exact arithmetic). */
-inline float atan_unit(float t) {
-    float t2 = t * t;
-    float p = 2.8499854e-03f;
-    p = -1.6068989e-02f + t2 * p;
-    p = 4.2692069e-02f + t2 * p;
-    p = -7.5043380e-02f + t2 * p;
-    p = 1.0640953e-01f + t2 * p;
-    p = -1.4203648e-01f + t2 * p;
-    p = 1.9992620e-01f + t2 * p;
-    p = -3.3333072e-01f + t2 * p;
-    p = 1.0f + t2 * p;
-    return t * p;
-}
-
-/* atan2(y, x) in [-pi, pi], for finite y and x (atan2_fast(+-0, -0) = +-pi, as atan2). */
-inline float atan2_fast(float y, float x) {
-    float ax = fabs(x), ay = fabs(y);
-    float hi = fmax(ax, ay), lo = fmin(ax, ay);
-    float r = atan_unit(hi > 0.0f ? lo / hi : 0.0f);
-    if (ay > ax) r = FC_PI_2 - r;
-    if (signbit(x)) r = FC_PI - r;
-    return copysign(r, y);
-}
+/* atan2(y, x) in [-pi, pi], for finite y and x (atan2_fast(+-0, -0) = +-pi, as atan2;
+ * kernels/util/trig_lanes.cl). */
+inline float atan2_fast(float y, float x) { return atan2_fast_l1(y, x); }
 
 #endif
