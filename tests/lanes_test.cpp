@@ -196,6 +196,23 @@ TEST(Lanes, EnvironmentDirectionSameBitsAtWidths1And8) {
         0);
 }
 
+TEST(Lanes, FiltersSameBitsAtWidths1And8) {
+    // a, b: the square's points for each of the four filters, with 0, 1/2 and the ends
+    EXPECT_EQ(
+        mismatches("lanes_filter",
+                   inputs(0.0f, 1.0f, {{0.0f, 0.5f}, {0.5f, 0.0f}, {0.99999994f, 0.49999997f}, {0.25f, 0.75f}}), 4),
+        0);
+}
+
+TEST(Lanes, CameraRaysSameBitsAtWidths1And8) {
+    // a, b: the image position (corners and centre first); c, d: the lens
+    EXPECT_EQ(
+        mismatches("lanes_camera",
+                   inputs(0.0f, 1.0f, {{0.0f, 0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 0.5f, 0.5f}, {0.5f, 0.5f, 1.0f, 0.0f}}),
+                   4),
+        0);
+}
+
 TEST(Lanes, SamplerGet4GivesTheScalarSamplersPoints) {
     EXPECT_EQ(mismatches("lanes_sampler_get4", inputs(0.0f, 1.0f), 4), 0);
 }

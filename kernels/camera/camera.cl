@@ -11,35 +11,11 @@
 #ifndef FACET_CAMERA_CAMERA_CL
 #define FACET_CAMERA_CAMERA_CL
 
+#include "kernels/lanes/scalar.cl"
 #include "kernels/shared/render_layout.h"
 #include "kernels/util/math.cl"
-#include "kernels/util/warp.cl"
 
-/* The ray through image position (x, y) in pixels, (0, 0) the top-left corner; u_lens
- * picks the point on the lens. */
-inline void camera_ray(__constant const FcCamera* cam, float x, float y, uint width, uint height, float2 u_lens,
-                       float3* origin, float3* dir) {
-    float sx = 2.0f * x / (float)width - 1.0f;
-    float sy = 1.0f - 2.0f * y / (float)height;
-    float3 eye = load3c(cam->eye);
-    float3 forward = load3c(cam->forward);
-    float3 right = load3c(cam->right);
-    float3 up = load3c(cam->up);
-    if (cam->projection == FC_PROJECTION_ORTHOGRAPHIC) {
-        *origin = eye + sx * right + sy * up;
-        *dir = forward;
-        return;
-    }
-    float3 pinhole = forward + sx * right + sy * up; /* at distance 1 along forward */
-    if (!(cam->lens_radius > 0.0f)) {
-        *origin = eye;
-        *dir = normalize(pinhole);
-        return;
-    }
-    float3 focus = eye + cam->focus_distance * pinhole;
-    float2 lens = cam->lens_radius * square_to_disk_concentric(u_lens);
-    *origin = eye + lens.x * normalize(right) + lens.y * normalize(up);
-    *dir = normalize(focus - *origin);
-}
+/* The code is lane-generic (kernels/camera/camera_lanes.cl: camera_ray); the scalar kernels
+ * run its W = 1 form through pixel_sample_ray_at (pixel_sample.cl). */
 
 #endif

@@ -11,14 +11,12 @@
 
 /* Writes the ray of the sample whose camera dimension set is u_camera, and returns the
  * filter's weight for the sample's radiance (1 for every filter but Mitchell-Netravali's,
- * whose negative lobes give a negative weight). The packet paths draw u_camera in lanes. */
+ * whose negative lobes give a negative weight): kernels/camera/camera_lanes.cl's at W = 1. The
+ * packet paths make their rays at their width, several paths at once. */
 inline float pixel_sample_ray_at(__constant const FcRenderParams* params, uint x, uint y, float4 u_camera,
                                  float3* origin, float3* dir) {
-    float2 offset;
-    float weight = filter_sample(params->filter, params->filter_radius, u_camera.xy, &offset);
-    camera_ray(&params->camera, (float)x + 0.5f + offset.x, (float)y + 0.5f + offset.y, params->width, params->height,
-               u_camera.zw, origin, dir);
-    return weight;
+    return pixel_sample_ray_at_l1(params, (float)x, (float)y, u_camera.x, u_camera.y, u_camera.z, u_camera.w, origin,
+                                  dir);
 }
 
 /* pixel_sample_ray_at with the sample's camera dimension set. */

@@ -7,8 +7,8 @@
  * this file when FC_PACKET_PATHS is 1). The lanes' rays, and their shadow rays, meet the
  * triangles' tree and the spheres' together (kernels/trace/packet_trace.cl, packet_sphere.cl:
  * the same tests, so the same hits but where two surfaces tie); the surface and its textures,
- * the emission met (or the environment map's texel, when a ray escapes), the camera ray (but
- * its sample's coordinates, in lanes when four or more paths begin at once), the texel an
+ * the emission met (or the environment map's texel, when a ray escapes), the camera ray (in
+ * lanes when four or more paths begin at once: kernels/camera/camera_lanes.cl), the texel an
  * environment sample picks, a punctual light's sample and the film's sum run per lane through
  * the scalar functions; the sampler, the frame, a triangle light's sample, the environment
  * map's directions (to and from the map's (u, v): kernels/lights/environment_lanes.cl), MIS, a
@@ -410,33 +410,37 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 need |= 1u << j;
             }
             if (fresh) {
-                /* the paths begun: their camera dimension set, in lanes when there are a few of
-                 * them (else per lane), then the filter and the camera per lane
-                 * (pixel_sample_ray's) */
-                float ucam[4 * FC_PACKET_W];
-                const bool in_lanes = popcount(fresh) >= 4;
-                if (in_lanes) {
+                /* the paths begun: their camera rays, in lanes when there are a few of them
+                 * (else per lane: pixel_sample_ray's) */
+                if (popcount(fresh) >= 4) {
                     LFLOAT uc[4];
                     LNAME(sampler_get4)(LLOAD(seed), LLOAD(irev), (LUINT)(FC_SET_CAMERA), uc);
-                    for (int k = 0; k < 4; ++k) LSTORE(uc[k], ucam + k * FC_PACKET_W);
-                }
-                for (uint rest = fresh; rest; rest &= rest - 1u) {
-                    const uint j = lowest_bit(rest);
-                    float4 u;
-                    if (in_lanes) {
-                        u = (float4)(ucam[j], ucam[FC_PACKET_W + j], ucam[2 * FC_PACKET_W + j],
-                                     ucam[3 * FC_PACKET_W + j]);
-                    } else {
+                    L3 co, cd;
+                    const LFLOAT cw =
+                        LNAME(pixel_sample_ray_at)(params, LCONVERT_FLOAT(LLOAD(slot) + x0), (LFLOAT)((float)y), uc[0],
+                                                   uc[1], uc[2], uc[3], &co, &cd);
+                    float ca[3 * FC_PACKET_W], cb[3 * FC_PACKET_W], cwa[FC_PACKET_W];
+                    l3_store(co, ca);
+                    l3_store(cd, cb);
+                    LSTORE(cw, cwa);
+                    for (uint rest = fresh; rest; rest &= rest - 1u) {
+                        const uint j = lowest_bit(rest);
+                        set_lane3(o, j, lane3(ca, j));
+                        set_lane3(d, j, lane3(cb, j));
+                        fweight[j] = cwa[j];
+                    }
+                } else {
+                    for (uint rest = fresh; rest; rest &= rest - 1u) {
+                        const uint j = lowest_bit(rest);
                         Sampler sm; /* the Sobol' sampler's state (packets run no other) */
                         sm.kind = params->sampler;
                         sm.seed = seed[j];
                         sm.index_reversed = irev[j];
-                        u = sampler_get4(&sm, FC_SET_CAMERA);
+                        float3 oo, dd;
+                        fweight[j] = pixel_sample_ray(params, x0 + slot[j], y, &sm, &oo, &dd);
+                        set_lane3(o, j, oo);
+                        set_lane3(d, j, dd);
                     }
-                    float3 oo, dd;
-                    fweight[j] = pixel_sample_ray_at(params, x0 + slot[j], y, u, &oo, &dd);
-                    set_lane3(o, j, oo);
-                    set_lane3(d, j, dd);
                 }
                 fresh = 0u;
             }

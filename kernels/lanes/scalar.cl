@@ -23,6 +23,8 @@
 #include "kernels/trace/sphere_lanes.cl"
 #include "kernels/lights/area_lanes.cl"
 #include "kernels/lights/environment_lanes.cl"
+#include "kernels/camera/filter_lanes.cl"
+#include "kernels/camera/camera_lanes.cl"
 #include "kernels/integrator/path_lanes.cl"
 #include "kernels/lanes/lanes_close.cl"
 

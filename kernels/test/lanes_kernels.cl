@@ -183,6 +183,76 @@ __kernel void lanes_env_uv_to_dir(__global const LanesIn* in, __global LanesOut*
     OUT8(2, w.z);
 }
 
+/* Each filter (the work-item's index mod 4) at radius 0.5 + 2 c of the first element: the
+ * offsets and weights drawn at a and at b. */
+__kernel void lanes_filter(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    const uint filter = i % 4u;
+    const float radius = 0.5f + 2.0f * in[i].c[0];
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        float oa, ob;
+        out[i].one[1][j] = filter_sample_1d_l1(filter, radius, in[i].a[j], &oa);
+        out[i].one[3][j] = filter_sample_1d_l1(filter, radius, in[i].b[j], &ob);
+        out[i].one[0][j] = oa;
+        out[i].one[2][j] = ob;
+    }
+    float8 oa, ob;
+    OUT8(1, filter_sample_1d_l8(filter, radius, IN8(a), &oa));
+    OUT8(3, filter_sample_1d_l8(filter, radius, IN8(b), &ob));
+    OUT8(0, oa);
+    OUT8(2, ob);
+}
+
+/* A pinhole, a thin lens and an orthographic camera, looking along (0.3, -0.2, -1) roughly. */
+__constant FcCamera lanes_cameras[3] = {{{0.5f, 1.0f, 4.0f},
+                                         FC_PROJECTION_PERSPECTIVE,
+                                         {0.28f, -0.19f, -0.94f},
+                                         0.0f,
+                                         {0.7f, 0.0f, 0.2f},
+                                         1.0f,
+                                         {0.05f, 0.52f, -0.09f},
+                                         0.0f},
+                                        {{0.5f, 1.0f, 4.0f},
+                                         FC_PROJECTION_PERSPECTIVE,
+                                         {0.28f, -0.19f, -0.94f},
+                                         0.08f,
+                                         {0.7f, 0.0f, 0.2f},
+                                         3.5f,
+                                         {0.05f, 0.52f, -0.09f},
+                                         0.0f},
+                                        {{0.5f, 1.0f, 4.0f},
+                                         FC_PROJECTION_ORTHOGRAPHIC,
+                                         {0.28f, -0.19f, -0.94f},
+                                         0.0f,
+                                         {2.1f, 0.0f, 0.6f},
+                                         1.0f,
+                                         {0.15f, 1.56f, -0.27f},
+                                         0.0f}};
+
+/* Camera (the work-item's index mod 3) at image position (64 a, 48 b) of a 64 x 48 image, the
+ * lens at (c, d): the ray's direction, and in value 3 its origin's components summed with
+ * weights 1, 2, 4 (bit-exact inputs give bit-exact sums). */
+__kernel void lanes_camera(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    __constant const FcCamera* cam = &lanes_cameras[i % 3u];
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        float3 o, w;
+        camera_ray_l1(cam, 64.0f * in[i].a[j], 48.0f * in[i].b[j], 64u, 48u, in[i].c[j], in[i].d[j], &o, &w);
+        out[i].one[0][j] = w.x;
+        out[i].one[1][j] = w.y;
+        out[i].one[2][j] = w.z;
+        out[i].one[3][j] = o.x + 2.0f * o.y + 4.0f * o.z;
+    }
+    FcVec3x8 o, w;
+    camera_ray_l8(cam, 64.0f * IN8(a), 48.0f * IN8(b), 64u, 48u, IN8(c), IN8(d), &o, &w);
+    OUT8(0, w.x);
+    OUT8(1, w.y);
+    OUT8(2, w.z);
+    OUT8(3, o.x + 2.0f * o.y + 4.0f * o.z);
+}
+
 /* The path's weights; the strategy (uniform across a work-item's lanes) is the work-item's
  * index mod 3. */
 __kernel void lanes_path_weights(__global const LanesIn* in, __global LanesOut* out) {
