@@ -49,8 +49,9 @@ inline float erfinv_giles(float x) {
 
 /* erfc(x) by Chebyshev fitting (Press et al. 2007, Numerical Recipes 3rd ed., section
  * 6.2.2, "erfcc"): relative error below 1.2e-7 everywhere, a few ulp more in float. Used
- * by the visible-normal sampler's inversion, where it is several times faster than
- * PoCL's erfc; the densities keep the built-in erfc. */
+ * by Smith's Lambda, the projected area and the visible-normal sampler's inversion: PoCL's
+ * erfc (SLEEF's scalar erfcf) took 14 % of the render time of the bench's material_grid,
+ * whose spheres are mostly Beckmann (docs/performance.md, "Beckmann's erfc"). */
 inline float erfc_fast(float x) {
     float z = fabs(x);
     float t = 1.0f / (1.0f + 0.5f * z);
@@ -88,7 +89,7 @@ inline float beckmann_lambda(float ax, float ay, float3 w) {
     if (z == 0.0f) return INFINITY;
     float a = z / s;
     if (a >= 6.0f) return 0.0f;
-    return fmax(0.5f * (exp(-a * a) * FC_INV_SQRT_PI / a - erfc(a)), 0.0f);
+    return fmax(0.5f * (exp(-a * a) * FC_INV_SQRT_PI / a - erfc_fast(a)), 0.0f);
 }
 
 /* w.z (1 + Lambda(w)) for w.z >= 0, the projected area of the microsurface, as a sum of
@@ -98,7 +99,7 @@ inline float beckmann_projected_area(float ax, float ay, float3 w) {
     float z = fmax(w.z, 0.0f);
     if (s == 0.0f) return z;
     float a = z / s;
-    return 0.5f * (z * (2.0f - erfc(a)) + s * exp(-a * a) * FC_INV_SQRT_PI);
+    return 0.5f * (z * (2.0f - erfc_fast(a)) + s * exp(-a * a) * FC_INV_SQRT_PI);
 }
 
 /* A normal drawn from D(m) cos(theta_m): slopes (ax r cos phi, ay r sin phi) with
