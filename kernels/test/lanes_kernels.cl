@@ -204,31 +204,27 @@ __kernel void lanes_filter(__global const LanesIn* in, __global LanesOut* out) {
     OUT8(2, ob);
 }
 
-/* A pinhole, a thin lens and an orthographic camera, looking along (0.3, -0.2, -1) roughly. */
-__constant FcCamera lanes_cameras[3] = {{{0.5f, 1.0f, 4.0f},
-                                         FC_PROJECTION_PERSPECTIVE,
-                                         {0.28f, -0.19f, -0.94f},
-                                         0.0f,
-                                         {0.7f, 0.0f, 0.2f},
-                                         1.0f,
-                                         {0.05f, 0.52f, -0.09f},
-                                         0.0f},
-                                        {{0.5f, 1.0f, 4.0f},
-                                         FC_PROJECTION_PERSPECTIVE,
-                                         {0.28f, -0.19f, -0.94f},
-                                         0.08f,
-                                         {0.7f, 0.0f, 0.2f},
-                                         3.5f,
-                                         {0.05f, 0.52f, -0.09f},
-                                         0.0f},
-                                        {{0.5f, 1.0f, 4.0f},
-                                         FC_PROJECTION_ORTHOGRAPHIC,
-                                         {0.28f, -0.19f, -0.94f},
-                                         0.0f,
-                                         {2.1f, 0.0f, 0.6f},
-                                         1.0f,
-                                         {0.15f, 1.56f, -0.27f},
-                                         0.0f}};
+/* A pinhole, a thin lens and an orthographic camera, at one eye, looking along (0.3, -0.2, -1)
+ * roughly: FcCamera's fields in order (eye, projection, forward, lens radius, right, focus
+ * distance, up, padding). */
+#define LANES_EYE \
+    { 0.5f, 1.0f, 4.0f }
+#define LANES_FORWARD \
+    { 0.28f, -0.19f, -0.94f }
+#define LANES_CAMERA(projection, lens, right, focus, up) \
+    { LANES_EYE, projection, LANES_FORWARD, lens, right, focus, up, 0.0f }
+#define LANES_RIGHT \
+    { 0.7f, 0.0f, 0.2f }
+#define LANES_UP \
+    { 0.05f, 0.52f, -0.09f }
+#define LANES_ORTHO_RIGHT \
+    { 2.1f, 0.0f, 0.6f }
+#define LANES_ORTHO_UP \
+    { 0.15f, 1.56f, -0.27f }
+__constant FcCamera lanes_cameras[3] = {
+    LANES_CAMERA(FC_PROJECTION_PERSPECTIVE, 0.0f, LANES_RIGHT, 1.0f, LANES_UP),
+    LANES_CAMERA(FC_PROJECTION_PERSPECTIVE, 0.08f, LANES_RIGHT, 3.5f, LANES_UP),
+    LANES_CAMERA(FC_PROJECTION_ORTHOGRAPHIC, 0.0f, LANES_ORTHO_RIGHT, 1.0f, LANES_ORTHO_UP)};
 
 /* Camera (the work-item's index mod 3) at image position (64 a, 48 b) of a 64 x 48 image, the
  * lens at (c, d): the ray's direction, and in value 3 its origin's components summed with
