@@ -1,0 +1,128 @@
+/* The packet paths' lights (issue 29): what a lane's light sample reads per lane, a
+ * triangle's fields for the sample in lanes, the environment map's directions in lanes, and the
+ * environment's and punctual lights' samples per lane (sample_light's, lane by lane). Included
+ * by kernels/integrator/packet_paths.cl inside its lanes (FC_LW = FC_PACKET_W), after its lane
+ * helpers (l3_load, lane3, set_lane3). */
+#ifndef FACET_INTEGRATOR_PACKET_LIGHTS_CL
+#define FACET_INTEGRATOR_PACKET_LIGHTS_CL
+
+/* Lane j's fields of triangle light l, for its sample in lanes at point u of the square (its
+ * emission texture and its alpha coverage, if any, read there per lane: sample_light's). */
+inline void packet_triangle_light(const SceneView* sc, __global const FcLight* l, int j, float2 u, float* lp0,
+                                  float* le1, float* le2, float* ln, float* lc, float* lpick, float* larea,
+                                  uint* lflags) {
+    set_lane3(lp0, j, load3(l->p0));
+    set_lane3(le1, j, load3(l->e1));
+    set_lane3(le2, j, load3(l->e2));
+    set_lane3(ln, j, load3(l->n));
+#if FC_HAS_TEXTURES
+    set_lane3(lc, j,
+              load3(l->color) * emission_texture_at(sc, l->prim, sc->shading[l->prim].material, square_to_triangle(u)));
+#else
+    set_lane3(lc, j, load3(l->color));
+#endif
+#if FC_HAS_ALPHA
+    set_lane3(lc, j, lane3(lc, j) * alpha_light_coverage(sc, l->prim, square_to_triangle(u)));
+#endif
+#if !FC_HAS_TEXTURES && !FC_HAS_ALPHA
+    (void)sc;
+    (void)u;
+#endif
+    lpick[j] = l->pick_pdf;
+    larea[j] = l->area;
+    lflags[j] = l->flags;
+}
+
+/* Lane j's triangle fields where it sampled no triangle: values that keep the triangle's
+ * arithmetic in lanes finite, its results not used. */
+inline void packet_no_triangle_light(int j, float* lp0, float* le1, float* le2, float* ln, float* lpick, float* larea,
+                                     uint* lflags) {
+    set_lane3(lp0, j, (float3)(0.0f));
+    set_lane3(le1, j, (float3)(0.0f));
+    set_lane3(le2, j, (float3)(0.0f));
+    set_lane3(ln, j, (float3)(0.0f, 0.0f, 1.0f));
+    lpick[j] = 1.0f;
+    larea[j] = 1.0f;
+    lflags[j] = 0u;
+}
+
+#if FC_HAS_ENVIRONMENT
+/* Whether the environment is a map that escaped rays look up and light samples pick texels
+ * of: then the packet locates their directions in lanes (packet_env_locate,
+ * packet_env_directions), and reads the map per lane (env_map_radiance_pdf). */
+inline bool packet_env_map(__constant const FcEnvironment* env) { return env->enabled && env->width > 0; }
+
+/* The map's (u, v) (lane arrays uv: u then v) and sin(theta) of the lanes' directions dir:
+ * env_radiance_pdf's location, in lanes. */
+inline void packet_env_locate(__constant const FcEnvironment* env, const float* dir, float* uv, float* sin_theta) {
+    LFLOAT st;
+    const LVEC2 at = LNAME(env_map_dir_to_uv)(
+        LNAME(env_dir_to_map)(load3c(env->to_map[0]), load3c(env->to_map[1]), load3c(env->to_map[2]), l3_load(dir)),
+        &st);
+    LSTORE(at.x, uv);
+    LSTORE(at.y, uv + FC_PACKET_W);
+    LSTORE(st, sin_theta);
+}
+
+/* The directions of the map's points `suv` (env_sample_uv's, in lanes) in dir, and their
+ * location again (uv, sin_theta) for the lookup: env_sample's middle steps, in lanes. */
+inline void packet_env_directions(__constant const FcEnvironment* env, const float* suv, float* dir, float* uv,
+                                  float* sin_theta) {
+    const float3 r0 = load3c(env->to_map[0]), r1 = load3c(env->to_map[1]), r2 = load3c(env->to_map[2]);
+    const L3 w = LNAME(env_uv_to_dir)(r0, r1, r2, LNAME(vec2)(LLOAD(suv), LLOAD(suv + FC_PACKET_W)));
+    l3_store(w, dir);
+    LFLOAT st;
+    const LVEC2 at = LNAME(env_map_dir_to_uv)(LNAME(env_dir_to_map)(r0, r1, r2, w), &st);
+    LSTORE(at.x, uv);
+    LSTORE(at.y, uv + FC_PACKET_W);
+    LSTORE(st, sin_theta);
+}
+#endif
+
+/* A per-lane light's density, pick included, or 0 where its sample carries nothing
+ * (sample_light's test). */
+inline float packet_light_pdf(float3 li, float lpdf) {
+    return lpdf > 0.0f && isfinite(lpdf) && !is_black(li) && all_finite(li) ? lpdf : 0.0f;
+}
+
+/* The lights a lane samples per lane, where the program has them: the environment and the
+ * punctual lights. */
+#define FC_PACKET_LANE_LIGHTS (FC_HAS_ENVIRONMENT || FC_HAS_PUNCTUAL_LIGHTS)
+
+#if FC_PACKET_LANE_LIGHTS
+/* Light l, the environment or a punctual light, sampled as sample_light does from point p at u
+ * of the square: the radiance (a punctual light's irradiance at normal incidence), the
+ * direction in *wi, the density in *pdf (pick included; 0 where the sample carries nothing,
+ * sample_light's test), the shadow ray's length in *tmax (sample_direct's: short of a point
+ * light, unbounded otherwise) and in *delta whether it is a delta light (-1) or not (0). */
+inline float3 packet_lane_light(const SceneView* sc, __global const FcLight* l, float3 p, float2 u, float3* wi,
+                                float* pdf, float* tmax, int* delta) {
+    float3 li = (float3)(0.0f);
+    float lpdf = 0.0f;
+    *wi = (float3)(0.0f, 0.0f, 1.0f);
+    *tmax = INFINITY;
+    *delta = 0;
+    (void)p;
+    (void)u;
+#if FC_HAS_ENVIRONMENT
+    if (l->type == FC_LIGHT_ENVIRONMENT) {
+        float pdf_dir;
+        li = env_sample(&sc->params->environment, sc->env_texels, sc->env_dist, u, wi, &pdf_dir);
+        lpdf = pdf_dir * l->pick_pdf;
+    }
+#endif
+#if FC_HAS_PUNCTUAL_LIGHTS
+    if (l->type == FC_LIGHT_POINT || l->type == FC_LIGHT_SPOT || l->type == FC_LIGHT_DIRECTIONAL) {
+        float dist;
+        li = punctual_light_irradiance(l, p, wi, &dist);
+        lpdf = l->pick_pdf;
+        *delta = -1;
+        *tmax = isfinite(dist) ? dist * (1.0f - 1e-5f) : dist;
+    }
+#endif
+    *pdf = packet_light_pdf(li, lpdf);
+    return li;
+}
+#endif
+
+#endif
