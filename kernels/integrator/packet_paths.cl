@@ -8,7 +8,7 @@
  * triangles' tree and the spheres' together (kernels/trace/packet_trace.cl, packet_sphere.cl:
  * the same tests, so the same hits but where two surfaces tie); the surface and its textures,
  * the emission met (or the environment map's texel, when a ray escapes), the camera ray (in
- * lanes when four or more paths begin at once: kernels/camera/camera_lanes.cl), the texel an
+ * lanes when three or more paths begin at once: kernels/camera/camera_lanes.cl), the texel an
  * environment sample picks, a punctual light's sample and the film's sum run per lane through
  * the scalar functions; the sampler, the frame, a triangle light's sample, the environment
  * map's directions (to and from the map's (u, v): kernels/lights/environment_lanes.cl), MIS, a
@@ -295,7 +295,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             if (fresh) {
                 /* the paths begun: their camera rays, in lanes when there are a few of them
                  * (else per lane: pixel_sample_ray's) */
-                if (popcount(fresh) >= 4) {
+                if (popcount(fresh) >= 3) {
                     LFLOAT uc[4];
                     LNAME(sampler_get4)(LLOAD(seed), LLOAD(irev), (LUINT)(FC_SET_CAMERA), uc);
                     L3 co, cd;
