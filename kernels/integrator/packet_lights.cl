@@ -54,11 +54,10 @@ inline bool packet_env_map(__constant const FcEnvironment* env) { return env->en
 
 /* The map's (u, v) (lane arrays uv: u then v) and sin(theta) of the lanes' directions dir:
  * env_radiance_pdf's location, in lanes. */
-inline void packet_env_locate(__constant const FcEnvironment* env, const float* dir, float* uv, float* sin_theta) {
+inline void packet_env_locate(__constant const FcEnvironment* env, L3 dir, float* uv, float* sin_theta) {
     LFLOAT st;
     const LVEC2 at = LNAME(env_map_dir_to_uv)(
-        LNAME(env_dir_to_map)(load3c(env->to_map[0]), load3c(env->to_map[1]), load3c(env->to_map[2]), l3_load(dir)),
-        &st);
+        LNAME(env_dir_to_map)(load3c(env->to_map[0]), load3c(env->to_map[1]), load3c(env->to_map[2]), dir), &st);
     LSTORE(at.x, uv);
     LSTORE(at.y, uv + FC_PACKET_W);
     LSTORE(st, sin_theta);
@@ -68,14 +67,10 @@ inline void packet_env_locate(__constant const FcEnvironment* env, const float* 
  * location again (uv, sin_theta) for the lookup: env_sample's middle steps, in lanes. */
 inline void packet_env_directions(__constant const FcEnvironment* env, const float* suv, float* dir, float* uv,
                                   float* sin_theta) {
-    const float3 r0 = load3c(env->to_map[0]), r1 = load3c(env->to_map[1]), r2 = load3c(env->to_map[2]);
-    const L3 w = LNAME(env_uv_to_dir)(r0, r1, r2, LNAME(vec2)(LLOAD(suv), LLOAD(suv + FC_PACKET_W)));
+    const L3 w = LNAME(env_uv_to_dir)(load3c(env->to_map[0]), load3c(env->to_map[1]), load3c(env->to_map[2]),
+                                      LNAME(vec2)(LLOAD(suv), LLOAD(suv + FC_PACKET_W)));
     l3_store(w, dir);
-    LFLOAT st;
-    const LVEC2 at = LNAME(env_map_dir_to_uv)(LNAME(env_dir_to_map)(r0, r1, r2, w), &st);
-    LSTORE(at.x, uv);
-    LSTORE(at.y, uv + FC_PACKET_W);
-    LSTORE(st, sin_theta);
+    packet_env_locate(env, w, uv, sin_theta);
 }
 #endif
 

@@ -334,7 +334,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             /* the escaped rays' directions on the map, in lanes */
             float euv[2 * FC_PACKET_W], est[FC_PACKET_W];
             const bool env_map = packet_env_map(&P->environment);
-            if (env_map && (need & ~met)) packet_env_locate(&P->environment, d, euv, est);
+            if (env_map && (need & ~met)) packet_env_locate(&P->environment, l3_load(d), euv, est);
 #endif
             for (uint rest = need; rest; rest &= rest - 1u) {
                 const int j = (int)lowest_bit(rest);

@@ -146,6 +146,14 @@ inline float3 env_map_radiance_pdf(__constant const FcEnvironment* env, __global
     return value;
 }
 
+/* env_map_radiance_pdf at world direction `dir` of a map (width > 0): located, then looked up. */
+inline float3 env_map_dir_radiance_pdf(__constant const FcEnvironment* env, __global const float4* texels,
+                                       __global const float* dist, float3 dir, float* pdf) {
+    float sin_theta;
+    const float2 uv = env_map_dir_to_uv_l1(env_dir_to_map(env, dir), &sin_theta);
+    return env_map_radiance_pdf(env, texels, dist, uv, sin_theta, pdf);
+}
+
 /* Solid-angle density with which env_sample produces `dir`, and the radiance along it, by one
  * lookup (a ray that escaped after a BSDF sample needs both). */
 inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global const float4* texels,
@@ -157,9 +165,7 @@ inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global con
         *pdf = is_black(scale) ? 0.0f : FC_INV_4PI;
         return scale;
     }
-    float sin_theta;
-    const float2 uv = env_map_dir_to_uv_l1(env_dir_to_map(env, dir), &sin_theta);
-    return env_map_radiance_pdf(env, texels, dist, uv, sin_theta, pdf);
+    return env_map_dir_radiance_pdf(env, texels, dist, dir, pdf);
 }
 
 /* Solid-angle density with which env_sample produces `dir` (env_radiance_pdf's). */
@@ -284,8 +290,8 @@ inline float2 env_sample_uv(__constant const FcEnvironment* env, __global const 
 /* Samples a direction toward the environment: returns the radiance along it, `dir`
  * (world, unit) and its solid-angle pdf, which is 0 when nothing can be sampled (no
  * environment, a black map, or a direction that landed exactly on a pole). A map's sample
- * is env_sample_uv's point, turned into a direction (env_uv_to_dir) and located again
- * (env_dir_to_map, env_map_dir_to_uv) for env_map_radiance_pdf's lookup, so that its
+ * is env_sample_uv's point, turned into a direction (env_uv_to_dir) and located again for
+ * the lookup (env_map_dir_radiance_pdf), so that its
  * radiance and pdf are those env_radiance_pdf gives that direction; the packet paths run the
  * same steps, the middle two in lanes. */
 inline float3 env_sample(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
@@ -306,9 +312,7 @@ inline float3 env_sample(__constant const FcEnvironment* env, __global const flo
     }
     if (!(env->total > 0.0f)) return (float3)(0.0f);
     *dir = env_uv_to_dir(env, env_sample_uv(env, texels, dist, u));
-    float sin_theta;
-    const float2 uv = env_map_dir_to_uv_l1(env_dir_to_map(env, *dir), &sin_theta);
-    return env_map_radiance_pdf(env, texels, dist, uv, sin_theta, pdf);
+    return env_map_dir_radiance_pdf(env, texels, dist, *dir, pdf);
 }
 
 #endif
