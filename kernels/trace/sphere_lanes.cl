@@ -13,18 +13,20 @@ inline LINT LNAME(sphere_roots)(LFLOAT cx, LFLOAT cy, LFLOAT cz, LFLOAT r, LFLOA
                                 LFLOAT dy, LFLOAT dz, LFLOAT* t0, LFLOAT* t1) {
     const LFLOAT fx = ox - cx, fy = oy - cy, fz = oz - cz;
     const LFLOAT a = dx * dx + dy * dy + dz * dz;
+    /* 1 / a depends on the ray alone: a caller testing many spheres computes it once */
+    const LFLOAT inv_a = 1.0f / a;
     const LFLOAT b = fx * dx + fy * dy + fz * dz; /* half the quadratic's b */
     /* The centre to the line's closest point, and the discriminant from it. */
-    const LFLOAT s = b / a;
+    const LFLOAT s = b * inv_a;
     const LFLOAT lx = fx - s * dx, ly = fy - s * dy, lz = fz - s * dz;
     const LFLOAT ll = sqrt(lx * lx + ly * ly + lz * lz);
     const LFLOAT disc = (r - ll) * (r + ll);
-    /* c = |f|^2 - r^2, its sign exact once |f| - r is beyond rounding. */
-    const LFLOAT lf = sqrt(fx * fx + fy * fy + fz * fz);
-    const LFLOAT cc = (lf - r) * (lf + r);
+    /* c = |f|^2 - r^2 as pbrt-v4 forms it, r^2 subtracted in one rounding: its sign is exact
+     * once |f| - r is beyond rounding, which the spawn offset ensures (sphere.cl) */
+    const LFLOAT cc = fma(-r, r, fx * fx + fy * fy + fz * fz);
     /* a lane that misses takes the square root of a negative: its roots are not used */
     const LFLOAT q = -(b + copysign(sqrt(a * disc), b));
-    const LFLOAT n0 = cc / q, n1 = q / a;
+    const LFLOAT n0 = cc / q, n1 = q * inv_a;
     *t0 = fmin(n0, n1);
     *t1 = fmax(n0, n1);
     return disc >= 0.0f;
