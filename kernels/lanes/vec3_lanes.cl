@@ -31,6 +31,13 @@ inline LVEC3 LNAME(vec3)(LFLOAT x, LFLOAT y, LFLOAT z) {
 inline bool LNAME(lanes_any)(LINT m) {
     return __builtin_ia32_movmskps256(__builtin_convertvector(as_float8(m), FcLanesV8sf)) != 0;
 }
+#elif defined(__AVX512DQ__)
+/* With AVX-512 the sixteen lanes' sign bits are one mask register (vpmovd2m), which LLVM
+ * folds into the comparison that made m: one kortest, where the movmskps form widens the
+ * comparison's mask to a vector, halves it and ors the halves first. */
+inline bool LNAME(lanes_any)(LINT m) {
+    return __builtin_ia32_cvtd2mask512(__builtin_convertvector(m, FcLanesV16si)) != 0;
+}
 #else
 inline bool LNAME(lanes_any)(LINT m) {
     return __builtin_ia32_movmskps256(__builtin_convertvector(as_float8(m.lo | m.hi), FcLanesV8sf)) != 0;

@@ -37,6 +37,9 @@
 /* Bit j of the result: lane j of mask m is set (lane_bits_w of the 8-wide nodes' masks). */
 #if FC_PACKET_W == 8
 inline uint packet_bits(LINT m) { return lane_bits_w(m); }
+#elif defined(__AVX512DQ__)
+/* one vpmovd2m, folded by LLVM into the comparison that made m (vec3_lanes.cl's lanes_any) */
+inline uint packet_bits(LINT m) { return (uint)__builtin_ia32_cvtd2mask512(__builtin_convertvector(m, FcLanesV16si)); }
 #else
 inline uint packet_bits(LINT m) { return lane_bits_w(m.lo) | (lane_bits_w(m.hi) << 8); }
 #endif
