@@ -217,6 +217,11 @@ TEST(Lanes, SamplerGet4GivesTheScalarSamplersPoints) {
     EXPECT_EQ(mismatches("lanes_sampler_get4", inputs(0.0f, 1.0f), 4), 0);
 }
 
+TEST(Lanes, SamplerGet4At16LanesGivesTheScalarSamplersPoints) {
+    // On AVX-512 CPUs the packets are 16 wide and the Sobol' chunks are indexed in registers.
+    EXPECT_EQ(mismatches("lanes_sampler_get4_16", inputs(0.0f, 1.0f), 4), 0);
+}
+
 TEST(Lanes, HashesSameBitsAtWidths1And8) { EXPECT_EQ(mismatches("lanes_hashes", inputs(0.0f, 1.0f), 4), 0); }
 
 TEST(Lanes, HashesSameBitsAtWidths1And4) { EXPECT_EQ(mismatches("lanes_hashes4", inputs(0.0f, 1.0f), 4), 0); }

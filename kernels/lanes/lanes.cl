@@ -48,7 +48,8 @@ typedef struct {
 #if defined(__AVX__) && defined(__clang__)
 /* eight floats as clang's x86 builtins take them (vec3_lanes.cl's lanes_any) */
 typedef float FcLanesV8sf __attribute__((__vector_size__(32)));
-/* sixteen ints as clang's AVX-512 builtins take them */
+/* eight and sixteen ints as clang's AVX2 and AVX-512 builtins take them */
+typedef int FcLanesV8si __attribute__((__vector_size__(32)));
 typedef int FcLanesV16si __attribute__((__vector_size__(64)));
 #endif
 

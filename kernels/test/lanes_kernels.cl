@@ -288,6 +288,40 @@ __kernel void lanes_sampler_get4(__global const LanesIn* in, __global LanesOut* 
     for (int v = 0; v < 4; ++v) OUT8(v, u[v]);
 }
 
+/* The sampler at W = 16 (the packets' width on AVX-512 CPUs, where the Sobol' chunks are
+ * indexed in one 512-bit register), instantiated here beside the program's W = 8. */
+#define FC_LW 16
+#include "kernels/lanes/lanes_open.cl"
+#include "kernels/util/hash_lanes.cl"
+#include "kernels/util/sampler_lanes.cl"
+#include "kernels/lanes/lanes_close.cl"
+
+/* The W = 16 sampler against the scalar one: lanes 8-15 take lanes 7-0's inputs, so each
+ * lane j's value (eight) stands only where lane 15 - j gave the same bits (else NaN). */
+__kernel void lanes_sampler_get4_16(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    uint seed[16], index_reversed[16], set[16];
+    for (int j = 0; j < 8; ++j) {
+        Sampler s = sampler_init(FC_SAMPLER_SOBOL, in[i].k[j], in[i].m[j], in[i].n[j]);
+        float4 u = sampler_get4(&s, in[i].n[j] % 37u);
+        out[i].one[0][j] = u.x;
+        out[i].one[1][j] = u.y;
+        out[i].one[2][j] = u.z;
+        out[i].one[3][j] = u.w;
+        seed[j] = seed[15 - j] = s.seed;
+        index_reversed[j] = index_reversed[15 - j] = s.index_reversed;
+        set[j] = set[15 - j] = in[i].n[j] % 37u;
+    }
+    float16 u[4];
+    sampler_get4_l16(vload16(0, seed), vload16(0, index_reversed), vload16(0, set), u);
+    for (int v = 0; v < 4; ++v) {
+        float w[16];
+        vstore16(u[v], 0, w);
+        for (int j = 0; j < 8; ++j) out[i].eight[v][j] = as_uint(w[j]) == as_uint(w[15 - j]) ? w[j] : NAN;
+    }
+}
+
 /* The hashes at widths 1, 4 and 8, as bit patterns. */
 __kernel void lanes_hashes(__global const LanesIn* in, __global LanesOut* out) {
     uint i = get_global_id(0);
