@@ -62,12 +62,9 @@ inline float specular_probability(const FcMaterial* m, float3 wo) {
     return (s + d > 0.0f) ? clamp(s / (s + d), 0.05f, 0.95f) : 0.5f;
 }
 
-inline float3 bsdf_base_eval(const FcMaterial* m, float3 wo, float3 wi) {
-#if FC_HAS_DIELECTRIC
-    if (bsdf_is_dielectric(m)) return dielectric_eval(m, wo, wi);
-#endif
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
-    float3 f = diffuse_eval(m, wo, wi) + specular_eval(m, wo, wi);
+/* The two-lobe base's f at wi from its specular lobe's own value fs there. */
+inline float3 bsdf_base_f(const FcMaterial* m, float3 wo, float3 wi, float3 fs) {
+    float3 f = diffuse_eval(m, wo, wi) + fs;
     if (metallic_mixed(m)) {
         FcMaterial metal = metallic_lobe(m);
         f = mix(f, specular_eval(&metal, wo, wi), metallic_weight(m));
@@ -75,16 +72,43 @@ inline float3 bsdf_base_eval(const FcMaterial* m, float3 wo, float3 wi) {
     return f;
 }
 
+/* The two-lobe base's density of wi from its specular lobe's own density ps there. */
+inline float bsdf_base_density(const FcMaterial* m, float3 wo, float3 wi, float ps) {
+    float p = specular_probability(m, wo);
+    float pdf = 0.0f;
+    if (p < 1.0f) pdf += (1.0f - p) * diffuse_pdf(m, wo, wi);
+    if (p > 0.0f) pdf += p * ps;
+    return pdf;
+}
+
+inline float3 bsdf_base_eval(const FcMaterial* m, float3 wo, float3 wi) {
+#if FC_HAS_DIELECTRIC
+    if (bsdf_is_dielectric(m)) return dielectric_eval(m, wo, wi);
+#endif
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
+    return bsdf_base_f(m, wo, wi, specular_eval(m, wo, wi));
+}
+
 inline float bsdf_base_pdf(const FcMaterial* m, float3 wo, float3 wi) {
 #if FC_HAS_DIELECTRIC
     if (bsdf_is_dielectric(m)) return dielectric_pdf(m, wo, wi);
 #endif
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-    float p = specular_probability(m, wo);
-    float pdf = 0.0f;
-    if (p < 1.0f) pdf += (1.0f - p) * diffuse_pdf(m, wo, wi);
-    if (p > 0.0f) pdf += p * specular_pdf(m, wo, wi);
-    return pdf;
+    return bsdf_base_density(m, wo, wi, specular_pdf(m, wo, wi));
+}
+
+/* bsdf_base_eval's value and bsdf_base_pdf's in *pdf at once, each lobe's shared work done
+ * once (the same bits as the two calls). */
+inline float3 bsdf_base_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, float* pdf) {
+#if FC_HAS_DIELECTRIC
+    if (bsdf_is_dielectric(m)) return dielectric_eval_pdf(m, wo, wi, pdf);
+#endif
+    *pdf = 0.0f;
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
+    float ps;
+    const float3 fs = specular_eval_pdf(m, wo, wi, &ps);
+    *pdf = bsdf_base_density(m, wo, wi, ps);
+    return bsdf_base_f(m, wo, wi, fs);
 }
 
 /* Whether every lobe of the BSDF is a delta (next-event estimation is useless). */
@@ -118,8 +142,15 @@ inline bool bsdf_base_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSampl
     if (m->diffuse_model == FC_DIFFUSE_LAMBERT && m->specular_model == FC_SPECULAR_NONE)
         return lambert_only_sample(m, u.xy, s);
     float p = specular_probability(m, wo);
+    float pdf;
     if (u.z < p) {
         if (!specular_sample(m, wo, u.xy, s)) return false;
+        if (!s->delta && m->specular_model == FC_SPECULAR_MICROFACET) {
+            /* the microfacet lobe's sample carries its own f and density at wi
+             * (microfacet_eval_pdf's): the base's follow from them */
+            if (s->wi.z <= 0.0f) return false;
+            return finish_sample(s, bsdf_base_f(m, wo, s->wi, s->f), bsdf_base_density(m, wo, s->wi, s->pdf));
+        }
         if (s->delta) {
             if (metallic_mixed(m)) { /* the mirror's reflectance, (1 - M) F_dielectric + M F_metal */
                 FcMaterial metal = metallic_lobe(m);
@@ -132,7 +163,8 @@ inline bool bsdf_base_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSampl
         return false;
     }
     if (s->wi.z <= 0.0f) return false;
-    return finish_sample(s, bsdf_base_eval(m, wo, s->wi), bsdf_base_pdf(m, wo, s->wi));
+    const float3 f = bsdf_base_eval_pdf(m, wo, s->wi, &pdf);
+    return finish_sample(s, f, pdf);
 }
 
 /* The layers' weights seen from wo: the coat's albedo share c E_coat (x), the sheen's weight
@@ -167,11 +199,9 @@ inline float2 bsdf_layer_probabilities(const FcMaterial* m, float4 w) {
     return (float2)(pc, ps);
 }
 
-inline float3 bsdf_eval(const FcMaterial* m, float3 wo, float3 wi) {
-    if (!bsdf_layered(m)) return bsdf_base_eval(m, wo, wi);
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
-    float4 w = bsdf_layer_weights(m, wo);
-    float3 f = bsdf_base_eval(m, wo, wi) * w.y;
+/* The layered BSDF's f at wi from the layers' weights w seen from wo and the base's value fb. */
+inline float3 bsdf_layered_f(const FcMaterial* m, float3 wo, float3 wi, float4 w, float3 fb) {
+    float3 f = fb * w.y;
     if (sheen_present(m)) f += sheen_eval(m, wo, wi);
     f *= w.z;
     if (clearcoat_present(m)) {
@@ -181,17 +211,41 @@ inline float3 bsdf_eval(const FcMaterial* m, float3 wo, float3 wi) {
     return f;
 }
 
-inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
-    if (!bsdf_layered(m)) return bsdf_base_pdf(m, wo, wi);
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-    float2 p = bsdf_layer_probabilities(m, bsdf_layer_weights(m, wo));
-    float pdf = (1.0f - p.x - p.y) * bsdf_base_pdf(m, wo, wi);
+/* The layered BSDF's density of wi from the layers' weights w and the base's density pb. */
+inline float bsdf_layered_density(const FcMaterial* m, float3 wo, float3 wi, float4 w, float pb) {
+    float2 p = bsdf_layer_probabilities(m, w);
+    float pdf = (1.0f - p.x - p.y) * pb;
     if (p.y > 0.0f) pdf += p.y * cosine_hemisphere_pdf(wo, wi);
     if (p.x > 0.0f) {
         FcMaterial coat = clearcoat_lobe(m);
         pdf += p.x * clearcoat_pdf(m, &coat, wo, wi);
     }
     return pdf;
+}
+
+inline float3 bsdf_eval(const FcMaterial* m, float3 wo, float3 wi) {
+    if (!bsdf_layered(m)) return bsdf_base_eval(m, wo, wi);
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
+    return bsdf_layered_f(m, wo, wi, bsdf_layer_weights(m, wo), bsdf_base_eval(m, wo, wi));
+}
+
+inline float bsdf_pdf(const FcMaterial* m, float3 wo, float3 wi) {
+    if (!bsdf_layered(m)) return bsdf_base_pdf(m, wo, wi);
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    return bsdf_layered_density(m, wo, wi, bsdf_layer_weights(m, wo), bsdf_base_pdf(m, wo, wi));
+}
+
+/* bsdf_eval's value and bsdf_pdf's in *pdf at once (the same bits as the two calls), for
+ * next-event estimation and a sample's weight, which need both: each lobe's work shared. */
+inline float3 bsdf_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, float* pdf) {
+    if (!bsdf_layered(m)) return bsdf_base_eval_pdf(m, wo, wi, pdf);
+    *pdf = 0.0f;
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
+    const float4 w = bsdf_layer_weights(m, wo);
+    float pb;
+    const float3 fb = bsdf_base_eval_pdf(m, wo, wi, &pb);
+    *pdf = bsdf_layered_density(m, wo, wi, w, pb);
+    return bsdf_layered_f(m, wo, wi, w, fb);
 }
 
 /* Whether every lobe of the BSDF is a delta (next-event estimation is useless). */
@@ -229,7 +283,9 @@ inline bool bsdf_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s)
         }
     }
     if (!(s->wi.z > 0.0f)) return false;
-    return finish_sample(s, bsdf_eval(m, wo, s->wi), bsdf_pdf(m, wo, s->wi));
+    float pdf;
+    const float3 f = bsdf_eval_pdf(m, wo, s->wi, &pdf);
+    return finish_sample(s, f, pdf);
 }
 
 #endif

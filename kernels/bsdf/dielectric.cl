@@ -101,11 +101,39 @@ inline float dielectric_lobe_fresnel(const FcMaterial* m, const DielectricPair* 
     return fresnel_dielectric_transmittance(fabs(oh), fabs(ih), p->etap);
 }
 
-/* The density of h seen from wo (either side): the NDF's, for wo turned to +z. */
-inline float dielectric_pdf_h(const FcMaterial* m, float3 wo, float3 h) {
+/* The density of h seen from wo (either side): the NDF's, for wo turned to +z; d = D(h) is
+ * read for visible normals only. */
+inline float dielectric_pdf_h_d(const FcMaterial* m, float3 wo, float3 h, float d) {
     float3 wv = wo.z < 0.0f ? -wo : wo;
-    if (ndf_samples_visible(m)) return ndf_D(m, h) * fmax(dot(wv, h), 0.0f) / ndf_projected_area(m, wv);
+    if (ndf_samples_visible(m)) return d * fmax(dot(wv, h), 0.0f) / ndf_projected_area(m, wv);
     return ndf_pdf(m, wv, h);
+}
+
+/* The BSDF of the pair p (oh = wo.h, ih = wi.h, fl its lobe's Fresnel factor) where D(h) = d. */
+inline float3 dielectric_eval_at(const FcMaterial* m, float3 wo, float3 wi, const DielectricPair* p, float d, float oh,
+                                 float ih, float fl) {
+    if (!(d > 0.0f)) return (float3)(0.0f);
+    float g = dielectric_G(m, wo, wi);
+    float3 f;
+    if (p->reflect) {
+        f = (float3)(d * g * fl / (4.0f * fabs(wo.z) * fabs(wi.z)));
+    } else {
+        /* Eq. 21 as the BTDF of importance (no scaling, pbrt-v4's Importance mode),
+         * (1 - F) D G |wi.h| |wo.h| etap^2 / (|cos_i| |cos_o| |wo + etap wi|^2), times the
+         * radiance scaling 1 / etap^2 (|wo + etap wi| = |n_i wi.h + n_o wo.h| / n_o). */
+        float importance =
+            fl * d * g * fabs(ih * oh) / (fabs(wi.z) * fabs(wo.z)) * (p->etap * p->etap) / (p->len * p->len);
+        f = dielectric_tint(m) * (importance / (p->etap * p->etap));
+    }
+    if (ec_enabled(m)) f /= ec_dielectric_albedo(m, wo); /* Turquin 2019 (energy_compensation.cl) */
+    return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
+}
+
+/* The density of wi for the pair p, from h's density pdf_h. */
+inline float dielectric_pdf_at(const DielectricPair* p, float oh, float ih, float fl, float pdf_h) {
+    float pdf =
+        p->reflect ? fl * pdf_h / (4.0f * fabs(oh)) : fl * pdf_h * (p->etap * p->etap) * fabs(ih) / (p->len * p->len);
+    return isfinite(pdf) ? fmax(pdf, 0.0f) : 0.0f;
 }
 
 inline float3 dielectric_eval(const FcMaterial* m, float3 wo, float3 wi) {
@@ -113,21 +141,8 @@ inline float3 dielectric_eval(const FcMaterial* m, float3 wo, float3 wi) {
     if (dielectric_is_smooth(m) || !dielectric_pair(m, wo, wi, &p)) return (float3)(0.0f);
     float d = ndf_D(m, p.h);
     if (!(d > 0.0f)) return (float3)(0.0f);
-    float g = dielectric_G(m, wo, wi);
     float oh = dot(wo, p.h), ih = dot(wi, p.h);
-    float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
-    float3 f;
-    if (p.reflect) {
-        f = (float3)(d * g * fl / (4.0f * fabs(wo.z) * fabs(wi.z)));
-    } else {
-        /* Eq. 21 as the BTDF of importance (no scaling, pbrt-v4's Importance mode),
-         * (1 - F) D G |wi.h| |wo.h| etap^2 / (|cos_i| |cos_o| |wo + etap wi|^2), times the
-         * radiance scaling 1 / etap^2 (|wo + etap wi| = |n_i wi.h + n_o wo.h| / n_o). */
-        float importance = fl * d * g * fabs(ih * oh) / (fabs(wi.z) * fabs(wo.z)) * (p.etap * p.etap) / (p.len * p.len);
-        f = dielectric_tint(m) * (importance / (p.etap * p.etap));
-    }
-    if (ec_enabled(m)) f /= ec_dielectric_albedo(m, wo); /* Turquin 2019 (energy_compensation.cl) */
-    return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
+    return dielectric_eval_at(m, wo, wi, &p, d, oh, ih, dielectric_lobe_fresnel(m, &p, oh, ih));
 }
 
 inline float dielectric_pdf(const FcMaterial* m, float3 wo, float3 wi) {
@@ -135,10 +150,21 @@ inline float dielectric_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     if (dielectric_is_smooth(m) || !dielectric_pair(m, wo, wi, &p)) return 0.0f;
     float oh = dot(wo, p.h), ih = dot(wi, p.h);
     float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
-    float pdf_h = dielectric_pdf_h(m, wo, p.h);
-    float pdf =
-        p.reflect ? fl * pdf_h / (4.0f * fabs(oh)) : fl * pdf_h * (p.etap * p.etap) * fabs(ih) / (p.len * p.len);
-    return isfinite(pdf) ? fmax(pdf, 0.0f) : 0.0f;
+    float d = ndf_samples_visible(m) ? ndf_D(m, p.h) : 0.0f;
+    return dielectric_pdf_at(&p, oh, ih, fl, dielectric_pdf_h_d(m, wo, p.h, d));
+}
+
+/* dielectric_eval's value and dielectric_pdf's in *pdf at once: the pair, D(h) and the
+ * Fresnel factor found once for both (the same bits as the two calls). */
+inline float3 dielectric_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, float* pdf) {
+    DielectricPair p;
+    *pdf = 0.0f;
+    if (dielectric_is_smooth(m) || !dielectric_pair(m, wo, wi, &p)) return (float3)(0.0f);
+    float d = ndf_D(m, p.h);
+    float oh = dot(wo, p.h), ih = dot(wi, p.h);
+    float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
+    *pdf = dielectric_pdf_at(&p, oh, ih, fl, dielectric_pdf_h_d(m, wo, p.h, d));
+    return dielectric_eval_at(m, wo, wi, &p, d, oh, ih, fl);
 }
 
 /* The smooth interface: reflect with probability F, else refract (delta lobes). */
@@ -174,7 +200,9 @@ inline bool dielectric_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSamp
         if (!refract_about(wo, h, m->ior, &s->wi)) return false; /* eq. 40 */
         if (!(s->wi.z * wo.z < 0.0f)) return false;
     }
-    return finish_sample(s, dielectric_eval(m, wo, s->wi), dielectric_pdf(m, wo, s->wi));
+    float pdf;
+    const float3 f = dielectric_eval_pdf(m, wo, s->wi, &pdf);
+    return finish_sample(s, f, pdf);
 }
 
 #endif

@@ -61,12 +61,9 @@ inline bool microfacet_half_vector(float3 wo, float3 wi, float3* h, float* wo_h)
     return true;
 }
 
-inline float3 microfacet_eval(const FcMaterial* m, float3 wo, float3 wi) {
-    float3 h;
-    float wo_h;
-    if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return (float3)(0.0f);
+/* The BRDF at wi of half vector h, where D(h) = d. */
+inline float3 microfacet_eval_at(const FcMaterial* m, float3 wo, float3 wi, float3 h, float d) {
     float3 f = ec_enabled(m) ? ec_ms_eval(m, wo, wi) : (float3)(0.0f);
-    float d = ndf_D(m, h);
     if (!(d > 0.0f)) return all_finite(f) ? f : (float3)(0.0f); /* D underflows far from a narrow peak */
     /* G / (4 cos_o cos_i); the implicit G cancels the denominator exactly. */
     float g_over = (m->geometry == FC_G_IMPLICIT) ? 0.25f : geometry_G(m, wo, wi, h) / (4.0f * wo.z * wi.z);
@@ -74,24 +71,50 @@ inline float3 microfacet_eval(const FcMaterial* m, float3 wo, float3 wi) {
     return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
 }
 
-/* The density of the NDF's sampling, for wi of half vector h (wo.h = wo_h). */
+inline float3 microfacet_eval(const FcMaterial* m, float3 wo, float3 wi) {
+    float3 h;
+    float wo_h;
+    if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return (float3)(0.0f);
+    return microfacet_eval_at(m, wo, wi, h, ndf_D(m, h));
+}
+
+/* The density of the NDF's sampling, for wi of half vector h (wo.h = wo_h): ndf_pdf(h) /
+ * (4 wo.h); for visible normals the factor wo.h cancels analytically, D(h) / (4 wo.z (1 +
+ * Lambda(wo))), which keeps f cos / pdf = G F / G1(wo) <= 1 in float even where wo.h suffers
+ * cancellation (wi ~ -wo at grazing angles). */
 inline float microfacet_ss_pdf(const FcMaterial* m, float3 wo, float3 h, float wo_h) {
-    /* ndf_pdf(h) / (4 wo.h); for visible normals the factor wo.h cancels analytically,
-     * D(h) / (4 wo.z (1 + Lambda(wo))), which keeps f cos / pdf = G F / G1(wo) <= 1 in
-     * float even where wo.h suffers cancellation (wi ~ -wo at grazing angles). */
     return ndf_samples_visible(m) ? ndf_reflection_pdf_visible(m, wo, h) : ndf_pdf(m, wo, h) / (4.0f * wo_h);
+}
+
+/* The lobe's density at wi from its NDF sampler's density q there: with compensation, the
+ * cosine-sampled multiple-scattering lobe's share mixed in. */
+inline float microfacet_pdf_from(const FcMaterial* m, float3 wo, float3 wi, float q) {
+    if (ec_enabled(m)) {
+        float p = ec_ms_probability(m, wo);
+        q = p * cosine_hemisphere_pdf(wo, wi) + (1.0f - p) * q;
+    }
+    return isfinite(q) ? fmax(q, 0.0f) : 0.0f;
 }
 
 inline float microfacet_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     float3 h;
     float wo_h;
     if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return 0.0f;
-    float pdf = microfacet_ss_pdf(m, wo, h, wo_h);
-    if (ec_enabled(m)) {
-        float p = ec_ms_probability(m, wo);
-        pdf = p * cosine_hemisphere_pdf(wo, wi) + (1.0f - p) * pdf;
-    }
-    return isfinite(pdf) ? fmax(pdf, 0.0f) : 0.0f;
+    return microfacet_pdf_from(m, wo, wi, microfacet_ss_pdf(m, wo, h, wo_h));
+}
+
+/* microfacet_eval's value, and microfacet_pdf's in *pdf, at once: the half vector and D(h)
+ * found once for both (the same operations, so the same bits as the two calls). */
+inline float3 microfacet_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, float* pdf) {
+    float3 h;
+    float wo_h;
+    *pdf = 0.0f;
+    if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return (float3)(0.0f);
+    const float d = ndf_D(m, h);
+    *pdf = microfacet_pdf_from(
+        m, wo, wi,
+        ndf_samples_visible(m) ? ndf_reflection_pdf_visible_d(m, wo, h, d) : ndf_pdf(m, wo, h) / (4.0f * wo_h));
+    return microfacet_eval_at(m, wo, wi, h, d);
 }
 
 inline bool microfacet_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSample* s) {
@@ -115,7 +138,9 @@ inline bool microfacet_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSamp
         /* Draw a normal, reflect wo about it (Walter 2007, eq. 39). */
         if (!reflect_about(wo, ndf_sample(m, wo, u), &s->wi)) return false;
     }
-    return finish_sample(s, microfacet_eval(m, wo, s->wi), microfacet_pdf(m, wo, s->wi));
+    float pdf;
+    const float3 f = microfacet_eval_pdf(m, wo, s->wi, &pdf);
+    return finish_sample(s, f, pdf);
 }
 
 #endif

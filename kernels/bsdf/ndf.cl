@@ -121,4 +121,10 @@ inline float ndf_reflection_pdf_visible(const FcMaterial* m, float3 wo, float3 h
     return ndf_D(m, h) / (4.0f * ndf_projected_area(m, wo));
 }
 
+/* The same, given d = ndf_D(m, h) (the BRDF's own, when it is evaluated with its density). */
+inline float ndf_reflection_pdf_visible_d(const FcMaterial* m, float3 wo, float3 h, float d) {
+    if (ndf_samples_bounded(m)) return ggx_reflection_pdf_bounded(m->alpha_x, m->alpha_y, wo, h);
+    return d / (4.0f * ndf_projected_area(m, wo));
+}
+
 #endif

@@ -52,6 +52,15 @@ inline float specular_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     }
 }
 
+/* specular_eval's value and specular_pdf's in *pdf, the microfacet lobe's at once. */
+inline float3 specular_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, float* pdf) {
+#if FC_HAS_MICROFACET
+    if (m->specular_model == FC_SPECULAR_MICROFACET) return microfacet_eval_pdf(m, wo, wi, pdf);
+#endif
+    *pdf = specular_pdf(m, wo, wi);
+    return specular_eval(m, wo, wi);
+}
+
 /* Samples the lobe alone: s->f and s->pdf are the lobe's own. */
 inline bool specular_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSample* s) {
     switch (m->specular_model) {

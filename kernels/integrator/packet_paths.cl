@@ -605,10 +605,14 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 if (!ga[j]) continue;
                 ga[j] = 0;
                 if (delta_bsdf[j]) continue;
-                const float3 f = bsdf_eval(&mats[j], lane3(wol, j), lane3(wil, j));
+                /* with MIS, f and its density at once (bsdf_eval_pdf: the same bits as the two) */
+                float pdf_j = 0.0f;
+                const float3 f = P->strategy == FC_STRATEGY_MIS
+                                     ? bsdf_eval_pdf(&mats[j], lane3(wol, j), lane3(wil, j), &pdf_j)
+                                     : bsdf_eval(&mats[j], lane3(wol, j), lane3(wil, j));
                 if (is_black(f)) continue;
                 set_lane3(fa, j, f);
-                if (P->strategy == FC_STRATEGY_MIS) pa[j] = bsdf_pdf(&mats[j], lane3(wol, j), lane3(wil, j));
+                pa[j] = pdf_j;
                 ga[j] = -1;
             }
             ok = select(ok, LLOAD(ga), G);

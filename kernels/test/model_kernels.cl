@@ -22,6 +22,22 @@ __kernel void models_eval(__global const FcMaterial* mats, __global const float*
     out[4 * i + 3] = bsdf_pdf(&m, wo, wi);
 }
 
+/* bsdf_eval_pdf against bsdf_eval and bsdf_pdf on the same pairs: out[i] = 1 where any of
+ * the four values differs in its bits. */
+__kernel void models_eval_pdf_bits(__global const FcMaterial* mats, __global const float* dirs, __global int* out,
+                                   int n) {
+    int i = (int)get_global_id(0);
+    if (i >= n) return;
+    FcMaterial m = mats[i];
+    float3 wo = vload3(2 * i, dirs);
+    float3 wi = vload3(2 * i + 1, dirs);
+    float pdf;
+    float3 f = bsdf_eval_pdf(&m, wo, wi, &pdf);
+    float3 g = bsdf_eval(&m, wo, wi);
+    float q = bsdf_pdf(&m, wo, wi);
+    out[i] = any(as_int3(f) != as_int3(g)) || as_int(pdf) != as_int(q);
+}
+
 /* Directional albedo of channel 0 of mats[i] seen from wos[i], from `samples`
  * bsdf_sample draws: out[4i] = mean weight, out[4i+1] = standard error of the mean,
  * out[4i+2] = number of samples with a NaN, infinite or negative weight, f or pdf,
