@@ -62,12 +62,17 @@ inline bool dielectric_is_smooth(const FcMaterial* m) {
 
 inline float3 dielectric_tint(const FcMaterial* m) { return load3p(m->specular); }
 
-/* Shadowing-masking for both sides: Lambda uses |w.z|. */
-inline float dielectric_G(const FcMaterial* m, float3 wo, float3 wi) {
-    float lo = ndf_lambda(m, wo);
-    float li = ndf_lambda(m, wi);
-    if (m->geometry == FC_G_SMITH_SEPARABLE) return 1.0f / ((1.0f + lo) * (1.0f + li));
-    return 1.0f / (1.0f + lo + li);
+/* w turned to the +z side. */
+inline float3 dielectric_upper(float3 w) { return w.z < 0.0f ? -w : w; }
+
+/* Shadowing-masking for both sides, Lambda of |w.z|: 1 + Lambda(w) as the projected area
+ * seen from w turned up over |w.z| (geometry.cl), with area_o = ndf_projected_area(m,
+ * dielectric_upper(wo)), which the visible normals' density divides by too. */
+inline float dielectric_G_area(const FcMaterial* m, float3 wo, float3 wi, float area_o) {
+    float lo = area_o / fabs(wo.z);
+    float li = ndf_projected_area(m, dielectric_upper(wi)) / fabs(wi.z);
+    if (m->geometry == FC_G_SMITH_SEPARABLE) return 1.0f / (lo * li);
+    return 1.0f / (lo + li - 1.0f);
 }
 
 /* The (generalised) half vector of wo and wi, on the +z side, and etap = n_i / n_o
@@ -101,19 +106,20 @@ inline float dielectric_lobe_fresnel(const FcMaterial* m, const DielectricPair* 
     return fresnel_dielectric_transmittance(fabs(oh), fabs(ih), p->etap);
 }
 
-/* The density of h seen from wo (either side): the NDF's, for wo turned to +z; d = D(h) is
- * read for visible normals only. */
-inline float dielectric_pdf_h_d(const FcMaterial* m, float3 wo, float3 h, float d) {
-    float3 wv = wo.z < 0.0f ? -wo : wo;
-    if (ndf_samples_visible(m)) return d * fmax(dot(wv, h), 0.0f) / ndf_projected_area(m, wv);
+/* The density of h seen from wo (either side): the NDF's, for wo turned to +z; d = D(h) and
+ * area_o = ndf_projected_area(m, dielectric_upper(wo)) are read for visible normals only. */
+inline float dielectric_pdf_h_at(const FcMaterial* m, float3 wo, float3 h, float d, float area_o) {
+    float3 wv = dielectric_upper(wo);
+    if (ndf_samples_visible(m)) return d * fmax(dot(wv, h), 0.0f) / area_o;
     return ndf_pdf(m, wv, h);
 }
 
-/* The BSDF of the pair p (oh = wo.h, ih = wi.h, fl its lobe's Fresnel factor) where D(h) = d. */
+/* The BSDF of the pair p (oh = wo.h, ih = wi.h, fl its lobe's Fresnel factor) where D(h) = d,
+ * area_o as dielectric_G_area takes it. */
 inline float3 dielectric_eval_at(const FcMaterial* m, float3 wo, float3 wi, const DielectricPair* p, float d, float oh,
-                                 float ih, float fl) {
+                                 float ih, float fl, float area_o) {
     if (!(d > 0.0f)) return (float3)(0.0f);
-    float g = dielectric_G(m, wo, wi);
+    float g = dielectric_G_area(m, wo, wi, area_o);
     float3 f;
     if (p->reflect) {
         f = (float3)(d * g * fl / (4.0f * fabs(wo.z) * fabs(wi.z)));
@@ -142,7 +148,8 @@ inline float3 dielectric_eval(const FcMaterial* m, float3 wo, float3 wi) {
     float d = ndf_D(m, p.h);
     if (!(d > 0.0f)) return (float3)(0.0f);
     float oh = dot(wo, p.h), ih = dot(wi, p.h);
-    return dielectric_eval_at(m, wo, wi, &p, d, oh, ih, dielectric_lobe_fresnel(m, &p, oh, ih));
+    return dielectric_eval_at(m, wo, wi, &p, d, oh, ih, dielectric_lobe_fresnel(m, &p, oh, ih),
+                              ndf_projected_area(m, dielectric_upper(wo)));
 }
 
 inline float dielectric_pdf(const FcMaterial* m, float3 wo, float3 wi) {
@@ -150,12 +157,15 @@ inline float dielectric_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     if (dielectric_is_smooth(m) || !dielectric_pair(m, wo, wi, &p)) return 0.0f;
     float oh = dot(wo, p.h), ih = dot(wi, p.h);
     float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
-    float d = ndf_samples_visible(m) ? ndf_D(m, p.h) : 0.0f;
-    return dielectric_pdf_at(&p, oh, ih, fl, dielectric_pdf_h_d(m, wo, p.h, d));
+    const bool visible = ndf_samples_visible(m);
+    float d = visible ? ndf_D(m, p.h) : 0.0f;
+    float area_o = visible ? ndf_projected_area(m, dielectric_upper(wo)) : 0.0f;
+    return dielectric_pdf_at(&p, oh, ih, fl, dielectric_pdf_h_at(m, wo, p.h, d, area_o));
 }
 
-/* dielectric_eval's value and dielectric_pdf's in *pdf at once: the pair, D(h) and the
- * Fresnel factor found once for both (the same bits as the two calls). */
+/* dielectric_eval's value and dielectric_pdf's in *pdf at once: the pair, D(h), the Fresnel
+ * factor and the projected area seen from wo found once for both (the same bits as the two
+ * calls). */
 inline float3 dielectric_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, float* pdf) {
     DielectricPair p;
     *pdf = 0.0f;
@@ -163,8 +173,9 @@ inline float3 dielectric_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, flo
     float d = ndf_D(m, p.h);
     float oh = dot(wo, p.h), ih = dot(wi, p.h);
     float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
-    *pdf = dielectric_pdf_at(&p, oh, ih, fl, dielectric_pdf_h_d(m, wo, p.h, d));
-    return dielectric_eval_at(m, wo, wi, &p, d, oh, ih, fl);
+    float area_o = ndf_projected_area(m, dielectric_upper(wo));
+    *pdf = dielectric_pdf_at(&p, oh, ih, fl, dielectric_pdf_h_at(m, wo, p.h, d, area_o));
+    return dielectric_eval_at(m, wo, wi, &p, d, oh, ih, fl, area_o);
 }
 
 /* The smooth interface: reflect with probability F, else refract (delta lobes). */

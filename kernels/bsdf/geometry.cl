@@ -24,10 +24,13 @@
 #include "kernels/shared/material_layout.h"
 #include "kernels/bsdf/ndf.cl"
 
-/* Smith's exact monostatic masking of w by microfacets of normal h. */
+/* Smith's exact monostatic masking of w by microfacets of normal h, 1 / (1 + Lambda(w)),
+ * as w.z over the microsurface's projected area w.z (1 + Lambda(w)) (ndf_projected_area, a
+ * sum of positive terms): the area is what the visible normals' density divides by, so a
+ * BRDF evaluated with its density finds it once for both (microfacet.cl). */
 inline float smith_G1(const FcMaterial* m, float3 w, float3 h) {
     if (!(w.z > 0.0f) || !(dot(w, h) > 0.0f)) return 0.0f;
-    return 1.0f / (1.0f + ndf_lambda(m, w));
+    return w.z / ndf_projected_area(m, w);
 }
 
 /* alpha_w sqrt(x^2 + y^2) and z for the isotropic approximations. */
@@ -54,8 +57,15 @@ inline float walter_G1(const FcMaterial* m, float3 w, float3 h) {
     return (3.535f * a + 2.181f * a * a) / (1.0f + 2.276f * a + 2.577f * a * a);
 }
 
-/* G(wo, wi, h) for h the half vector of wo and wi. */
-inline float geometry_G(const FcMaterial* m, float3 wo, float3 wi, float3 h) {
+/* Whether G reads Smith's Lambda(wo) (as the projected area seen from wo). */
+inline bool geometry_uses_area(const FcMaterial* m) {
+    return m->geometry == FC_G_SMITH_SEPARABLE || m->geometry == FC_G_SMITH_CORRELATED;
+}
+
+/* G(wo, wi, h) for h the half vector of wo and wi, with area_o = ndf_projected_area(m, wo)
+ * where geometry_uses_area (read nowhere else): the Smith forms' 1 + Lambda(w) is
+ * area(w) / w.z. */
+inline float geometry_G_area(const FcMaterial* m, float3 wo, float3 wi, float3 h, float area_o) {
     switch (m->geometry) {
         case FC_G_IMPLICIT:
             return fmax(wo.z, 0.0f) * fmax(wi.z, 0.0f);
@@ -66,10 +76,11 @@ inline float geometry_G(const FcMaterial* m, float3 wo, float3 wi, float3 h) {
             return fmin(1.0f, g);
         }
         case FC_G_SMITH_SEPARABLE:
-            return smith_G1(m, wo, h) * smith_G1(m, wi, h);
+            if (!(wo.z > 0.0f) || !(dot(wo, h) > 0.0f)) return 0.0f;
+            return wo.z / area_o * smith_G1(m, wi, h);
         case FC_G_SMITH_CORRELATED:
-            if (!(smith_G1(m, wo, h) > 0.0f) || !(smith_G1(m, wi, h) > 0.0f)) return 0.0f;
-            return 1.0f / (1.0f + ndf_lambda(m, wo) + ndf_lambda(m, wi));
+            if (!(wo.z > 0.0f) || !(dot(wo, h) > 0.0f) || !(wi.z > 0.0f) || !(dot(wi, h) > 0.0f)) return 0.0f;
+            return 1.0f / (area_o / wo.z + ndf_projected_area(m, wi) / wi.z - 1.0f);
         case FC_G_SMITH_SCHLICK:
             return schlick_G1(m, wo, h) * schlick_G1(m, wi, h);
         case FC_G_SMITH_WALTER:
@@ -77,6 +88,12 @@ inline float geometry_G(const FcMaterial* m, float3 wo, float3 wi, float3 h) {
         default:
             return 0.0f;
     }
+}
+
+/* G(wo, wi, h) for h the half vector of wo and wi. */
+inline float geometry_G(const FcMaterial* m, float3 wo, float3 wi, float3 h) {
+    const bool area = geometry_uses_area(m) && wo.z > 0.0f;
+    return geometry_G_area(m, wo, wi, h, area ? ndf_projected_area(m, wo) : 0.0f);
 }
 
 #endif

@@ -61,12 +61,14 @@ inline bool microfacet_half_vector(float3 wo, float3 wi, float3* h, float* wo_h)
     return true;
 }
 
-/* The BRDF at wi of half vector h, where D(h) = d. */
-inline float3 microfacet_eval_at(const FcMaterial* m, float3 wo, float3 wi, float3 h, float d) {
+/* The BRDF at wi of half vector h, where D(h) = d and the projected area seen from wo is
+ * area_o (read where geometry_uses_area). */
+inline float3 microfacet_eval_at(const FcMaterial* m, float3 wo, float3 wi, float3 h, float d, float area_o) {
     float3 f = ec_enabled(m) ? ec_ms_eval(m, wo, wi) : (float3)(0.0f);
     if (!(d > 0.0f)) return all_finite(f) ? f : (float3)(0.0f); /* D underflows far from a narrow peak */
     /* G / (4 cos_o cos_i); the implicit G cancels the denominator exactly. */
-    float g_over = (m->geometry == FC_G_IMPLICIT) ? 0.25f : geometry_G(m, wo, wi, h) / (4.0f * wo.z * wi.z);
+    float g_over =
+        (m->geometry == FC_G_IMPLICIT) ? 0.25f : geometry_G_area(m, wo, wi, h, area_o) / (4.0f * wo.z * wi.z);
     f += fresnel_eval(m, dot(wo, h)) * (d * g_over);
     return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
 }
@@ -75,7 +77,7 @@ inline float3 microfacet_eval(const FcMaterial* m, float3 wo, float3 wi) {
     float3 h;
     float wo_h;
     if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return (float3)(0.0f);
-    return microfacet_eval_at(m, wo, wi, h, ndf_D(m, h));
+    return microfacet_eval_at(m, wo, wi, h, ndf_D(m, h), geometry_uses_area(m) ? ndf_projected_area(m, wo) : 0.0f);
 }
 
 /* The density of the NDF's sampling, for wi of half vector h (wo.h = wo_h): ndf_pdf(h) /
@@ -103,18 +105,21 @@ inline float microfacet_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     return microfacet_pdf_from(m, wo, wi, microfacet_ss_pdf(m, wo, h, wo_h));
 }
 
-/* microfacet_eval's value, and microfacet_pdf's in *pdf, at once: the half vector and D(h)
- * found once for both (the same operations, so the same bits as the two calls). */
+/* microfacet_eval's value, and microfacet_pdf's in *pdf, at once: the half vector, D(h) and
+ * the projected area seen from wo (Smith's G and the visible normals' density) found once for
+ * both (the same operations, so the same bits as the two calls). */
 inline float3 microfacet_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, float* pdf) {
     float3 h;
     float wo_h;
     *pdf = 0.0f;
     if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return (float3)(0.0f);
     const float d = ndf_D(m, h);
+    const bool visible = ndf_samples_visible(m);
+    const float area_o =
+        geometry_uses_area(m) || (visible && !ndf_samples_bounded(m)) ? ndf_projected_area(m, wo) : 0.0f;
     *pdf = microfacet_pdf_from(
-        m, wo, wi,
-        ndf_samples_visible(m) ? ndf_reflection_pdf_visible_d(m, wo, h, d) : ndf_pdf(m, wo, h) / (4.0f * wo_h));
-    return microfacet_eval_at(m, wo, wi, h, d);
+        m, wo, wi, visible ? ndf_reflection_pdf_visible_at(m, wo, h, d, area_o) : ndf_pdf(m, wo, h) / (4.0f * wo_h));
+    return microfacet_eval_at(m, wo, wi, h, d, area_o);
 }
 
 inline bool microfacet_sample(const FcMaterial* m, float3 wo, float2 u, BsdfSample* s) {

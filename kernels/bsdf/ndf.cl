@@ -121,10 +121,11 @@ inline float ndf_reflection_pdf_visible(const FcMaterial* m, float3 wo, float3 h
     return ndf_D(m, h) / (4.0f * ndf_projected_area(m, wo));
 }
 
-/* The same, given d = ndf_D(m, h) (the BRDF's own, when it is evaluated with its density). */
-inline float ndf_reflection_pdf_visible_d(const FcMaterial* m, float3 wo, float3 h, float d) {
+/* The same, given d = ndf_D(m, h) and area_o = ndf_projected_area(m, wo) (the BRDF's own,
+ * when it is evaluated with its density; area_o is not read by the bounded sampler's). */
+inline float ndf_reflection_pdf_visible_at(const FcMaterial* m, float3 wo, float3 h, float d, float area_o) {
     if (ndf_samples_bounded(m)) return ggx_reflection_pdf_bounded(m->alpha_x, m->alpha_y, wo, h);
-    return d / (4.0f * ndf_projected_area(m, wo));
+    return d / (4.0f * area_o);
 }
 
 #endif
