@@ -265,21 +265,26 @@ __kernel void lanes_path_weights(__global const LanesIn* in, __global LanesOut* 
     OUT8(2, roulette_survival_l8(vec3_l8(IN8(a), IN8(b), IN8(c)), IN8(d)));
 }
 
-/* The W = 8 sampler against the scalar sampler_get4 (coordinates in a uint4's lanes). */
+/* Element j of group i through the scalar sampler_get4 (coordinates in a uint4's lanes),
+ * into out->one; returns the element's sampler, whose seed and index the lanes take. */
+inline Sampler lanes_scalar_sample(__global const LanesIn* in, __global LanesOut* out, int j) {
+    Sampler s = sampler_init(FC_SAMPLER_SOBOL, in->k[j], in->m[j], in->n[j]);
+    Sampler t = s;
+    float4 u = sampler_get4(&t, in->n[j] % 37u);
+    out->one[0][j] = u.x;
+    out->one[1][j] = u.y;
+    out->one[2][j] = u.z;
+    out->one[3][j] = u.w;
+    return s;
+}
+
+/* The W = 8 sampler against the scalar sampler_get4. */
 __kernel void lanes_sampler_get4(__global const LanesIn* in, __global LanesOut* out) {
     uint i = get_global_id(0);
     lanes_clear(out + i);
-    for (int j = 0; j < 8; ++j) {
-        Sampler s = sampler_init(FC_SAMPLER_SOBOL, in[i].k[j], in[i].m[j], in[i].n[j]);
-        float4 u = sampler_get4(&s, in[i].n[j] % 37u);
-        out[i].one[0][j] = u.x;
-        out[i].one[1][j] = u.y;
-        out[i].one[2][j] = u.z;
-        out[i].one[3][j] = u.w;
-    }
     uint seed[8], index_reversed[8];
     for (int j = 0; j < 8; ++j) {
-        Sampler s = sampler_init(FC_SAMPLER_SOBOL, in[i].k[j], in[i].m[j], in[i].n[j]);
+        Sampler s = lanes_scalar_sample(in + i, out + i, j);
         seed[j] = s.seed;
         index_reversed[j] = s.index_reversed;
     }
@@ -303,12 +308,7 @@ __kernel void lanes_sampler_get4_16(__global const LanesIn* in, __global LanesOu
     lanes_clear(out + i);
     uint seed[16], index_reversed[16], set[16];
     for (int j = 0; j < 8; ++j) {
-        Sampler s = sampler_init(FC_SAMPLER_SOBOL, in[i].k[j], in[i].m[j], in[i].n[j]);
-        float4 u = sampler_get4(&s, in[i].n[j] % 37u);
-        out[i].one[0][j] = u.x;
-        out[i].one[1][j] = u.y;
-        out[i].one[2][j] = u.z;
-        out[i].one[3][j] = u.w;
+        Sampler s = lanes_scalar_sample(in + i, out + i, j);
         seed[j] = seed[15 - j] = s.seed;
         index_reversed[j] = index_reversed[15 - j] = s.index_reversed;
         set[j] = set[15 - j] = in[i].n[j] % 37u;
