@@ -93,12 +93,15 @@ inline float beckmann_lambda(float ax, float ay, float3 w) {
 }
 
 /* w.z (1 + Lambda(w)) for w.z >= 0, the projected area of the microsurface, as a sum of
- * positive terms: (z (1 + erf(a)) + s exp(-a^2) / sqrt(pi)) / 2. */
+ * positive terms: (z (1 + erf(a)) + s exp(-a^2) / sqrt(pi)) / 2. From a = 6 on, both of
+ * Lambda's terms are below 1e-16 of z, far below z's rounding: the area is z, without the
+ * two exponentials (a smooth surface seen away from grazing; as beckmann_lambda cuts off). */
 inline float beckmann_projected_area(float ax, float ay, float3 w) {
     float s = sqrt(sqr(ax * w.x) + sqr(ay * w.y));
     float z = fmax(w.z, 0.0f);
     if (s == 0.0f) return z;
     float a = z / s;
+    if (a >= 6.0f) return z;
     return 0.5f * (z * (2.0f - erfc_fast(a)) + s * exp(-a * a) * FC_INV_SQRT_PI);
 }
 
