@@ -80,13 +80,18 @@ inline float3 microfacet_eval(const FcMaterial* m, float3 wo, float3 wi) {
     return microfacet_eval_at(m, wo, wi, h, ndf_D(m, h), geometry_uses_area(m) ? ndf_projected_area(m, wo) : 0.0f);
 }
 
-/* The density of the NDF's sampling, for wi of half vector h (wo.h = wo_h): ndf_pdf(h) /
+/* The density of the NDF's sampling, for wi of half vector h (wo.h = wo_h), D(h) = d and the
+ * projected area seen from wo area_o (read for unbounded visible normals only): ndf_pdf(h) /
  * (4 wo.h); for visible normals the factor wo.h cancels analytically, D(h) / (4 wo.z (1 +
  * Lambda(wo))), which keeps f cos / pdf = G F / G1(wo) <= 1 in float even where wo.h suffers
  * cancellation (wi ~ -wo at grazing angles). */
-inline float microfacet_ss_pdf(const FcMaterial* m, float3 wo, float3 h, float wo_h) {
-    return ndf_samples_visible(m) ? ndf_reflection_pdf_visible(m, wo, h) : ndf_pdf(m, wo, h) / (4.0f * wo_h);
+inline float microfacet_ss_pdf_at(const FcMaterial* m, float3 wo, float3 h, float wo_h, float d, float area_o) {
+    return ndf_samples_visible(m) ? ndf_reflection_pdf_visible_at(m, wo, h, d, area_o)
+                                  : ndf_pdf(m, wo, h) / (4.0f * wo_h);
 }
+
+/* Whether the NDF's sampling density reads D(h) and the projected area seen from wo. */
+inline bool microfacet_pdf_uses_area(const FcMaterial* m) { return ndf_samples_visible(m) && !ndf_samples_bounded(m); }
 
 /* The lobe's density at wi from its NDF sampler's density q there: with compensation, the
  * cosine-sampled multiple-scattering lobe's share mixed in. */
@@ -102,7 +107,10 @@ inline float microfacet_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     float3 h;
     float wo_h;
     if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return 0.0f;
-    return microfacet_pdf_from(m, wo, wi, microfacet_ss_pdf(m, wo, h, wo_h));
+    const bool area = microfacet_pdf_uses_area(m);
+    return microfacet_pdf_from(
+        m, wo, wi,
+        microfacet_ss_pdf_at(m, wo, h, wo_h, area ? ndf_D(m, h) : 0.0f, area ? ndf_projected_area(m, wo) : 0.0f));
 }
 
 /* microfacet_eval's value, and microfacet_pdf's in *pdf, at once: the half vector, D(h) and
@@ -114,11 +122,8 @@ inline float3 microfacet_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, flo
     *pdf = 0.0f;
     if (microfacet_is_mirror(m) || !microfacet_half_vector(wo, wi, &h, &wo_h)) return (float3)(0.0f);
     const float d = ndf_D(m, h);
-    const bool visible = ndf_samples_visible(m);
-    const float area_o =
-        geometry_uses_area(m) || (visible && !ndf_samples_bounded(m)) ? ndf_projected_area(m, wo) : 0.0f;
-    *pdf = microfacet_pdf_from(
-        m, wo, wi, visible ? ndf_reflection_pdf_visible_at(m, wo, h, d, area_o) : ndf_pdf(m, wo, h) / (4.0f * wo_h));
+    const float area_o = geometry_uses_area(m) || microfacet_pdf_uses_area(m) ? ndf_projected_area(m, wo) : 0.0f;
+    *pdf = microfacet_pdf_from(m, wo, wi, microfacet_ss_pdf_at(m, wo, h, wo_h, d, area_o));
     return microfacet_eval_at(m, wo, wi, h, d, area_o);
 }
 

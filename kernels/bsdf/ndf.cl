@@ -114,15 +114,9 @@ inline float ndf_pdf(const FcMaterial* m, float3 wo, float3 h) {
 }
 
 /* The density of the reflection of wo about a visible normal h, ndf_pdf(h) / (4 wo.h),
- * with wo.h cancelled analytically: D(h) / (4 wo.z (1 + Lambda(wo))), or the bounded
- * sampler's (ggx.cl). */
-inline float ndf_reflection_pdf_visible(const FcMaterial* m, float3 wo, float3 h) {
-    if (ndf_samples_bounded(m)) return ggx_reflection_pdf_bounded(m->alpha_x, m->alpha_y, wo, h);
-    return ndf_D(m, h) / (4.0f * ndf_projected_area(m, wo));
-}
-
-/* The same, given d = ndf_D(m, h) and area_o = ndf_projected_area(m, wo) (the BRDF's own,
- * when it is evaluated with its density; area_o is not read by the bounded sampler's). */
+ * with wo.h cancelled analytically: D(h) / (4 wo.z (1 + Lambda(wo))), from d = ndf_D(m, h)
+ * and area_o = ndf_projected_area(m, wo); or the bounded sampler's (ggx.cl), which reads
+ * neither. */
 inline float ndf_reflection_pdf_visible_at(const FcMaterial* m, float3 wo, float3 h, float d, float area_o) {
     if (ndf_samples_bounded(m)) return ggx_reflection_pdf_bounded(m->alpha_x, m->alpha_y, wo, h);
     return d / (4.0f * area_o);

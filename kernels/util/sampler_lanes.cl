@@ -5,9 +5,6 @@
 #ifndef FACET_UTIL_SAMPLER_LANES_PASS
 #define FACET_UTIL_SAMPLER_LANES_PASS
 
-/* The four coordinates of dimension set `set` of each lane's sample, whose half's seed is
- * pixel_seed (Sampler.seed) and bit-reversed index index_reversed (Sampler.index_reversed),
- * in u[0..3]. */
 #if defined(__clang__) && ((FC_LW == 16 && defined(__AVX512F__)) || (FC_LW == 8 && defined(__AVX2__)))
 /* Chunk k of dimension d of the Sobol' table for each lane's nibble: the chunk's sixteen
  * entries held in registers and indexed by all lanes at once (vpermd), where a lane-by-lane
