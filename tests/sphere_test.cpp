@@ -188,6 +188,40 @@ TEST(Sphere, RootsFarFromTheOrigin) {
     EXPECT_LT(err, 1e-2);
 }
 
+TEST(Sphere, OffsetOriginStepsAsNextafter) {
+    // sphere_offset_origin steps the three coordinates by bit arithmetic: the same bits as
+    // nextafter toward n's sign, with points on and off zero (either sign), normals with zero
+    // or negative-zero components, and errors of 0 (the step alone) to large.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    const float picks[] = {0.0f, -0.0f, 1e-38f, -1e-38f, 1e-45f, -1e-45f, 1.0f, -3.5f, 1e30f, -2e-30f};
+    std::vector<cl_float4> p, err, n;
+    for (int i = 0; i < 4096; ++i) {
+        cl_float4 a{}, e{}, m{};
+        for (int k = 0; k < 3; ++k) {
+            a.s[k] = (i % 3 == 0) ? picks[(i / 3 + k) % 10] : u(rng) * std::pow(10.0f, float(i % 7) - 3.0f);
+            m.s[k] = (i % 5 == k) ? ((i & 8) ? -0.0f : 0.0f) : u(rng);
+            e.s[k] = (i % 4 == 0) ? 0.0f : 1e-7f * std::abs(u(rng));
+        }
+        p.push_back(a);
+        err.push_back(e);
+        n.push_back(m);
+    }
+    cl::Kernel k(kernels(), "sphere_offset_batch");
+    cl::Buffer pb = buffer(p), eb = buffer(err), nb = buffer(n);
+    cl::Buffer out(test::context().context(), CL_MEM_WRITE_ONLY, 2 * p.size() * sizeof(cl_float4));
+    k.setArg(0, pb);
+    k.setArg(1, eb);
+    k.setArg(2, nb);
+    k.setArg(3, out);
+    run(k, p.size());
+    const std::vector<cl_float4> got = read<cl_float4>(out, 2 * p.size());
+    int differ = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (std::memcmp(&got[2 * i], &got[2 * i + 1], 3 * sizeof(float)) != 0) ++differ;
+    EXPECT_EQ(differ, 0) << "of " << p.size() << " offset origins";
+}
+
 // Nearest hits of the spheres' tree of node width `width` against brute force.
 void tree_matches_brute_force(int width) {
     std::mt19937 rng(5);

@@ -65,6 +65,20 @@ __kernel void sphere_leaks(float4 sphere, uint bounces, __global const float4* o
     leaks[i] = count;
 }
 
+/* sphere_offset_origin(p[i], err[i], n[i]) in out[2i] and the same point stepped by
+ * nextafter coordinate by coordinate (its definition) in out[2i + 1]. */
+__kernel void sphere_offset_batch(__global const float4* p, __global const float4* err, __global const float4* n,
+                                  __global float4* out) {
+    const uint i = get_global_id(0);
+    const float3 ni = n[i].xyz;
+    float3 po = p[i].xyz + 2.0f * dot(fabs(ni), err[i].xyz) * ni;
+    po.x = ni.x > 0.0f ? nextafter(po.x, INFINITY) : (ni.x < 0.0f ? nextafter(po.x, -INFINITY) : po.x);
+    po.y = ni.y > 0.0f ? nextafter(po.y, INFINITY) : (ni.y < 0.0f ? nextafter(po.y, -INFINITY) : po.y);
+    po.z = ni.z > 0.0f ? nextafter(po.z, INFINITY) : (ni.z < 0.0f ? nextafter(po.z, -INFINITY) : po.z);
+    out[2 * i] = (float4)(sphere_offset_origin(p[i].xyz, err[i].xyz, ni), 0.0f);
+    out[2 * i + 1] = (float4)(po, 0.0f);
+}
+
 /* Light `l` seen from p: pdfs[i] = sphere_light_pdf for the direction dirs[i] (0 where it
  * misses the sphere). */
 __kernel void sphere_light_pdf_batch(__global const FcLight* l, float4 p, __global const float4* dirs,

@@ -80,11 +80,15 @@ inline float3 sphere_hit_point(float3 c, float r, float3 o, float3 d, float t, f
  * twice the error bound's projection, then rounded away from the surface. */
 inline float3 sphere_offset_origin(float3 p, float3 err, float3 n) {
     const float dist = 2.0f * dot(fabs(n), err);
-    float3 po = p + dist * n;
-    po.x = n.x > 0.0f ? nextafter(po.x, INFINITY) : (n.x < 0.0f ? nextafter(po.x, -INFINITY) : po.x);
-    po.y = n.y > 0.0f ? nextafter(po.y, INFINITY) : (n.y < 0.0f ? nextafter(po.y, -INFINITY) : po.y);
-    po.z = n.z > 0.0f ? nextafter(po.z, INFINITY) : (n.z < 0.0f ? nextafter(po.z, -INFINITY) : po.z);
-    return po;
+    const float3 po = p + dist * n;
+    /* Each coordinate one float further along n's sign (nextafter(po, +-INFINITY) for a
+     * finite po, which this is), on the three at once: a zero takes n's sign, then the bit
+     * pattern steps by +1 where po and n have the same sign (the magnitude grows) and by -1
+     * where they differ; a zero component of n leaves the coordinate. */
+    const float3 z = select(po, copysign((float3)(0.0f), n), po == 0.0f);
+    const int3 bits = as_int3(z);
+    const int3 step = select((int3)(-1), (int3)(1), (bits ^ as_int3(n)) >= 0);
+    return select(as_float3(bits + step), po, n == 0.0f);
 }
 
 /* The parametrisation at outward unit normal n, about the +y axis (facet's up): u = phi /
