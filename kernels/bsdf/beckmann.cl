@@ -70,7 +70,8 @@ inline float erfc_fast(float x) {
 
 /* erfc(x) from e = exp(-x^2), which the caller has: Abramowitz & Stegun 1964, eq. 7.1.26,
  * absolute error below 1.5e-7 (7e-7 in float, near x = 0, where erfc is near 1), no
- * relative precision in the far tail. Enough where only an absolute error counts: the visible-slope inversion's CDF. */
+ * relative precision in the far tail. Enough where only an absolute error counts: the
+ * visible-slope inversion's CDF. */
 inline float erfc_from_gaussian(float x, float e) {
     float t = 1.0f / (1.0f + 0.3275911f * fabs(x));
     float p = 1.061405429f;
