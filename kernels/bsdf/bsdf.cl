@@ -142,15 +142,9 @@ inline bool bsdf_base_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSampl
     if (m->diffuse_model == FC_DIFFUSE_LAMBERT && m->specular_model == FC_SPECULAR_NONE)
         return lambert_only_sample(m, u.xy, s);
     float p = specular_probability(m, wo);
-    float pdf;
-    if (u.z < p) {
+    const bool specular = u.z < p;
+    if (specular) {
         if (!specular_sample(m, wo, u.xy, s)) return false;
-        if (!s->delta && m->specular_model == FC_SPECULAR_MICROFACET) {
-            /* the microfacet lobe's sample carries its own f and density at wi
-             * (microfacet_eval_pdf's): the base's follow from them */
-            if (s->wi.z <= 0.0f) return false;
-            return finish_sample(s, bsdf_base_f(m, wo, s->wi, s->f), bsdf_base_density(m, wo, s->wi, s->pdf));
-        }
         if (s->delta) {
             if (metallic_mixed(m)) { /* the mirror's reflectance, (1 - M) F_dielectric + M F_metal */
                 FcMaterial metal = metallic_lobe(m);
@@ -163,6 +157,11 @@ inline bool bsdf_base_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSampl
         return false;
     }
     if (s->wi.z <= 0.0f) return false;
+    /* the microfacet lobe's sample carries its own f and density at wi (microfacet_eval_pdf's):
+     * the base's follow from them */
+    if (specular && m->specular_model == FC_SPECULAR_MICROFACET)
+        return finish_sample(s, bsdf_base_f(m, wo, s->wi, s->f), bsdf_base_density(m, wo, s->wi, s->pdf));
+    float pdf;
     const float3 f = bsdf_base_eval_pdf(m, wo, s->wi, &pdf);
     return finish_sample(s, f, pdf);
 }
