@@ -477,8 +477,32 @@ def measure(scenes, progs, makers, budgets, repeats, spp, ref_seconds, refs_dir,
     refs_line = sorted({(r["scene"], r["size"], round(r["ref_spp"]["facet"]), round(r["ref_spp"]["mitsuba"]))
                         for r in rows})
     lines += ["", "References (spp): " + "; ".join(f"{s} {sz}: facet {a}, Mitsuba {b}" for s, sz, a, b in refs_line)]
+    cautions = reference_cautions(rows, ref_seconds)
+    if cautions:
+        lines += [""] + cautions
+        for c in cautions:
+            print(c, file=sys.stderr)
     info["rows"] = rows
     write_outputs(out_dir, "mitsuba_equal_spp" if spp else "mitsuba_equal_time", lines, info)
+
+
+def reference_cautions(rows, ref_seconds):
+    """A line for each scene and budget whose references' own noise (RMSE) is over half the
+    lowest image error: the figures then rest on taking that noise out, which holds on average
+    but not for a few runs of a firefly-dominated image (glass_metal_sky with 90 s references:
+    docs/performance.md, "A second CPU"). The suggested length brings the noise to half."""
+    out = []
+    for key in sorted({(r["scene"], r.get("spp", r.get("s"))) for r in rows}):
+        group = [r for r in rows if (r["scene"], r.get("spp", r.get("s"))) == key]
+        lowest = min(r["median"]["rmse_own"] for r in group)
+        noise = max(group[0]["ref_noise_rmse"].values())
+        if lowest > 0 and noise > 0.5 * lowest:
+            need = ref_seconds * (noise / (0.5 * lowest)) ** 2
+            out.append(f"Caution: {key[0]} at {key[1]:g}: a reference's own noise (RMSE {noise:.4g}) is "
+                       f"{noise / lowest:.2f} of the lowest image error ({lowest:.4g}); the ratios rest on taking it "
+                       f"out. References of about {math.ceil(need / 60) * 60:g} s (--reference-seconds) would bring "
+                       "it to half.")
+    return out
 
 
 def per_sample(scenes, progs, spp, images, out_dir, info):
