@@ -498,7 +498,8 @@ def reference_cautions(rows, ref_seconds):
         noise = max(group[0]["ref_noise_rmse"].values())
         if lowest > 0 and noise > 0.5 * lowest:
             need = ref_seconds * (noise / (0.5 * lowest)) ** 2
-            out.append(f"Caution: {key[0]} at {key[1]:g}: a reference's own noise (RMSE {noise:.4g}) is "
+            unit = "spp" if "spp" in group[0] else "s"
+            out.append(f"Caution: {key[0]} at {key[1]:g} {unit}: a reference's own noise (RMSE {noise:.4g}) is "
                        f"{noise / lowest:.2f} of the lowest image error ({lowest:.4g}); the ratios rest on taking it "
                        f"out. References of about {math.ceil(need / 60) * 60:g} s (--reference-seconds) would bring "
                        "it to half.")
