@@ -479,9 +479,7 @@ def measure(scenes, progs, makers, budgets, repeats, spp, ref_seconds, refs_dir,
     lines += ["", "References (spp): " + "; ".join(f"{s} {sz}: facet {a}, Mitsuba {b}" for s, sz, a, b in refs_line)]
     cautions = reference_cautions(rows, ref_seconds)
     if cautions:
-        lines += [""] + cautions
-        for c in cautions:
-            print(c, file=sys.stderr)
+        lines += [""] + cautions  # printed with the table by write_outputs
     info["rows"] = rows
     write_outputs(out_dir, "mitsuba_equal_spp" if spp else "mitsuba_equal_time", lines, info)
 
