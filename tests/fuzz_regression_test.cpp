@@ -54,6 +54,9 @@ TEST(FuzzRegression, GltfAndPlyFindingsFailCleanly) {
         {"gltf/image_bufferview_outside_buffer.glb", "bufferView lies outside its buffer", 0},
         {"gltf/buffer_uri_names_its_folder.gltf", "is a directory, not a file", 0},
         {"gltf/buffer_uri_names_parent_folder.gltf", "is a directory, not a file", 0},
+        // an index given as a real beyond int's range (tinygltf's int conversion is UB there)
+        {"gltf/light_index_beyond_int.gltf", "light 3.33333e+115 does not exist (1 lights)", 0},
+        {"gltf/draco_buffer_view_beyond_int.gltf", "bufferView must be an index", 0},
         {"ply/face_index_out_of_range.ply", "face 0 names vertex 7, but there are 3 vertices", 0},
         {"ply/face_negative_index.ply", "face 0 names vertex", 0},
         {"ply/face_of_two_vertices.ply", "no triangle with a non-zero area", 0},

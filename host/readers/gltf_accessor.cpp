@@ -1,6 +1,7 @@
 // glTF accessors, bounds-checked (glTF 2.0 specification, 3.6 "Binary Data Storage").
 #include "host/readers/gltf_accessor.hpp"
 
+#include <climits>
 #include <cmath>
 #include <cstring>
 
@@ -173,6 +174,13 @@ std::vector<std::uint32_t> read_indices(const tinygltf::Model& m, int accessor, 
                                     place, accessor, i, out[i], vertex_count));
     }
     return out;
+}
+
+int index_value(const tinygltf::Value& v) {
+    if (v.IsInt()) return v.Get<int>() >= 0 ? v.Get<int>() : -1;
+    if (!v.IsNumber()) return -1;
+    const double d = v.GetNumberAsDouble();
+    return d >= 0.0 && d <= double(INT_MAX) && d == std::floor(d) ? int(d) : -1;
 }
 
 }  // namespace facet::gltf

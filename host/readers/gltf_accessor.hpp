@@ -29,4 +29,9 @@ std::vector<glm::vec2> read_vec2(const tinygltf::Model& m, int accessor, const s
 std::vector<std::uint32_t> read_indices(const tinygltf::Model& m, int accessor, std::size_t vertex_count,
                                         const std::string& file, const std::string& place);
 
+// An index held in an extension's JSON value: the value when it is a whole number in
+// [0, INT_MAX], else -1. (tinygltf's GetNumberAsInt converts any real number to int,
+// which is undefined behaviour beyond int's range, e.g. for 1e300.)
+int index_value(const tinygltf::Value& v);
+
 }  // namespace facet::gltf

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "host/error.hpp"
+#include "host/readers/gltf_accessor.hpp"
 
 namespace facet::gltf {
 namespace {
@@ -40,8 +41,7 @@ std::vector<float> attribute_values(const draco::Mesh& mesh, int id, const std::
 // The extension's integer member `key`, or -1.
 int member_int(const tinygltf::Value& object, const char* key) {
     if (!object.IsObject() || !object.Has(key)) return -1;
-    const tinygltf::Value& v = object.Get(key);
-    return v.IsInt() || v.IsNumber() ? v.GetNumberAsInt() : -1;
+    return index_value(object.Get(key));
 }
 
 // Removes `indices` from the Draco primitives of `doc`; whether any was removed.
@@ -104,7 +104,8 @@ IndexedMesh decode_draco(const tinygltf::Model& model, const tinygltf::Primitive
     const std::string where = fmt::format("{}: {}.extensions.{}", file, place, kDracoExtension);
     const tinygltf::Value& ext = prim.extensions.at(kDracoExtension);
     const int view = member_int(ext, "bufferView");
-    if (view < 0 || std::size_t(view) >= model.bufferViews.size())
+    if (view < 0) throw Error(fmt::format("{}: bufferView must be an index (a whole number >= 0)", where));
+    if (std::size_t(view) >= model.bufferViews.size())
         throw Error(
             fmt::format("{}: bufferView {} does not exist ({} bufferViews)", where, view, model.bufferViews.size()));
     const tinygltf::BufferView& bv = model.bufferViews[std::size_t(view)];
@@ -133,7 +134,7 @@ IndexedMesh decode_draco(const tinygltf::Model& model, const tinygltf::Primitive
                                 model.accessors[std::size_t(position->second)].count));
     const tinygltf::Value& attributes = ext.Get("attributes");
     const int pos_id = member_int(attributes, "POSITION");
-    if (pos_id < 0) throw Error(fmt::format("{}: attributes has no POSITION", where));
+    if (pos_id < 0) throw Error(fmt::format("{}: attributes has no POSITION index (a whole number >= 0)", where));
     IndexedMesh m;
     const std::vector<float> p = attribute_values<3>(*mesh, pos_id, where);
     for (std::size_t i = 0; i + 2 < p.size(); i += 3) m.positions.emplace_back(p[i], p[i + 1], p[i + 2]);

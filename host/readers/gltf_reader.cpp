@@ -479,10 +479,10 @@ private:
         if (!ext.IsObject() || !ext.Has("light") || !ext.Get("light").IsNumber())
             throw Error(
                 fmt::format("{}: {}.extensions.KHR_lights_punctual: expected {{\"light\": index}}", path_, place));
-        const int index = ext.Get("light").GetNumberAsInt();
+        const int index = gltf::index_value(ext.Get("light"));
         if (index < 0 || std::size_t(index) >= model_.lights.size())
-            throw Error(
-                fmt::format("{}: {}: light {} does not exist ({} lights)", path_, place, index, model_.lights.size()));
+            throw Error(fmt::format("{}: {}: light {:g} does not exist ({} lights)", path_, place,
+                                    ext.Get("light").GetNumberAsDouble(), model_.lights.size()));
         if (!options_.take_lights) return;
         const tinygltf::Light& g = model_.lights[std::size_t(index)];
         const std::string lplace = fmt::format("KHR_lights_punctual.lights[{}]", index);
