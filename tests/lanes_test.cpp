@@ -152,6 +152,20 @@ TEST(Lanes, PathWeightsSameBitsAtWidths1And8) {
               0);
 }
 
+TEST(Lanes, GgxSameBitsAtWidths1And8) {
+    // a, b: the roughness (1e-4 added); c: wo's cosine + 0.1 (normal incidence, grazing, below
+    // the horizon); d: its azimuth
+    EXPECT_EQ(mismatches("lanes_ggx",
+                         inputs(0.0f, 1.0f,
+                                {{0.0f, 0.0f, 1.1f, 0.0f},
+                                 {1.0f, 1.0f, 1.1f, 0.3f},
+                                 {0.5f, 0.01f, 0.1f, 0.7f},
+                                 {0.2f, 0.2f, 0.0f, 0.1f},
+                                 {0.0f, 1.0f, 0.10001f, 0.25f}}),
+                         4),
+              0);
+}
+
 TEST(Lanes, SphereSameBitsAtWidths1And8) {
     // a, b, c: the ray's origin and direction; d: the radius; with rays through the centre,
     // grazing, starting on the sphere and of zero length

@@ -11,29 +11,18 @@
 #ifndef FACET_BSDF_GGX_CL
 #define FACET_BSDF_GGX_CL
 
+#include "kernels/lanes/scalar.cl" /* the W = 1 forms of kernels/bsdf/ggx_lanes.cl */
 #include "kernels/util/math.cl"
 #include "kernels/util/trig.cl"
 
 /* D(m) = 1 / (pi ax ay (x^2/ax^2 + y^2/ay^2 + z^2)^2) for a unit m with m.z > 0
  * (Heitz 2014, eq. 85, multiplied through by cos^4). */
-inline float ggx_D(float ax, float ay, float3 m) {
-    if (!(m.z > 0.0f)) return 0.0f;
-    float sx = m.x / ax;
-    float sy = m.y / ay;
-    float t = sx * sx + sy * sy + m.z * m.z;
-    return (1.0f / (FC_PI * ax * ay)) / (t * t);
-}
+inline float ggx_D(float ax, float ay, float3 m) { return ggx_D_l1(ax, ay, m); }
 
 /* Smith's Lambda(w) = (-1 + sqrt(1 + alpha_w^2 tan^2 theta)) / 2 (Heitz 2014, eq. 86),
  * alpha_w^2 tan^2 theta = (ax^2 x^2 + ay^2 y^2) / z^2, rewritten without cancellation
  * as s2 / (2 |z| (|z| + sqrt(z^2 + s2))). Infinite at z = 0 (full masking). */
-inline float ggx_lambda(float ax, float ay, float3 w) {
-    float s2 = sqr(ax * w.x) + sqr(ay * w.y);
-    float z = fabs(w.z);
-    if (s2 == 0.0f) return 0.0f;
-    if (z == 0.0f) return INFINITY;
-    return s2 / (2.0f * z * (z + sqrt(z * z + s2)));
-}
+inline float ggx_lambda(float ax, float ay, float3 w) { return ggx_lambda_l1(ax, ay, w); }
 
 /* A normal drawn from D(m) cos(theta_m): the slope distribution of GGX is a stretched
  * isotropic one with radial CDF r^2 / (1 + r^2) (Walter 2007, eqs. 35-36), so with
@@ -53,39 +42,15 @@ inline float ggx_pdf_all(float ax, float ay, float3 m) { return ggx_D(ax, ay, m)
  * of Visible Normals", JCGT 7(4), listing 1): stretch wo to the unit-roughness
  * configuration, sample the projected hemisphere, unstretch. */
 inline float3 ggx_sample_visible(float ax, float ay, float3 wo, float2 u) {
-    /* Section 3.2: the view direction in the hemisphere configuration. */
-    float3 vh = normalize((float3)(ax * wo.x, ay * wo.y, wo.z));
-    /* Section 4.1: an orthonormal basis (with the special case at normal incidence). */
-    float lensq = vh.x * vh.x + vh.y * vh.y;
-    float3 t1 = (lensq > 0.0f) ? (float3)(-vh.y, vh.x, 0.0f) * rsqrt(lensq) : (float3)(1.0f, 0.0f, 0.0f);
-    float3 t2 = cross(vh, t1);
-    /* Section 4.2: a point on the projected area (a disk warped toward vh). */
-    float r = sqrt(u.x);
-    float2 sc = sincos_turns(u.y); /* phi = 2 pi u.y */
-    float p1 = r * sc.y;
-    float p2 = r * sc.x;
-    float s = 0.5f * (1.0f + vh.z);
-    p2 = (1.0f - s) * safe_sqrt(1.0f - p1 * p1) + s * p2;
-    /* Section 4.3: reprojection onto the hemisphere. */
-    float3 nh = p1 * t1 + p2 * t2 + safe_sqrt(1.0f - p1 * p1 - p2 * p2) * vh;
-    /* Section 3.4: back to the ellipsoid configuration. */
-    float3 m = (float3)(ax * nh.x, ay * nh.y, fmax(nh.z, 0.0f));
-    return normalize_or(m, (float3)(0.0f, 0.0f, 1.0f));
+    return ggx_sample_visible_l1(ax, ay, wo, u.x, u.y);
 }
 
 /* The projected area of the microsurface seen from w (w.z > 0), normalised by the
  * macro-surface's: w.z (1 + Lambda(w)) = (w.z + sqrt(w.z^2 + s2)) / 2. Never 0 for w != 0. */
-inline float ggx_projected_area(float ax, float ay, float3 w) {
-    float s2 = sqr(ax * w.x) + sqr(ay * w.y);
-    return 0.5f * (w.z + sqrt(w.z * w.z + s2));
-}
+inline float ggx_projected_area(float ax, float ay, float3 w) { return ggx_projected_area_l1(ax, ay, w); }
 
 /* D_wo(m) = G1(wo) max(0, wo.m) D(m) / wo.z = max(0, wo.m) D(m) / (wo.z (1 + Lambda(wo))). */
-inline float ggx_pdf_visible(float ax, float ay, float3 wo, float3 m) {
-    float wm = dot(wo, m);
-    if (!(wo.z > 0.0f) || !(wm > 0.0f)) return 0.0f;
-    return ggx_D(ax, ay, m) * wm / ggx_projected_area(ax, ay, wo);
-}
+inline float ggx_pdf_visible(float ax, float ay, float3 wo, float3 m) { return ggx_pdf_visible_l1(ax, ay, wo, m); }
 
 /* The spherical-cap visible-normal samplers, in the hemisphere configuration of
  * Heitz 2018 (wo stretched to unit roughness, i = normalize(ax wo.x, ay wo.y, wo.z)):

@@ -19,6 +19,7 @@
 #include "kernels/util/warp_lanes.cl"
 #include "kernels/util/frame_lanes.cl"
 #include "kernels/util/mis_lanes.cl"
+#include "kernels/bsdf/ggx_lanes.cl"
 #include "kernels/trace/ray_lanes.cl"
 #include "kernels/trace/sphere_lanes.cl"
 #include "kernels/lights/area_lanes.cl"
