@@ -166,6 +166,20 @@ TEST(Lanes, GgxSameBitsAtWidths1And8) {
               0);
 }
 
+TEST(Lanes, BeckmannSameBitsAtWidths1And8) {
+    // GgxSameBits's inputs; the visible-normal sampler's Newton iterations differ in number
+    // from lane to lane
+    EXPECT_EQ(mismatches("lanes_beckmann",
+                         inputs(0.0f, 1.0f,
+                                {{0.0f, 0.0f, 1.1f, 0.0f},
+                                 {1.0f, 1.0f, 1.1f, 0.3f},
+                                 {0.5f, 0.01f, 0.1f, 0.7f},
+                                 {0.2f, 0.2f, 0.0f, 0.1f},
+                                 {0.0f, 1.0f, 0.10001f, 0.25f}}),
+                         4),
+              0);
+}
+
 TEST(Lanes, SphereSameBitsAtWidths1And8) {
     // a, b, c: the ray's origin and direction; d: the radius; with rays through the centre,
     // grazing, starting on the sphere and of zero length

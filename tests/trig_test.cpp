@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <numbers>
 #include <vector>
@@ -50,6 +51,41 @@ TEST(Trig, SincosTurnsMaxError) {
         EXPECT_EQ(q[i].s[0], want[i][0]) << i;
         EXPECT_EQ(q[i].s[1], want[i][1]) << i;
     }
+}
+
+// e^x of kernels/util/exp_lanes.cl (the Beckmann lanes'): within 2 ulp wherever the result is a
+// normal float, 0, infinity and NaN at the ends, subnormals to within their spacing.
+TEST(Trig, ExpPolyMaxError) {
+    std::vector<float> x;
+    const int n = 1 << 21;
+    for (int i = 0; i <= n; ++i) x.push_back(float(-104.0 + 193.0 * i / n));
+    for (float s : {0.0f, -0.0f, 1e-30f, -1e-30f, 0.5f, -0.5f, 1.0f, 88.0f, 88.7f, -87.0f, -103.0f}) x.push_back(s);
+    const float inf = std::numeric_limits<float>::infinity();
+    x.insert(x.end(), {-inf, inf, std::numeric_limits<float>::quiet_NaN(), -200.0f, 200.0f});
+    const std::vector<float> r = run<float, float>("trig_exp_poly", x);
+    double worst_ulp = 0.0, worst_sub = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        if (std::isnan(x[i])) {
+            EXPECT_TRUE(std::isnan(r[i]));
+            continue;
+        }
+        const double want = std::exp(double(x[i]));
+        if (want > double(std::numeric_limits<float>::max())) {
+            EXPECT_EQ(r[i], inf) << x[i];
+        } else if (want < double(std::numeric_limits<float>::min())) {
+            worst_sub =
+                std::max(worst_sub, std::fabs(double(r[i]) - want) / double(std::numeric_limits<float>::denorm_min()));
+        } else {
+            const double ulp = std::ldexp(1.0, std::ilogb(want) - 23);
+            worst_ulp = std::max(worst_ulp, std::fabs(double(r[i]) - want) / ulp);
+        }
+    }
+    std::printf("[ trig     ] exp_poly max error: %.3g ulp (normal results), %.3g of the subnormal spacing\n",
+                worst_ulp, worst_sub);
+    EXPECT_LE(worst_ulp, 2.0);
+    EXPECT_LE(worst_sub, 1.0);
+    EXPECT_EQ(r[x.size() - 5], 0.0f);  // e^-inf
+    EXPECT_EQ(r[x.size() - 4], inf);
 }
 
 TEST(Trig, Atan2FastMaxError) {

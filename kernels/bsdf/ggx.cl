@@ -7,7 +7,10 @@
  * [1e-7, 1] with ax/ay within 1e4 (below FC_ALPHA_MIRROR the caller treats the lobe as
  * a mirror and never gets here). Directions are in the local frame (n = +z); every
  * function is written in "stretched" forms (x/ax, y/ay) that neither overflow nor
- * cancel for tiny alphas or grazing directions. */
+ * cancel for tiny alphas or grazing directions.
+ *
+ * The functions below that return a *_l1 call are the W = 1 forms of the lane-generic bodies
+ * of kernels/bsdf/ggx_lanes.cl (kernels/lanes/lanes.cl), which the packet kernels run in lanes. */
 #ifndef FACET_BSDF_GGX_CL
 #define FACET_BSDF_GGX_CL
 

@@ -301,6 +301,35 @@ __kernel void lanes_ggx(__global const LanesIn* in, __global LanesOut* out) {
     OUT8(3, ggx_lambda_l8(ax, ay, wo) + 3.0f * ggx_projected_area_l8(ax, ay, wo));
 }
 
+/* Beckmann (kernels/bsdf/beckmann_lanes.cl), on lanes_ggx's inputs: the visible normal, its
+ * density, Lambda(wo) and the projected area. */
+__kernel void lanes_beckmann(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    float wx[8], wy[8], wz[8], ux[8], uy[8];
+    for (int j = 0; j < 8; ++j) {
+        const float ax = in[i].a[j] + 1e-4f, ay = in[i].b[j] + 1e-4f;
+        const float3 wo = lanes_ggx_wo(in[i].c[j], in[i].d[j]);
+        wx[j] = wo.x;
+        wy[j] = wo.y;
+        wz[j] = wo.z;
+        ux[j] = (float)(in[i].k[j] >> 8) * 0x1p-24f;
+        uy[j] = (float)(in[i].m[j] >> 8) * 0x1p-24f;
+        const float3 m = beckmann_sample_visible_l1(ax, ay, wo, ux[j], uy[j]);
+        out[i].one[0][j] = m.x + 2.0f * m.y;
+        out[i].one[1][j] = m.z;
+        out[i].one[2][j] = beckmann_pdf_visible_l1(ax, ay, wo, m);
+        out[i].one[3][j] = beckmann_lambda_l1(ax, ay, wo) + 3.0f * beckmann_projected_area_l1(ax, ay, wo);
+    }
+    const float8 ax = IN8(a) + 1e-4f, ay = IN8(b) + 1e-4f;
+    const FcVec3x8 wo = vec3_l8(vload8(0, wx), vload8(0, wy), vload8(0, wz));
+    const FcVec3x8 m = beckmann_sample_visible_l8(ax, ay, wo, vload8(0, ux), vload8(0, uy));
+    OUT8(0, m.x + 2.0f * m.y);
+    OUT8(1, m.z);
+    OUT8(2, beckmann_pdf_visible_l8(ax, ay, wo, m));
+    OUT8(3, beckmann_lambda_l8(ax, ay, wo) + 3.0f * beckmann_projected_area_l8(ax, ay, wo));
+}
+
 /* Element j of group i through the scalar sampler_get4 (coordinates in a uint4's lanes),
  * into out->one; returns the element's sampler, whose seed and index the lanes take. */
 inline Sampler lanes_scalar_sample(__global const LanesIn* in, __global LanesOut* out, int j) {

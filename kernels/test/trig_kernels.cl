@@ -12,3 +12,9 @@ __kernel void trig_atan2(__global const float2* yx, __global float* out) {
     uint i = get_global_id(0);
     out[i] = atan2_fast(yx[i].x, yx[i].y);
 }
+
+/* exp_poly (kernels/util/exp_lanes.cl) at W = 1. */
+__kernel void trig_exp_poly(__global const float* x, __global float* out) {
+    uint i = get_global_id(0);
+    out[i] = exp_poly_l1(x[i]);
+}
