@@ -180,6 +180,16 @@ TEST(Lanes, BeckmannSameBitsAtWidths1And8) {
               0);
 }
 
+TEST(Lanes, FresnelSameBitsAtWidths1And8) {
+    // a: the cosine (normal incidence both ways, grazing, total internal reflection); b: the
+    // index (1: no interface); c, d: Schlick's f0 and f90
+    EXPECT_EQ(
+        mismatches("lanes_fresnel",
+                   inputs(0.0f, 1.0f, {{1.0f, 0.1875f}, {0.0f, 0.1875f}, {0.5f, 0.5f}, {0.55f, 0.01f}, {0.45f, 1.0f}}),
+                   2),
+        0);
+}
+
 TEST(Lanes, SphereSameBitsAtWidths1And8) {
     // a, b, c: the ray's origin and direction; d: the radius; with rays through the centre,
     // grazing, starting on the sphere and of zero length

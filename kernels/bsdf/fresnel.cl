@@ -14,6 +14,7 @@
 #ifndef FACET_BSDF_FRESNEL_CL
 #define FACET_BSDF_FRESNEL_CL
 
+#include "kernels/lanes/scalar.cl" /* the W = 1 forms of kernels/bsdf/fresnel_lanes.cl */
 #include "kernels/shared/material_layout.h"
 #include "kernels/util/math.cl"
 
@@ -22,16 +23,13 @@ inline float pow5(float x) {
     return x2 * x2 * x;
 }
 
-inline float3 fresnel_schlick(float3 f0, float cos_theta) {
-    float c = clamp(cos_theta, 0.0f, 1.0f);
-    return f0 + ((float3)(1.0f) - f0) * pow5(1.0f - c);
-}
-
 /* Schlick's form reaching f90 at grazing incidence (f90 = 1: fresnel_schlick). */
 inline float3 fresnel_schlick_f90(float3 f0, float f90, float cos_theta) {
-    float c = clamp(cos_theta, 0.0f, 1.0f);
-    return f0 + ((float3)(f90)-f0) * pow5(1.0f - c);
+    return (float3)(fresnel_schlick_channel_l1(f0.x, f90, cos_theta), fresnel_schlick_channel_l1(f0.y, f90, cos_theta),
+                    fresnel_schlick_channel_l1(f0.z, f90, cos_theta));
 }
+
+inline float3 fresnel_schlick(float3 f0, float cos_theta) { return fresnel_schlick_f90(f0, 1.0f, cos_theta); }
 
 /* The material's Schlick reflectance at grazing incidence: `specular_f90` in [0, 1] where
  * FC_MAT_SPECULAR_F90 is set, else 1. */
@@ -47,20 +45,7 @@ inline float f0_from_ior(float n) {
 /* Exact dielectric reflectance for light arriving at cosine cos_i on the side the
  * normal points to (cos_i < 0: from the other side, where the relative index is
  * 1/eta). Total internal reflection gives 1. */
-inline float fresnel_dielectric(float cos_i, float eta) {
-    if (cos_i < 0.0f) {
-        eta = 1.0f / eta;
-        cos_i = -cos_i;
-    }
-    cos_i = fmin(cos_i, 1.0f);
-    float sin2_t = (1.0f - cos_i * cos_i) / (eta * eta);
-    if (sin2_t >= 1.0f) return 1.0f;
-    float cos_t = sqrt(1.0f - sin2_t);
-    float rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    float rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    float f = 0.5f * (rs * rs + rp * rp);
-    return isfinite(f) ? clamp(f, 0.0f, 1.0f) : 1.0f;
-}
+inline float fresnel_dielectric(float cos_i, float eta) { return fresnel_dielectric_l1(cos_i, eta); }
 
 /* The dielectric transmittance 1 - F of a refraction whose two cosines are known,
  * cos_i on the incident side and cos_t on the far side (both > 0; eta = n_t / n_i):

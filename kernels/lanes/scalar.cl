@@ -20,6 +20,7 @@
 #include "kernels/util/frame_lanes.cl"
 #include "kernels/util/mis_lanes.cl"
 #include "kernels/util/exp_lanes.cl"
+#include "kernels/bsdf/fresnel_lanes.cl"
 #include "kernels/bsdf/ggx_lanes.cl"
 #include "kernels/bsdf/beckmann_lanes.cl"
 #include "kernels/trace/ray_lanes.cl"

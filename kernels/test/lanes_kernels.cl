@@ -330,6 +330,21 @@ __kernel void lanes_beckmann(__global const LanesIn* in, __global LanesOut* out)
     OUT8(3, beckmann_lambda_l8(ax, ay, wo) + 3.0f * beckmann_projected_area_l8(ax, ay, wo));
 }
 
+/* Fresnel (kernels/bsdf/fresnel_lanes.cl): a: the cosine (2a - 1, either side), b: the
+ * relative index (0.25 to 4.25), c, d: Schlick's f0 and f90. */
+__kernel void lanes_fresnel(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    for (int j = 0; j < 8; ++j) {
+        const float c = 2.0f * in[i].a[j] - 1.0f;
+        out[i].one[0][j] = fresnel_dielectric_l1(c, 0.25f + 4.0f * in[i].b[j]);
+        out[i].one[1][j] = fresnel_schlick_channel_l1(in[i].c[j], in[i].d[j], c);
+    }
+    const float8 c = 2.0f * IN8(a) - 1.0f;
+    OUT8(0, fresnel_dielectric_l8(c, 0.25f + 4.0f * IN8(b)));
+    OUT8(1, fresnel_schlick_channel_l8(IN8(c), IN8(d), c));
+}
+
 /* Element j of group i through the scalar sampler_get4 (coordinates in a uint4's lanes),
  * into out->one; returns the element's sampler, whose seed and index the lanes take. */
 inline Sampler lanes_scalar_sample(__global const LanesIn* in, __global LanesOut* out, int j) {
