@@ -171,7 +171,7 @@ inline LVEC3 LNAME(beckmann_sample_visible)(LFLOAT ax, LFLOAT ay, LVEC3 wo, LFLO
     const LFLOAT x = LNAME(beckmann_visible_slope_x)(tan_t, cot_t, LNAME(atan2_fast)(s, z), ux);
     const LFLOAT y = LNAME(erfinv_giles)(2.0f * uy - 1.0f);
     const LFLOAT mx = ax * (cos_phi * x - sin_phi * y), my = ay * (sin_phi * x + cos_phi * y);
-    const LFLOAT il = 1.0f / sqrt(mx * mx + my * my + 1.0f);
+    const LFLOAT il = rsqrt(mx * mx + my * my + 1.0f);
     return LNAME(vec3)(-mx * il, -my * il, il);
 }
 

@@ -43,13 +43,13 @@ inline LFLOAT LNAME(ggx_pdf_visible)(LFLOAT ax, LFLOAT ay, LVEC3 wo, LVEC3 m) {
 inline LVEC3 LNAME(ggx_sample_visible)(LFLOAT ax, LFLOAT ay, LVEC3 wo, LFLOAT ux, LFLOAT uy) {
     /* section 3.2: the view direction in the hemisphere configuration */
     LFLOAT vx = ax * wo.x, vy = ay * wo.y, vz = wo.z;
-    const LFLOAT vl = sqrt(vx * vx + vy * vy + vz * vz);
-    vx /= vl;
-    vy /= vl;
-    vz /= vl;
+    const LFLOAT iv = rsqrt(vx * vx + vy * vy + vz * vz);
+    vx *= iv;
+    vy *= iv;
+    vz *= iv;
     /* section 4.1: an orthonormal basis (t1 = x at normal incidence) */
     const LFLOAT lensq = vx * vx + vy * vy;
-    const LFLOAT il = 1.0f / sqrt(lensq);
+    const LFLOAT il = rsqrt(lensq);
     const LINT tilted = lensq > 0.0f;
     const LFLOAT t1x = select((LFLOAT)(1.0f), -vy * il, tilted), t1y = select((LFLOAT)(0.0f), vx * il, tilted);
     const LFLOAT t2x = vy * 0.0f - vz * t1y, t2y = vz * t1x - vx * 0.0f, t2z = vx * t1y - vy * t1x; /* vh x t1 */
@@ -64,7 +64,7 @@ inline LVEC3 LNAME(ggx_sample_visible)(LFLOAT ax, LFLOAT ay, LVEC3 wo, LFLOAT ux
     const LFLOAT nx = p1 * t1x + p2 * t2x + n3 * vx, ny = p1 * t1y + p2 * t2y + n3 * vy, nz = p2 * t2z + n3 * vz;
     const LFLOAT mx = ax * nx, my = ay * ny, mz = fmax(nz, 0.0f);
     const LFLOAT len2 = mx * mx + my * my + mz * mz;
-    const LFLOAT il2 = 1.0f / sqrt(len2);
+    const LFLOAT il2 = rsqrt(len2);
     const LINT ok = (len2 > 0.0f) & isfinite(len2);
     return LNAME(vec3)(select((LFLOAT)(0.0f), mx * il2, ok), select((LFLOAT)(0.0f), my * il2, ok),
                        select((LFLOAT)(1.0f), mz * il2, ok));
