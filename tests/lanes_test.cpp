@@ -190,6 +190,25 @@ TEST(Lanes, FresnelSameBitsAtWidths1And8) {
         0);
 }
 
+TEST(Lanes, PlainBaseSameBitsAtWidths1And8) {
+    // GgxSameBits's inputs; each vector mixes GGX and Beckmann lanes, separable and
+    // height-correlated masking, the diffuse and the specular lobe's samples
+    const std::vector<LanesIn> in = inputs(0.0f, 1.0f,
+                                           {{0.0f, 0.0f, 1.1f, 0.0f},
+                                            {1.0f, 1.0f, 1.1f, 0.3f},
+                                            {0.5f, 0.01f, 0.1f, 0.7f},
+                                            {0.2f, 0.2f, 0.0f, 0.1f},
+                                            {0.0f, 1.0f, 0.10001f, 0.25f}});
+    EXPECT_EQ(mismatches("lanes_plain_base", in, 4), 0);
+    // and most elements make a sample, of either lobe
+    std::vector<LanesOut> out =
+        test::run_elementwise<LanesIn, LanesOut>("kernels/test/lanes_kernels.cl", "lanes_plain_base", in);
+    int made = 0;
+    for (const LanesOut& o : out)
+        for (int j = 0; j < 8; ++j) made += o.one[0][j] != -1.0f;
+    EXPECT_GT(made, int(out.size() * 8) / 2);
+}
+
 TEST(Lanes, SphereSameBitsAtWidths1And8) {
     // a, b, c: the ray's origin and direction; d: the radius; with rays through the centre,
     // grazing, starting on the sphere and of zero length

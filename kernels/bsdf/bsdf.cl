@@ -62,6 +62,42 @@ inline float specular_probability(const FcMaterial* m, float3 wo) {
     return (s + d > 0.0f) ? clamp(s / (s + d), 0.05f, 0.95f) : 0.5f;
 }
 
+/* Whether the two-lobe base is plain: a Lambertian lobe (or Lambert x (1 - F0)) under a rough
+ * GGX or Beckmann lobe sampled by visible normals, Smith-masked (separable or height-correlated),
+ * with the exact dielectric Fresnel term, and no energy compensation or metallic mix. Such a base
+ * is evaluated and sampled by kernels/bsdf/plain_base_lanes.cl, here at W = 1 and in the packet
+ * kernel in lanes: the same formulas as the general route below, one source for both widths. */
+inline bool bsdf_plain(const FcMaterial* m) {
+#if FC_HAS_MICROFACET
+    if (m->specular_model != FC_SPECULAR_MICROFACET) return false;
+    if (m->diffuse_model != FC_DIFFUSE_LAMBERT && m->diffuse_model != FC_DIFFUSE_LAMBERT_1MF0) return false;
+    if (m->ndf == FC_NDF_GGX) {
+        if (m->sampling != FC_SAMPLE_VISIBLE) return false;
+    } else if (m->ndf != FC_NDF_BECKMANN || m->sampling == FC_SAMPLE_ALL) {
+        return false;
+    }
+    if (m->geometry != FC_G_SMITH_SEPARABLE && m->geometry != FC_G_SMITH_CORRELATED) return false;
+    return m->fresnel == FC_FRESNEL_DIELECTRIC && !ec_enabled(m) && !metallic_mixed(m) && !microfacet_is_mirror(m);
+#else
+    return false;
+#endif
+}
+
+/* A plain base's parameters (bsdf_plain), masks as W = 1 lanes (1 or 0). */
+inline PlainBase_l1 plain_base_of(const FcMaterial* m) {
+    PlainBase_l1 b;
+    b.kd = material_diffuse(m);
+    if (m->diffuse_model == FC_DIFFUSE_LAMBERT_1MF0) b.kd *= (float3)(1.0f) - fresnel_f0(m);
+    b.ax = m->alpha_x;
+    b.ay = m->alpha_y;
+    b.ior = m->ior;
+    b.diffuse_weight = diffuse_weight(m);
+    b.ggx = m->ndf == FC_NDF_GGX;
+    b.beckmann = !b.ggx;
+    b.correlated = m->geometry == FC_G_SMITH_CORRELATED;
+    return b;
+}
+
 /* The two-lobe base's f at wi from its specular lobe's own value fs there. */
 inline float3 bsdf_base_f(const FcMaterial* m, float3 wo, float3 wi, float3 fs) {
     float3 f = diffuse_eval(m, wo, wi) + fs;
@@ -86,6 +122,12 @@ inline float3 bsdf_base_eval(const FcMaterial* m, float3 wo, float3 wi) {
     if (bsdf_is_dielectric(m)) return dielectric_eval(m, wo, wi);
 #endif
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
+    if (bsdf_plain(m)) {
+        const PlainBase_l1 b = plain_base_of(m);
+        const PlainView_l1 v = plain_base_view_l1(&b, wo);
+        float pdf;
+        return plain_base_eval_pdf_l1(&b, &v, wo, wi, &pdf);
+    }
     return bsdf_base_f(m, wo, wi, specular_eval(m, wo, wi));
 }
 
@@ -94,6 +136,13 @@ inline float bsdf_base_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     if (bsdf_is_dielectric(m)) return dielectric_pdf(m, wo, wi);
 #endif
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
+    if (bsdf_plain(m)) {
+        const PlainBase_l1 b = plain_base_of(m);
+        const PlainView_l1 v = plain_base_view_l1(&b, wo);
+        float pdf;
+        plain_base_eval_pdf_l1(&b, &v, wo, wi, &pdf);
+        return pdf;
+    }
     return bsdf_base_density(m, wo, wi, specular_pdf(m, wo, wi));
 }
 
@@ -105,6 +154,11 @@ inline float3 bsdf_base_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, floa
 #endif
     *pdf = 0.0f;
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
+    if (bsdf_plain(m)) {
+        const PlainBase_l1 b = plain_base_of(m);
+        const PlainView_l1 v = plain_base_view_l1(&b, wo);
+        return plain_base_eval_pdf_l1(&b, &v, wo, wi, pdf);
+    }
     float ps;
     const float3 fs = specular_eval_pdf(m, wo, wi, &ps);
     *pdf = bsdf_base_density(m, wo, wi, ps);
@@ -141,6 +195,11 @@ inline bool bsdf_base_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSampl
     if (wo.z <= 0.0f) return false;
     if (m->diffuse_model == FC_DIFFUSE_LAMBERT && m->specular_model == FC_SPECULAR_NONE)
         return lambert_only_sample(m, u.xy, s);
+    if (bsdf_plain(m)) {
+        const PlainBase_l1 b = plain_base_of(m);
+        const PlainView_l1 v = plain_base_view_l1(&b, wo);
+        return plain_base_sample_l1(&b, &v, wo, u.x, u.y, u.z, &s->wi, &s->f, &s->pdf, &s->weight);
+    }
     float p = specular_probability(m, wo);
     const bool specular = u.z < p;
     if (specular) {

@@ -52,6 +52,23 @@ inline void l3_store(L3 v, float* a) {
     LSTORE(v.y, a + FC_PACKET_W);
     LSTORE(v.z, a + 2 * FC_PACKET_W);
 }
+#if FC_PACKET_BSDF_PER_LANE
+/* The plain bases of the lanes `lanes` from their per-lane parameters (the masks stored as -1
+ * or 0). */
+inline LNAME(PlainBase) packet_plain_base(LINT lanes, const float* kd, const float* ax, const float* ay,
+                                          const float* ior, const float* dw, const int* ggx, const int* cor) {
+    LNAME(PlainBase) b;
+    b.kd = l3_load(kd);
+    b.ax = LLOAD(ax);
+    b.ay = LLOAD(ay);
+    b.ior = LLOAD(ior);
+    b.diffuse_weight = LLOAD(dw);
+    b.ggx = lanes & LLOAD(ggx);
+    b.beckmann = lanes & ~LLOAD(ggx);
+    b.correlated = LLOAD(cor);
+    return b;
+}
+#endif
 inline float3 lane3(const float* a, int j) { return (float3)(a[j], a[FC_PACKET_W + j], a[2 * FC_PACKET_W + j]); }
 inline void set_lane3(float* a, int j, float3 v) {
     a[j] = v.x;
@@ -226,6 +243,11 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     FcMaterial mats[FC_PACKET_W];
     float fs[3 * FC_PACKET_W], ft[3 * FC_PACKET_W], wol[3 * FC_PACKET_W];
     int gen[FC_PACKET_W], delta_bsdf[FC_PACKET_W];
+    /* lanes whose BSDF is a plain base (bsdf_plain, no layers), evaluated and sampled in lanes
+     * (kernels/bsdf/plain_base_lanes.cl) from its parameters: kd, alpha, ior, the diffuse lobe's
+     * weight, and the GGX and height-correlated masks (-1 or 0) */
+    float pkd[3 * FC_PACKET_W], pax[FC_PACKET_W], pay[FC_PACKET_W], pior[FC_PACKET_W], pdw[FC_PACKET_W];
+    int plain[FC_PACKET_W], pggx[FC_PACKET_W], pcor[FC_PACKET_W];
 #endif
 #if FC_HAS_TEXTURES
     float plen[FC_PACKET_W]; /* each path's length from the camera: its ray cone (texture filtering) */
@@ -244,6 +266,17 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         index[j] = 0u;
         seed[j] = 0u;
         irev[j] = 0u;
+#if FC_PACKET_BSDF_PER_LANE
+        gen[j] = 0;
+        plain[j] = 0; /* and parameters that every lane can evaluate, read before a lane's first */
+        set_lane3(pkd, j, (float3)(0.0f));
+        pax[j] = 1.0f;
+        pay[j] = 1.0f;
+        pior[j] = 1.5f;
+        pdw[j] = 0.0f;
+        pggx[j] = 0;
+        pcor[j] = 0;
+#endif
     }
     for (;;) {
         /* A: until every lane has a surface to shade or the queue is empty: a finished path is
@@ -417,8 +450,20 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                     set_lane3(wol, j, wo_local);
                     delta_bsdf[j] = bsdf_is_delta(&mats[j]);
                     s.ns = fr.n;
+                    plain[j] = !bsdf_layered(&mats[j]) && bsdf_plain(&mats[j]);
+                    if (plain[j]) {
+                        const PlainBase_l1 b = plain_base_of(&mats[j]);
+                        set_lane3(pkd, j, b.kd);
+                        pax[j] = b.ax;
+                        pay[j] = b.ay;
+                        pior[j] = b.ior;
+                        pdw[j] = b.diffuse_weight;
+                        pggx[j] = b.ggx ? -1 : 0;
+                        pcor[j] = b.correlated ? -1 : 0;
+                    }
                 } else {
                     delta_bsdf[j] = 0;
+                    plain[j] = 0;
                 }
 #if FC_HAS_DIELECTRIC
                 trans[j] = gen[j] && bsdf_is_dielectric(&mats[j]);
@@ -594,6 +639,16 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
          * has one; f and its density (for MIS) */
         L3 F = l3(A.x * f_scale, A.y * f_scale, A.z * f_scale);
         LFLOAT bsdf_pdf_l = LNAME(cosine_hemisphere_pdf)(wo_z, wi_z);
+        /* lanes whose BSDF is a plain base, evaluated and sampled in lanes (bsdf_eval_pdf's and
+         * bsdf_sample's route for them, at W = 1 there) */
+        const LINT PL = G & (LLOAD(plain) != 0);
+        const bool some_plain = LNAME(lanes_any)(PL);
+        LNAME(PlainBase) pb;
+        LNAME(PlainView) pv;
+        if (some_plain) {
+            pb = packet_plain_base(PL, pkd, pax, pay, pior, pdw, pggx, pcor);
+            pv = LNAME(plain_base_view)(&pb, l3_load(wol));
+        }
         {
             float wil[3 * FC_PACKET_W], fa[3 * FC_PACKET_W], pa[FC_PACKET_W];
             int ga[FC_PACKET_W];
@@ -604,7 +659,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 pa[j] = 0.0f;
                 if (!ga[j]) continue;
                 ga[j] = 0;
-                if (delta_bsdf[j]) continue;
+                if (delta_bsdf[j] || plain[j]) continue;
                 /* with MIS, f and its density at once (bsdf_eval_pdf: the same bits as the two) */
                 float pdf_j = 0.0f;
                 const float3 f = P->strategy == FC_STRATEGY_MIS
@@ -615,9 +670,23 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 pa[j] = pdf_j;
                 ga[j] = -1;
             }
-            ok = select(ok, LLOAD(ga), G);
-            F = LNAME(vec3_select)(F, l3_load(fa), G);
-            bsdf_pdf_l = select(bsdf_pdf_l, LLOAD(pa), G);
+            LINT okg = LLOAD(ga);
+            L3 Fg = l3_load(fa);
+            LFLOAT pg = LLOAD(pa);
+            /* plain bases in lanes: f and its density */
+            const LINT PLok = ok & PL;
+            if (some_plain && LNAME(lanes_any)(PLok)) {
+                LFLOAT pp;
+                const L3 fp = LNAME(plain_base_eval_pdf)(&pb, &pv, l3_load(wol), l3_load(wil), &pp);
+                const LINT lit = (fp.x != 0.0f) | (fp.y != 0.0f) | (fp.z != 0.0f);
+                okg = select(okg, lit, PLok);
+                Fg = LNAME(vec3_select)(Fg, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), fp, lit), PLok);
+                const LINT mis = (LINT)(P->strategy == FC_STRATEGY_MIS ? -1 : 0);
+                pg = select(pg, select((LFLOAT)(0.0f), pp, lit & mis), PLok);
+            }
+            ok = select(ok, okg, G);
+            F = LNAME(vec3_select)(F, Fg, G);
+            bsdf_pdf_l = select(bsdf_pdf_l, pg, G);
         }
         LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, bsdf_pdf_l);
 #else
@@ -697,7 +766,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #if FC_HAS_DIELECTRIC
                 below[j] = 0;
 #endif
-                if (!ga[j]) continue;
+                if (!ga[j] || plain[j]) continue;
                 ga[j] = 0;
                 BsdfSample bs;
                 if (!bsdf_sample(&mats[j], lane3(wol, j), (float3)(u0[j], u1[j], u2[j]), &bs)) continue;
@@ -723,6 +792,18 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #if FC_HAS_DIELECTRIC
             so = LNAME(vec3_select)(so, l3_load(orgb), LLOAD(below));
 #endif
+            /* plain bases in lanes, reflections only */
+            if (some_plain) {
+                L3 wl, fl, wt;
+                LFLOAT pl;
+                LINT okp = LNAME(plain_base_sample)(&pb, &pv, l3_load(wol), ub[0], ub[1], ub[2], &wl, &fl, &pl, &wt);
+                const L3 ww = LNAME(vec3_combine)(wl.x, S, wl.y, Tt, wl.z, N);
+                okp &= l3_dot(NG, ww) * wl.z > 0.0f;
+                nwi = LNAME(vec3_select)(nwi, LNAME(vec3_select)(l3(0.0f, 0.0f, 1.0f), ww, okp), PL);
+                cont = select(cont, okp, PL);
+                next_pdf = select(next_pdf, select((LFLOAT)(0.0f), pl, okp), PL);
+                A = LNAME(vec3_select)(A, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), wt, okp), PL);
+            }
         }
 #endif
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);

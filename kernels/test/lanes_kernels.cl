@@ -345,6 +345,78 @@ __kernel void lanes_fresnel(__global const LanesIn* in, __global LanesOut* out) 
     OUT8(1, fresnel_schlick_channel_l8(IN8(c), IN8(d), c));
 }
 
+/* The plain two-lobe base (kernels/bsdf/plain_base_lanes.cl), lanes of GGX and Beckmann,
+ * separable and height-correlated masking mixed in one vector: a, b: alpha_x, alpha_y - 1e-4;
+ * c, d: wo as lanes_ggx's; k, m: the sample's (u0, u1), n: its u2, the NDF (bit 0), the
+ * masking (bit 1), the index and the albedo. The sample's direction, density and weight (-1
+ * where none was made), and f and the density at a second direction. */
+inline void lanes_plain_element(__global const LanesIn* in, int j, float* ax, float* ay, float3* wo, float3* wl,
+                                float* u, float3* kd, float* ior) {
+    *ax = in->a[j] + 1e-4f;
+    *ay = in->b[j] + 1e-4f;
+    *wo = lanes_ggx_wo(in->c[j], in->d[j]);
+    *wl = lanes_ggx_wo(1.1f - in->c[j], in->d[j] + 0.37f);
+    u[0] = (float)(in->k[j] >> 8) * 0x1p-24f;
+    u[1] = (float)(in->m[j] >> 8) * 0x1p-24f;
+    u[2] = (float)(in->n[j] % 1000u) * 1e-3f;
+    *kd = (float3)((float)(in->m[j] & 255u), (float)(in->k[j] & 255u), 128.0f) / 255.0f;
+    *ior = 1.05f + (float)((in->n[j] >> 2) % 100u) * 0.03f;
+}
+
+__kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    float pax[8], pay[8], pior[8], pdw[8], kx[8], ky[8], kz[8], wx[8], wy[8], wz[8], lx[8], ly[8], lz[8], u0[8], u1[8],
+        u2[8];
+    int ggx[8], cor[8];
+    for (int j = 0; j < 8; ++j) {
+        PlainBase_l1 b;
+        float3 wo, wl, kd;
+        float u[3];
+        lanes_plain_element(in + i, j, &b.ax, &b.ay, &wo, &wl, u, &kd, &b.ior);
+        b.kd = kd;
+        b.diffuse_weight = luminance(kd);
+        b.ggx = (int)(in[i].n[j] & 1u);
+        b.beckmann = !b.ggx;
+        b.correlated = (int)((in[i].n[j] >> 1) & 1u);
+        const PlainView_l1 v = plain_base_view_l1(&b, wo);
+        float3 wi, f, weight;
+        float pdf, pl;
+        const int ok = plain_base_sample_l1(&b, &v, wo, u[0], u[1], u[2], &wi, &f, &pdf, &weight);
+        const float3 fl = plain_base_eval_pdf_l1(&b, &v, wo, wl, &pl);
+        out[i].one[0][j] = ok ? wi.x + 2.0f * wi.y + 4.0f * wi.z : -1.0f;
+        out[i].one[1][j] = ok ? pdf + f.x + 2.0f * f.y + 4.0f * f.z : -1.0f;
+        out[i].one[2][j] = ok ? weight.x + 2.0f * weight.y + 4.0f * weight.z : -1.0f;
+        out[i].one[3][j] = fl.x + 2.0f * fl.y + 4.0f * fl.z + 8.0f * pl;
+        pax[j] = b.ax, pay[j] = b.ay, pior[j] = b.ior, pdw[j] = b.diffuse_weight;
+        kx[j] = kd.x, ky[j] = kd.y, kz[j] = kd.z;
+        wx[j] = wo.x, wy[j] = wo.y, wz[j] = wo.z, lx[j] = wl.x, ly[j] = wl.y, lz[j] = wl.z;
+        u0[j] = u[0], u1[j] = u[1], u2[j] = u[2];
+        ggx[j] = b.ggx ? -1 : 0;
+        cor[j] = b.correlated ? -1 : 0;
+    }
+    PlainBase_l8 b;
+    b.kd = vec3_l8(vload8(0, kx), vload8(0, ky), vload8(0, kz));
+    b.ax = vload8(0, pax);
+    b.ay = vload8(0, pay);
+    b.ior = vload8(0, pior);
+    b.diffuse_weight = vload8(0, pdw);
+    b.ggx = vload8(0, ggx);
+    b.beckmann = ~b.ggx;
+    b.correlated = vload8(0, cor);
+    const FcVec3x8 wo = vec3_l8(vload8(0, wx), vload8(0, wy), vload8(0, wz));
+    const PlainView_l8 v = plain_base_view_l8(&b, wo);
+    FcVec3x8 wi, f, weight;
+    float8 pdf, pl;
+    const int8 ok =
+        plain_base_sample_l8(&b, &v, wo, vload8(0, u0), vload8(0, u1), vload8(0, u2), &wi, &f, &pdf, &weight);
+    const FcVec3x8 fl = plain_base_eval_pdf_l8(&b, &v, wo, vec3_l8(vload8(0, lx), vload8(0, ly), vload8(0, lz)), &pl);
+    OUT8(0, select((float8)(-1.0f), wi.x + 2.0f * wi.y + 4.0f * wi.z, ok));
+    OUT8(1, select((float8)(-1.0f), pdf + f.x + 2.0f * f.y + 4.0f * f.z, ok));
+    OUT8(2, select((float8)(-1.0f), weight.x + 2.0f * weight.y + 4.0f * weight.z, ok));
+    OUT8(3, fl.x + 2.0f * fl.y + 4.0f * fl.z + 8.0f * pl);
+}
+
 /* Element j of group i through the scalar sampler_get4 (coordinates in a uint4's lanes),
  * into out->one; returns the element's sampler, whose seed and index the lanes take. */
 inline Sampler lanes_scalar_sample(__global const LanesIn* in, __global LanesOut* out, int j) {
