@@ -32,7 +32,7 @@ inline LFLOAT LNAME(erfinv_giles)(LFLOAT x) {
         p = 0.246640727f + p * w;
         p = 1.50140941f + p * w;
     }
-    if (LNAME(lanes_any)(central == 0)) {
+    if (LNAME(lanes_any)((w0 >= 5.0f) | isnan(w0))) { /* not central (no vector NOT: lanes.cl) */
         const LFLOAT w = sqrt(w0) - 3.0f;
         q = -0.000200214257f;
         q = 0.000100950558f + q * w;
@@ -94,8 +94,8 @@ inline LFLOAT LNAME(beckmann_lambda)(LFLOAT ax, LFLOAT ay, LVEC3 w) {
     const LFLOAT s = sqrt(tx * tx + ty * ty);
     const LFLOAT z = fabs(w.z);
     const LFLOAT a = z / s;
-    const LINT cut = (a >= 6.0f) | (s == 0.0f);
-    if (!LNAME(lanes_any)(cut == 0)) return (LFLOAT)(0.0f); /* every lane's Lambda is 0 */
+    /* every lane's Lambda is 0 where no lane has a < 6 and s != 0 (built without a vector NOT) */
+    if (!LNAME(lanes_any)(((a < 6.0f) | isnan(a)) & (s != 0.0f))) return (LFLOAT)(0.0f);
     LFLOAT l = fmax(0.5f * (LNAME(exp_poly)(-a * a) * FC_INV_SQRT_PI / a - LNAME(erfc_fast)(a)), 0.0f);
     l = select(l, (LFLOAT)(0.0f), a >= 6.0f);
     l = select(l, (LFLOAT)(INFINITY), z == 0.0f);
@@ -110,7 +110,8 @@ inline LFLOAT LNAME(beckmann_projected_area)(LFLOAT ax, LFLOAT ay, LVEC3 w) {
     const LFLOAT z = fmax(w.z, 0.0f);
     const LFLOAT a = z / s;
     const LINT cut = (s == 0.0f) | (a >= 6.0f);
-    if (!LNAME(lanes_any)(cut == 0)) return z; /* every lane's area is z */
+    /* every lane's area is z where no lane escapes the cut (built without a vector NOT) */
+    if (!LNAME(lanes_any)((s != 0.0f) & ((a < 6.0f) | isnan(a)))) return z;
     const LFLOAT area = 0.5f * (z * (2.0f - LNAME(erfc_fast)(a)) + s * LNAME(exp_poly)(-a * a) * FC_INV_SQRT_PI);
     return select(area, z, cut);
 }

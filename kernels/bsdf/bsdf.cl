@@ -124,7 +124,8 @@ inline float3 bsdf_base_eval(const FcMaterial* m, float3 wo, float3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
     if (bsdf_plain(m)) {
         const PlainBase_l1 b = plain_base_of(m);
-        const PlainView_l1 v = plain_base_view_l1(&b, wo);
+        PlainView_l1 v;
+        plain_base_view_l1(&b, wo, &v);
         float pdf;
         return plain_base_eval_pdf_l1(&b, &v, wo, wi, &pdf);
     }
@@ -138,7 +139,8 @@ inline float bsdf_base_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
     if (bsdf_plain(m)) {
         const PlainBase_l1 b = plain_base_of(m);
-        const PlainView_l1 v = plain_base_view_l1(&b, wo);
+        PlainView_l1 v;
+        plain_base_view_l1(&b, wo, &v);
         float pdf;
         plain_base_eval_pdf_l1(&b, &v, wo, wi, &pdf);
         return pdf;
@@ -156,7 +158,8 @@ inline float3 bsdf_base_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, floa
     if (wo.z <= 0.0f || wi.z <= 0.0f) return (float3)(0.0f);
     if (bsdf_plain(m)) {
         const PlainBase_l1 b = plain_base_of(m);
-        const PlainView_l1 v = plain_base_view_l1(&b, wo);
+        PlainView_l1 v;
+        plain_base_view_l1(&b, wo, &v);
         return plain_base_eval_pdf_l1(&b, &v, wo, wi, pdf);
     }
     float ps;
@@ -197,7 +200,8 @@ inline bool bsdf_base_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSampl
         return lambert_only_sample(m, u.xy, s);
     if (bsdf_plain(m)) {
         const PlainBase_l1 b = plain_base_of(m);
-        const PlainView_l1 v = plain_base_view_l1(&b, wo);
+        PlainView_l1 v;
+        plain_base_view_l1(&b, wo, &v);
         return plain_base_sample_l1(&b, &v, wo, u.x, u.y, u.z, &s->wi, &s->f, &s->pdf, &s->weight);
     }
     float p = specular_probability(m, wo);

@@ -45,11 +45,9 @@ typedef struct {
     LFLOAT area_o, p;
 } LNAME(PlainView);
 
-inline LNAME(PlainView) LNAME(plain_base_view)(const LNAME(PlainBase) * b, LVEC3 wo) {
-    LNAME(PlainView) v;
-    v.area_o = LNAME(plain_base_area)(b, wo);
-    v.p = LNAME(plain_base_specular_probability)(b, wo.z);
-    return v;
+inline void LNAME(plain_base_view)(const LNAME(PlainBase) * b, LVEC3 wo, LNAME(PlainView) * v) {
+    v->area_o = LNAME(plain_base_area)(b, wo);
+    v->p = LNAME(plain_base_specular_probability)(b, wo.z);
 }
 
 /* f(wo, wi) (1/sr) and, in *pdf, the density with which plain_base_sample draws wi; 0 for both

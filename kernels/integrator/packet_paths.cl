@@ -647,7 +647,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LNAME(PlainView) pv;
         if (some_plain) {
             pb = packet_plain_base(PL, pkd, pax, pay, pior, pdw, pggx, pcor);
-            pv = LNAME(plain_base_view)(&pb, l3_load(wol));
+            LNAME(plain_base_view)(&pb, l3_load(wol), &pv);
         }
         {
             float wil[3 * FC_PACKET_W], fa[3 * FC_PACKET_W], pa[FC_PACKET_W];
@@ -678,11 +678,11 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             if (some_plain && LNAME(lanes_any)(PLok)) {
                 LFLOAT pp;
                 const L3 fp = LNAME(plain_base_eval_pdf)(&pb, &pv, l3_load(wol), l3_load(wil), &pp);
-                const LINT lit = (fp.x != 0.0f) | (fp.y != 0.0f) | (fp.z != 0.0f);
-                okg = select(okg, lit, PLok);
-                Fg = LNAME(vec3_select)(Fg, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), fp, lit), PLok);
+                const LINT nonzero = (fp.x != 0.0f) | (fp.y != 0.0f) | (fp.z != 0.0f);
+                okg = select(okg, nonzero, PLok);
+                Fg = LNAME(vec3_select)(Fg, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), fp, nonzero), PLok);
                 const LINT mis = (LINT)(P->strategy == FC_STRATEGY_MIS ? -1 : 0);
-                pg = select(pg, select((LFLOAT)(0.0f), pp, lit & mis), PLok);
+                pg = select(pg, select((LFLOAT)(0.0f), pp, nonzero & mis), PLok);
             }
             ok = select(ok, okg, G);
             F = LNAME(vec3_select)(F, Fg, G);

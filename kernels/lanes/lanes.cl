@@ -10,8 +10,14 @@
  *   same with two;
  * - LNAME(f) is f's name at this width: f_l1, f_l4, f_l8, f_l16;
  * - a comparison gives a lane mask (1 or -1 where true, 0 where false): combine masks
- *   with & | ~ only, pick with select(), and test with LNAME(lanes_any) (OpenCL's any()
- *   reads a scalar's sign bit, which a scalar comparison's 1 does not set).
+ *   with & and | only, pick with select(), and test with LNAME(lanes_any) (OpenCL's any()
+ *   reads a scalar's sign bit, which a scalar comparison's 1 does not set). A mask is
+ *   negated by the opposite comparison (NaN-aware: !(a >= b) is (a < b) | isnan(a)), never by
+ *   ~ or == 0: at W = 1 ~1 is -2, still true, and Oclgrind 21.10 evaluates the vector NOT of
+ *   comparison lanes that LLVM makes of either to 1 or -2 instead of -1 and 0;
+ * - a structure of the body's own (beyond LVEC2 and LVEC3) is returned through a pointer:
+ *   returned by value, a pair of float8 lanes (plain_base_lanes.cl's view) left an
+ *   llvm.experimental.noalias.scope.decl that Oclgrind 21.10 cannot run.
  * Branches on lane values become selects, so a width-8 call computes what eight width-1
  * calls compute, the same operations in the same order: the tests demand the same bits
  * (tests/lanes_test.cpp). The scalar kernels call the W = 1 forms through their usual

@@ -379,7 +379,8 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
         b.ggx = (int)(in[i].n[j] & 1u);
         b.beckmann = !b.ggx;
         b.correlated = (int)((in[i].n[j] >> 1) & 1u);
-        const PlainView_l1 v = plain_base_view_l1(&b, wo);
+        PlainView_l1 v;
+        plain_base_view_l1(&b, wo, &v);
         float3 wi, f, weight;
         float pdf, pl;
         const int ok = plain_base_sample_l1(&b, &v, wo, u[0], u[1], u[2], &wi, &f, &pdf, &weight);
@@ -405,7 +406,8 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
     b.beckmann = ~b.ggx;
     b.correlated = vload8(0, cor);
     const FcVec3x8 wo = vec3_l8(vload8(0, wx), vload8(0, wy), vload8(0, wz));
-    const PlainView_l8 v = plain_base_view_l8(&b, wo);
+    PlainView_l8 v;
+    plain_base_view_l8(&b, wo, &v);
     FcVec3x8 wi, f, weight;
     float8 pdf, pl;
     const int8 ok =
