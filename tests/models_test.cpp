@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -478,9 +479,11 @@ TEST(Models, SampleMatchesEvalAndExtremes) {
 // --- the plain two-lobe base (bsdf_plain: kernels/bsdf/plain_base_lanes.cl) ------------------
 // f = kd / pi + D G F / (4 cos_o cos_i) in double from the sources: anisotropic GGX and Beckmann D
 // and Lambda (Heitz 2014, eqs. 71, 85, 72, 86), Smith's separable or height-correlated G
-// (eqs. 98, 99), the unpolarised dielectric Fresnel term, kd = diffuse (x (1 - F0) for Lambert x
-// (1 - F0)); the density (1 - p) cos_i / pi + p G1(wo) D / (4 cos_o) (visible normals), p the
-// specular lobe's probability from the lobes' albedo estimates.
+// (eqs. 98, 99), the unpolarised Fresnel term of a dielectric or, with a complex index, a
+// conductor (Born & Wolf's amplitudes r_s, r_p), kd = diffuse (x (1 - F0) for Lambert x (1 - F0),
+// 0 without a diffuse lobe); the density (1 - p) cos_i / pi + p G1(wo) D / (4 cos_o) (visible
+// normals), p the specular lobe's probability from the lobes' albedo estimates (1 without a
+// diffuse lobe).
 double fresnel_dielectric_ref(double c, double eta) {
     double s2 = (1.0 - c * c) / (eta * eta);
     if (s2 >= 1.0) return 1.0;
@@ -505,17 +508,37 @@ double plain_D(const FcMaterial& m, V3 h) {
     return std::exp(-e) / (kPi * ax * ay * c4);
 }
 
+// The Fresnel term's channel c at cosine cos_i.
+double plain_fresnel(const FcMaterial& m, int c, double cos_i) {
+    if (m.fresnel != FC_FRESNEL_CONDUCTOR) return fresnel_dielectric_ref(cos_i, double(m.ior));
+    const std::complex<double> n(double(m.eta[c]), double(m.k[c]));
+    const std::complex<double> ct = std::sqrt(n * n - (1.0 - cos_i * cos_i));  // n cos_t
+    const std::complex<double> rs = (cos_i - ct) / (cos_i + ct), rp = (n * n * cos_i - ct) / (n * n * cos_i + ct);
+    return 0.5 * (std::norm(rs) + std::norm(rp));
+}
+
+double plain_luminance(double r, double g, double b) { return 0.2126 * r + 0.7152 * g + 0.0722 * b; }
+
 // f's channel c (c = 3: the density).
 double plain_reference(const FcMaterial& m, int c, V3 v, V3 l) {
     V3 h = norm(add(v, l));
     double lo = plain_lambda(m, v), li = plain_lambda(m, l);
     double g = m.geometry == FC_G_SMITH_CORRELATED ? 1.0 / (1.0 + lo + li) : 1.0 / ((1.0 + lo) * (1.0 + li));
-    double d = plain_D(m, h), f0 = fresnel_dielectric_ref(1.0, double(m.ior));
-    double fs = d * g * fresnel_dielectric_ref(dot(v, h), double(m.ior)) / (4.0 * v.z * l.z);
-    double k = m.diffuse_model == FC_DIFFUSE_LAMBERT_1MF0 ? 1.0 - f0 : 1.0;
-    if (c < 3) return double(m.diffuse[c]) * k / kPi + fs;
-    double lum = 0.2126 * double(m.diffuse[0]) + 0.7152 * double(m.diffuse[1]) + 0.0722 * double(m.diffuse[2]);
-    double s = fresnel_dielectric_ref(v.z, double(m.ior)), p = std::clamp(s / (s + lum * k), 0.05, 0.95);
+    double d = plain_D(m, h);
+    const bool diffuse = m.diffuse_model != FC_DIFFUSE_NONE, coupled = m.diffuse_model == FC_DIFFUSE_LAMBERT_1MF0;
+    if (c < 3) {
+        double fs = d * g * plain_fresnel(m, c, dot(v, h)) / (4.0 * v.z * l.z);
+        double k = !diffuse ? 0.0 : coupled ? 1.0 - plain_fresnel(m, c, 1.0) : 1.0;
+        return double(m.diffuse[c]) * k / kPi + fs;
+    }
+    double p = 1.0;
+    if (diffuse) {
+        double w = plain_luminance(double(m.diffuse[0]), double(m.diffuse[1]), double(m.diffuse[2]));
+        if (coupled)
+            w *= 1.0 - plain_luminance(plain_fresnel(m, 0, 1.0), plain_fresnel(m, 1, 1.0), plain_fresnel(m, 2, 1.0));
+        double s = plain_luminance(plain_fresnel(m, 0, v.z), plain_fresnel(m, 1, v.z), plain_fresnel(m, 2, v.z));
+        p = std::clamp(s / (s + w), 0.05, 0.95);
+    }
     return (1.0 - p) * l.z / kPi + p * d / (4.0 * v.z * (1.0 + lo));
 }
 
@@ -525,14 +548,17 @@ std::vector<FcMaterial> plain_materials(std::mt19937& rng, int n) {
     for (int i = 0; i < n; ++i) {
         FcMaterial m = device_material(make_material("microfacet"));
         m.flags &= ~FC_MAT_ENERGY_COMPENSATION;
-        m.diffuse_model = i % 2 ? FC_DIFFUSE_LAMBERT_1MF0 : FC_DIFFUSE_LAMBERT;
-        m.ndf = (i / 2) % 2 ? FC_NDF_BECKMANN : FC_NDF_GGX;
-        m.geometry = (i / 4) % 2 ? FC_G_SMITH_CORRELATED : FC_G_SMITH_SEPARABLE;
-        m.fresnel = FC_FRESNEL_DIELECTRIC;
+        const int diffuse[] = {FC_DIFFUSE_LAMBERT, FC_DIFFUSE_LAMBERT_1MF0, FC_DIFFUSE_NONE};
+        m.diffuse_model = diffuse[i % 3];
+        m.ndf = (i / 3) % 2 ? FC_NDF_BECKMANN : FC_NDF_GGX;
+        m.geometry = (i / 6) % 2 ? FC_G_SMITH_CORRELATED : FC_G_SMITH_SEPARABLE;
+        m.fresnel = (i / 12) % 2 ? FC_FRESNEL_CONDUCTOR : FC_FRESNEL_DIELECTRIC;
+        set3(m.eta, 0.2f + u(rng), 0.4f + u(rng), 1.0f + u(rng));
+        set3(m.k, 0.5f + 3.0f * u(rng), 0.5f + 3.0f * u(rng), 3.0f * u(rng));
         m.sampling = FC_SAMPLE_VISIBLE;
         set3(m.diffuse, 0.05f + 0.9f * u(rng), 0.05f + 0.9f * u(rng), 0.05f + 0.9f * u(rng));
         m.alpha_x = 0.15f + 0.75f * u(rng);
-        m.alpha_y = i % 3 ? m.alpha_x : 0.15f + 0.75f * u(rng);  // a third anisotropic
+        m.alpha_y = i % 4 ? m.alpha_x : 0.15f + 0.75f * u(rng);  // a quarter anisotropic
         m.ior = 1.1f + 2.0f * u(rng);
         mats.push_back(m);
     }
@@ -541,11 +567,12 @@ std::vector<FcMaterial> plain_materials(std::mt19937& rng, int n) {
 
 TEST(Models, PlainBaseMatchesSourceFormulas) {
     // f and the density of every plain combination (GGX or Beckmann, separable or correlated,
-    // Lambert or Lambert x (1 - F0), isotropic and not) on random pairs
+    // Lambert, Lambert x (1 - F0) or none, dielectric or conductor, isotropic and not) on random
+    // pairs
     std::mt19937 rng(41);
     std::vector<FcMaterial> mats;
     std::vector<V3> wo, wi;
-    for (const FcMaterial& m : plain_materials(rng, 64))
+    for (const FcMaterial& m : plain_materials(rng, 72))
         for (int k = 0; k < 40; ++k)
             mats.push_back(m), wo.push_back(random_dir(rng, 0.05)), wi.push_back(random_dir(rng, 0.05));
     std::vector<float> out = eval_on_device(mats, wo, wi);
@@ -568,7 +595,7 @@ TEST(Models, PlainBaseSamplesItsDensity) {
     std::mt19937 rng(43);
     std::vector<FcMaterial> mats;
     std::vector<V3> wo;
-    for (const FcMaterial& m : plain_materials(rng, 16))
+    for (const FcMaterial& m : plain_materials(rng, 24))
         for (double theta : {0.0, 50.0, 80.0}) mats.push_back(m), wo.push_back(dir_at(theta));
     std::vector<int> c = run_per_wo<int>("models_bsdf_sample_consistency", mats, wo, 4096, 2);
     std::vector<float> a = run_per_wo<float>("models_albedo", mats, wo, 1 << 17, 4);

@@ -62,22 +62,26 @@ inline float specular_probability(const FcMaterial* m, float3 wo) {
     return (s + d > 0.0f) ? clamp(s / (s + d), 0.05f, 0.95f) : 0.5f;
 }
 
-/* Whether the two-lobe base is plain: a Lambertian lobe (or Lambert x (1 - F0)) under a rough
- * GGX or Beckmann lobe sampled by visible normals, Smith-masked (separable or height-correlated),
- * with the exact dielectric Fresnel term, and no energy compensation or metallic mix. Such a base
+/* Whether the two-lobe base is plain: a Lambertian lobe (or Lambert x (1 - F0), or none) under a
+ * rough GGX or Beckmann lobe sampled by visible normals, Smith-masked (separable or
+ * height-correlated), with the exact dielectric or conductor Fresnel term, and no energy
+ * compensation or metallic mix. Such a base
  * is evaluated and sampled by kernels/bsdf/plain_base_lanes.cl, here at W = 1 and in the packet
  * kernel in lanes: the same formulas as the general route below, one source for both widths. */
 inline bool bsdf_plain(const FcMaterial* m) {
 #if FC_HAS_MICROFACET
     if (m->specular_model != FC_SPECULAR_MICROFACET) return false;
-    if (m->diffuse_model != FC_DIFFUSE_LAMBERT && m->diffuse_model != FC_DIFFUSE_LAMBERT_1MF0) return false;
+    if (m->diffuse_model != FC_DIFFUSE_LAMBERT && m->diffuse_model != FC_DIFFUSE_LAMBERT_1MF0 &&
+        m->diffuse_model != FC_DIFFUSE_NONE)
+        return false;
     if (m->ndf == FC_NDF_GGX) {
         if (m->sampling != FC_SAMPLE_VISIBLE) return false;
     } else if (m->ndf != FC_NDF_BECKMANN || m->sampling == FC_SAMPLE_ALL) {
         return false;
     }
     if (m->geometry != FC_G_SMITH_SEPARABLE && m->geometry != FC_G_SMITH_CORRELATED) return false;
-    return m->fresnel == FC_FRESNEL_DIELECTRIC && !ec_enabled(m) && !metallic_mixed(m) && !microfacet_is_mirror(m);
+    if (m->fresnel != FC_FRESNEL_DIELECTRIC && m->fresnel != FC_FRESNEL_CONDUCTOR) return false;
+    return !ec_enabled(m) && !metallic_mixed(m) && !microfacet_is_mirror(m);
 #else
     return false;
 #endif
@@ -86,8 +90,10 @@ inline bool bsdf_plain(const FcMaterial* m) {
 /* A plain base's parameters (bsdf_plain), masks as W = 1 lanes (1 or 0). */
 inline PlainBase_l1 plain_base_of(const FcMaterial* m) {
     PlainBase_l1 b;
-    b.kd = material_diffuse(m);
+    b.kd = m->diffuse_model == FC_DIFFUSE_NONE ? (float3)(0.0f) : material_diffuse(m);
     if (m->diffuse_model == FC_DIFFUSE_LAMBERT_1MF0) b.kd *= (float3)(1.0f) - fresnel_f0(m);
+    b.eta = load3p(m->eta);
+    b.k = load3p(m->k);
     b.ax = m->alpha_x;
     b.ay = m->alpha_y;
     b.ior = m->ior;
@@ -95,6 +101,8 @@ inline PlainBase_l1 plain_base_of(const FcMaterial* m) {
     b.ggx = m->ndf == FC_NDF_GGX;
     b.beckmann = !b.ggx;
     b.correlated = m->geometry == FC_G_SMITH_CORRELATED;
+    b.conductor = m->fresnel == FC_FRESNEL_CONDUCTOR;
+    b.diffuse = m->diffuse_model != FC_DIFFUSE_NONE;
     return b;
 }
 

@@ -60,28 +60,10 @@ inline float fresnel_dielectric_transmittance(float cos_i, float cos_t, float et
     return isfinite(t) ? clamp(t, 0.0f, 1.0f) : 0.0f;
 }
 
-/* Exact conductor reflectance, index eta + i k per channel, from the outside. The three
- * channels in one float3, each computed exactly as alone (vector arithmetic, selects for
- * the branches). */
+/* Exact conductor reflectance, index eta + i k per channel, from the outside: the lane form
+ * (fresnel_lanes.cl) with the three channels in the lanes of a float4. */
 inline float3 fresnel_conductor(float cos_i, float3 eta, float3 k) {
-    float c = clamp(cos_i, 0.0f, 1.0f);
-    float cos2 = c * c;
-    float sin2 = 1.0f - cos2;
-    float3 eta2 = eta * eta;
-    float3 k2 = k * k;
-    float3 t0 = eta2 - k2 - sin2;
-    float3 a2b2 = sqrt(fmax(t0 * t0 + 4.0f * eta2 * k2, 0.0f));
-    float3 t1 = a2b2 + cos2;
-    float3 a = sqrt(fmax(0.5f * (a2b2 + t0), 0.0f));
-    float3 t2 = 2.0f * c * a;
-    float3 rs = (t1 - t2) / (t1 + t2);
-    float3 t3 = cos2 * a2b2 + sin2 * sin2;
-    float3 t4 = t2 * sin2;
-    float3 rp = select(rs, rs * (t3 - t4) / (t3 + t4), isgreater(t3 + t4, 0.0f));
-    float3 f = 0.5f * (rp + rs);
-    f = select((float3)(1.0f), clamp(f, 0.0f, 1.0f), isfinite(f));
-    /* t1 + t2 not positive (or NaN): reflect everything */
-    return select((float3)(1.0f), f, isgreater(t1 + t2, 0.0f));
+    return fresnel_conductor_channel_l4((float4)(cos_i), (float4)(eta, 1.0f), (float4)(k, 0.0f)).xyz;
 }
 
 /* The material's Fresnel term at cosine cos_d between the direction and the

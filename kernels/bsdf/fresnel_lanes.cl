@@ -20,6 +20,27 @@ inline LFLOAT LNAME(fresnel_dielectric)(LFLOAT cos_i, LFLOAT eta) {
     return select(r, (LFLOAT)(1.0f), sin2_t >= 1.0f);
 }
 
+/* The exact conductor reflectance of one channel, index eta + i k, from the outside (cos_i
+ * clamped to [0, 1]); 1 wherever the result is not finite. */
+inline LFLOAT LNAME(fresnel_conductor_channel)(LFLOAT cos_i, LFLOAT eta, LFLOAT k) {
+    const LFLOAT c = clamp(cos_i, 0.0f, 1.0f);
+    const LFLOAT cos2 = c * c;
+    const LFLOAT sin2 = 1.0f - cos2;
+    const LFLOAT eta2 = eta * eta, k2 = k * k;
+    const LFLOAT t0 = eta2 - k2 - sin2;
+    const LFLOAT a2b2 = sqrt(fmax(t0 * t0 + 4.0f * eta2 * k2, 0.0f));
+    const LFLOAT t1 = a2b2 + cos2;
+    const LFLOAT a = sqrt(fmax(0.5f * (a2b2 + t0), 0.0f));
+    const LFLOAT t2 = 2.0f * c * a;
+    const LFLOAT rs = (t1 - t2) / (t1 + t2);
+    const LFLOAT t3 = cos2 * a2b2 + sin2 * sin2;
+    const LFLOAT t4 = t2 * sin2;
+    const LFLOAT rp = select(rs, rs * (t3 - t4) / (t3 + t4), t3 + t4 > 0.0f);
+    const LFLOAT f = 0.5f * (rp + rs);
+    const LFLOAT r = select((LFLOAT)(1.0f), clamp(f, 0.0f, 1.0f), isfinite(f));
+    return select((LFLOAT)(1.0f), r, t1 + t2 > 0.0f); /* t1 + t2 not positive (or NaN): all reflected */
+}
+
 /* Schlick's form f0 + (f90 - f0) (1 - cos)^5, one channel, cos clamped to [0, 1]. */
 inline LFLOAT LNAME(fresnel_schlick_channel)(LFLOAT f0, LFLOAT f90, LFLOAT cos_theta) {
     const LFLOAT c = 1.0f - clamp(cos_theta, 0.0f, 1.0f);

@@ -1,10 +1,10 @@
 /* Lane-generic body (kernels/lanes/lanes.cl): the plain two-lobe base of bsdf.cl, evaluated
  * and sampled in lanes. "Plain" (bsdf_plain, bsdf.cl) is a Lambertian lobe (albedo kd: the
- * diffuse colour, times 1 - F0 for Lambert x (1 - F0)) under a rough microfacet lobe of GGX or
- * Beckmann normals, sampled as visible normals, with Smith's separable or height-correlated
- * masking and the exact dielectric Fresnel term of index ior; no energy compensation, metallic
- * mix or layers, and no mirror (alpha >= FC_ALPHA_MIRROR). That is most of what artists' files
- * and the demo scenes hold. The formulas are microfacet.cl's and bsdf.cl's (one-sample MIS over
+ * diffuse colour, times 1 - F0 for Lambert x (1 - F0)), or none, under a rough microfacet lobe
+ * of GGX or Beckmann normals, sampled as visible normals, with Smith's separable or
+ * height-correlated masking and the exact Fresnel term of a dielectric (index ior) or a
+ * conductor (eta + i k per channel); no energy compensation, metallic mix or layers, and no
+ * mirror (alpha >= FC_ALPHA_MIRROR). The formulas are microfacet.cl's and bsdf.cl's (one-sample MIS over
  * the lobes, chosen by their estimated albedos); the scalar kernels run this body at W = 1 for
  * such materials, the packet kernel at W = 8 or 16, so both give the same bits
  * (tests/lanes_test.cpp). Needs vec3_lanes.cl, warp_lanes.cl, fresnel_lanes.cl, ggx_lanes.cl
@@ -14,21 +14,37 @@
 
 /* A plain base per lane. ggx and beckmann are lane masks of the lanes of each NDF (a lane of
  * neither is not evaluated: its results are meaningless), correlated the lanes of
- * height-correlated masking (else separable); diffuse_weight is bsdf.cl's estimate of the
- * diffuse lobe's albedo (lum(kd') >= 0). */
+ * height-correlated masking (else separable), conductor those of the conductor's Fresnel term
+ * (else the dielectric's), diffuse those with a diffuse lobe (else kd = 0); diffuse_weight is
+ * bsdf.cl's estimate of the diffuse lobe's albedo (lum(kd') >= 0). */
 typedef struct {
-    LVEC3 kd;
+    LVEC3 kd, eta, k;
     LFLOAT ax, ay, ior, diffuse_weight;
-    LINT ggx, beckmann, correlated;
+    LINT ggx, beckmann, correlated, conductor, diffuse;
 } LNAME(PlainBase);
 
+/* The Fresnel term at cosine c: the dielectric's in every channel, or the conductor's. */
+inline LVEC3 LNAME(plain_base_fresnel)(const LNAME(PlainBase) * b, LFLOAT c) {
+    const LFLOAT fd = LNAME(fresnel_dielectric)(c, b->ior);
+    LVEC3 f = LNAME(vec3)(fd, fd, fd);
+    if (LNAME(lanes_any)(b->conductor)) {
+        const LVEC3 fc = LNAME(vec3)(LNAME(fresnel_conductor_channel)(c, b->eta.x, b->k.x),
+                                     LNAME(fresnel_conductor_channel)(c, b->eta.y, b->k.y),
+                                     LNAME(fresnel_conductor_channel)(c, b->eta.z, b->k.z));
+        f = LNAME(vec3_select)(f, fc, b->conductor);
+    }
+    return f;
+}
+
 /* The probability of choosing the specular lobe from wo (bsdf.cl's specular_probability):
- * the lobes' estimated albedos, lum(F(wo.z)) against diffuse_weight, clamped to [0.05, 0.95]. */
+ * the lobes' estimated albedos, lum(F(wo.z)) against diffuse_weight, clamped to [0.05, 0.95];
+ * 1 without a diffuse lobe. */
 inline LFLOAT LNAME(plain_base_specular_probability)(const LNAME(PlainBase) * b, LFLOAT wo_z) {
-    const LFLOAT f = LNAME(fresnel_dielectric)(wo_z, b->ior);
-    const LFLOAT s = fmax(0.2126f * f + 0.7152f * f + 0.0722f * f, 0.0f);
+    const LVEC3 f = LNAME(plain_base_fresnel)(b, wo_z);
+    const LFLOAT s = fmax(0.2126f * f.x + 0.7152f * f.y + 0.0722f * f.z, 0.0f);
     const LFLOAT sum = s + b->diffuse_weight;
-    return select((LFLOAT)(0.5f), clamp(s / sum, 0.05f, 0.95f), sum > 0.0f);
+    const LFLOAT p = select((LFLOAT)(0.5f), clamp(s / sum, 0.05f, 0.95f), sum > 0.0f);
+    return select((LFLOAT)(1.0f), p, b->diffuse);
 }
 
 /* The microfacet lobe's projected area seen from w, GGX's or Beckmann's per lane. */
@@ -74,16 +90,19 @@ inline LVEC3 LNAME(plain_base_eval_pdf)(const LNAME(PlainBase) * b, const LNAME(
     const LFLOAT g_cor = 1.0f / (area_o / wo.z + area_i / wi.z - 1.0f);
     const LFLOAT g = select((LFLOAT)(0.0f), select(g_sep, g_cor, b->correlated), front);
     const LFLOAT g_over = g / (4.0f * wo.z * wi.z);
-    LFLOAT fs = LNAME(fresnel_dielectric)(wo_h, b->ior) * (d * g_over);
-    fs = select((LFLOAT)(0.0f), fmax(fs, 0.0f), isfinite(fs) & (d > 0.0f) & hv);
+    const LVEC3 fr = LNAME(plain_base_fresnel)(b, wo_h);
+    const LFLOAT dg = d * g_over;
+    LVEC3 fs = LNAME(vec3)(fr.x * dg, fr.y * dg, fr.z * dg);
+    const LINT fok = isfinite(fs.x) & isfinite(fs.y) & isfinite(fs.z) & (d > 0.0f) & hv & above;
+    fs = LNAME(vec3_select)(LNAME(vec3)(0.0f, 0.0f, 0.0f),
+                            LNAME(vec3)(fmax(fs.x, 0.0f), fmax(fs.y, 0.0f), fmax(fs.z, 0.0f)), fok);
     LFLOAT ps = d / (4.0f * area_o);
     ps = select((LFLOAT)(0.0f), fmax(ps, 0.0f), isfinite(ps) & hv);
     /* the lobes mixed: f = kd / pi + fs, pdf = (1 - p) cos_i / pi + p ps */
     const LFLOAT p = view->p;
     *pdf = select((LFLOAT)(0.0f), (1.0f - p) * LNAME(cosine_hemisphere_pdf)(wo.z, wi.z) + p * ps, above);
     const LFLOAT k = select((LFLOAT)(0.0f), (LFLOAT)(FC_INV_PI), above);
-    fs = select((LFLOAT)(0.0f), fs, above);
-    return LNAME(vec3)(b->kd.x * k + fs, b->kd.y * k + fs, b->kd.z * k + fs);
+    return LNAME(vec3)(b->kd.x * k + fs.x, b->kd.y * k + fs.y, b->kd.z * k + fs.z);
 }
 
 /* A direction wi for wo from u0, u1 (the lobe's sample) and u2 (the lobe's choice), uniform in

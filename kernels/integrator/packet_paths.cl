@@ -52,29 +52,52 @@ inline void l3_store(L3 v, float* a) {
     LSTORE(v.y, a + FC_PACKET_W);
     LSTORE(v.z, a + 2 * FC_PACKET_W);
 }
-#if FC_PACKET_BSDF_PER_LANE
-/* The plain bases of the lanes `lanes` from their per-lane parameters (the masks stored as -1
- * or 0). */
-inline LNAME(PlainBase) packet_plain_base(LINT lanes, const float* kd, const float* ax, const float* ay,
-                                          const float* ior, const float* dw, const int* ggx, const int* cor) {
-    LNAME(PlainBase) b;
-    b.kd = l3_load(kd);
-    b.ax = LLOAD(ax);
-    b.ay = LLOAD(ay);
-    b.ior = LLOAD(ior);
-    b.diffuse_weight = LLOAD(dw);
-    b.ggx = lanes & LLOAD(ggx);
-    b.beckmann = lanes & ~LLOAD(ggx);
-    b.correlated = LLOAD(cor);
-    return b;
-}
-#endif
 inline float3 lane3(const float* a, int j) { return (float3)(a[j], a[FC_PACKET_W + j], a[2 * FC_PACKET_W + j]); }
 inline void set_lane3(float* a, int j, float3 v) {
     a[j] = v.x;
     a[FC_PACKET_W + j] = v.y;
     a[2 * FC_PACKET_W + j] = v.z;
 }
+#if FC_PACKET_BSDF_PER_LANE
+/* The lanes' plain-base parameters (bsdf.cl's plain_base_of, lane j at [j], 3-vectors as the
+ * lane arrays; the masks stored as -1 or 0). */
+typedef struct {
+    float kd[3 * FC_PACKET_W], eta[3 * FC_PACKET_W], k[3 * FC_PACKET_W], ax[FC_PACKET_W], ay[FC_PACKET_W],
+        ior[FC_PACKET_W], dw[FC_PACKET_W];
+    int ggx[FC_PACKET_W], cor[FC_PACKET_W], cond[FC_PACKET_W], diff[FC_PACKET_W];
+} PacketPlain;
+
+/* Lane j's parameters from a plain base's. */
+inline void packet_plain_set(PacketPlain* q, int j, const PlainBase_l1* b) {
+    set_lane3(q->kd, j, b->kd);
+    set_lane3(q->eta, j, b->eta);
+    set_lane3(q->k, j, b->k);
+    q->ax[j] = b->ax;
+    q->ay[j] = b->ay;
+    q->ior[j] = b->ior;
+    q->dw[j] = b->diffuse_weight;
+    q->ggx[j] = b->ggx ? -1 : 0;
+    q->cor[j] = b->correlated ? -1 : 0;
+    q->cond[j] = b->conductor ? -1 : 0;
+    q->diff[j] = b->diffuse ? -1 : 0;
+}
+
+/* The plain bases of the lanes `lanes` (the others' parameters are read, not used). */
+inline void packet_plain_base(LINT lanes, const PacketPlain* q, LNAME(PlainBase) * b) {
+    b->kd = l3_load(q->kd);
+    b->eta = l3_load(q->eta);
+    b->k = l3_load(q->k);
+    b->ax = LLOAD(q->ax);
+    b->ay = LLOAD(q->ay);
+    b->ior = LLOAD(q->ior);
+    b->diffuse_weight = LLOAD(q->dw);
+    b->ggx = lanes & LLOAD(q->ggx);
+    b->beckmann = lanes & ~LLOAD(q->ggx);
+    b->correlated = LLOAD(q->cor);
+    b->conductor = lanes & LLOAD(q->cond);
+    b->diffuse = LLOAD(q->diff);
+}
+#endif
 
 /* Rays in packets through the triangles' tree (kernels/trace/packet_trace.cl): on, unless the
  * host turns it off (in trees of over 50 000 triangles, or with FACET_PACKET_TRACE=0:
@@ -244,10 +267,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     float fs[3 * FC_PACKET_W], ft[3 * FC_PACKET_W], wol[3 * FC_PACKET_W];
     int gen[FC_PACKET_W], delta_bsdf[FC_PACKET_W];
     /* lanes whose BSDF is a plain base (bsdf_plain, no layers), evaluated and sampled in lanes
-     * (kernels/bsdf/plain_base_lanes.cl) from its parameters: kd, alpha, ior, the diffuse lobe's
-     * weight, and the GGX and height-correlated masks (-1 or 0) */
-    float pkd[3 * FC_PACKET_W], pax[FC_PACKET_W], pay[FC_PACKET_W], pior[FC_PACKET_W], pdw[FC_PACKET_W];
-    int plain[FC_PACKET_W], pggx[FC_PACKET_W], pcor[FC_PACKET_W];
+     * (kernels/bsdf/plain_base_lanes.cl) from their parameters */
+    PacketPlain pls;
+    int plain[FC_PACKET_W];
 #endif
 #if FC_HAS_TEXTURES
     float plen[FC_PACKET_W]; /* each path's length from the camera: its ray cone (texture filtering) */
@@ -258,6 +280,11 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     const uint pixels_here = min(run, params->width - x0);
     const uint queue = pixels_here * params->sample_count;
     uint next = 0u;
+#if FC_PACKET_BSDF_PER_LANE
+    /* parameters every lane can evaluate, read before a lane's first surface */
+    const PlainBase_l1 unplain = {
+        (float3)(0.0f), (float3)(1.0f), (float3)(0.0f), 1.0f, 1.0f, 1.5f, 0.0f, 0, 1, 0, 0, 0};
+#endif
     for (int j = 0; j < FC_PACKET_W; ++j) {
         active[j] = 1;
         alive[j] = 0; /* start a path */
@@ -268,14 +295,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         irev[j] = 0u;
 #if FC_PACKET_BSDF_PER_LANE
         gen[j] = 0;
-        plain[j] = 0; /* and parameters that every lane can evaluate, read before a lane's first */
-        set_lane3(pkd, j, (float3)(0.0f));
-        pax[j] = 1.0f;
-        pay[j] = 1.0f;
-        pior[j] = 1.5f;
-        pdw[j] = 0.0f;
-        pggx[j] = 0;
-        pcor[j] = 0;
+        plain[j] = 0;
+        packet_plain_set(&pls, j, &unplain);
 #endif
     }
     for (;;) {
@@ -453,13 +474,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                     plain[j] = !bsdf_layered(&mats[j]) && bsdf_plain(&mats[j]);
                     if (plain[j]) {
                         const PlainBase_l1 b = plain_base_of(&mats[j]);
-                        set_lane3(pkd, j, b.kd);
-                        pax[j] = b.ax;
-                        pay[j] = b.ay;
-                        pior[j] = b.ior;
-                        pdw[j] = b.diffuse_weight;
-                        pggx[j] = b.ggx ? -1 : 0;
-                        pcor[j] = b.correlated ? -1 : 0;
+                        packet_plain_set(&pls, j, &b);
                     }
                 } else {
                     delta_bsdf[j] = 0;
@@ -646,7 +661,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LNAME(PlainBase) pb;
         LNAME(PlainView) pv;
         if (some_plain) {
-            pb = packet_plain_base(PL, pkd, pax, pay, pior, pdw, pggx, pcor);
+            packet_plain_base(PL, &pls, &pb);
             LNAME(plain_base_view)(&pb, l3_load(wol), &pv);
         }
         {

@@ -1,8 +1,9 @@
 /* The lane-generic bodies at the widths the one-path-per-work-item kernels use: W = 1
  * (their scalar functions are these), and W = 4 for the sampler's hashes, which scramble a
  * dimension set's four coordinates in one uint4, and for the ray/triangle test, which meets
- * a leaf block's four triangles at once (kernels/trace/triangle.cl). kernels/lanes/packet.cl instantiates the
- * same bodies at W = 8. */
+ * a leaf block's four triangles at once (kernels/trace/triangle.cl), and for the conductor's
+ * Fresnel term, whose three channels fill a float4's lanes (kernels/bsdf/fresnel.cl).
+ * kernels/lanes/packet.cl instantiates the same bodies at W = 8 or 16. */
 #ifndef FACET_LANES_SCALAR_CL
 #define FACET_LANES_SCALAR_CL
 
@@ -37,6 +38,7 @@
 #include "kernels/lanes/lanes_open.cl"
 #include "kernels/lanes/vec3_lanes.cl"
 #include "kernels/util/hash_lanes.cl"
+#include "kernels/bsdf/fresnel_lanes.cl"
 #include "kernels/trace/triangle_lanes.cl"
 #include "kernels/lanes/lanes_close.cl"
 

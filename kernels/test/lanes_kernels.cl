@@ -331,7 +331,7 @@ __kernel void lanes_beckmann(__global const LanesIn* in, __global LanesOut* out)
 }
 
 /* Fresnel (kernels/bsdf/fresnel_lanes.cl): a: the cosine (2a - 1, either side), b: the
- * relative index (0.25 to 4.25), c, d: Schlick's f0 and f90. */
+ * relative index (0.25 to 4.25), c, d: Schlick's f0 and f90; the conductor's index is b + i 5c. */
 __kernel void lanes_fresnel(__global const LanesIn* in, __global LanesOut* out) {
     uint i = get_global_id(0);
     lanes_clear(out + i);
@@ -339,17 +339,20 @@ __kernel void lanes_fresnel(__global const LanesIn* in, __global LanesOut* out) 
         const float c = 2.0f * in[i].a[j] - 1.0f;
         out[i].one[0][j] = fresnel_dielectric_l1(c, 0.25f + 4.0f * in[i].b[j]);
         out[i].one[1][j] = fresnel_schlick_channel_l1(in[i].c[j], in[i].d[j], c);
+        out[i].one[2][j] = fresnel_conductor_channel_l1(c, 0.25f + 4.0f * in[i].b[j], 5.0f * in[i].c[j]);
     }
     const float8 c = 2.0f * IN8(a) - 1.0f;
     OUT8(0, fresnel_dielectric_l8(c, 0.25f + 4.0f * IN8(b)));
     OUT8(1, fresnel_schlick_channel_l8(IN8(c), IN8(d), c));
+    OUT8(2, fresnel_conductor_channel_l8(c, 0.25f + 4.0f * IN8(b), 5.0f * IN8(c)));
 }
 
 /* The plain two-lobe base (kernels/bsdf/plain_base_lanes.cl), lanes of GGX and Beckmann,
- * separable and height-correlated masking mixed in one vector: a, b: alpha_x, alpha_y - 1e-4;
- * c, d: wo as lanes_ggx's; k, m: the sample's (u0, u1), n: its u2, the NDF (bit 0), the
- * masking (bit 1), the index and the albedo. The sample's direction, density and weight (-1
- * where none was made), and f and the density at a second direction. */
+ * separable and height-correlated masking, dielectric and conductor Fresnel, with and without
+ * the diffuse lobe mixed in one vector: a, b: alpha_x, alpha_y - 1e-4; c, d: wo as
+ * lanes_ggx's; k, m: the sample's (u0, u1) and the albedo, n: its u2, the NDF (bit 0), the
+ * masking (bit 1), the conductor (bit 2), no diffuse lobe (bit 3) and the indices. The sample's direction, density and
+ * weight (-1 where none was made), and f and the density at a second direction. */
 inline void lanes_plain_element(__global const LanesIn* in, int j, float* ax, float* ay, float3* wo, float3* wl,
                                 float* u, float3* kd, float* ior) {
     *ax = in->a[j] + 1e-4f;
@@ -360,7 +363,14 @@ inline void lanes_plain_element(__global const LanesIn* in, int j, float* ax, fl
     u[1] = (float)(in->m[j] >> 8) * 0x1p-24f;
     u[2] = (float)(in->n[j] % 1000u) * 1e-3f;
     *kd = (float3)((float)(in->m[j] & 255u), (float)(in->k[j] & 255u), 128.0f) / 255.0f;
-    *ior = 1.05f + (float)((in->n[j] >> 2) % 100u) * 0.03f;
+    *ior = 1.05f + (float)((in->n[j] >> 4) % 100u) * 0.03f;
+}
+
+/* The conductor's index eta + i k of element j. */
+inline void lanes_plain_conductor(__global const LanesIn* in, int j, float3* eta, float3* k) {
+    const float f = (float)((in->n[j] >> 4) % 97u) / 97.0f;
+    *eta = (float3)(0.2f + f, 0.9f - 0.5f * f, 1.4f);
+    *k = (float3)(3.0f, 2.5f * f, 2.0f + f);
 }
 
 __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* out) {
@@ -368,7 +378,8 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
     lanes_clear(out + i);
     float pax[8], pay[8], pior[8], pdw[8], kx[8], ky[8], kz[8], wx[8], wy[8], wz[8], lx[8], ly[8], lz[8], u0[8], u1[8],
         u2[8];
-    int ggx[8], cor[8];
+    float ex[8], ey[8], ez[8], qx[8], qy[8], qz[8];
+    int ggx[8], cor[8], cond[8], diff[8];
     for (int j = 0; j < 8; ++j) {
         PlainBase_l1 b;
         float3 wo, wl, kd;
@@ -379,6 +390,10 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
         b.ggx = (int)(in[i].n[j] & 1u);
         b.beckmann = !b.ggx;
         b.correlated = (int)((in[i].n[j] >> 1) & 1u);
+        b.conductor = (int)((in[i].n[j] >> 2) & 1u);
+        b.diffuse = !((in[i].n[j] >> 3) & 1u);
+        lanes_plain_conductor(in + i, j, &b.eta, &b.k);
+        if (!b.diffuse) b.kd = kd = (float3)(0.0f), b.diffuse_weight = 0.0f;
         PlainView_l1 v;
         plain_base_view_l1(&b, wo, &v);
         float3 wi, f, weight;
@@ -395,6 +410,9 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
         u0[j] = u[0], u1[j] = u[1], u2[j] = u[2];
         ggx[j] = b.ggx ? -1 : 0;
         cor[j] = b.correlated ? -1 : 0;
+        cond[j] = b.conductor ? -1 : 0;
+        diff[j] = b.diffuse ? -1 : 0;
+        ex[j] = b.eta.x, ey[j] = b.eta.y, ez[j] = b.eta.z, qx[j] = b.k.x, qy[j] = b.k.y, qz[j] = b.k.z;
     }
     PlainBase_l8 b;
     b.kd = vec3_l8(vload8(0, kx), vload8(0, ky), vload8(0, kz));
@@ -405,6 +423,10 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
     b.ggx = vload8(0, ggx);
     b.beckmann = ~b.ggx;
     b.correlated = vload8(0, cor);
+    b.conductor = vload8(0, cond);
+    b.diffuse = vload8(0, diff);
+    b.eta = vec3_l8(vload8(0, ex), vload8(0, ey), vload8(0, ez));
+    b.k = vec3_l8(vload8(0, qx), vload8(0, qy), vload8(0, qz));
     const FcVec3x8 wo = vec3_l8(vload8(0, wx), vload8(0, wy), vload8(0, wz));
     PlainView_l8 v;
     plain_base_view_l8(&b, wo, &v);
