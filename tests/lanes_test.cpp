@@ -152,32 +152,22 @@ TEST(Lanes, PathWeightsSameBitsAtWidths1And8) {
               0);
 }
 
-TEST(Lanes, GgxSameBitsAtWidths1And8) {
-    // a, b: the roughness (1e-4 added); c: wo's cosine + 0.1 (normal incidence, grazing, below
-    // the horizon); d: its azimuth
-    EXPECT_EQ(mismatches("lanes_ggx",
-                         inputs(0.0f, 1.0f,
-                                {{0.0f, 0.0f, 1.1f, 0.0f},
-                                 {1.0f, 1.0f, 1.1f, 0.3f},
-                                 {0.5f, 0.01f, 0.1f, 0.7f},
-                                 {0.2f, 0.2f, 0.0f, 0.1f},
-                                 {0.0f, 1.0f, 0.10001f, 0.25f}}),
-                         4),
-              0);
+// The microfacet bodies' inputs: a, b: the roughness (1e-4 added); c: wo's cosine + 0.1
+// (normal incidence, grazing, below the horizon); d: its azimuth.
+std::vector<LanesIn> microfacet_inputs() {
+    return inputs(0.0f, 1.0f,
+                  {{0.0f, 0.0f, 1.1f, 0.0f},
+                   {1.0f, 1.0f, 1.1f, 0.3f},
+                   {0.5f, 0.01f, 0.1f, 0.7f},
+                   {0.2f, 0.2f, 0.0f, 0.1f},
+                   {0.0f, 1.0f, 0.10001f, 0.25f}});
 }
 
+TEST(Lanes, GgxSameBitsAtWidths1And8) { EXPECT_EQ(mismatches("lanes_ggx", microfacet_inputs(), 4), 0); }
+
 TEST(Lanes, BeckmannSameBitsAtWidths1And8) {
-    // GgxSameBits's inputs; the visible-normal sampler's Newton iterations differ in number
-    // from lane to lane
-    EXPECT_EQ(mismatches("lanes_beckmann",
-                         inputs(0.0f, 1.0f,
-                                {{0.0f, 0.0f, 1.1f, 0.0f},
-                                 {1.0f, 1.0f, 1.1f, 0.3f},
-                                 {0.5f, 0.01f, 0.1f, 0.7f},
-                                 {0.2f, 0.2f, 0.0f, 0.1f},
-                                 {0.0f, 1.0f, 0.10001f, 0.25f}}),
-                         4),
-              0);
+    // the visible-normal sampler's Newton iterations differ in number from lane to lane
+    EXPECT_EQ(mismatches("lanes_beckmann", microfacet_inputs(), 4), 0);
 }
 
 TEST(Lanes, FresnelSameBitsAtWidths1And8) {
@@ -191,14 +181,9 @@ TEST(Lanes, FresnelSameBitsAtWidths1And8) {
 }
 
 TEST(Lanes, PlainBaseSameBitsAtWidths1And8) {
-    // GgxSameBits's inputs; each vector mixes GGX and Beckmann lanes, separable and
-    // height-correlated masking, the diffuse and the specular lobe's samples
-    const std::vector<LanesIn> in = inputs(0.0f, 1.0f,
-                                           {{0.0f, 0.0f, 1.1f, 0.0f},
-                                            {1.0f, 1.0f, 1.1f, 0.3f},
-                                            {0.5f, 0.01f, 0.1f, 0.7f},
-                                            {0.2f, 0.2f, 0.0f, 0.1f},
-                                            {0.0f, 1.0f, 0.10001f, 0.25f}});
+    // each vector mixes GGX and Beckmann lanes, separable and height-correlated masking,
+    // dielectrics and conductors, bases with and without a diffuse lobe, and both lobes' samples
+    const std::vector<LanesIn> in = microfacet_inputs();
     EXPECT_EQ(mismatches("lanes_plain_base", in, 4), 0);
     // and most elements make a sample, of either lobe
     std::vector<LanesOut> out =

@@ -274,61 +274,40 @@ inline float3 lanes_ggx_wo(float c, float d) {
     return (float3)(s * sc.y, s * sc.x, z);
 }
 
-__kernel void lanes_ggx(__global const LanesIn* in, __global LanesOut* out) {
-    uint i = get_global_id(0);
-    lanes_clear(out + i);
-    float wx[8], wy[8], wz[8], ux[8], uy[8];
-    for (int j = 0; j < 8; ++j) {
-        const float ax = in[i].a[j] + 1e-4f, ay = in[i].b[j] + 1e-4f;
-        const float3 wo = lanes_ggx_wo(in[i].c[j], in[i].d[j]);
-        wx[j] = wo.x;
-        wy[j] = wo.y;
-        wz[j] = wo.z;
-        ux[j] = (float)(in[i].k[j] >> 8) * 0x1p-24f;
-        uy[j] = (float)(in[i].m[j] >> 8) * 0x1p-24f;
-        const float3 m = ggx_sample_visible_l1(ax, ay, wo, ux[j], uy[j]);
-        out[i].one[0][j] = m.x + 2.0f * m.y;
-        out[i].one[1][j] = m.z;
-        out[i].one[2][j] = ggx_pdf_visible_l1(ax, ay, wo, m);
-        out[i].one[3][j] = ggx_lambda_l1(ax, ay, wo) + 3.0f * ggx_projected_area_l1(ax, ay, wo);
+/* The kernel lanes_NDF for NDF's lane bodies (NDF##_sample_visible, _pdf_visible, _lambda,
+ * _projected_area at W = 1 and 8) on the inputs above. */
+#define LANES_NDF_KERNEL(ndf)                                                                            \
+    __kernel void lanes_##ndf(__global const LanesIn* in, __global LanesOut* out) {                      \
+        uint i = get_global_id(0);                                                                       \
+        lanes_clear(out + i);                                                                            \
+        float wx[8], wy[8], wz[8], ux[8], uy[8];                                                         \
+        for (int j = 0; j < 8; ++j) {                                                                    \
+            const float ax = in[i].a[j] + 1e-4f, ay = in[i].b[j] + 1e-4f;                                \
+            const float3 wo = lanes_ggx_wo(in[i].c[j], in[i].d[j]);                                      \
+            wx[j] = wo.x;                                                                                \
+            wy[j] = wo.y;                                                                                \
+            wz[j] = wo.z;                                                                                \
+            ux[j] = (float)(in[i].k[j] >> 8) * 0x1p-24f;                                                 \
+            uy[j] = (float)(in[i].m[j] >> 8) * 0x1p-24f;                                                 \
+            const float3 m = ndf##_sample_visible_l1(ax, ay, wo, ux[j], uy[j]);                          \
+            out[i].one[0][j] = m.x + 2.0f * m.y;                                                         \
+            out[i].one[1][j] = m.z;                                                                      \
+            out[i].one[2][j] = ndf##_pdf_visible_l1(ax, ay, wo, m);                                      \
+            out[i].one[3][j] = ndf##_lambda_l1(ax, ay, wo) + 3.0f * ndf##_projected_area_l1(ax, ay, wo); \
+        }                                                                                                \
+        const float8 ax = IN8(a) + 1e-4f, ay = IN8(b) + 1e-4f;                                           \
+        const FcVec3x8 wo = vec3_l8(vload8(0, wx), vload8(0, wy), vload8(0, wz));                        \
+        const FcVec3x8 m = ndf##_sample_visible_l8(ax, ay, wo, vload8(0, ux), vload8(0, uy));            \
+        OUT8(0, m.x + 2.0f * m.y);                                                                       \
+        OUT8(1, m.z);                                                                                    \
+        OUT8(2, ndf##_pdf_visible_l8(ax, ay, wo, m));                                                    \
+        OUT8(3, ndf##_lambda_l8(ax, ay, wo) + 3.0f * ndf##_projected_area_l8(ax, ay, wo));               \
     }
-    const float8 ax = IN8(a) + 1e-4f, ay = IN8(b) + 1e-4f;
-    const FcVec3x8 wo = vec3_l8(vload8(0, wx), vload8(0, wy), vload8(0, wz));
-    const FcVec3x8 m = ggx_sample_visible_l8(ax, ay, wo, vload8(0, ux), vload8(0, uy));
-    OUT8(0, m.x + 2.0f * m.y);
-    OUT8(1, m.z);
-    OUT8(2, ggx_pdf_visible_l8(ax, ay, wo, m));
-    OUT8(3, ggx_lambda_l8(ax, ay, wo) + 3.0f * ggx_projected_area_l8(ax, ay, wo));
-}
 
-/* Beckmann (kernels/bsdf/beckmann_lanes.cl), on lanes_ggx's inputs: the visible normal, its
- * density, Lambda(wo) and the projected area. */
-__kernel void lanes_beckmann(__global const LanesIn* in, __global LanesOut* out) {
-    uint i = get_global_id(0);
-    lanes_clear(out + i);
-    float wx[8], wy[8], wz[8], ux[8], uy[8];
-    for (int j = 0; j < 8; ++j) {
-        const float ax = in[i].a[j] + 1e-4f, ay = in[i].b[j] + 1e-4f;
-        const float3 wo = lanes_ggx_wo(in[i].c[j], in[i].d[j]);
-        wx[j] = wo.x;
-        wy[j] = wo.y;
-        wz[j] = wo.z;
-        ux[j] = (float)(in[i].k[j] >> 8) * 0x1p-24f;
-        uy[j] = (float)(in[i].m[j] >> 8) * 0x1p-24f;
-        const float3 m = beckmann_sample_visible_l1(ax, ay, wo, ux[j], uy[j]);
-        out[i].one[0][j] = m.x + 2.0f * m.y;
-        out[i].one[1][j] = m.z;
-        out[i].one[2][j] = beckmann_pdf_visible_l1(ax, ay, wo, m);
-        out[i].one[3][j] = beckmann_lambda_l1(ax, ay, wo) + 3.0f * beckmann_projected_area_l1(ax, ay, wo);
-    }
-    const float8 ax = IN8(a) + 1e-4f, ay = IN8(b) + 1e-4f;
-    const FcVec3x8 wo = vec3_l8(vload8(0, wx), vload8(0, wy), vload8(0, wz));
-    const FcVec3x8 m = beckmann_sample_visible_l8(ax, ay, wo, vload8(0, ux), vload8(0, uy));
-    OUT8(0, m.x + 2.0f * m.y);
-    OUT8(1, m.z);
-    OUT8(2, beckmann_pdf_visible_l8(ax, ay, wo, m));
-    OUT8(3, beckmann_lambda_l8(ax, ay, wo) + 3.0f * beckmann_projected_area_l8(ax, ay, wo));
-}
+LANES_NDF_KERNEL(ggx)
+
+/* Beckmann (kernels/bsdf/beckmann_lanes.cl), on lanes_ggx's inputs. */
+LANES_NDF_KERNEL(beckmann)
 
 /* Fresnel (kernels/bsdf/fresnel_lanes.cl): a: the cosine (2a - 1, either side), b: the
  * relative index (0.25 to 4.25), c, d: Schlick's f0 and f90; the conductor's index is b + i 5c. */
