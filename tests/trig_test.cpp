@@ -120,5 +120,38 @@ TEST(Trig, Atan2FastMaxError) {
         EXPECT_EQ(r[i], std::atan2(yx[i].s[0], yx[i].s[1])) << yx[i].s[0] << ", " << yx[i].s[1];
 }
 
+// Beckmann's projected area z (1 + Lambda) and Lambda (kernels/bsdf/beckmann_lanes.cl), their
+// erfc approximations and e^x included, against double precision: roughness 0.001 to 1, polar
+// angles from 0 to 89.99 degrees. The area reads erfc only as 2 - erfc (an absolute error
+// suffices: Abramowitz & Stegun's 7.1.26 on the e^x it shares), Lambda needs a relative one
+// (Press et al.'s erfcc).
+TEST(Trig, BeckmannAreaAndLambdaMaxError) {
+    std::vector<cl_float4> in;
+    for (int ia = 0; ia <= 60; ++ia)
+        for (int it = 0; it <= 2000; ++it) {
+            const double alpha = std::pow(10.0, -3.0 + 3.0 * ia / 60.0);
+            const double theta = 89.99 * std::pow(it / 2000.0, 0.5) * std::numbers::pi / 180.0;
+            in.push_back(cl_float4{
+                {float(std::sin(theta) * 0.6), float(std::sin(theta) * 0.8), float(std::cos(theta)), float(alpha)}});
+        }
+    const std::vector<cl_float2> r = run<cl_float4, cl_float2>("trig_beckmann_area", in);
+    double worst_area = 0.0, worst_lambda = 0.0;
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        const double x = in[i].s[0], y = in[i].s[1], z = in[i].s[2], alpha = in[i].s[3];
+        const double s = alpha * std::sqrt(x * x + y * y);
+        double lambda = 0.0;
+        if (s > 0.0) {
+            const double a = z / s;
+            lambda = 0.5 * (std::exp(-a * a) / (a * std::sqrt(std::numbers::pi)) - std::erfc(a));
+        }
+        const double area = z * (1.0 + lambda);
+        worst_area = std::max(worst_area, std::fabs(double(r[i].s[0]) - area) / area);
+        if (lambda > 1e-3) worst_lambda = std::max(worst_lambda, std::fabs(double(r[i].s[1]) - lambda) / lambda);
+    }
+    std::printf("[ trig     ] Beckmann area max relative error %.3g, Lambda (> 1e-3) %.3g\n", worst_area, worst_lambda);
+    EXPECT_LE(worst_area, 5e-7);
+    EXPECT_LE(worst_lambda, 1e-5);
+}
+
 }  // namespace
 }  // namespace facet

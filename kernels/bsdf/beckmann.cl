@@ -45,9 +45,12 @@ inline float beckmann_D(float ax, float ay, float3 m) { return beckmann_D_l1(ax,
 inline float beckmann_lambda(float ax, float ay, float3 w) { return beckmann_lambda_l1(ax, ay, w); }
 
 /* w.z (1 + Lambda(w)) for w.z >= 0, the projected area of the microsurface, as a sum of
- * positive terms: (z (1 + erf(a)) + s exp(-a^2) / sqrt(pi)) / 2. From a = 6 on, both of
- * Lambda's terms are below 1e-16 of z, far below z's rounding: the area is z, without the
- * two exponentials (a smooth surface seen away from grazing; as beckmann_lambda cuts off). */
+ * positive terms: (z (1 + erf(a)) + s exp(-a^2) / sqrt(pi)) / 2. Its erfc appears only as
+ * 2 - erfc(a) = 1 + erf(a), where an absolute error suffices: erfc_from_gaussian's, on the
+ * exp(-a^2) the second term needs anyway (one exponential, not two; within 2.4e-7 relative:
+ * Trig.BeckmannAreaAndLambdaMaxError). From a = 6 on, both of Lambda's terms are below 1e-16
+ * of z, far below z's rounding: the area is z, without the exponential (a smooth surface seen
+ * away from grazing; as beckmann_lambda cuts off). */
 inline float beckmann_projected_area(float ax, float ay, float3 w) { return beckmann_projected_area_l1(ax, ay, w); }
 
 /* A normal drawn from D(m) cos(theta_m): slopes (ax r cos phi, ay r sin phi) with

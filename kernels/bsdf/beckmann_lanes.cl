@@ -102,8 +102,9 @@ inline LFLOAT LNAME(beckmann_lambda)(LFLOAT ax, LFLOAT ay, LVEC3 w) {
     return select(l, (LFLOAT)(0.0f), s == 0.0f);
 }
 
-/* w.z (1 + Lambda(w)) for w.z >= 0: (z (1 + erf(a)) + s exp(-a^2) / sqrt(pi)) / 2, z itself
- * where s = 0 or a >= 6. */
+/* w.z (1 + Lambda(w)) for w.z >= 0: (z (1 + erf(a)) + s exp(-a^2) / sqrt(pi)) / 2, erf from the
+ * same exp(-a^2) (erfc_from_gaussian: an absolute error suffices in 1 + erf); z itself where
+ * s = 0 or a >= 6. */
 inline LFLOAT LNAME(beckmann_projected_area)(LFLOAT ax, LFLOAT ay, LVEC3 w) {
     const LFLOAT tx = ax * w.x, ty = ay * w.y;
     const LFLOAT s = sqrt(tx * tx + ty * ty);
@@ -112,7 +113,8 @@ inline LFLOAT LNAME(beckmann_projected_area)(LFLOAT ax, LFLOAT ay, LVEC3 w) {
     const LINT cut = (s == 0.0f) | (a >= 6.0f);
     /* every lane's area is z where no lane escapes the cut (built without a vector NOT) */
     if (!LNAME(lanes_any)((s != 0.0f) & ((a < 6.0f) | isnan(a)))) return z;
-    const LFLOAT area = 0.5f * (z * (2.0f - LNAME(erfc_fast)(a)) + s * LNAME(exp_poly)(-a * a) * FC_INV_SQRT_PI);
+    const LFLOAT e = LNAME(exp_poly)(-a * a);
+    const LFLOAT area = 0.5f * (z * (2.0f - LNAME(erfc_from_gaussian)(a, e)) + s * e * FC_INV_SQRT_PI);
     return select(area, z, cut);
 }
 

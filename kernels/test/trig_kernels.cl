@@ -18,3 +18,11 @@ __kernel void trig_exp_poly(__global const float* x, __global float* out) {
     uint i = get_global_id(0);
     out[i] = exp_poly_l1(x[i]);
 }
+
+/* Beckmann's projected area and Lambda (kernels/bsdf/beckmann_lanes.cl) at W = 1, for the
+ * direction (x, y, z) and the isotropic roughness w of each element. */
+__kernel void trig_beckmann_area(__global const float4* in, __global float2* out) {
+    uint i = get_global_id(0);
+    const float3 w = in[i].xyz;
+    out[i] = (float2)(beckmann_projected_area_l1(in[i].w, in[i].w, w), beckmann_lambda_l1(in[i].w, in[i].w, w));
+}
