@@ -65,9 +65,10 @@ inline float specular_probability(const FcMaterial* m, float3 wo) {
 /* Whether the two-lobe base is plain: a Lambertian lobe (or Lambert x (1 - F0), or none) under a
  * rough GGX or Beckmann lobe sampled by visible normals, Smith-masked (separable or
  * height-correlated), with the exact dielectric or conductor Fresnel term, and no energy
- * compensation or metallic mix. Such a base
- * is evaluated and sampled by kernels/bsdf/plain_base_lanes.cl, here at W = 1 and in the packet
- * kernel in lanes: the same formulas as the general route below, one source for both widths. */
+ * compensation or metallic mix. Such a base is evaluated and sampled by
+ * kernels/bsdf/plain_base_lanes.cl, here at W = 1 and in the packet kernel in lanes: the
+ * formulas of the general route below (which serves every other base), one source for both
+ * widths. */
 inline bool bsdf_plain(const FcMaterial* m) {
 #if FC_HAS_MICROFACET
     if (m->specular_model != FC_SPECULAR_MICROFACET) return false;

@@ -4,10 +4,10 @@
  * of GGX or Beckmann normals, sampled as visible normals, with Smith's separable or
  * height-correlated masking and the exact Fresnel term of a dielectric (index ior) or a
  * conductor (eta + i k per channel); no energy compensation, metallic mix or layers, and no
- * mirror (alpha >= FC_ALPHA_MIRROR). The formulas are microfacet.cl's and bsdf.cl's (one-sample MIS over
- * the lobes, chosen by their estimated albedos); the scalar kernels run this body at W = 1 for
- * such materials, the packet kernel at W = 8 or 16, so both give the same bits
- * (tests/lanes_test.cpp). Needs vec3_lanes.cl, warp_lanes.cl, fresnel_lanes.cl, ggx_lanes.cl
+ * mirror (alpha >= FC_ALPHA_MIRROR). The formulas are microfacet.cl's and bsdf.cl's
+ * (one-sample MIS over the lobes, chosen by their estimated albedos); the scalar kernels run
+ * this body at W = 1 for such materials, the packet kernel at W = 8 or 16, so both give the
+ * same bits (tests/lanes_test.cpp). Needs vec3_lanes.cl, warp_lanes.cl, fresnel_lanes.cl, ggx_lanes.cl
  * and beckmann_lanes.cl of the same width. */
 #ifndef FACET_BSDF_PLAIN_BASE_LANES_PASS
 #define FACET_BSDF_PLAIN_BASE_LANES_PASS
