@@ -241,7 +241,13 @@ TEST(Limits, CorruptExrHeaderIsRejectedBeforeReading) {
         d.write("lines.exr", exr_header(box(0, 0, 9, 1999999) + std::string("compression\0compression\0", 24) +
                                         le32(1) + std::string(1, '\0')));
     expect_error([&] { read_image(lines); }, {"lines.exr", "2000000 scanlines", "offset table"});
-    // The stored finding itself, through the environment loader.
+    // A channel list whose entries end before its declared size (OpenEXR reads on from where they
+    // end, so the walk must too).
+    const std::string chlist =
+        d.write("chlist.exr", exr_header(std::string("channels\0chlist\0", 16) + le32(20) + std::string("R\0", 2) +
+                                         std::string(16, '\0') + std::string(2, '\0')));
+    expect_error([&] { read_image(chlist); }, {"chlist.exr", "channel list 'channels' declares 20 bytes", "corrupt"});
+    // The stored findings themselves, through the environment loader.
     std::vector<std::string> warnings;
     expect_error(
         [&] {
@@ -249,6 +255,12 @@ TEST(Limits, CorruptExrHeaderIsRejectedBeforeReading) {
                                  glm::mat3(1.0f), warnings);
         },
         {"exr_attribute_size_oom.exr", "attribute"});
+    expect_error(
+        [&] {
+            load_environment_map(test::fuzz_dir() + "/regressions/env_map/exr_chlist_size_mismatch_oom.exr",
+                                 glm::vec3(1.0f), glm::mat3(1.0f), warnings);
+        },
+        {"exr_chlist_size_mismatch_oom.exr", "channel list"});
     // A valid EXR still reads.
     write_exr(d.path("ok.exr"), 4, 2, std::vector<float>(24, 0.5f));
     EXPECT_EQ(read_image(d.path("ok.exr")).width, 4);
