@@ -59,25 +59,47 @@ inline float ec_r(const FcMaterial* m) {
  * moves from the mean square at normal incidence to that across w at grazing:
  * alpha^2 = cos^2(theta) (alpha_x^2 + alpha_y^2) / 2 + w.y^2 alpha_x^2 + w.x^2 alpha_y^2
  * (an empirical fit, docs/brdf.md "Anisotropy"). Symmetric in the two directions of f_ms. */
-inline float ec_r_dir(const FcMaterial* m, float3 w) {
+inline float ec_r_dir_from(const FcMaterial* m, float3 w, float r) {
     float ax = fmax(m->alpha_x, 0.0f), ay = fmax(m->alpha_y, 0.0f);
-    if (ax == ay) return ec_r(m);
+    if (ax == ay) return r;
     float ms = 0.5f * (ax * ax + ay * ay), s2 = fmax(1.0f - w.z * w.z, 0.0f);
     float a2 = ms + s2 * (w.y * w.y * ax * ax + w.x * w.x * ay * ay - s2 * ms);
     return clamp(sqrt(sqrt(a2)), 0.0f, 1.0f);
 }
 
-/* Bilinear lookup of a [ndf][r][mu] table at (mu, r). */
-inline float ec_lookup(__constant const float* table, int ndf, float mu, float r) {
+/* ec_r_dir_from with r = ec_r(m), the isotropic lobe's. */
+inline float ec_r_dir(const FcMaterial* m, float3 w) { return ec_r_dir_from(m, w, ec_r(m)); }
+
+/* Where (mu, r) falls in a [ndf][r][mu] table: the offset of its cell's first node and the
+ * bilinear fractions, found once for the tables read at the same point. */
+typedef struct {
+    int at;
+    float tx, ty;
+} EcCell;
+
+inline EcCell ec_cell(int ndf, float mu, float r) {
     float x = clamp(mu, 0.0f, 1.0f) * (float)(FC_ALBEDO_N_MU - 1);
     float y = r * (float)(FC_ALBEDO_N_R - 1);
     int i = min((int)x, FC_ALBEDO_N_MU - 2);
     int j = min((int)y, FC_ALBEDO_N_R - 2);
-    float tx = x - (float)i, ty = y - (float)j;
-    __constant const float* row = table + (ndf * FC_ALBEDO_N_R + j) * FC_ALBEDO_N_MU + i;
-    float a = mix(row[0], row[1], tx);
-    float b = mix(row[FC_ALBEDO_N_MU], row[FC_ALBEDO_N_MU + 1], tx);
-    return mix(a, b, ty);
+    EcCell c;
+    c.at = (ndf * FC_ALBEDO_N_R + j) * FC_ALBEDO_N_MU + i;
+    c.tx = x - (float)i;
+    c.ty = y - (float)j;
+    return c;
+}
+
+/* Bilinear lookup of a [ndf][r][mu] table in cell c. */
+inline float ec_at(__constant const float* table, EcCell c) {
+    __constant const float* row = table + c.at;
+    float a = mix(row[0], row[1], c.tx);
+    float b = mix(row[FC_ALBEDO_N_MU], row[FC_ALBEDO_N_MU + 1], c.tx);
+    return mix(a, b, c.ty);
+}
+
+/* Bilinear lookup of a [ndf][r][mu] table at (mu, r). */
+inline float ec_lookup(__constant const float* table, int ndf, float mu, float r) {
+    return ec_at(table, ec_cell(ndf, mu, r));
 }
 
 /* Linear lookup of a [ndf][r] table of averages. */
@@ -93,11 +115,21 @@ inline int ec_ndf(const FcMaterial* m) { return m->ndf == FC_NDF_GGX ? 1 : 0; }
 /* E(mu): the single-scattering albedo with F = 1. */
 inline float ec_E(const FcMaterial* m, float mu) { return ec_lookup(fc_albedo_E, ec_ndf(m), mu, ec_r(m)); }
 inline float ec_E_dir(const FcMaterial* m, float3 w) { return ec_lookup(fc_albedo_E, ec_ndf(m), w.z, ec_r_dir(m, w)); }
-inline float ec_E_avg(const FcMaterial* m) { return ec_lookup_avg(fc_albedo_E_avg, ec_ndf(m), ec_r(m)); }
 
-/* F_avg = 2 int F(mu) mu dmu by 8-point Gauss-Legendre on [0, 1]. */
+/* F_avg = 2 int F(mu) mu dmu. Schlick's F = F0 + (F90 - F0)(1 - mu)^5 has it in closed
+ * form, F0 + (F90 - F0) / 21, as 2 int (1 - mu)^5 mu dmu = 2 B(2, 6) = 1/21 (what the
+ * quadrature below gives it too, up to rounding, being exact for polynomials of degree 15);
+ * the exact Fresnel terms by 8-point Gauss-Legendre on [0, 1]. */
 inline float3 ec_fresnel_avg(const FcMaterial* m) {
     if (m->fresnel == FC_FRESNEL_ONE) return (float3)(1.0f);
+    if (m->fresnel == FC_FRESNEL_SCHLICK) {
+        const float3 f0 = load3p(m->specular);
+        return f0 + ((float3)(fresnel_f90(m)) - f0) * (1.0f / 21.0f);
+    }
+    if (m->fresnel == FC_FRESNEL_SCHLICK_IOR) {
+        const float f0 = f0_from_ior(m->ior);
+        return (float3)(f0 + (1.0f - f0) * (1.0f / 21.0f));
+    }
     const float t[4] = {0.18343464249564980f, 0.52553240991632899f, 0.79666647741362674f, 0.96028985649753623f};
     const float w[4] = {0.36268378337836198f, 0.31370664587788729f, 0.22238103445337447f, 0.10122853629037626f};
     float3 sum = (float3)(0.0f);
@@ -116,10 +148,14 @@ inline float3 ec_fresnel_ms(const FcMaterial* m, float e_avg) {
 
 /* f_ms(wo, wi) for wo.z, wi.z > 0 (no cosine). */
 inline float3 ec_ms_eval(const FcMaterial* m, float3 wo, float3 wi) {
-    float e_avg = ec_E_avg(m);
+    const int ndf = ec_ndf(m);
+    const float r = ec_r(m);
+    float e_avg = ec_lookup_avg(fc_albedo_E_avg, ndf, r);
     float loss = 1.0f - e_avg;
     if (!(loss > 1e-6f)) return (float3)(0.0f);
-    float k = fmax(1.0f - ec_E_dir(m, wo), 0.0f) * fmax(1.0f - ec_E_dir(m, wi), 0.0f) / (FC_PI * loss);
+    const float eo = ec_lookup(fc_albedo_E, ndf, wo.z, ec_r_dir_from(m, wo, r));
+    const float ei = ec_lookup(fc_albedo_E, ndf, wi.z, ec_r_dir_from(m, wi, r));
+    float k = fmax(1.0f - eo, 0.0f) * fmax(1.0f - ei, 0.0f) / (FC_PI * loss);
     return ec_fresnel_ms(m, e_avg) * k;
 }
 
@@ -127,12 +163,15 @@ inline float3 ec_ms_eval(const FcMaterial* m, float3 wo, float3 wi) {
  * rather than f_ss: f_ms's share of the albedo at F = 1. */
 inline float ec_ms_probability(const FcMaterial* m, float3 wo) { return clamp(1.0f - ec_E_dir(m, wo), 0.0f, 1.0f); }
 
-/* E_s(mu): the Fresnel-weighted albedo of the compensated specular lobe, Schlick form (F0, F90). */
-inline float3 ec_specular_albedo(const FcMaterial* m, float mu, float3 f_ms) {
-    float3 f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
-    float e = ec_E(m, mu);
-    float e5 = ec_lookup(fc_albedo_E5, ec_ndf(m), mu, ec_r(m));
-    return f0 * e + ((float3)(fresnel_f90(m)) - f0) * e5 + f_ms * (1.0f - e);
+/* E_s: the Fresnel-weighted albedo of the compensated specular lobe, Schlick form (F0 clamped
+ * to [0, 1], F90), from its albedos E and E5 (or their averages) and F_ms. */
+inline float3 ec_specular_albedo_of(float3 f0, float f90, float e, float e5, float3 f_ms) {
+    return f0 * e + ((float3)(f90)-f0) * e5 + f_ms * (1.0f - e);
+}
+
+/* The same at cosine mu, the tables read in cell c (ec_cell of mu). */
+inline float3 ec_specular_albedo_in(float3 f0, float f90, EcCell c, float3 f_ms) {
+    return ec_specular_albedo_of(f0, f90, ec_at(fc_albedo_E, c), ec_at(fc_albedo_E5, c), f_ms);
 }
 
 /* The coupled diffuse base's factor (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg).
@@ -147,13 +186,16 @@ inline float3 ec_diffuse_coupling(const FcMaterial* m, float3 wo, float3 wi) {
         float3 den = fmax((float3)(1.0f) - clamp(ec_fresnel_avg(m), 0.0f, 1.0f), (float3)(1e-6f));
         return lo * li / den;
     }
-    float e_avg = ec_E_avg(m);
+    const int ndf = ec_ndf(m);
+    const float r = ec_r(m);
+    float e_avg = ec_lookup_avg(fc_albedo_E_avg, ndf, r);
     float3 f_ms = ec_fresnel_ms(m, e_avg);
     float3 f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
-    float e5_avg = ec_lookup_avg(fc_albedo_E5_avg, ec_ndf(m), ec_r(m));
-    float3 s_avg = f0 * e_avg + ((float3)(fresnel_f90(m)) - f0) * e5_avg + f_ms * (1.0f - e_avg);
-    float3 lo = fmax((float3)(1.0f) - ec_specular_albedo(m, wo.z, f_ms), (float3)(0.0f));
-    float3 li = fmax((float3)(1.0f) - ec_specular_albedo(m, wi.z, f_ms), (float3)(0.0f));
+    const float f90 = fresnel_f90(m);
+    float e5_avg = ec_lookup_avg(fc_albedo_E5_avg, ndf, r);
+    float3 s_avg = ec_specular_albedo_of(f0, f90, e_avg, e5_avg, f_ms);
+    float3 lo = fmax((float3)(1.0f) - ec_specular_albedo_in(f0, f90, ec_cell(ndf, wo.z, r), f_ms), (float3)(0.0f));
+    float3 li = fmax((float3)(1.0f) - ec_specular_albedo_in(f0, f90, ec_cell(ndf, wi.z, r), f_ms), (float3)(0.0f));
     float3 den = fmax((float3)(1.0f) - s_avg, (float3)(1e-6f));
     return lo * li / den;
 }

@@ -167,3 +167,10 @@ __kernel void albedo_reciprocity(__global const FcMaterial* mats, __global const
     out[2 * i] = (float4)(bsdf_eval(&m, wo[i].xyz, wi[i].xyz), 0.0f);
     out[2 * i + 1] = (float4)(bsdf_eval(&m, wi[i].xyz, wo[i].xyz), 0.0f);
 }
+
+/* out[i] = (F_avg of mats[i], the cosine-weighted mean of its Fresnel term, 0). */
+__kernel void albedo_fresnel_avg(__global const FcMaterial* mats, __global float4* out) {
+    int i = (int)get_global_id(0);
+    FcMaterial m = mats[i];
+    out[i] = (float4)(ec_fresnel_avg(&m), 0.0f);
+}
