@@ -81,18 +81,24 @@ inline bool bsdf_plain(const FcMaterial* m) {
         return false;
     }
     if (m->geometry != FC_G_SMITH_SEPARABLE && m->geometry != FC_G_SMITH_CORRELATED) return false;
-    if (m->fresnel != FC_FRESNEL_DIELECTRIC && m->fresnel != FC_FRESNEL_CONDUCTOR) return false;
-    return !ec_enabled(m) && !metallic_mixed(m) && !microfacet_is_mirror(m);
+    if (m->fresnel != FC_FRESNEL_DIELECTRIC && m->fresnel != FC_FRESNEL_CONDUCTOR && m->fresnel != FC_FRESNEL_SCHLICK &&
+        m->fresnel != FC_FRESNEL_SCHLICK_IOR && m->fresnel != FC_FRESNEL_ONE)
+        return false;
+    if (ec_enabled(m) && m->alpha_x != m->alpha_y) return false; /* ec_r_dir: E leans on the azimuth */
+    return !metallic_mixed(m) && !microfacet_is_mirror(m);
 #else
     return false;
 #endif
 }
 
-/* A plain base's parameters (bsdf_plain), masks as W = 1 lanes (1 or 0). */
+/* A plain base's parameters (bsdf_plain), masks as W = 1 lanes (1 or 0); the compensation's
+ * constants (energy_compensation.cl) where it is on, else values that keep its arithmetic
+ * finite. */
 inline PlainBase_l1 plain_base_of(const FcMaterial* m) {
     PlainBase_l1 b;
+    b.coupled = diffuse_coupled(m);
     b.kd = m->diffuse_model == FC_DIFFUSE_NONE ? (float3)(0.0f) : material_diffuse(m);
-    if (m->diffuse_model == FC_DIFFUSE_LAMBERT_1MF0) b.kd *= (float3)(1.0f) - fresnel_f0(m);
+    if (m->diffuse_model == FC_DIFFUSE_LAMBERT_1MF0 && !b.coupled) b.kd *= (float3)(1.0f) - fresnel_f0(m);
     b.eta = load3p(m->eta);
     b.k = load3p(m->k);
     b.ax = m->alpha_x;
@@ -103,7 +109,35 @@ inline PlainBase_l1 plain_base_of(const FcMaterial* m) {
     b.beckmann = !b.ggx;
     b.correlated = m->geometry == FC_G_SMITH_CORRELATED;
     b.conductor = m->fresnel == FC_FRESNEL_CONDUCTOR;
+    /* Schlick's forms; F = 1 as Schlick's with F0 = F90 = 1 */
+    b.schlick =
+        m->fresnel == FC_FRESNEL_SCHLICK || m->fresnel == FC_FRESNEL_SCHLICK_IOR || m->fresnel == FC_FRESNEL_ONE;
+    b.f0 = m->fresnel == FC_FRESNEL_SCHLICK       ? load3p(m->specular)
+           : m->fresnel == FC_FRESNEL_SCHLICK_IOR ? (float3)(f0_from_ior(m->ior))
+                                                  : (float3)(1.0f);
+    b.f90 = m->fresnel == FC_FRESNEL_SCHLICK ? fresnel_f90(m) : 1.0f;
     b.diffuse = m->diffuse_model != FC_DIFFUSE_NONE;
+    b.ec = ec_enabled(m);
+    b.e_table = fc_albedo_E;
+    b.e5_table = fc_albedo_E5;
+    b.ec_r = 0.0f;
+    b.ec_loss = 1.0f;
+    b.ec_fms = (float3)(0.0f);
+    b.es_f0 = (float3)(0.0f);
+    b.es_f90 = 1.0f;
+    b.es_den = (float3)(1.0f);
+    if (b.ec) {
+        const int ndf = ec_ndf(m);
+        b.ec_r = ec_r(m);
+        const float e_avg = ec_lookup_avg(fc_albedo_E_avg, ndf, b.ec_r);
+        b.ec_loss = 1.0f - e_avg;
+        b.ec_fms = ec_fresnel_ms(m, e_avg);
+        b.es_f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
+        b.es_f90 = fresnel_f90(m);
+        const float3 s_avg =
+            ec_specular_albedo_of_l1(b.es_f0, b.es_f90, e_avg, ec_lookup_avg(fc_albedo_E5_avg, ndf, b.ec_r), b.ec_fms);
+        b.es_den = fmax((float3)(1.0f) - s_avg, (float3)(1e-6f));
+    }
     return b;
 }
 

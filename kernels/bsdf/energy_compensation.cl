@@ -70,32 +70,21 @@ inline float ec_r_dir_from(const FcMaterial* m, float3 w, float r) {
 /* ec_r_dir_from with r = ec_r(m), the isotropic lobe's. */
 inline float ec_r_dir(const FcMaterial* m, float3 w) { return ec_r_dir_from(m, w, ec_r(m)); }
 
-/* Where (mu, r) falls in a [ndf][r][mu] table: the offset of its cell's first node and the
- * bilinear fractions, found once for the tables read at the same point. */
+/* Where (mu, r) falls in a [ndf][r][mu] table (ec_cell of energy_compensation_lanes.cl), found
+ * once for the tables read at the same point. */
 typedef struct {
     int at;
     float tx, ty;
 } EcCell;
 
 inline EcCell ec_cell(int ndf, float mu, float r) {
-    float x = clamp(mu, 0.0f, 1.0f) * (float)(FC_ALBEDO_N_MU - 1);
-    float y = r * (float)(FC_ALBEDO_N_R - 1);
-    int i = min((int)x, FC_ALBEDO_N_MU - 2);
-    int j = min((int)y, FC_ALBEDO_N_R - 2);
     EcCell c;
-    c.at = (ndf * FC_ALBEDO_N_R + j) * FC_ALBEDO_N_MU + i;
-    c.tx = x - (float)i;
-    c.ty = y - (float)j;
+    ec_cell_l1(ndf, mu, r, &c.at, &c.tx, &c.ty);
     return c;
 }
 
 /* Bilinear lookup of a [ndf][r][mu] table in cell c. */
-inline float ec_at(__constant const float* table, EcCell c) {
-    __constant const float* row = table + c.at;
-    float a = mix(row[0], row[1], c.tx);
-    float b = mix(row[FC_ALBEDO_N_MU], row[FC_ALBEDO_N_MU + 1], c.tx);
-    return mix(a, b, c.ty);
-}
+inline float ec_at(__constant const float* table, EcCell c) { return ec_table_at_l1(table, c.at, c.tx, c.ty); }
 
 /* Bilinear lookup of a [ndf][r][mu] table at (mu, r). */
 inline float ec_lookup(__constant const float* table, int ndf, float mu, float r) {
@@ -155,7 +144,7 @@ inline float3 ec_ms_eval(const FcMaterial* m, float3 wo, float3 wi) {
     if (!(loss > 1e-6f)) return (float3)(0.0f);
     const float eo = ec_lookup(fc_albedo_E, ndf, wo.z, ec_r_dir_from(m, wo, r));
     const float ei = ec_lookup(fc_albedo_E, ndf, wi.z, ec_r_dir_from(m, wi, r));
-    float k = fmax(1.0f - eo, 0.0f) * fmax(1.0f - ei, 0.0f) / (FC_PI * loss);
+    float k = ec_ms_factor_l1(eo, ei, loss);
     return ec_fresnel_ms(m, e_avg) * k;
 }
 
@@ -163,15 +152,11 @@ inline float3 ec_ms_eval(const FcMaterial* m, float3 wo, float3 wi) {
  * rather than f_ss: f_ms's share of the albedo at F = 1. */
 inline float ec_ms_probability(const FcMaterial* m, float3 wo) { return clamp(1.0f - ec_E_dir(m, wo), 0.0f, 1.0f); }
 
-/* E_s: the Fresnel-weighted albedo of the compensated specular lobe, Schlick form (F0 clamped
- * to [0, 1], F90), from its albedos E and E5 (or their averages) and F_ms. */
-inline float3 ec_specular_albedo_of(float3 f0, float f90, float e, float e5, float3 f_ms) {
-    return f0 * e + ((float3)(f90)-f0) * e5 + f_ms * (1.0f - e);
-}
-
-/* The same at cosine mu, the tables read in cell c (ec_cell of mu). */
+/* E_s at the cosine of cell c (ec_cell's): the Fresnel-weighted albedo of the compensated
+ * specular lobe, Schlick form (F0 clamped to [0, 1], F90), from the albedos E and E5 there
+ * (ec_specular_albedo_of, energy_compensation_lanes.cl) and F_ms. */
 inline float3 ec_specular_albedo_in(float3 f0, float f90, EcCell c, float3 f_ms) {
-    return ec_specular_albedo_of(f0, f90, ec_at(fc_albedo_E, c), ec_at(fc_albedo_E5, c), f_ms);
+    return ec_specular_albedo_of_l1(f0, f90, ec_at(fc_albedo_E, c), ec_at(fc_albedo_E5, c), f_ms);
 }
 
 /* The coupled diffuse base's factor (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg).
@@ -193,9 +178,9 @@ inline float3 ec_diffuse_coupling(const FcMaterial* m, float3 wo, float3 wi) {
     float3 f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
     const float f90 = fresnel_f90(m);
     float e5_avg = ec_lookup_avg(fc_albedo_E5_avg, ndf, r);
-    float3 s_avg = ec_specular_albedo_of(f0, f90, e_avg, e5_avg, f_ms);
-    float3 lo = fmax((float3)(1.0f) - ec_specular_albedo_in(f0, f90, ec_cell(ndf, wo.z, r), f_ms), (float3)(0.0f));
-    float3 li = fmax((float3)(1.0f) - ec_specular_albedo_in(f0, f90, ec_cell(ndf, wi.z, r), f_ms), (float3)(0.0f));
+    float3 s_avg = ec_specular_albedo_of_l1(f0, f90, e_avg, e5_avg, f_ms);
+    float3 lo = ec_diffuse_share_l1(ec_specular_albedo_in(f0, f90, ec_cell(ndf, wo.z, r), f_ms));
+    float3 li = ec_diffuse_share_l1(ec_specular_albedo_in(f0, f90, ec_cell(ndf, wi.z, r), f_ms));
     float3 den = fmax((float3)(1.0f) - s_avg, (float3)(1e-6f));
     return lo * li / den;
 }

@@ -3,27 +3,38 @@
  * diffuse colour, times 1 - F0 for Lambert x (1 - F0)), or none, under a rough microfacet lobe
  * of GGX or Beckmann normals, sampled as visible normals, with Smith's separable or
  * height-correlated masking and the exact Fresnel term of a dielectric (index ior) or a
- * conductor (eta + i k per channel); no energy compensation, metallic mix or layers, and no
- * mirror (alpha >= FC_ALPHA_MIRROR). The formulas are microfacet.cl's and bsdf.cl's
+ * conductor (eta + i k per channel), or Schlick's (F0, F90). An isotropic lobe with
+ * height-correlated masking may be energy-compensated (energy_compensation.cl: the cosine
+ * lobe f_ms, sampled with probability 1 - E(wo), and a Lambert x (1 - F0) base coupled to the
+ * lobe's albedo E_s instead of 1 - F0). No metallic mix or layers, and no mirror (alpha >=
+ * FC_ALPHA_MIRROR). The formulas are microfacet.cl's, energy_compensation.cl's and bsdf.cl's
  * (one-sample MIS over the lobes, chosen by their estimated albedos); the scalar kernels run
  * this body at W = 1 for such materials, the packet kernel at W = 8 or 16, so both give the
- * same bits (tests/lanes_test.cpp). Needs vec3_lanes.cl, warp_lanes.cl, fresnel_lanes.cl, ggx_lanes.cl
- * and beckmann_lanes.cl of the same width. */
+ * same bits (tests/lanes_test.cpp). Needs vec3_lanes.cl, warp_lanes.cl, fresnel_lanes.cl,
+ * ggx_lanes.cl, beckmann_lanes.cl and energy_compensation_lanes.cl of the same width. */
 #ifndef FACET_BSDF_PLAIN_BASE_LANES_PASS
 #define FACET_BSDF_PLAIN_BASE_LANES_PASS
 
 /* A plain base per lane. ggx and beckmann are lane masks of the lanes of each NDF (a lane of
  * neither is not evaluated: its results are meaningless), correlated the lanes of
  * height-correlated masking (else separable), conductor those of the conductor's Fresnel term
- * (else the dielectric's), diffuse those with a diffuse lobe (else kd = 0); diffuse_weight is
- * bsdf.cl's estimate of the diffuse lobe's albedo (lum(kd') >= 0). */
+ * and schlick those of Schlick's (f0, f90; else the dielectric's), diffuse those with a diffuse
+ * lobe (else kd = 0); diffuse_weight is bsdf.cl's estimate of the diffuse lobe's albedo
+ * (lum(kd') >= 0). The lanes of ec are energy-compensated, with the material's constants:
+ * ec_r the tables' roughness coordinate, ec_loss 1 - E_avg, ec_fms F_ms, es_f0 and es_f90 the
+ * F0 (clamped) and F90 of the lobe's albedo E_s, es_den max(1 - E_s,avg, 1e-6); coupled those
+ * whose diffuse lobe is coupled to E_s (kd then the diffuse colour itself). The albedo tables
+ * E and E5 (albedo_tables_*.cl) are passed in e_table and e5_table. */
 typedef struct {
-    LVEC3 kd, eta, k;
-    LFLOAT ax, ay, ior, diffuse_weight;
-    LINT ggx, beckmann, correlated, conductor, diffuse;
+    LVEC3 kd, eta, k, f0, ec_fms, es_f0, es_den;
+    LFLOAT ax, ay, ior, diffuse_weight, f90, ec_r, ec_loss, es_f90;
+    LINT ggx, beckmann, correlated, conductor, schlick, diffuse, ec, coupled;
+    __constant const float* e_table;
+    __constant const float* e5_table;
 } LNAME(PlainBase);
 
-/* The Fresnel term at cosine c: the dielectric's in every channel, or the conductor's. */
+/* The Fresnel term at cosine c: the dielectric's in every channel, the conductor's or
+ * Schlick's. */
 inline LVEC3 LNAME(plain_base_fresnel)(const LNAME(PlainBase) * b, LFLOAT c) {
     const LFLOAT fd = LNAME(fresnel_dielectric)(c, b->ior);
     LVEC3 f = LNAME(vec3)(fd, fd, fd);
@@ -33,7 +44,28 @@ inline LVEC3 LNAME(plain_base_fresnel)(const LNAME(PlainBase) * b, LFLOAT c) {
                                      LNAME(fresnel_conductor_channel)(c, b->eta.z, b->k.z));
         f = LNAME(vec3_select)(f, fc, b->conductor);
     }
+    if (LNAME(lanes_any)(b->schlick)) {
+        const LVEC3 fs = LNAME(vec3)(LNAME(fresnel_schlick_channel)(b->f0.x, b->f90, c),
+                                     LNAME(fresnel_schlick_channel)(b->f0.y, b->f90, c),
+                                     LNAME(fresnel_schlick_channel)(b->f0.z, b->f90, c));
+        f = LNAME(vec3_select)(f, fs, b->schlick);
+    }
     return f;
+}
+
+/* The compensated lanes' albedos E and E5 at cosine mu (the tables' cell found once). */
+inline void LNAME(plain_base_albedos)(const LNAME(PlainBase) * b, LFLOAT mu, LFLOAT* e, LFLOAT* e5) {
+    LINT at;
+    LFLOAT tx, ty;
+    LNAME(ec_cell)(select((LINT)(0), (LINT)(1), b->ggx), mu, b->ec_r, &at, &tx, &ty);
+    *e = LNAME(ec_table_at)(b->e_table, at, tx, ty);
+    *e5 = LNAME(ec_table_at)(b->e5_table, at, tx, ty);
+}
+
+/* The coupled diffuse base's share seen from a direction of albedos e, e5: 1 - E_s, at 0 at
+ * least. */
+inline LVEC3 LNAME(plain_base_share)(const LNAME(PlainBase) * b, LFLOAT e, LFLOAT e5) {
+    return LNAME(ec_diffuse_share)(LNAME(ec_specular_albedo_of)(b->es_f0, b->es_f90, e, e5, b->ec_fms));
 }
 
 /* The probability of choosing the specular lobe from wo (bsdf.cl's specular_probability):
@@ -56,14 +88,26 @@ inline LFLOAT LNAME(plain_base_area)(const LNAME(PlainBase) * b, LVEC3 w) {
 }
 
 /* What a plain base's evaluation and sampling share for one wo: the projected area of the
- * microsurface seen from wo, wo.z (1 + Lambda(wo)), and the specular lobe's probability. */
+ * microsurface seen from wo, wo.z (1 + Lambda(wo)), and the specular lobe's probability; for
+ * the compensated lanes E(wo), the probability p_ms of sampling f_ms within the specular lobe,
+ * 1 - E(wo) in [0, 1] (0 elsewhere), and the coupled diffuse base's share seen from wo. */
 typedef struct {
-    LFLOAT area_o, p;
+    LFLOAT area_o, p, e_o, p_ms;
+    LVEC3 share_o;
 } LNAME(PlainView);
 
 inline void LNAME(plain_base_view)(const LNAME(PlainBase) * b, LVEC3 wo, LNAME(PlainView) * v) {
     v->area_o = LNAME(plain_base_area)(b, wo);
     v->p = LNAME(plain_base_specular_probability)(b, wo.z);
+    v->e_o = (LFLOAT)(1.0f);
+    v->p_ms = (LFLOAT)(0.0f);
+    v->share_o = LNAME(vec3)(0.0f, 0.0f, 0.0f);
+    if (LNAME(lanes_any)(b->ec)) {
+        LFLOAT e5;
+        LNAME(plain_base_albedos)(b, wo.z, &v->e_o, &e5);
+        v->p_ms = select((LFLOAT)(0.0f), clamp(1.0f - v->e_o, 0.0f, 1.0f), b->ec);
+        v->share_o = LNAME(plain_base_share)(b, v->e_o, e5);
+    }
 }
 
 /* f(wo, wi) (1/sr) and, in *pdf, the density with which plain_base_sample draws wi; 0 for both
@@ -93,16 +137,39 @@ inline LVEC3 LNAME(plain_base_eval_pdf)(const LNAME(PlainBase) * b, const LNAME(
     const LVEC3 fr = LNAME(plain_base_fresnel)(b, wo_h);
     const LFLOAT dg = d * g_over;
     LVEC3 fs = LNAME(vec3)(fr.x * dg, fr.y * dg, fr.z * dg);
-    const LINT fok = isfinite(fs.x) & isfinite(fs.y) & isfinite(fs.z) & (d > 0.0f) & hv & above;
-    fs = LNAME(vec3_select)(LNAME(vec3)(0.0f, 0.0f, 0.0f),
-                            LNAME(vec3)(fmax(fs.x, 0.0f), fmax(fs.y, 0.0f), fmax(fs.z, 0.0f)), fok);
     LFLOAT ps = d / (4.0f * area_o);
     ps = select((LFLOAT)(0.0f), fmax(ps, 0.0f), isfinite(ps) & hv);
+    const LFLOAT cos_pdf = LNAME(cosine_hemisphere_pdf)(wo.z, wi.z);
+    LVEC3 kd = b->kd;
+    if (LNAME(lanes_any)(b->ec)) {
+        /* f_ms = F_ms (1 - E(wo)) (1 - E(wi)) / (pi (1 - E_avg)) added to the lobe (where D is
+         * 0 too), sampled by the cosine with probability p_ms; the coupled base's albedo
+         * kd (1 - E_s(wo)) (1 - E_s(wi)) / (1 - E_s,avg) */
+        LFLOAT e_i, e5_i;
+        LNAME(plain_base_albedos)(b, wi.z, &e_i, &e5_i);
+        const LFLOAT ms =
+            select((LFLOAT)(0.0f), LNAME(ec_ms_factor)(view->e_o, e_i, b->ec_loss), b->ec & (b->ec_loss > 1e-6f));
+        const LINT ss = (d > 0.0f) & hv & above;
+        const LVEC3 fss = LNAME(vec3_select)(LNAME(vec3)(0.0f, 0.0f, 0.0f), fs, ss);
+        fs = LNAME(vec3_select)(
+            fs, LNAME(vec3)(b->ec_fms.x * ms + fss.x, b->ec_fms.y * ms + fss.y, b->ec_fms.z * ms + fss.z), b->ec);
+        const LFLOAT q = view->p_ms * cos_pdf + (1.0f - view->p_ms) * ps;
+        ps = select(ps, select((LFLOAT)(0.0f), fmax(q, 0.0f), isfinite(q)), b->ec);
+        const LVEC3 share_i = LNAME(plain_base_share)(b, e_i, e5_i);
+        const LVEC3 c =
+            LNAME(vec3)(view->share_o.x * share_i.x / b->es_den.x, view->share_o.y * share_i.y / b->es_den.y,
+                        view->share_o.z * share_i.z / b->es_den.z);
+        kd = LNAME(vec3_select)(kd, LNAME(vec3)(kd.x * c.x, kd.y * c.y, kd.z * c.z), b->coupled);
+    }
+    const LINT fok =
+        isfinite(fs.x) & isfinite(fs.y) & isfinite(fs.z) & select(d > 0.0f, (LINT)(-1), b->ec) & hv & above;
+    fs = LNAME(vec3_select)(LNAME(vec3)(0.0f, 0.0f, 0.0f),
+                            LNAME(vec3)(fmax(fs.x, 0.0f), fmax(fs.y, 0.0f), fmax(fs.z, 0.0f)), fok);
     /* the lobes mixed: f = kd / pi + fs, pdf = (1 - p) cos_i / pi + p ps */
     const LFLOAT p = view->p;
-    *pdf = select((LFLOAT)(0.0f), (1.0f - p) * LNAME(cosine_hemisphere_pdf)(wo.z, wi.z) + p * ps, above);
+    *pdf = select((LFLOAT)(0.0f), (1.0f - p) * cos_pdf + p * ps, above);
     const LFLOAT k = select((LFLOAT)(0.0f), (LFLOAT)(FC_INV_PI), above);
-    return LNAME(vec3)(b->kd.x * k + fs.x, b->kd.y * k + fs.y, b->kd.z * k + fs.z);
+    return LNAME(vec3)(kd.x * k + fs.x, kd.y * k + fs.y, kd.z * k + fs.z);
 }
 
 /* A direction wi for wo from u0, u1 (the lobe's sample) and u2 (the lobe's choice), uniform in
@@ -111,13 +178,18 @@ inline LVEC3 LNAME(plain_base_eval_pdf)(const LNAME(PlainBase) * b, const LNAME(
 inline LINT LNAME(plain_base_sample)(const LNAME(PlainBase) * b, const LNAME(PlainView) * view, LVEC3 wo, LFLOAT u0,
                                      LFLOAT u1, LFLOAT u2, LVEC3* wi, LVEC3* f, LFLOAT* pdf, LVEC3* weight) {
     const LINT specular = u2 < view->p;
-    /* the diffuse lobe: a cosine-weighted direction */
-    LVEC3 w = LNAME(square_to_cosine_hemisphere)(u0, u1);
+    /* the diffuse lobe, and a compensated lobe's f_ms (chosen by u0 below p_ms, rescaled): a
+     * cosine-weighted direction */
+    const LINT ms = specular & (u0 < view->p_ms);
+    LVEC3 w = LNAME(square_to_cosine_hemisphere)(select(u0, u0 / view->p_ms, ms), u1);
     LINT ok = (wo.z > 0.0f) & (w.z > 0.0f);
-    if (LNAME(lanes_any)(specular)) {
-        /* the microfacet lobe: a visible normal, wo reflected about it (Walter 2007, eq. 39) */
+    const LINT ss = specular & (u0 >= view->p_ms);
+    if (LNAME(lanes_any)(ss)) {
+        /* the microfacet lobe: a visible normal, wo reflected about it (Walter 2007, eq. 39),
+         * u0 rescaled past p_ms where the lobe is compensated */
+        u0 = select(u0, fmin((u0 - view->p_ms) / (1.0f - view->p_ms), FC_ONE_MINUS_EPSILON), b->ec);
         LVEC3 m = LNAME(vec3)(0.0f, 0.0f, 1.0f);
-        const LINT sg = specular & b->ggx, sb = specular & b->beckmann;
+        const LINT sg = ss & b->ggx, sb = ss & b->beckmann;
         if (LNAME(lanes_any)(sg)) m = LNAME(ggx_sample_visible)(b->ax, b->ay, wo, u0, u1);
         if (LNAME(lanes_any)(sb))
             m = LNAME(vec3_select)(m, LNAME(beckmann_sample_visible)(b->ax, b->ay, wo, u0, u1), sb);
@@ -128,8 +200,8 @@ inline LINT LNAME(plain_base_sample)(const LNAME(PlainBase) * b, const LNAME(Pla
         const LFLOAT il = rsqrt(len2);
         const LVEC3 rn = LNAME(vec3)(r.x * il, r.y * il, r.z * il);
         const LINT rok = (wo.z > 0.0f) & (wo_m > 0.0f) & unit & (rn.z > 0.0f);
-        w = LNAME(vec3_select)(w, rn, specular);
-        ok = select(ok, rok, specular);
+        w = LNAME(vec3_select)(w, rn, ss);
+        ok = select(ok, rok, ss);
     }
     *wi = w;
     LFLOAT q;

@@ -62,9 +62,11 @@ inline void set_lane3(float* a, int j, float3 v) {
 /* The lanes' plain-base parameters (bsdf.cl's plain_base_of, lane j at [j], 3-vectors as the
  * lane arrays; the masks stored as -1 or 0). */
 typedef struct {
-    float kd[3 * FC_PACKET_W], eta[3 * FC_PACKET_W], k[3 * FC_PACKET_W], ax[FC_PACKET_W], ay[FC_PACKET_W],
-        ior[FC_PACKET_W], dw[FC_PACKET_W];
-    int ggx[FC_PACKET_W], cor[FC_PACKET_W], cond[FC_PACKET_W], diff[FC_PACKET_W];
+    float kd[3 * FC_PACKET_W], eta[3 * FC_PACKET_W], k[3 * FC_PACKET_W], f0[3 * FC_PACKET_W], fms[3 * FC_PACKET_W],
+        es_f0[3 * FC_PACKET_W], es_den[3 * FC_PACKET_W], ax[FC_PACKET_W], ay[FC_PACKET_W], ior[FC_PACKET_W],
+        dw[FC_PACKET_W], f90[FC_PACKET_W], ec_r[FC_PACKET_W], ec_loss[FC_PACKET_W], es_f90[FC_PACKET_W];
+    int ggx[FC_PACKET_W], cor[FC_PACKET_W], cond[FC_PACKET_W], schlick[FC_PACKET_W], diff[FC_PACKET_W], ec[FC_PACKET_W],
+        coupled[FC_PACKET_W];
 } PacketPlain;
 
 /* Lane j's parameters from a plain base's. */
@@ -76,10 +78,37 @@ inline void packet_plain_set(PacketPlain* q, int j, const PlainBase_l1* b) {
     q->ay[j] = b->ay;
     q->ior[j] = b->ior;
     q->dw[j] = b->diffuse_weight;
+    set_lane3(q->f0, j, b->f0);
+    set_lane3(q->fms, j, b->ec_fms);
+    set_lane3(q->es_f0, j, b->es_f0);
+    set_lane3(q->es_den, j, b->es_den);
+    q->f90[j] = b->f90;
+    q->ec_r[j] = b->ec_r;
+    q->ec_loss[j] = b->ec_loss;
+    q->es_f90[j] = b->es_f90;
     q->ggx[j] = b->ggx ? -1 : 0;
     q->cor[j] = b->correlated ? -1 : 0;
     q->cond[j] = b->conductor ? -1 : 0;
+    q->schlick[j] = b->schlick ? -1 : 0;
     q->diff[j] = b->diffuse ? -1 : 0;
+    q->ec[j] = b->ec ? -1 : 0;
+    q->coupled[j] = b->coupled ? -1 : 0;
+}
+
+/* Parameters every lane can evaluate, for a lane before its first plain surface: a
+ * dielectric Beckmann base of alpha 1, no diffuse lobe, no compensation. */
+inline PlainBase_l1 packet_unplain(void) {
+    PlainBase_l1 b;
+    b.kd = b.k = b.f0 = b.ec_fms = b.es_f0 = (float3)(0.0f);
+    b.eta = b.es_den = (float3)(1.0f);
+    b.ax = b.ay = b.f90 = b.ec_loss = b.es_f90 = 1.0f;
+    b.ior = 1.5f;
+    b.diffuse_weight = b.ec_r = 0.0f;
+    b.ggx = b.correlated = b.conductor = b.schlick = b.diffuse = b.ec = b.coupled = 0;
+    b.beckmann = 1;
+    b.e_table = fc_albedo_E;
+    b.e5_table = fc_albedo_E5;
+    return b;
 }
 
 /* The plain bases of the lanes `lanes` (the others' parameters are read, not used). */
@@ -95,7 +124,20 @@ inline void packet_plain_base(LINT lanes, const PacketPlain* q, LNAME(PlainBase)
     b->beckmann = lanes & ~LLOAD(q->ggx);
     b->correlated = LLOAD(q->cor);
     b->conductor = lanes & LLOAD(q->cond);
+    b->schlick = lanes & LLOAD(q->schlick);
     b->diffuse = LLOAD(q->diff);
+    b->f0 = l3_load(q->f0);
+    b->f90 = LLOAD(q->f90);
+    b->ec = lanes & LLOAD(q->ec);
+    b->coupled = lanes & LLOAD(q->coupled);
+    b->ec_r = LLOAD(q->ec_r);
+    b->ec_loss = LLOAD(q->ec_loss);
+    b->ec_fms = l3_load(q->fms);
+    b->es_f0 = l3_load(q->es_f0);
+    b->es_f90 = LLOAD(q->es_f90);
+    b->es_den = l3_load(q->es_den);
+    b->e_table = fc_albedo_E;
+    b->e5_table = fc_albedo_E5;
 }
 #endif
 
@@ -159,9 +201,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     const uint queue = pixels_here * params->sample_count;
     uint next = 0u;
 #if FC_PACKET_BSDF_PER_LANE
-    /* parameters every lane can evaluate, read before a lane's first surface */
-    const PlainBase_l1 unplain = {
-        (float3)(0.0f), (float3)(1.0f), (float3)(0.0f), 1.0f, 1.0f, 1.5f, 0.0f, 0, 1, 0, 0, 0};
+    const PlainBase_l1 unplain = packet_unplain(); /* read before a lane's first surface */
 #endif
     for (int j = 0; j < FC_PACKET_W; ++j) {
         active[j] = 1;

@@ -1,6 +1,7 @@
 /* Test entry points for the lane-generic bodies (tests/lanes_test.cpp): each work-item
  * runs eight elements through the W = 1 form, one at a time, and through the W = 8 form in
  * float8 lanes, and writes both, up to four values an element. */
+#include "kernels/bsdf/albedo_tables_schlick.cl"
 #include "kernels/bsdf/lambert.cl"
 #include "kernels/lanes/packet.cl"
 #include "kernels/lights/area.cl"
@@ -352,6 +353,36 @@ inline void lanes_plain_conductor(__global const LanesIn* in, int j, float3* eta
     *k = (float3)(3.0f, 2.5f * f, 2.0f + f);
 }
 
+/* Lane j of a group of eight 3-vectors stored as x[0..7], y[8..15], z[16..23]. */
+inline void set_lane3_8(float* a, int j, float3 v) {
+    a[j] = v.x;
+    a[8 + j] = v.y;
+    a[16 + j] = v.z;
+}
+
+/* Element j's Schlick term (n / 1024 % 3 == 0, where not a conductor) and energy compensation
+ * (bit 12 of n, with height-correlated masking; isotropic), its diffuse lobe coupled (bit 13);
+ * the compensation's constants drawn from n, not derived from a material: the same bits at
+ * both widths is all that is asked. */
+inline void lanes_plain_extras(__global const LanesIn* in, int j, PlainBase_l1* b) {
+    const uint n = in->n[j];
+    const float f = (float)((n >> 4) % 89u) / 89.0f, g = (float)((n >> 6) % 83u) / 83.0f;
+    b->schlick = !b->conductor && (n >> 10) % 3u == 0u;
+    b->f0 = (float3)(0.02f + 0.9f * f, 0.5f * g, 0.04f);
+    b->f90 = (n >> 11) & 1u ? 1.0f : 0.3f + 0.6f * g;
+    b->ec = b->correlated && ((n >> 12) & 1u);
+    b->coupled = b->ec && b->diffuse && ((n >> 13) & 1u);
+    if (b->ec) b->ay = b->ax;
+    b->ec_r = sqrt(sqrt(b->ax));
+    b->ec_loss = 0.02f + 0.5f * g;
+    b->ec_fms = (float3)(0.3f + 0.6f * f, 0.9f * g, 0.5f);
+    b->es_f0 = clamp(b->f0, 0.0f, 1.0f);
+    b->es_f90 = b->f90;
+    b->es_den = (float3)(0.4f + 0.5f * f, 0.9f, 0.3f + 0.6f * g);
+    b->e_table = fc_albedo_E;
+    b->e5_table = fc_albedo_E5;
+}
+
 __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* out) {
     uint i = get_global_id(0);
     lanes_clear(out + i);
@@ -359,6 +390,8 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
         u2[8];
     float ex[8], ey[8], ez[8], qx[8], qy[8], qz[8];
     int ggx[8], cor[8], cond[8], diff[8];
+    float f0[24], fms[24], ef0[24], eden[24], f90[8], ecr[8], ecl[8], ef90[8];
+    int sch[8], ec[8], cpl[8];
     for (int j = 0; j < 8; ++j) {
         PlainBase_l1 b;
         float3 wo, wl, kd;
@@ -373,6 +406,11 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
         b.diffuse = !((in[i].n[j] >> 3) & 1u);
         lanes_plain_conductor(in + i, j, &b.eta, &b.k);
         if (!b.diffuse) b.kd = kd = (float3)(0.0f), b.diffuse_weight = 0.0f;
+        lanes_plain_extras(in + i, j, &b);
+        set_lane3_8(f0, j, b.f0), set_lane3_8(fms, j, b.ec_fms), set_lane3_8(ef0, j, b.es_f0);
+        set_lane3_8(eden, j, b.es_den);
+        f90[j] = b.f90, ecr[j] = b.ec_r, ecl[j] = b.ec_loss, ef90[j] = b.es_f90;
+        sch[j] = b.schlick ? -1 : 0, ec[j] = b.ec ? -1 : 0, cpl[j] = b.coupled ? -1 : 0;
         PlainView_l1 v;
         plain_base_view_l1(&b, wo, &v);
         float3 wi, f, weight;
@@ -406,6 +444,19 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
     b.diffuse = vload8(0, diff);
     b.eta = vec3_l8(vload8(0, ex), vload8(0, ey), vload8(0, ez));
     b.k = vec3_l8(vload8(0, qx), vload8(0, qy), vload8(0, qz));
+    b.f0 = vec3_l8(vload8(0, f0), vload8(1, f0), vload8(2, f0));
+    b.ec_fms = vec3_l8(vload8(0, fms), vload8(1, fms), vload8(2, fms));
+    b.es_f0 = vec3_l8(vload8(0, ef0), vload8(1, ef0), vload8(2, ef0));
+    b.es_den = vec3_l8(vload8(0, eden), vload8(1, eden), vload8(2, eden));
+    b.f90 = vload8(0, f90);
+    b.ec_r = vload8(0, ecr);
+    b.ec_loss = vload8(0, ecl);
+    b.es_f90 = vload8(0, ef90);
+    b.schlick = vload8(0, sch);
+    b.ec = vload8(0, ec);
+    b.coupled = vload8(0, cpl);
+    b.e_table = fc_albedo_E;
+    b.e5_table = fc_albedo_E5;
     const FcVec3x8 wo = vec3_l8(vload8(0, wx), vload8(0, wy), vload8(0, wz));
     PlainView_l8 v;
     plain_base_view_l8(&b, wo, &v);

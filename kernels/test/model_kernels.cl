@@ -22,6 +22,30 @@ __kernel void models_eval(__global const FcMaterial* mats, __global const float*
     out[4 * i + 3] = bsdf_pdf(&m, wo, wi);
 }
 
+/* models_eval through the general route of bsdf.cl's two-lobe base (specular_eval_pdf,
+ * bsdf_base_f, bsdf_base_density), which bsdf_eval and bsdf_pdf leave for the plain base's
+ * lanes where bsdf_plain holds: the two routes side by side. */
+__kernel void models_eval_general(__global const FcMaterial* mats, __global const float* dirs, __global float* out,
+                                  int n) {
+    int i = (int)get_global_id(0);
+    if (i >= n) return;
+    FcMaterial m = mats[i];
+    float3 wo = vload3(2 * i, dirs);
+    float3 wi = vload3(2 * i + 1, dirs);
+    float ps = 0.0f;
+    float3 f = (float3)(0.0f);
+    float pdf = 0.0f;
+    if (wo.z > 0.0f && wi.z > 0.0f) {
+        const float3 fs = specular_eval_pdf(&m, wo, wi, &ps);
+        f = bsdf_base_f(&m, wo, wi, fs);
+        pdf = bsdf_base_density(&m, wo, wi, ps);
+    }
+    out[4 * i + 0] = f.x;
+    out[4 * i + 1] = f.y;
+    out[4 * i + 2] = f.z;
+    out[4 * i + 3] = pdf;
+}
+
 /* bsdf_eval_pdf against bsdf_eval and bsdf_pdf on the same pairs: out[i] = 1 where any of
  * the four values differs in its bits. */
 __kernel void models_eval_pdf_bits(__global const FcMaterial* mats, __global const float* dirs, __global int* out,
