@@ -85,7 +85,7 @@ inline bool bsdf_plain(const FcMaterial* m) {
         m->fresnel != FC_FRESNEL_SCHLICK_IOR && m->fresnel != FC_FRESNEL_ONE)
         return false;
     if (ec_enabled(m) && m->alpha_x != m->alpha_y) return false; /* ec_r_dir: E leans on the azimuth */
-    return !metallic_mixed(m) && !microfacet_is_mirror(m);
+    return !microfacet_is_mirror(m);
 #else
     return false;
 #endif
@@ -137,6 +137,19 @@ inline PlainBase_l1 plain_base_of(const FcMaterial* m) {
         const float3 s_avg =
             ec_specular_albedo_of_l1(b.es_f0, b.es_f90, e_avg, ec_lookup_avg(fc_albedo_E5_avg, ndf, b.ec_r), b.ec_fms);
         b.es_den = fmax((float3)(1.0f) - s_avg, (float3)(1e-6f));
+    }
+    /* glTF's metallic mix (metallic.cl): the metal lobe's F0 and F_ms, the diffuse lobe's
+     * weight times 1 - M (specular_probability's) */
+    b.mixed = metallic_mixed(m);
+    b.metallic = 0.0f;
+    b.metal_f0 = (float3)(0.0f);
+    b.metal_fms = (float3)(0.0f);
+    if (b.mixed) {
+        const FcMaterial metal = metallic_lobe(m);
+        b.metallic = metallic_weight(m);
+        b.metal_f0 = load3p(metal.specular);
+        if (b.ec) b.metal_fms = ec_fresnel_ms(&metal, 1.0f - b.ec_loss);
+        if (b.metallic < 1.0f) b.diffuse_weight *= 1.0f - b.metallic;
     }
     return b;
 }

@@ -6,8 +6,10 @@
  * conductor (eta + i k per channel), or Schlick's (F0, F90). An isotropic lobe with
  * height-correlated masking may be energy-compensated (energy_compensation.cl: the cosine
  * lobe f_ms, sampled with probability 1 - E(wo), and a Lambert x (1 - F0) base coupled to the
- * lobe's albedo E_s instead of 1 - F0). No metallic mix or layers, and no mirror (alpha >=
- * FC_ALPHA_MIRROR). The formulas are microfacet.cl's, energy_compensation.cl's and bsdf.cl's
+ * lobe's albedo E_s instead of 1 - F0). glTF's metallic mix (metallic.cl) mixes in a metal lobe:
+ * the same microfacet lobe with Schlick's F from the base colour, F90 = 1, and its own F_ms.
+ * No layers, and no mirror (alpha >= FC_ALPHA_MIRROR). The formulas are microfacet.cl's,
+ * energy_compensation.cl's, metallic.cl's and bsdf.cl's
  * (one-sample MIS over the lobes, chosen by their estimated albedos); the scalar kernels run
  * this body at W = 1 for such materials, the packet kernel at W = 8 or 16, so both give the
  * same bits (tests/lanes_test.cpp). Needs vec3_lanes.cl, warp_lanes.cl, fresnel_lanes.cl,
@@ -23,12 +25,14 @@
  * (lum(kd') >= 0). The lanes of ec are energy-compensated, with the material's constants:
  * ec_r the tables' roughness coordinate, ec_loss 1 - E_avg, ec_fms F_ms, es_f0 and es_f90 the
  * F0 (clamped) and F90 of the lobe's albedo E_s, es_den max(1 - E_s,avg, 1e-6); coupled those
- * whose diffuse lobe is coupled to E_s (kd then the diffuse colour itself). The albedo tables
- * E and E5 (albedo_tables_*.cl) are passed in e_table and e5_table. */
+ * whose diffuse lobe is coupled to E_s (kd then the diffuse colour itself). The lanes of mixed
+ * mix in a metal lobe of weight metallic in (0, 1] (diffuse_weight then already times 1 -
+ * metallic), Schlick's F0 metal_f0 and F90 = 1, and F_ms metal_fms where compensated. The
+ * albedo tables E and E5 (albedo_tables_*.cl) are passed in e_table and e5_table. */
 typedef struct {
-    LVEC3 kd, eta, k, f0, ec_fms, es_f0, es_den;
-    LFLOAT ax, ay, ior, diffuse_weight, f90, ec_r, ec_loss, es_f90;
-    LINT ggx, beckmann, correlated, conductor, schlick, diffuse, ec, coupled;
+    LVEC3 kd, eta, k, f0, ec_fms, es_f0, es_den, metal_f0, metal_fms;
+    LFLOAT ax, ay, ior, diffuse_weight, f90, ec_r, ec_loss, es_f90, metallic;
+    LINT ggx, beckmann, correlated, conductor, schlick, diffuse, ec, coupled, mixed;
     __constant const float* e_table;
     __constant const float* e5_table;
 } LNAME(PlainBase);
@@ -53,6 +57,13 @@ inline LVEC3 LNAME(plain_base_fresnel)(const LNAME(PlainBase) * b, LFLOAT c) {
     return f;
 }
 
+/* The mixed lanes' metal lobe's Fresnel term at cosine c: Schlick's from metal_f0, F90 = 1. */
+inline LVEC3 LNAME(plain_base_metal_fresnel)(const LNAME(PlainBase) * b, LFLOAT c) {
+    return LNAME(vec3)(LNAME(fresnel_schlick_channel)(b->metal_f0.x, 1.0f, c),
+                       LNAME(fresnel_schlick_channel)(b->metal_f0.y, 1.0f, c),
+                       LNAME(fresnel_schlick_channel)(b->metal_f0.z, 1.0f, c));
+}
+
 /* The compensated lanes' albedos E and E5 at cosine mu (the tables' cell found once). */
 inline void LNAME(plain_base_albedos)(const LNAME(PlainBase) * b, LFLOAT mu, LFLOAT* e, LFLOAT* e5) {
     LINT at;
@@ -73,10 +84,19 @@ inline LVEC3 LNAME(plain_base_share)(const LNAME(PlainBase) * b, LFLOAT e, LFLOA
  * 1 without a diffuse lobe. */
 inline LFLOAT LNAME(plain_base_specular_probability)(const LNAME(PlainBase) * b, LFLOAT wo_z) {
     const LVEC3 f = LNAME(plain_base_fresnel)(b, wo_z);
-    const LFLOAT s = fmax(0.2126f * f.x + 0.7152f * f.y + 0.0722f * f.z, 0.0f);
+    LFLOAT s = fmax(0.2126f * f.x + 0.7152f * f.y + 0.0722f * f.z, 0.0f);
+    LFLOAT p1 = select((LFLOAT)(1.0f), (LFLOAT)(0.0f), b->diffuse); /* 1: no diffuse lobe */
+    if (LNAME(lanes_any)(b->mixed)) {
+        /* the metal's share of the specular choice (the diffuse's 1 - M is in diffuse_weight);
+         * a metal of weight 1 alone */
+        const LVEC3 fm = LNAME(plain_base_metal_fresnel)(b, wo_z);
+        const LFLOAT sm = fmax(0.2126f * fm.x + 0.7152f * fm.y + 0.0722f * fm.z, 0.0f);
+        s = select(s, mix(s, sm, b->metallic), b->mixed);
+        p1 = select(p1, (LFLOAT)(1.0f), b->mixed & (b->metallic >= 1.0f));
+    }
     const LFLOAT sum = s + b->diffuse_weight;
     const LFLOAT p = select((LFLOAT)(0.5f), clamp(s / sum, 0.05f, 0.95f), sum > 0.0f);
-    return select((LFLOAT)(1.0f), p, b->diffuse);
+    return select(p, (LFLOAT)(1.0f), p1 > 0.0f);
 }
 
 /* The microfacet lobe's projected area seen from w, GGX's or Beckmann's per lane. */
@@ -110,6 +130,22 @@ inline void LNAME(plain_base_view)(const LNAME(PlainBase) * b, LVEC3 wo, LNAME(P
     }
 }
 
+/* One microfacet lobe's f (no cosine) from its Fresnel term fr at the half vector and dg = D G
+ * / (4 cos_o cos_i): fr dg where ss (D > 0, a half vector, both directions above), plus f_ms =
+ * fms ms on the compensated lanes, where D may be 0 (ok: a half vector, both above); 0 where
+ * not finite, at 0 at least (microfacet_eval_at's checks). */
+inline LVEC3 LNAME(plain_base_lobe)(const LNAME(PlainBase) * b, LVEC3 fr, LFLOAT dg, LVEC3 fms, LFLOAT ms, LINT ss,
+                                    LINT ok) {
+    LVEC3 f = LNAME(vec3)(fr.x * dg, fr.y * dg, fr.z * dg);
+    if (LNAME(lanes_any)(b->ec)) {
+        const LVEC3 fss = LNAME(vec3_select)(LNAME(vec3)(0.0f, 0.0f, 0.0f), f, ss);
+        f = LNAME(vec3_select)(f, LNAME(vec3)(fms.x * ms + fss.x, fms.y * ms + fss.y, fms.z * ms + fss.z), b->ec);
+    }
+    const LINT fok = isfinite(f.x) & isfinite(f.y) & isfinite(f.z) & select(ss, ok, b->ec);
+    return LNAME(vec3_select)(LNAME(vec3)(0.0f, 0.0f, 0.0f),
+                              LNAME(vec3)(fmax(f.x, 0.0f), fmax(f.y, 0.0f), fmax(f.z, 0.0f)), fok);
+}
+
 /* f(wo, wi) (1/sr) and, in *pdf, the density with which plain_base_sample draws wi; 0 for both
  * where wo or wi is at or below the surface. The microfacet lobe: D G F / (4 cos_o cos_i) at
  * the half vector, its density D / (4 wo.z (1 + Lambda(wo))) (visible normals, microfacet.cl),
@@ -134,25 +170,20 @@ inline LVEC3 LNAME(plain_base_eval_pdf)(const LNAME(PlainBase) * b, const LNAME(
     const LFLOAT g_cor = 1.0f / (area_o / wo.z + area_i / wi.z - 1.0f);
     const LFLOAT g = select((LFLOAT)(0.0f), select(g_sep, g_cor, b->correlated), front);
     const LFLOAT g_over = g / (4.0f * wo.z * wi.z);
-    const LVEC3 fr = LNAME(plain_base_fresnel)(b, wo_h);
     const LFLOAT dg = d * g_over;
-    LVEC3 fs = LNAME(vec3)(fr.x * dg, fr.y * dg, fr.z * dg);
     LFLOAT ps = d / (4.0f * area_o);
     ps = select((LFLOAT)(0.0f), fmax(ps, 0.0f), isfinite(ps) & hv);
     const LFLOAT cos_pdf = LNAME(cosine_hemisphere_pdf)(wo.z, wi.z);
+    const LINT ok = hv & above, ss = (d > 0.0f) & ok;
     LVEC3 kd = b->kd;
+    LFLOAT ms = (LFLOAT)(0.0f);
     if (LNAME(lanes_any)(b->ec)) {
-        /* f_ms = F_ms (1 - E(wo)) (1 - E(wi)) / (pi (1 - E_avg)) added to the lobe (where D is
-         * 0 too), sampled by the cosine with probability p_ms; the coupled base's albedo
-         * kd (1 - E_s(wo)) (1 - E_s(wi)) / (1 - E_s,avg) */
+        /* f_ms's factor (1 - E(wo)) (1 - E(wi)) / (pi (1 - E_avg)), the lobe sampled by the
+         * cosine with probability p_ms, and the coupled base's albedo kd (1 - E_s(wo)) (1 -
+         * E_s(wi)) / (1 - E_s,avg) */
         LFLOAT e_i, e5_i;
         LNAME(plain_base_albedos)(b, wi.z, &e_i, &e5_i);
-        const LFLOAT ms =
-            select((LFLOAT)(0.0f), LNAME(ec_ms_factor)(view->e_o, e_i, b->ec_loss), b->ec & (b->ec_loss > 1e-6f));
-        const LINT ss = (d > 0.0f) & hv & above;
-        const LVEC3 fss = LNAME(vec3_select)(LNAME(vec3)(0.0f, 0.0f, 0.0f), fs, ss);
-        fs = LNAME(vec3_select)(
-            fs, LNAME(vec3)(b->ec_fms.x * ms + fss.x, b->ec_fms.y * ms + fss.y, b->ec_fms.z * ms + fss.z), b->ec);
+        ms = select((LFLOAT)(0.0f), LNAME(ec_ms_factor)(view->e_o, e_i, b->ec_loss), b->ec & (b->ec_loss > 1e-6f));
         const LFLOAT q = view->p_ms * cos_pdf + (1.0f - view->p_ms) * ps;
         ps = select(ps, select((LFLOAT)(0.0f), fmax(q, 0.0f), isfinite(q)), b->ec);
         const LVEC3 share_i = LNAME(plain_base_share)(b, e_i, e5_i);
@@ -161,15 +192,21 @@ inline LVEC3 LNAME(plain_base_eval_pdf)(const LNAME(PlainBase) * b, const LNAME(
                         view->share_o.z * share_i.z / b->es_den.z);
         kd = LNAME(vec3_select)(kd, LNAME(vec3)(kd.x * c.x, kd.y * c.y, kd.z * c.z), b->coupled);
     }
-    const LINT fok =
-        isfinite(fs.x) & isfinite(fs.y) & isfinite(fs.z) & select(d > 0.0f, (LINT)(-1), b->ec) & hv & above;
-    fs = LNAME(vec3_select)(LNAME(vec3)(0.0f, 0.0f, 0.0f),
-                            LNAME(vec3)(fmax(fs.x, 0.0f), fmax(fs.y, 0.0f), fmax(fs.z, 0.0f)), fok);
+    const LVEC3 fs = LNAME(plain_base_lobe)(b, LNAME(plain_base_fresnel)(b, wo_h), dg, b->ec_fms, ms, ss, ok);
     /* the lobes mixed: f = kd / pi + fs, pdf = (1 - p) cos_i / pi + p ps */
     const LFLOAT p = view->p;
     *pdf = select((LFLOAT)(0.0f), (1.0f - p) * cos_pdf + p * ps, above);
     const LFLOAT k = select((LFLOAT)(0.0f), (LFLOAT)(FC_INV_PI), above);
-    return LNAME(vec3)(kd.x * k + fs.x, kd.y * k + fs.y, kd.z * k + fs.z);
+    LVEC3 f = LNAME(vec3)(kd.x * k + fs.x, kd.y * k + fs.y, kd.z * k + fs.z);
+    if (LNAME(lanes_any)(b->mixed)) {
+        /* glTF's mix, f = mix(f, f_metal, M): the metal's lobe is this one with its own F and
+         * F_ms, so it has the same density */
+        const LVEC3 fm =
+            LNAME(plain_base_lobe)(b, LNAME(plain_base_metal_fresnel)(b, wo_h), dg, b->metal_fms, ms, ss, ok);
+        const LFLOAT m = b->metallic;
+        f = LNAME(vec3_select)(f, LNAME(vec3)(mix(f.x, fm.x, m), mix(f.y, fm.y, m), mix(f.z, fm.z, m)), b->mixed);
+    }
+    return f;
 }
 
 /* A direction wi for wo from u0, u1 (the lobe's sample) and u2 (the lobe's choice), uniform in

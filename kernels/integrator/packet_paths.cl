@@ -63,10 +63,11 @@ inline void set_lane3(float* a, int j, float3 v) {
  * lane arrays; the masks stored as -1 or 0). */
 typedef struct {
     float kd[3 * FC_PACKET_W], eta[3 * FC_PACKET_W], k[3 * FC_PACKET_W], f0[3 * FC_PACKET_W], fms[3 * FC_PACKET_W],
-        es_f0[3 * FC_PACKET_W], es_den[3 * FC_PACKET_W], ax[FC_PACKET_W], ay[FC_PACKET_W], ior[FC_PACKET_W],
-        dw[FC_PACKET_W], f90[FC_PACKET_W], ec_r[FC_PACKET_W], ec_loss[FC_PACKET_W], es_f90[FC_PACKET_W];
+        es_f0[3 * FC_PACKET_W], es_den[3 * FC_PACKET_W], mf0[3 * FC_PACKET_W], mfms[3 * FC_PACKET_W],
+        metallic[FC_PACKET_W], ax[FC_PACKET_W], ay[FC_PACKET_W], ior[FC_PACKET_W], dw[FC_PACKET_W], f90[FC_PACKET_W],
+        ec_r[FC_PACKET_W], ec_loss[FC_PACKET_W], es_f90[FC_PACKET_W];
     int ggx[FC_PACKET_W], cor[FC_PACKET_W], cond[FC_PACKET_W], schlick[FC_PACKET_W], diff[FC_PACKET_W], ec[FC_PACKET_W],
-        coupled[FC_PACKET_W];
+        coupled[FC_PACKET_W], mixed[FC_PACKET_W];
 } PacketPlain;
 
 /* Lane j's parameters from a plain base's. */
@@ -93,18 +94,22 @@ inline void packet_plain_set(PacketPlain* q, int j, const PlainBase_l1* b) {
     q->diff[j] = b->diffuse ? -1 : 0;
     q->ec[j] = b->ec ? -1 : 0;
     q->coupled[j] = b->coupled ? -1 : 0;
+    set_lane3(q->mf0, j, b->metal_f0);
+    set_lane3(q->mfms, j, b->metal_fms);
+    q->metallic[j] = b->metallic;
+    q->mixed[j] = b->mixed ? -1 : 0;
 }
 
 /* Parameters every lane can evaluate, for a lane before its first plain surface: a
  * dielectric Beckmann base of alpha 1, no diffuse lobe, no compensation. */
 inline PlainBase_l1 packet_unplain(void) {
     PlainBase_l1 b;
-    b.kd = b.k = b.f0 = b.ec_fms = b.es_f0 = (float3)(0.0f);
+    b.kd = b.k = b.f0 = b.ec_fms = b.es_f0 = b.metal_f0 = b.metal_fms = (float3)(0.0f);
     b.eta = b.es_den = (float3)(1.0f);
     b.ax = b.ay = b.f90 = b.ec_loss = b.es_f90 = 1.0f;
     b.ior = 1.5f;
-    b.diffuse_weight = b.ec_r = 0.0f;
-    b.ggx = b.correlated = b.conductor = b.schlick = b.diffuse = b.ec = b.coupled = 0;
+    b.diffuse_weight = b.ec_r = b.metallic = 0.0f;
+    b.ggx = b.correlated = b.conductor = b.schlick = b.diffuse = b.ec = b.coupled = b.mixed = 0;
     b.beckmann = 1;
     b.e_table = fc_albedo_E;
     b.e5_table = fc_albedo_E5;
@@ -136,6 +141,10 @@ inline void packet_plain_base(LINT lanes, const PacketPlain* q, LNAME(PlainBase)
     b->es_f0 = l3_load(q->es_f0);
     b->es_f90 = LLOAD(q->es_f90);
     b->es_den = l3_load(q->es_den);
+    b->mixed = lanes & LLOAD(q->mixed);
+    b->metallic = LLOAD(q->metallic);
+    b->metal_f0 = l3_load(q->mf0);
+    b->metal_fms = l3_load(q->mfms);
     b->e_table = fc_albedo_E;
     b->e5_table = fc_albedo_E5;
 }

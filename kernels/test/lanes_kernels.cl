@@ -381,6 +381,10 @@ inline void lanes_plain_extras(__global const LanesIn* in, int j, PlainBase_l1* 
     b->es_den = (float3)(0.4f + 0.5f * f, 0.9f, 0.3f + 0.6f * g);
     b->e_table = fc_albedo_E;
     b->e5_table = fc_albedo_E5;
+    b->mixed = (n >> 14) % 3u != 0u;
+    b->metallic = (n >> 14) % 3u == 1u ? 1.0f : 0.1f + 0.8f * f;
+    b->metal_f0 = (float3)(0.9f * g, 0.7f, 0.2f + 0.5f * f);
+    b->metal_fms = (float3)(0.5f * f, 0.8f, 0.3f + 0.6f * g);
 }
 
 __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* out) {
@@ -391,7 +395,8 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
     float ex[8], ey[8], ez[8], qx[8], qy[8], qz[8];
     int ggx[8], cor[8], cond[8], diff[8];
     float f0[24], fms[24], ef0[24], eden[24], f90[8], ecr[8], ecl[8], ef90[8];
-    int sch[8], ec[8], cpl[8];
+    int sch[8], ec[8], cpl[8], mix8[8];
+    float mf0[24], mfms[24], met[8];
     for (int j = 0; j < 8; ++j) {
         PlainBase_l1 b;
         float3 wo, wl, kd;
@@ -411,6 +416,8 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
         set_lane3_8(eden, j, b.es_den);
         f90[j] = b.f90, ecr[j] = b.ec_r, ecl[j] = b.ec_loss, ef90[j] = b.es_f90;
         sch[j] = b.schlick ? -1 : 0, ec[j] = b.ec ? -1 : 0, cpl[j] = b.coupled ? -1 : 0;
+        set_lane3_8(mf0, j, b.metal_f0), set_lane3_8(mfms, j, b.metal_fms);
+        met[j] = b.metallic, mix8[j] = b.mixed ? -1 : 0;
         PlainView_l1 v;
         plain_base_view_l1(&b, wo, &v);
         float3 wi, f, weight;
@@ -457,6 +464,10 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
     b.coupled = vload8(0, cpl);
     b.e_table = fc_albedo_E;
     b.e5_table = fc_albedo_E5;
+    b.metal_f0 = vec3_l8(vload8(0, mf0), vload8(1, mf0), vload8(2, mf0));
+    b.metal_fms = vec3_l8(vload8(0, mfms), vload8(1, mfms), vload8(2, mfms));
+    b.metallic = vload8(0, met);
+    b.mixed = vload8(0, mix8);
     const FcVec3x8 wo = vec3_l8(vload8(0, wx), vload8(0, wy), vload8(0, wz));
     PlainView_l8 v;
     plain_base_view_l8(&b, wo, &v);
