@@ -149,7 +149,8 @@ inline LVEC3 LNAME(plain_base_lobe)(const LNAME(PlainBase) * b, LVEC3 fr, LFLOAT
 /* f(wo, wi) (1/sr) and, in *pdf, the density with which plain_base_sample draws wi; 0 for both
  * where wo or wi is at or below the surface. The microfacet lobe: D G F / (4 cos_o cos_i) at
  * the half vector, its density D / (4 wo.z (1 + Lambda(wo))) (visible normals, microfacet.cl),
- * 0 for a degenerate half vector and where D is 0. */
+ * 0 for a degenerate half vector and where D is 0; compensated, f_ms added and its cosine
+ * density mixed in with p_ms. A mixed lane's f is mix(f, f_metal, M), at the same density. */
 inline LVEC3 LNAME(plain_base_eval_pdf)(const LNAME(PlainBase) * b, const LNAME(PlainView) * view, LVEC3 wo, LVEC3 wi,
                                         LFLOAT* pdf) {
     const LINT above = (wo.z > 0.0f) & (wi.z > 0.0f);
