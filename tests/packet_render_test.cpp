@@ -341,7 +341,8 @@ TEST(PacketRender, SameImageAsTheScalarKernelWithGlass) {
 
 // glTF's layers, metal and anisotropy per lane: material_grid's models with a clearcoat, a
 // sheen, metallic mixes, anisotropic GGX, a perfect mirror (a delta BSDF: no light sample) and
-// EON among them, and then every base colour textured (the textured material copied per lane).
+// EON among them, and then every base colour textured (the textured material copied per lane);
+// then gltf_materials' compensated lobes with metallic mixes (the plain base's lanes).
 TEST(PacketRender, SameImageAsTheScalarKernelWithLayersAndMetal) {
     Scene scene = load_scene(test::scenes_dir() + "/material_grid.json");
     for (std::size_t k = 0; k < scene.materials.size(); ++k) {
@@ -383,6 +384,17 @@ TEST(PacketRender, SameImageAsTheScalarKernelWithLayersAndMetal) {
     for (Material& m : scene.materials) m.textures.base_color = 0;
     ASSERT_NE(scene_features(scene) & feature::kTEXTURES, 0u);
     expect_packets_match_the_scalar_kernel(scene, "material_grid, layered, textured", "16");
+    // glTF's defaults, energy-compensated Schlick lobes, mixed with metal at fractional M and
+    // at 1 (the plain base's compensated and metallic lanes); its rays traced one by one, as
+    // in ...WithGlass (its glass block's bottom face lies in the floor's plane)
+    Scene gltf = load_scene(test::scenes_dir() + "/gltf_materials.gltf");
+    int mixed = 0;
+    for (Material& m : gltf.materials)
+        if (m.specular_model == FC_SPECULAR_MICROFACET && m.emission == glm::vec3(0.0f))
+            m.metallic = ++mixed % 2 ? 0.4f : 1.0f;
+    ASSERT_GE(mixed, 2);
+    ScopedEnv alone("FACET_PACKET_TRACE", "0");
+    for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(gltf, "gltf_materials, metallic mixes", w);
 }
 
 TEST(PacketRender, PickedOnlyWhereTheKernelCoversTheProgram) {
