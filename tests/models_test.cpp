@@ -542,6 +542,15 @@ double plain_reference(const FcMaterial& m, int c, V3 v, V3 l) {
     return (1.0 - p) * l.z / kPi + p * d / (4.0 * v.z * (1.0 + lo));
 }
 
+// Each of `materials` `per` times, with a random pair of directions above the surface (z at
+// least min_z) each time, appended to mats, wo and wi.
+void random_pairs(const std::vector<FcMaterial>& materials, int per, double min_z, std::mt19937& rng,
+                  std::vector<FcMaterial>& mats, std::vector<V3>& wo, std::vector<V3>& wi) {
+    for (const FcMaterial& m : materials)
+        for (int k = 0; k < per; ++k)
+            mats.push_back(m), wo.push_back(random_dir(rng, min_z)), wi.push_back(random_dir(rng, min_z));
+}
+
 std::vector<FcMaterial> plain_materials(std::mt19937& rng, int n) {
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::vector<FcMaterial> mats;
@@ -572,9 +581,7 @@ TEST(Models, PlainBaseMatchesSourceFormulas) {
     std::mt19937 rng(41);
     std::vector<FcMaterial> mats;
     std::vector<V3> wo, wi;
-    for (const FcMaterial& m : plain_materials(rng, 72))
-        for (int k = 0; k < 40; ++k)
-            mats.push_back(m), wo.push_back(random_dir(rng, 0.05)), wi.push_back(random_dir(rng, 0.05));
+    random_pairs(plain_materials(rng, 72), 40, 0.05, rng, mats, wo, wi);
     std::vector<float> out = eval_on_device(mats, wo, wi);
     int bad = 0;
     for (std::size_t i = 0; i < mats.size(); ++i)
@@ -617,9 +624,7 @@ TEST(Models, CompensatedPlainBaseMatchesTheGeneralRoute) {
     std::mt19937 rng(47);
     std::vector<FcMaterial> mats;
     std::vector<V3> wo, wi;
-    for (const FcMaterial& m : compensated_plain_materials(rng, 72))
-        for (int k = 0; k < 40; ++k)
-            mats.push_back(m), wo.push_back(random_dir(rng, 0.02)), wi.push_back(random_dir(rng, 0.02));
+    random_pairs(compensated_plain_materials(rng, 72), 40, 0.02, rng, mats, wo, wi);
     std::vector<float> lanes = eval_on_device(mats, wo, wi),
                        general = eval_on_device(mats, wo, wi, "models_eval_general");
     int bad = 0;

@@ -33,17 +33,12 @@ __kernel void models_eval_general(__global const FcMaterial* mats, __global cons
     float3 wo = vload3(2 * i, dirs);
     float3 wi = vload3(2 * i + 1, dirs);
     float ps = 0.0f;
-    float3 f = (float3)(0.0f);
-    float pdf = 0.0f;
+    float4 r = (float4)(0.0f);
     if (wo.z > 0.0f && wi.z > 0.0f) {
         const float3 fs = specular_eval_pdf(&m, wo, wi, &ps);
-        f = bsdf_base_f(&m, wo, wi, fs);
-        pdf = bsdf_base_density(&m, wo, wi, ps);
+        r = (float4)(bsdf_base_f(&m, wo, wi, fs), bsdf_base_density(&m, wo, wi, ps));
     }
-    out[4 * i + 0] = f.x;
-    out[4 * i + 1] = f.y;
-    out[4 * i + 2] = f.z;
-    out[4 * i + 3] = pdf;
+    vstore4(r, i, out);
 }
 
 /* bsdf_eval_pdf against bsdf_eval and bsdf_pdf on the same pairs: out[i] = 1 where any of
