@@ -84,7 +84,6 @@ inline bool bsdf_plain(const FcMaterial* m) {
     if (m->fresnel != FC_FRESNEL_DIELECTRIC && m->fresnel != FC_FRESNEL_CONDUCTOR && m->fresnel != FC_FRESNEL_SCHLICK &&
         m->fresnel != FC_FRESNEL_SCHLICK_IOR && m->fresnel != FC_FRESNEL_ONE)
         return false;
-    if (ec_enabled(m) && m->alpha_x != m->alpha_y) return false; /* ec_r_dir: E leans on the azimuth */
     return !microfacet_is_mirror(m);
 #else
     return false;

@@ -60,11 +60,7 @@ inline float ec_r(const FcMaterial* m) {
  * alpha^2 = cos^2(theta) (alpha_x^2 + alpha_y^2) / 2 + w.y^2 alpha_x^2 + w.x^2 alpha_y^2
  * (an empirical fit, docs/brdf.md "Anisotropy"). Symmetric in the two directions of f_ms. */
 inline float ec_r_dir_from(const FcMaterial* m, float3 w, float r) {
-    float ax = fmax(m->alpha_x, 0.0f), ay = fmax(m->alpha_y, 0.0f);
-    if (ax == ay) return r;
-    float ms = 0.5f * (ax * ax + ay * ay), s2 = fmax(1.0f - w.z * w.z, 0.0f);
-    float a2 = ms + s2 * (w.y * w.y * ax * ax + w.x * w.x * ay * ay - s2 * ms);
-    return clamp(sqrt(sqrt(a2)), 0.0f, 1.0f);
+    return ec_r_dir_l1(fmax(m->alpha_x, 0.0f), fmax(m->alpha_y, 0.0f), w, r); /* energy_compensation_lanes.cl */
 }
 
 /* ec_r_dir_from with r = ec_r(m), the isotropic lobe's. */

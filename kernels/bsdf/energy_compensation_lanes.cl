@@ -48,6 +48,15 @@ inline LFLOAT LNAME(ec_table_at)(__constant const float* table, LINT at, LFLOAT 
     return mix(a, b, ty);
 }
 
+/* The tables' roughness coordinate of an anisotropic lobe (alpha_x ax, alpha_y ay, both at 0
+ * at least) seen from unit direction w, energy_compensation.cl's empirical fit (ec_r_dir); r,
+ * the isotropic coordinate, where ax = ay. */
+inline LFLOAT LNAME(ec_r_dir)(LFLOAT ax, LFLOAT ay, LVEC3 w, LFLOAT r) {
+    const LFLOAT ms = 0.5f * (ax * ax + ay * ay), s2 = fmax(1.0f - w.z * w.z, 0.0f);
+    const LFLOAT a2 = ms + s2 * (w.y * w.y * ax * ax + w.x * w.x * ay * ay - s2 * ms);
+    return select(clamp(sqrt(sqrt(a2)), 0.0f, 1.0f), r, ax == ay);
+}
+
 /* f_ms's factor (1 - E(mu_o)) (1 - E(mu_i)) / (pi (1 - E_avg)) from E(mu_o), E(mu_i) and
  * loss = 1 - E_avg (above 1e-6: the caller's test); f_ms is F_ms times it. */
 inline LFLOAT LNAME(ec_ms_factor)(LFLOAT e_o, LFLOAT e_i, LFLOAT loss) {

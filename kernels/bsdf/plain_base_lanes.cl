@@ -109,12 +109,27 @@ inline LFLOAT LNAME(plain_base_area)(const LNAME(PlainBase) * b, LVEC3 w) {
 
 /* What a plain base's evaluation and sampling share for one wo: the projected area of the
  * microsurface seen from wo, wo.z (1 + Lambda(wo)), and the specular lobe's probability; for
- * the compensated lanes E(wo), the probability p_ms of sampling f_ms within the specular lobe,
- * 1 - E(wo) in [0, 1] (0 elsewhere), and the coupled diffuse base's share seen from wo. */
+ * the compensated lanes E(wo) at the roughness seen from wo (ec_r_dir: an anisotropic lobe's
+ * leans on the azimuth), the probability p_ms of sampling f_ms within the specular lobe, 1 -
+ * E(wo) in [0, 1] (0 elsewhere), and the coupled diffuse base's share seen from wo (from E and
+ * E5 at the lobe's mean roughness, as energy_compensation.cl reads them). */
 typedef struct {
     LFLOAT area_o, p, e_o, p_ms;
     LVEC3 share_o;
 } LNAME(PlainView);
+
+/* The compensated lanes' E at cosine w.z and the roughness seen from w, where the lobe is
+ * anisotropic; e, E at the mean roughness, elsewhere. */
+inline LFLOAT LNAME(plain_base_e_dir)(const LNAME(PlainBase) * b, LVEC3 w, LFLOAT e) {
+    const LINT aniso = b->ec & (b->ax != b->ay);
+    if (!LNAME(lanes_any)(aniso)) return e;
+    LINT at;
+    LFLOAT tx, ty;
+    LNAME(ec_cell)
+    (select((LINT)(0), (LINT)(1), b->ggx), w.z, LNAME(ec_r_dir)(fmax(b->ax, 0.0f), fmax(b->ay, 0.0f), w, b->ec_r), &at,
+     &tx, &ty);
+    return select(e, LNAME(ec_table_at)(b->e_table, at, tx, ty), aniso);
+}
 
 inline void LNAME(plain_base_view)(const LNAME(PlainBase) * b, LVEC3 wo, LNAME(PlainView) * v) {
     v->area_o = LNAME(plain_base_area)(b, wo);
@@ -123,10 +138,11 @@ inline void LNAME(plain_base_view)(const LNAME(PlainBase) * b, LVEC3 wo, LNAME(P
     v->p_ms = (LFLOAT)(0.0f);
     v->share_o = LNAME(vec3)(0.0f, 0.0f, 0.0f);
     if (LNAME(lanes_any)(b->ec)) {
-        LFLOAT e5;
-        LNAME(plain_base_albedos)(b, wo.z, &v->e_o, &e5);
+        LFLOAT e, e5;
+        LNAME(plain_base_albedos)(b, wo.z, &e, &e5);
+        v->share_o = LNAME(plain_base_share)(b, e, e5);
+        v->e_o = LNAME(plain_base_e_dir)(b, wo, e);
         v->p_ms = select((LFLOAT)(0.0f), clamp(1.0f - v->e_o, 0.0f, 1.0f), b->ec);
-        v->share_o = LNAME(plain_base_share)(b, v->e_o, e5);
     }
 }
 
@@ -184,7 +200,8 @@ inline LVEC3 LNAME(plain_base_eval_pdf)(const LNAME(PlainBase) * b, const LNAME(
          * E_s(wi)) / (1 - E_s,avg) */
         LFLOAT e_i, e5_i;
         LNAME(plain_base_albedos)(b, wi.z, &e_i, &e5_i);
-        ms = select((LFLOAT)(0.0f), LNAME(ec_ms_factor)(view->e_o, e_i, b->ec_loss), b->ec & (b->ec_loss > 1e-6f));
+        ms = select((LFLOAT)(0.0f), LNAME(ec_ms_factor)(view->e_o, LNAME(plain_base_e_dir)(b, wi, e_i), b->ec_loss),
+                    b->ec & (b->ec_loss > 1e-6f));
         const LFLOAT q = view->p_ms * cos_pdf + (1.0f - view->p_ms) * ps;
         ps = select(ps, select((LFLOAT)(0.0f), fmax(q, 0.0f), isfinite(q)), b->ec);
         const LVEC3 share_i = LNAME(plain_base_share)(b, e_i, e5_i);

@@ -372,7 +372,7 @@ inline void lanes_plain_extras(__global const LanesIn* in, int j, PlainBase_l1* 
     b->f90 = (n >> 11) & 1u ? 1.0f : 0.3f + 0.6f * g;
     b->ec = b->correlated && ((n >> 12) & 1u);
     b->coupled = b->ec && b->diffuse && ((n >> 13) & 1u);
-    if (b->ec) b->ay = b->ax;
+    if (b->ec && ((n >> 16) & 1u)) b->ay = b->ax; /* half the compensated lanes isotropic */
     b->ec_r = sqrt(sqrt(b->ax));
     b->ec_loss = 0.02f + 0.5f * g;
     b->ec_fms = (float3)(0.3f + 0.6f * f, 0.9f * g, 0.5f);
