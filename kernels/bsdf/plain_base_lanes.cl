@@ -3,12 +3,12 @@
  * diffuse colour, times 1 - F0 for Lambert x (1 - F0)), or none, under a rough microfacet lobe
  * of GGX or Beckmann normals, sampled as visible normals, with Smith's separable or
  * height-correlated masking and the exact Fresnel term of a dielectric (index ior) or a
- * conductor (eta + i k per channel), or Schlick's (F0, F90). An isotropic lobe with
- * height-correlated masking may be energy-compensated (energy_compensation.cl: the cosine
- * lobe f_ms, sampled with probability 1 - E(wo), and a Lambert x (1 - F0) base coupled to the
- * lobe's albedo E_s instead of 1 - F0). glTF's metallic mix (metallic.cl) mixes in a metal lobe:
- * the same microfacet lobe with Schlick's F from the base colour, F90 = 1, and its own F_ms.
- * No layers, and no mirror (alpha >= FC_ALPHA_MIRROR). The formulas are microfacet.cl's,
+ * conductor (eta + i k per channel), or Schlick's (F0, F90). A lobe with height-correlated
+ * masking may be energy-compensated (energy_compensation.cl: the cosine lobe f_ms, sampled with
+ * probability 1 - E(wo), an anisotropic lobe's E read at the roughness seen from each
+ * direction, and a Lambert x (1 - F0) base coupled to the lobe's albedo E_s instead of 1 - F0). glTF's metallic mix
+ * (metallic.cl) mixes in a metal lobe: the same microfacet lobe with Schlick's F from the base colour, F90 = 1, and its
+ * own F_ms. No layers, and no mirror (alpha >= FC_ALPHA_MIRROR). The formulas are microfacet.cl's,
  * energy_compensation.cl's, metallic.cl's and bsdf.cl's
  * (one-sample MIS over the lobes, chosen by their estimated albedos); the scalar kernels run
  * this body at W = 1 for such materials, the packet kernel at W = 8 or 16, so both give the
