@@ -45,10 +45,10 @@ expect info-packet-rays 0 "their rays traced in packets \(32 triangles: in packe
     env -u FACET_PACKET_PATHS -u FACET_PACKET_TRACE "$FACET" info "$SCENES/cornell_box.json"
 expect info-packet-rays-forced 0 "their rays traced one by one \(FACET_PACKET_TRACE=0\)" -- \
     env -u FACET_PACKET_PATHS FACET_PACKET_TRACE=0 "$FACET" info "$SCENES/cornell_box.json"
-# ...their other BSDFs per lane (material_grid's seven models, glass_metal_sky's glass and metals).
-expect info-paths-bsdf-per-lane 0 "paths +in packets of 8 .*, BSDFs other than a Lambertian lobe per lane, their rays" -- \
+# ...their plain microfacet bases in lanes and other BSDFs per lane (material_grid, glass_metal_sky).
+expect info-paths-bsdf-per-lane 0 "paths +in packets of 8 .*, plain microfacet bases .docs/performance.md. in lanes, other BSDFs per lane, their rays" -- \
     env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/material_grid.json"
-expect info-paths-glass 0 "paths +in packets of 8 .*, BSDFs other than a Lambertian lobe per lane, their rays" -- \
+expect info-paths-glass 0 "paths +in packets of 8 .*, plain microfacet bases .docs/performance.md. in lanes, other BSDFs per lane, their rays" -- \
     env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/glass_metal_sky.json"
 # A Lambertian sphere lit by an emitting sphere: spheres are covered, sphere lights are not.
 expect info-paths-sphere-light 0 "paths +one a work-item \(packets need" -- \

@@ -98,7 +98,9 @@ int run_info(const InfoOptions& opt) {
                packet_paths_for(cpu, 8, scene_features(scene), lights_in_packets(scene), dev.params.sampler, false)
                    ? fmt::format("in packets of 8 on CPUs with 8-wide vectors, of 16 with 16-wide ones, {}{}; one "
                                  "a work-item on GPUs",
-                                 lambertian_materials(scene) ? "" : "BSDFs other than a Lambertian lobe per lane, ",
+                                 lambertian_materials(scene)
+                                     ? ""
+                                     : "plain microfacet bases (docs/performance.md) in lanes, other BSDFs per lane, ",
                                  packet_rays_said(scene_features(scene), b.triangles))
                : packets_off && std::string(packets_off) == "0"
                    ? std::string("one a work-item (FACET_PACKET_PATHS=0)")
