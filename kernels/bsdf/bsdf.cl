@@ -95,9 +95,10 @@ inline bool bsdf_plain(const FcMaterial* m) {
  * finite. */
 inline PlainBase_l1 plain_base_of(const FcMaterial* m) {
     PlainBase_l1 b;
+    const float3 f0 = fresnel_f0(m);
     b.coupled = diffuse_coupled(m);
     b.kd = m->diffuse_model == FC_DIFFUSE_NONE ? (float3)(0.0f) : material_diffuse(m);
-    if (m->diffuse_model == FC_DIFFUSE_LAMBERT_1MF0 && !b.coupled) b.kd *= (float3)(1.0f) - fresnel_f0(m);
+    if (m->diffuse_model == FC_DIFFUSE_LAMBERT_1MF0 && !b.coupled) b.kd *= (float3)(1.0f) - f0;
     b.eta = load3p(m->eta);
     b.k = load3p(m->k);
     b.ax = m->alpha_x;
@@ -120,6 +121,7 @@ inline PlainBase_l1 plain_base_of(const FcMaterial* m) {
     b.e_table = fc_albedo_E;
     b.e5_table = fc_albedo_E5;
     b.ec_r = 0.0f;
+    float e_avg = 0.0f;
     b.ec_loss = 1.0f;
     b.ec_fms = (float3)(0.0f);
     b.es_f0 = (float3)(0.0f);
@@ -128,10 +130,10 @@ inline PlainBase_l1 plain_base_of(const FcMaterial* m) {
     if (b.ec) {
         const int ndf = ec_ndf(m);
         b.ec_r = ec_r(m);
-        const float e_avg = ec_lookup_avg(fc_albedo_E_avg, ndf, b.ec_r);
+        e_avg = ec_lookup_avg(fc_albedo_E_avg, ndf, b.ec_r);
         b.ec_loss = 1.0f - e_avg;
         b.ec_fms = ec_fresnel_ms(m, e_avg);
-        b.es_f0 = clamp(fresnel_f0(m), 0.0f, 1.0f);
+        b.es_f0 = clamp(f0, 0.0f, 1.0f);
         b.es_f90 = fresnel_f90(m);
         const float3 s_avg =
             ec_specular_albedo_of_l1(b.es_f0, b.es_f90, e_avg, ec_lookup_avg(fc_albedo_E5_avg, ndf, b.ec_r), b.ec_fms);
@@ -144,10 +146,10 @@ inline PlainBase_l1 plain_base_of(const FcMaterial* m) {
     b.metal_f0 = (float3)(0.0f);
     b.metal_fms = (float3)(0.0f);
     if (b.mixed) {
-        const FcMaterial metal = metallic_lobe(m);
+        /* metallic_lobe's F0 (the base colour) and F90 = 1, without copying the material */
         b.metallic = metallic_weight(m);
-        b.metal_f0 = load3p(metal.specular);
-        if (b.ec) b.metal_fms = ec_fresnel_ms(&metal, 1.0f - b.ec_loss);
+        b.metal_f0 = clamp(material_diffuse(m), 0.0f, 1.0f);
+        if (b.ec) b.metal_fms = ec_fresnel_ms_of(ec_schlick_avg(b.metal_f0, 1.0f), e_avg);
         if (b.metallic < 1.0f) b.diffuse_weight *= 1.0f - b.metallic;
     }
     return b;

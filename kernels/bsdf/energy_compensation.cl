@@ -103,18 +103,15 @@ inline float ec_E_dir(const FcMaterial* m, float3 w) { return ec_lookup(fc_albed
 
 /* F_avg = 2 int F(mu) mu dmu. Schlick's F = F0 + (F90 - F0)(1 - mu)^5 has it in closed
  * form, F0 + (F90 - F0) / 21, as 2 int (1 - mu)^5 mu dmu = 2 B(2, 6) = 1/21 (what the
- * quadrature below gives it too, up to rounding, being exact for polynomials of degree 15);
- * the exact Fresnel terms by 8-point Gauss-Legendre on [0, 1]. */
+ * quadrature below gives it too, up to rounding, being exact for polynomials of degree 15):
+ * ec_schlick_avg. The exact Fresnel terms by 8-point Gauss-Legendre on [0, 1]. */
+inline float3 ec_schlick_avg(float3 f0, float f90) { return f0 + ((float3)(f90)-f0) * (1.0f / 21.0f); }
+
+/* F_avg of the material's own Fresnel term. */
 inline float3 ec_fresnel_avg(const FcMaterial* m) {
     if (m->fresnel == FC_FRESNEL_ONE) return (float3)(1.0f);
-    if (m->fresnel == FC_FRESNEL_SCHLICK) {
-        const float3 f0 = load3p(m->specular);
-        return f0 + ((float3)(fresnel_f90(m)) - f0) * (1.0f / 21.0f);
-    }
-    if (m->fresnel == FC_FRESNEL_SCHLICK_IOR) {
-        const float f0 = f0_from_ior(m->ior);
-        return (float3)(f0 + (1.0f - f0) * (1.0f / 21.0f));
-    }
+    if (m->fresnel == FC_FRESNEL_SCHLICK) return ec_schlick_avg(load3p(m->specular), fresnel_f90(m));
+    if (m->fresnel == FC_FRESNEL_SCHLICK_IOR) return ec_schlick_avg((float3)(f0_from_ior(m->ior)), 1.0f);
     const float t[4] = {0.18343464249564980f, 0.52553240991632899f, 0.79666647741362674f, 0.96028985649753623f};
     const float w[4] = {0.36268378337836198f, 0.31370664587788729f, 0.22238103445337447f, 0.10122853629037626f};
     float3 sum = (float3)(0.0f);
@@ -126,10 +123,13 @@ inline float3 ec_fresnel_avg(const FcMaterial* m) {
 }
 
 /* F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), per channel, in [0, 1]. */
-inline float3 ec_fresnel_ms(const FcMaterial* m, float e_avg) {
-    float3 fa = clamp(ec_fresnel_avg(m), 0.0f, 1.0f);
+inline float3 ec_fresnel_ms_of(float3 f_avg, float e_avg) {
+    float3 fa = clamp(f_avg, 0.0f, 1.0f);
     return fa * fa * e_avg / ((float3)(1.0f) - fa * (1.0f - e_avg));
 }
+
+/* The same from the material's own F_avg. */
+inline float3 ec_fresnel_ms(const FcMaterial* m, float e_avg) { return ec_fresnel_ms_of(ec_fresnel_avg(m), e_avg); }
 
 /* f_ms(wo, wi) for wo.z, wi.z > 0 (no cosine). */
 inline float3 ec_ms_eval(const FcMaterial* m, float3 wo, float3 wi) {
