@@ -115,6 +115,14 @@ void expect_packets_match_the_scalar_kernel(Scene scene, const char* name, const
 TEST(PacketRender, SameImageAsTheScalarKernel) {
     for (const char* w : {"8", "16"})
         expect_packets_match_the_scalar_kernel(load_scene(test::scenes_dir() + "/cornell_box.json"), "Cornell box", w);
+    // In a tree this small every ray of a packet stays in it to the leaves
+    // (packet_trace_min_for); in larger ones the rays left fewer than FC_PACKET_TRACE_MIN in a
+    // node finish its subtree one by one, and their hits must be the same.
+    for (const char* fewest : {"4", "16"}) {
+        ScopedEnv handed("FACET_PACKET_TRACE_MIN", fewest);
+        expect_packets_match_the_scalar_kernel(load_scene(test::scenes_dir() + "/cornell_box.json"),
+                                               "Cornell box, subtrees handed to single rays", "16");
+    }
 }
 
 // The Cornell box on the other node layouts: quantised 8-wide nodes (rays traced in packets,
@@ -462,6 +470,25 @@ TEST(PacketRender, RaysInPacketsInSmallTrees) {
         ScopedEnv on("FACET_PACKET_TRACE", "1");
         EXPECT_TRUE(packet_trace_for(1000000));
     }
+}
+
+// In the smallest trees every ray of a packet goes to the leaves with it; in larger ones the
+// rays fewer than 4 in a node finish its subtree alone. FACET_PACKET_TRACE_MIN says how many
+// whatever the size, from 1 to 16; another value is not read.
+TEST(PacketRender, RaysHandedToSingleRayTraversalInLargerTrees) {
+    ScopedEnv unset_first("FACET_PACKET_TRACE_MIN", "");
+    unsetenv("FACET_PACKET_TRACE_MIN");
+    EXPECT_EQ(packet_trace_min_for(32), 1u);
+    EXPECT_EQ(packet_trace_min_for(kPacketTraceTogetherUpToTriangles), 1u);
+    EXPECT_EQ(packet_trace_min_for(kPacketTraceTogetherUpToTriangles + 1), 4u);
+    EXPECT_EQ(packet_trace_min_for(5858), 4u);
+    for (const char* bad : {"0", "17", "4x", ""}) {
+        ScopedEnv e("FACET_PACKET_TRACE_MIN", bad);
+        EXPECT_EQ(packet_trace_min_for(32), 1u) << bad;
+    }
+    ScopedEnv e("FACET_PACKET_TRACE_MIN", "16");
+    EXPECT_EQ(packet_trace_min_for(32), 16u);
+    EXPECT_EQ(packet_trace_min_for(5858), 16u);
 }
 
 }  // namespace

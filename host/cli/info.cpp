@@ -18,10 +18,10 @@ namespace facet {
 static std::string packet_rays_said(FeatureMask features, std::size_t triangles) {
     if (features & feature::kALPHA) return "their rays traced one by one (cut-outs)";
     const char* env = std::getenv("FACET_PACKET_TRACE");
-    const std::string why =
-        env && (std::string(env) == "0" || std::string(env) == "1")
-            ? fmt::format("FACET_PACKET_TRACE={}", env)
-            : fmt::format("{} triangles: in packets up to {}", triangles, kPacketTraceUpToTriangles);
+    const std::string why = env && (std::string(env) == "0" || std::string(env) == "1")
+                                ? fmt::format("FACET_PACKET_TRACE={}", env)
+                                : fmt::format("{} triangles: in packets up to {}, each ray to the leaves up to {}",
+                                              triangles, kPacketTraceUpToTriangles, kPacketTraceTogetherUpToTriangles);
     return fmt::format("their rays traced {} ({})", packet_trace_for(triangles) ? "in packets" : "one by one", why);
 }
 

@@ -65,6 +65,15 @@ bool packet_trace_for(std::size_t tree_triangles) {
     return tree_triangles <= kPacketTraceUpToTriangles;
 }
 
+std::uint32_t packet_trace_min_for(std::size_t tree_triangles) {
+    if (const char* env = std::getenv("FACET_PACKET_TRACE_MIN")) {
+        char* end = nullptr;
+        const long n = std::strtol(env, &end, 10);
+        if (end != env && *end == '\0' && n >= 1 && n <= 16) return static_cast<std::uint32_t>(n);
+    }
+    return tree_triangles <= kPacketTraceTogetherUpToTriangles ? 1u : 4u;
+}
+
 const char* packet_paths_requirements() {
     return "packets need no instances, no emitting spheres, and the sobol sampler";
 }

@@ -66,6 +66,20 @@ inline constexpr std::size_t kPacketTraceUpToTriangles = 50000;
 // FACET_PACKET_TRACE=0 or 1 says so whatever the size (for comparisons and checks).
 bool packet_trace_for(std::size_t tree_triangles);
 
+// The largest triangles' tree in which every ray of a packet stays in it down to the leaves
+// (FC_PACKET_TRACE_MIN 1): at most two levels of 8-wide nodes over leaves of a few
+// triangles, where a subtree left to the rays that still need it is a leaf or two and the
+// hand-over to single rays (kernels/trace/packet_trace.cl) costs more than it saves: the
+// Cornell box (32 triangles) +4 % samples per second, Spot (5.9 k) -5 %
+// (docs/performance.md, "Every ray of a packet to the leaves in the smallest trees").
+inline constexpr std::size_t kPacketTraceTogetherUpToTriangles = 64;
+
+// The fewest of a packet's rays that enter a node together (FC_PACKET_TRACE_MIN); fewer
+// finish its subtree one by one. 1 (never by one) in trees of up to
+// kPacketTraceTogetherUpToTriangles, else 4. FACET_PACKET_TRACE_MIN=N, 1 to 16, says N
+// whatever the size (for comparisons).
+std::uint32_t packet_trace_min_for(std::size_t tree_triangles);
+
 // What packet_paths_for asks, said for `facet info` when a program does not run packets.
 const char* packet_paths_requirements();
 

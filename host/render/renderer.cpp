@@ -43,6 +43,8 @@ Renderer::Renderer(ClContext& ctx, const Scene& scene, const Bvh& bvh, const Dev
         prelude.push_back(fmt::format("#define FC_PACKET_WIDTH {}", stats_.packet_width));
         if (!lambertian_materials(scene)) prelude.push_back("#define FC_PACKET_BSDF_PER_LANE 1");
         if (!packet_trace_for(bvh.stats.triangles)) prelude.push_back("#define FC_PACKET_TRACE 0");
+        else
+            prelude.push_back(fmt::format("#define FC_PACKET_TRACE_MIN {}", packet_trace_min_for(bvh.stats.triangles)));
     }
     prelude.insert(prelude.end(), extra_prelude.begin(), extra_prelude.end());
     build_ = build_program(ctx, kRenderProgram, prelude);

@@ -29,7 +29,9 @@
 #error "packet_trace.cl reads 8-wide nodes"
 #endif
 
-/* Rays a node needs to be entered by the packet; fewer finish it alone. */
+/* Rays a node needs to be entered by the packet; fewer finish it alone. The host sets 1 (every
+ * ray to the leaves in the packet) in the smallest trees, where a subtree is a leaf or two
+ * (packet_trace_min_for, host/render/packet_paths.hpp). */
 #ifndef FC_PACKET_TRACE_MIN
 #define FC_PACKET_TRACE_MIN 4
 #endif
