@@ -105,5 +105,29 @@ TEST(DeviceScene, CompileViewsTheSceneAndConvertsMaterials) {
     EXPECT_EQ(std::memcmp(&d.materials[1], &expected, sizeof expected), 0);
 }
 
+// The world triangles' unit geometric normals (face_normals, read by surface_at), from the
+// vertices in double: right where a float cross product of the edges underflows (edges of
+// 1e-25) or overflows (1e20), where the kernel's own normalisation fell back to +z; +z for a
+// triangle without area.
+TEST(DeviceScene, FaceNormalsOfEveryWorldTriangle) {
+    Scene s;
+    add_material(s, default_material(), "white");
+    const glm::vec3 o(0.0f);
+    const glm::vec3 tris[][3] = {{o, {1, 0, 0}, {0, 1, 0}},
+                                 {o, {0, 0, 1e-25f}, {0, 1e-25f, 0}},
+                                 {o, {1e20f, 0, 0}, {0, 0, 1e20f}},
+                                 {{3, 3, 3}, {3, 3, 3}, {3, 3, 3}},
+                                 {o, {0, 2, 0}, {0, 1, 2}}};
+    for (const auto& t : tris) {
+        s.vertices.insert(s.vertices.end(), {t[0], t[1], t[2]});
+        s.shading.push_back(FcTriShading{});
+    }
+    const DeviceScene d = compile(s, build_bvh(s.vertices));
+    const glm::vec4 expected[] = {{0, 0, 1, 0}, {-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 1, 0}, {1, 0, 0, 0}};
+    ASSERT_EQ(d.face_normals.size(), 4 * std::size(tris));
+    for (std::size_t t = 0; t < std::size(tris); ++t)
+        for (int c = 0; c < 4; ++c) EXPECT_EQ(d.face_normals[4 * t + std::size_t(c)], expected[t][c]) << t << " " << c;
+}
+
 }  // namespace
 }  // namespace facet

@@ -231,6 +231,7 @@ Traced trace(const Scene& scene, const NodeLayout& layout, const std::vector<cl_
     const cl::Buffer args[] = {buffer(dev.nodes),
                                buffer(dev.tris),
                                buffer(dev.shading),
+                               buffer(dev.face_normals),
                                buffer(dev.spheres),
                                buffer(dev.sphere_nodes),
                                buffer(dev.instances),

@@ -8,6 +8,7 @@
 
 #include "host/scene/pixel_filter.hpp"
 #include "host/util/vec3.hpp"
+#include "host/util/wide_vector.hpp"
 
 namespace facet {
 namespace {
@@ -195,6 +196,13 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
             environment_sampling_distribution(scene.environment, scene.settings.strategy);
         d.env_dist = d.environment_distribution_owned;
     }
+    d.face_normals_owned.reserve(4 * scene.shading.size());
+    for (std::size_t t = 0; t < scene.shading.size(); ++t) {
+        const glm::vec3 n =
+            triangle_normal(scene.vertices[3 * t], scene.vertices[3 * t + 1], scene.vertices[3 * t + 2]);
+        d.face_normals_owned.insert(d.face_normals_owned.end(), {n.x, n.y, n.z, 0.0f});
+    }
+    d.face_normals = d.face_normals_owned;
     d.materials_owned.reserve(scene.materials.size());
     for (const Material& m : scene.materials) d.materials_owned.push_back(device_material(m));
     d.materials = d.materials_owned;

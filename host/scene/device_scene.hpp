@@ -65,6 +65,12 @@ struct DeviceScene {
     // builds its own).
     std::vector<float> environment_distribution_owned;
     std::vector<FcMaterial> materials_owned;
+    // The world triangles' unit geometric normals, 4 floats each (x, y, z, 0), in the order
+    // of `shading`: along cross(v1 - v0, v2 - v0) in double, +z where it has no area
+    // (triangle_normal). The kernels read them for world triangles (surface_at), where
+    // normalising the cross product of each hit took a twentieth of the Cornell box's time;
+    // an instance's triangles keep theirs computed from its placed vertices.
+    std::vector<float> face_normals_owned;
     DeviceTextures texture_data;  // texture pool, material bindings and uvs (host/scene/texture.hpp)
     SphereBvh sphere_tree;        // the analytic spheres and their tree (a root only when there are none)
     // Instancing (host/bvh/instance_bvh.hpp): the instances and their top-level tree (a root

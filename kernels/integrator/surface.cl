@@ -28,7 +28,8 @@ typedef struct {
 /* The surface of triangle hit->tri at the hit, in world space: an instanced triangle's
  * vertices placed by its instance, its vertex normals by the inverse transpose, each
  * renormalised as the normals of a mesh copied into the world are (host/readers/triangle_mesh.cpp),
- * so both give the same surface. */
+ * so both give the same surface (their geometric normals to rounding: a world triangle's is
+ * the host's, in double). */
 inline Surface surface_at(const SceneView* sc, const Hit* hit) {
     float3 v0, v1, v2;
     hit_triangle_vertices(sc, hit, &v0, &v1, &v2);
@@ -38,14 +39,20 @@ inline Surface surface_at(const SceneView* sc, const Hit* hit) {
     float3 n0 = load3(sh->n0), n1 = load3(sh->n1), n2 = load3(sh->n2);
     Surface s;
     s.p = v0 + hit->u * e1 + hit->v * e2;
-    s.ng = normalize_scaled_or(cross(e1, e2), (float3)(0.0f, 0.0f, 1.0f));
+    /* the unit normal along cross(e1, e2): the host's for a world triangle (face_normals,
+     * host/scene/device_scene.hpp); an instance's from its placed vertices */
 #if FC_HAS_INSTANCES
     if (hit->inst >= 0) {
         __global const FcInstance* in = &sc->instances[hit->inst];
+        s.ng = normalize_scaled_or(cross(e1, e2), (float3)(0.0f, 0.0f, 1.0f));
         n0 = normalize_or(instance_normal_to_world(in, n0), s.ng);
         n1 = normalize_or(instance_normal_to_world(in, n1), s.ng);
         n2 = normalize_or(instance_normal_to_world(in, n2), s.ng);
+    } else {
+        s.ng = sc->face_normals[hit->prim].xyz;
     }
+#else
+    s.ng = sc->face_normals[hit->prim].xyz;
 #endif
     float w = 1.0f - hit->u - hit->v;
     s.ns = normalize_or(w * n0 + hit->u * n1 + hit->v * n2, s.ng);

@@ -30,6 +30,7 @@
     X(FcBvhNode, FcBvhNode, nodes, "BVH nodes", FC_ARRAY_TREE)                                                     \
     X(FcTriangle, FcTriangle, tris, "triangles", FC_ARRAY_TREE)                                                    \
     X(FcTriShading, FcTriShading, shading, "shading data", FC_ARRAY_CONTENT)                                       \
+    X(float4, float, face_normals, "face normals", FC_ARRAY_CONTENT)                                               \
     X(FcMaterial, FcMaterial, materials, "materials", FC_ARRAY_CONTENT)                                            \
     X(FcLight, FcLight, lights, "lights", FC_ARRAY_CONTENT)                                                        \
     X(float, float, light_cdf, "light distribution", FC_ARRAY_CONTENT)                                             \

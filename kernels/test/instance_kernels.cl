@@ -15,15 +15,16 @@
  * t = -1; ng_out[i] = (ng, as_float(prim)); ns_out[i] = (ns, as_float(inst)); any_out[i]:
  * scene_trace_any's answer. */
 __kernel void trace_scene_batch(__global const FcBvhNode* nodes, __global const FcTriangle* tris,
-                                __global const FcTriShading* shading, __global const FcSphere* spheres,
-                                __global const FcBvhNode* sphere_nodes, __global const FcInstance* instances,
-                                __global const FcBvhNode* instance_nodes, __global const float4* origins,
-                                __global const float4* dirs, __global float4* hit_out, __global float4* ng_out,
-                                __global float4* ns_out, __global int* any_out) {
+                                __global const FcTriShading* shading, __global const float4* face_normals,
+                                __global const FcSphere* spheres, __global const FcBvhNode* sphere_nodes,
+                                __global const FcInstance* instances, __global const FcBvhNode* instance_nodes,
+                                __global const float4* origins, __global const float4* dirs, __global float4* hit_out,
+                                __global float4* ng_out, __global float4* ns_out, __global int* any_out) {
     const size_t i = get_global_id(0);
     SceneView sc = {.nodes = nodes,
                     .tris = tris,
                     .shading = shading,
+                    .face_normals = face_normals,
                     .spheres = spheres,
                     .sphere_nodes = sphere_nodes,
                     .instances = instances,
