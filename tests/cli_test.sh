@@ -41,7 +41,7 @@ expect info-bvh-layout-forced 0 "quantised boxes \(FACET_BVH_QUANTISED=1\)" -- \
 expect info-paths-packets 0 "paths +in packets of 8 on CPUs" -- \
     env -u FACET_PACKET_PATHS "$FACET" info "$SCENES/cornell_box.json"
 # ...whose rays are traced in packets in small trees (kernels/trace/packet_trace.cl)
-expect info-packet-rays 0 "their rays traced in packets \(32 triangles: in packets up to 50000, each ray to the leaves up to 64\)" -- \
+expect info-packet-rays 0 "their rays traced in packets \(32 triangles: in packets up to 50000, each ray to the leaves up to 64\), in a tree whose SAH counts leaf triangles, not blocks" -- \
     env -u FACET_PACKET_PATHS -u FACET_PACKET_TRACE "$FACET" info "$SCENES/cornell_box.json"
 expect info-packet-rays-forced 0 "their rays traced one by one \(FACET_PACKET_TRACE=0\)" -- \
     env -u FACET_PACKET_PATHS FACET_PACKET_TRACE=0 "$FACET" info "$SCENES/cornell_box.json"

@@ -12,7 +12,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "host/bvh/bvh.hpp"
@@ -65,18 +67,23 @@ bool packets_here() {
 
 // Renders `scene` at 37x29 in passes of 1, 2 and 21 samples by packet_pass, in packets of
 // `packet_width` (FACET_PACKET_WIDTH: both widths run on any CPU that runs packets), and by
-// render_pass, and compares the images. The tree is 8-wide with float boxes unless `bvh_options`
-// say otherwise: what `facet render` builds for such a scene on CPUs that run packets, and the
-// nodes the packets' rays are traced through together (kernels/trace/packet_trace.cl); on
-// 4-wide nodes they are traced one by one.
+// render_pass, and compares the images. The tree is the one `facet render` builds for such a
+// scene on CPUs that run packets unless `bvh_options` say otherwise: 8-wide with float boxes,
+// the nodes the packets' rays are traced through together (kernels/trace/packet_trace.cl), its
+// SAH the packets' in the smallest trees (packet_tree_options); on 4-wide nodes they are
+// traced one by one.
 void expect_packets_match_the_scalar_kernel(Scene scene, const char* name, const char* packet_width,
-                                            BvhOptions bvh_options = nodes(8, 0)) {
+                                            std::optional<BvhOptions> bvh_options = std::nullopt) {
     if (!packets_here()) GTEST_SKIP() << "this device runs no packets (not a CPU with 8-wide vectors)";
     // 37 wide: the last work-item of a row has 5 pixels (at 16: 5)
     const std::uint32_t width = 37, height = 29, spp = 24;
     scene.settings.width = width;
     scene.settings.height = height;
-    const Bvh bvh = build_bvh(scene.vertices, bvh_options);
+    if (!bvh_options) {
+        bvh_options = nodes(8, 0);
+        packet_tree_options(*bvh_options, scene.vertices.size() / 3, true);
+    }
+    const Bvh bvh = build_bvh(scene.vertices, *bvh_options);
     ScopedEnv lanes("FACET_PACKET_WIDTH", packet_width);
     Renderer packets(test::context(), scene, bvh);
     ASSERT_TRUE(packets.stats().packet_paths) << name << " on this CPU should run packets";
@@ -123,6 +130,9 @@ TEST(PacketRender, SameImageAsTheScalarKernel) {
         expect_packets_match_the_scalar_kernel(load_scene(test::scenes_dir() + "/cornell_box.json"),
                                                "Cornell box, subtrees handed to single rays", "16");
     }
+    // ...and on the tree of the blocked SAH, which larger scenes and GPUs get
+    expect_packets_match_the_scalar_kernel(load_scene(test::scenes_dir() + "/cornell_box.json"),
+                                           "Cornell box, blocked SAH", "16", nodes(8, 0));
 }
 
 // The Cornell box on the other node layouts: quantised 8-wide nodes (rays traced in packets,
@@ -489,6 +499,41 @@ TEST(PacketRender, RaysHandedToSingleRayTraversalInLargerTrees) {
     ScopedEnv e("FACET_PACKET_TRACE_MIN", "16");
     EXPECT_EQ(packet_trace_min_for(32), 16u);
     EXPECT_EQ(packet_trace_min_for(5858), 16u);
+}
+
+// The smallest trees, whose packets keep every ray to the leaves, are built with the packets'
+// SAH: leaf triangles counted one by one, not in blocks of four, so the leaves are smaller.
+TEST(PacketRender, SmallPacketTreesCountLeafTriangles) {
+    ScopedEnv unset_first("FACET_PACKET_TRACE_MIN", "");
+    unsetenv("FACET_PACKET_TRACE_MIN");
+    const BvhOptions blocked = nodes(8, 0);
+    BvhOptions o = blocked;
+    packet_tree_options(o, 32, true);
+    EXPECT_EQ(o.block_size, 1);
+    EXPECT_EQ(o.intersection_cost, kPacketLeafTriangleCost);
+    EXPECT_EQ(o.width, 8);  // the rest as it was
+    // not where no packets run, nor in larger trees (their rays finish alone on blocks of four)
+    for (auto [triangles, packets] :
+         {std::pair<std::size_t, bool>{32, false}, {kPacketTraceTogetherUpToTriangles + 1, true}}) {
+        BvhOptions same = blocked;
+        packet_tree_options(same, triangles, packets);
+        EXPECT_EQ(same.block_size, blocked.block_size) << triangles;
+        EXPECT_EQ(same.intersection_cost, blocked.intersection_cost) << triangles;
+    }
+    {
+        ScopedEnv handed("FACET_PACKET_TRACE_MIN", "4");  // rays handed over: blocked
+        BvhOptions same = blocked;
+        packet_tree_options(same, 32, true);
+        EXPECT_EQ(same.block_size, blocked.block_size);
+    }
+    // the Cornell box: leaves of at most two triangles, where the blocked SAH fills blocks
+    const Scene scene = load_scene(test::scenes_dir() + "/cornell_box.json");
+    const Bvh packed = build_bvh(scene.vertices, o), blocks = build_bvh(scene.vertices, blocked);
+    std::printf("[ packet   ] Cornell box: %zu leaves of at most %d triangles (blocked SAH: %zu of at most %d)\n",
+                packed.stats.leaves, packed.stats.max_leaf_size, blocks.stats.leaves, blocks.stats.max_leaf_size);
+    EXPECT_LE(packed.stats.max_leaf_size, 2);
+    EXPECT_GT(packed.stats.leaves, blocks.stats.leaves);
+    EXPECT_GT(blocks.stats.max_leaf_size, 2);
 }
 
 }  // namespace

@@ -22,7 +22,9 @@ static std::string packet_rays_said(FeatureMask features, std::size_t triangles)
                                 ? fmt::format("FACET_PACKET_TRACE={}", env)
                                 : fmt::format("{} triangles: in packets up to {}, each ray to the leaves up to {}",
                                               triangles, kPacketTraceUpToTriangles, kPacketTraceTogetherUpToTriangles);
-    return fmt::format("their rays traced {} ({})", packet_trace_for(triangles) ? "in packets" : "one by one", why);
+    const bool together = packet_trace_for(triangles) && packet_trace_min_for(triangles) == 1u;
+    return fmt::format("their rays traced {} ({}){}", packet_trace_for(triangles) ? "in packets" : "one by one", why,
+                       together ? ", in a tree whose SAH counts leaf triangles, not blocks" : "");
 }
 
 int run_info(const InfoOptions& opt) {

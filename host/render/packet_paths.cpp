@@ -74,6 +74,12 @@ std::uint32_t packet_trace_min_for(std::size_t tree_triangles) {
     return tree_triangles <= kPacketTraceTogetherUpToTriangles ? 1u : 4u;
 }
 
+void packet_tree_options(BvhOptions& options, std::size_t triangles, bool packets) {
+    if (!packets || !packet_trace_for(triangles) || packet_trace_min_for(triangles) != 1u) return;
+    options.block_size = 1;
+    options.intersection_cost = kPacketLeafTriangleCost;
+}
+
 const char* packet_paths_requirements() {
     return "packets need no instances, no emitting spheres, and the sobol sampler";
 }

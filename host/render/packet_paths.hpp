@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "host/bvh/bvh.hpp"
 #include "host/cl/runtime.hpp"
 #include "host/render/features.hpp"
 #include "kernels/shared/render_layout.h"
@@ -79,6 +80,24 @@ inline constexpr std::size_t kPacketTraceTogetherUpToTriangles = 64;
 // kPacketTraceTogetherUpToTriangles, else 4. FACET_PACKET_TRACE_MIN=N, 1 to 16, says N
 // whatever the size (for comparisons).
 std::uint32_t packet_trace_min_for(std::size_t tree_triangles);
+
+// The SAH's cost of a leaf triangle, in node visits, in a tree whose rays packet_pass traces
+// to the leaves together (FC_PACKET_TRACE_MIN 1). A packet meets a leaf's triangles one after
+// another, each in all its lanes, where a single ray meets a block of four in one test; so
+// there the SAH counts triangles, not blocks (BvhOptions::block_size 1), and a triangle test
+// costs about two visits of an 8-wide node (eight child boxes in all lanes). Its leaves come
+// out smaller (the Cornell box: 17 leaves of at most 2 triangles, where blocks of 4 made 11
+// of up to 8), and a packet skips the triangles of the boxes none of its rays meet: the
+// Cornell box +3-4 % samples per second (docs/performance.md, "The SAH of the trees packets
+// trace to the leaves"). Larger trees, whose rays part and finish alone on blocks of four,
+// keep the blocked SAH (Suzanne's 970 triangles -9 % with it).
+inline constexpr float kPacketLeafTriangleCost = 2.0f;
+
+// Sets `options` (block size and intersection cost) for a tree of `triangles` triangles whose
+// packets keep every ray to the leaves (packet_trace_min_for 1), when `packets` (the device
+// that renders runs packet_pass: packet_paths_for) and packet_pass traces such a tree
+// (packet_trace_for); leaves them as they are otherwise.
+void packet_tree_options(BvhOptions& options, std::size_t triangles, bool packets);
 
 // What packet_paths_for asks, said for `facet info` when a program does not run packets.
 const char* packet_paths_requirements();

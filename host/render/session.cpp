@@ -9,7 +9,9 @@
 #include "host/error.hpp"
 #include "host/util/clock.hpp"
 #include "host/film/error_metrics.hpp"
+#include "host/render/features.hpp"
 #include "host/render/film_identity.hpp"
+#include "host/render/packet_paths.hpp"
 #include "host/render/progressive.hpp"
 
 namespace facet {
@@ -46,6 +48,15 @@ RenderSession::RenderSession(const Scene& scene, SessionOptions options) : scene
     bvh_options.width = bvh_width_for(contexts.front().desc().type == CL_DEVICE_TYPE_GPU,
                                       contexts.front().device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>());
     bvh_options.layout_triangles = scene.stored_triangle_count();  // instanced meshes take its layout
+    {
+        // a small tree whose packets keep every ray to the leaves: the SAH of packet tests
+        const ClContext& first = contexts.front();
+        const bool packets =
+            packet_paths_for(first.desc(), first.device().getInfo<CL_DEVICE_NATIVE_VECTOR_WIDTH_FLOAT>(),
+                             options_.generic ? all_features() : scene_features(scene), lights_in_packets(scene),
+                             std::uint32_t(scene.settings.sampler), options_.generic);
+        packet_tree_options(bvh_options, scene.vertices.size() / 3, packets);
+    }
     bvh_ = build_bvh(scene.vertices, bvh_options);
     // The device scene, compiled once for the AOVs and every device; the film's identity is
     // computed from it here alone, for the resumed film's check and the film saved, before
