@@ -45,7 +45,7 @@ inline uint packet_trace_closest(const SceneView* sc, const float* o, const floa
             hits[j].tri = -1;
             hits[j].inst = -1;
         }
-        met = packet_trace_bvh(sc->nodes, o, d, need, false, hits);
+        met = packet_trace_bvh(sc->nodes, o, d, need, false, (LFLOAT)(INFINITY), hits);
         for (uint rest = need; rest; rest &= rest - 1u) {
             const uint j = lowest_bit(rest);
             if ((met >> j) & 1u) hits[j].prim = sc->tris[hits[j].tri].prim;
@@ -91,9 +91,8 @@ inline uint packet_trace_any(const SceneView* sc, const float* o, const float* d
     uint blocked = 0u;
 #if FC_PACKET_TRACE_ON
     if (popcount(bits) >= FC_PACKET_TRACE_MIN) {
-        Hit hits[FC_PACKET_W];
-        for (int j = 0; j < FC_PACKET_W; ++j) hits[j].t = tmax[j];
-        blocked = packet_trace_bvh(sc->nodes, o, d, bits, true, hits);
+        Hit hits[FC_PACKET_W]; /* scratch where rays finish a subtree alone */
+        blocked = packet_trace_bvh(sc->nodes, o, d, bits, true, LLOAD(tmax), hits);
 #if FC_HAS_INSTANCES
         for (uint rest = bits & ~blocked; rest; rest &= rest - 1u) {
             const uint j = lowest_bit(rest);

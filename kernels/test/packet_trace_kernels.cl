@@ -24,6 +24,7 @@ __kernel void trace_rays_packet(__global const FcBvhNode* nodes, __global const 
     const size_t first = get_global_id(0) * FC_PACKET_W;
     float o[3 * FC_PACKET_W], d[3 * FC_PACKET_W];
     Hit hits[FC_PACKET_W];
+    float tmax[FC_PACKET_W];
     uint bits = 0u;
     for (int j = 0; j < FC_PACKET_W; ++j) {
         const float4 oj = origins[first + j], dj = dirs[first + j];
@@ -34,6 +35,7 @@ __kernel void trace_rays_packet(__global const FcBvhNode* nodes, __global const 
         d[FC_PACKET_W + j] = dj.y;
         d[2 * FC_PACKET_W + j] = dj.z;
         hits[j].t = dj.w;
+        tmax[j] = dj.w;
         hits[j].u = 0.0f;
         hits[j].v = 0.0f;
         hits[j].prim = -1;
@@ -41,7 +43,7 @@ __kernel void trace_rays_packet(__global const FcBvhNode* nodes, __global const 
         hits[j].inst = -1;
         if (traced[first + j]) bits |= 1u << j;
     }
-    const uint hit = packet_trace_bvh(nodes, o, d, bits, any != 0, hits);
+    const uint hit = packet_trace_bvh(nodes, o, d, bits, any != 0, LLOAD(tmax), hits);
     for (int j = 0; j < FC_PACKET_W; ++j) {
         const int prim = ((hit >> j) & 1u) && !any ? tris[hits[j].tri].prim : -1;
         out[first + j] = (float4)(hits[j].t, hits[j].u, hits[j].v, as_float(prim));

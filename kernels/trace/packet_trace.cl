@@ -263,18 +263,26 @@ inline LINT packet_leaf_hit(__global const float4* rows, int row, int blocks, in
 }
 
 /* Lanes `bits` of the rays (origins o, directions d: lane arrays, x of lane j at [j], y at
- * [W + j], z at [2W + j]) against the triangles' tree in `buffer`. Nearest hits (any false):
- * hits[j] updated where a nearer triangle than hits[j].t is met (t, u, v, tri; prim and inst
- * left to the caller). Shadow rays (any true): whether a triangle nearer than hits[j].t is met
- * at all; a lane met stops there (its t set to -infinity, which no box and no triangle is
- * nearer than), and the packet when all have. Returns the bits of the lanes that met a
- * triangle. No alpha test: programs with cut-outs trace ray by ray (packet_paths.cl). */
+ * [W + j], z at [2W + j]) against the triangles' tree in `buffer`, each up to its lane of
+ * tmax. Nearest hits (any false): hits[j] set where a triangle nearer than tmax is met (t, u,
+ * v, tri; prim and inst left to the caller, and the lanes that meet none). Shadow rays (any
+ * true): whether a triangle nearer than tmax is met at all; a lane met stops there (its t set
+ * to -infinity, which no box and no triangle is nearer than), and the packet when all have.
+ * Returns the bits of the lanes that met a triangle. `hits` is scratch for every lane when
+ * rays finish a subtree alone. The packet's hits start in registers: read back from the
+ * lanes' Hit records, just written one lane at a time, they waited on the stores (a vector
+ * load of scalar stores is not forwarded). No alpha test: programs with cut-outs trace ray by
+ * ray (packet_paths.cl). */
 inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, const float* d, uint bits, bool any,
-                             Hit* hits) {
+                             LFLOAT tmax, Hit* hits) {
     __global const FcNode* nodes = (__global const FcNode*)buffer;
     __global const float4* rows = (__global const float4*)buffer;
     const PacketRays r = packet_rays_setup(o, d);
-    PacketHits h = packet_hits_load(hits);
+    PacketHits h;
+    h.t = tmax;
+    h.u = (LFLOAT)(0.0f);
+    h.v = (LFLOAT)(0.0f);
+    h.tri = (LINT)(-1);
     uint found = 0u, alone = 0u; /* lanes that met a triangle: in packets, alone */
     const uint traced = bits;
     PacketStack st;
