@@ -102,7 +102,7 @@ inline PacketRays packet_rays_setup(const float* o, const float* d) {
     r.ky = select(ky, kx, flip);
     r.sx = packet_axis(dx, dy, dz, r.kx) / dk;
     r.sy = packet_axis(dx, dy, dz, r.ky) / dk;
-    r.sz = 1.0f / dk;
+    r.sz = packet_axis(r.ix, r.iy, r.iz, r.kz); /* 1 / dk, divided above */
     r.tox = packet_axis(r.ox, r.oy, r.oz, r.kx);
     r.toy = packet_axis(r.ox, r.oy, r.oz, r.ky);
     r.toz = packet_axis(r.ox, r.oy, r.oz, r.kz);
@@ -128,9 +128,10 @@ inline LINT packet_box_hit(const PacketRays* r, float lx, float ly, float lz, fl
 }
 
 /* The packet's state: per lane the hit so far (t, the triangle in BVH order or -1, the
- * barycentric weights of vertices 1 and 2). */
+ * barycentric weights of vertices 1 and 2 as u / det and v / det: the triangle test's edge
+ * functions and their sum, divided when the hits are stored, once, not at every hit). */
 typedef struct {
-    LFLOAT t, u, v;
+    LFLOAT t, u, v, det;
     LINT tri;
 } PacketHits;
 
@@ -148,6 +149,7 @@ inline PacketHits packet_hits_load(const Hit* hits) {
     h.t = LLOAD(t);
     h.u = LLOAD(u);
     h.v = LLOAD(v);
+    h.det = (LFLOAT)(1.0f); /* weights already divided: x * (1 / 1) is x */
     h.tri = LLOAD(tri);
     return h;
 }
@@ -157,8 +159,9 @@ inline void packet_hits_store(const PacketHits* h, uint bits, Hit* hits) {
     float t[FC_PACKET_W], u[FC_PACKET_W], v[FC_PACKET_W];
     int tri[FC_PACKET_W];
     LSTORE(h->t, t);
-    LSTORE(h->u, u);
-    LSTORE(h->v, v);
+    const LFLOAT inv = 1.0f / h->det; /* tri4_weights' */
+    LSTORE(h->u * inv, u);
+    LSTORE(h->v * inv, v);
     LSTORE(h->tri, tri);
     for (uint rest = bits; rest; rest &= rest - 1u) {
         const uint j = lowest_bit(rest);
@@ -252,10 +255,10 @@ inline LINT packet_leaf_hit(__global const float4* rows, int row, int blocks, in
             hit &= m;
             if (!LNAME(lanes_any)(hit)) continue;
             found |= hit;
-            const LFLOAT inv = 1.0f / det; /* tri4_weights' */
             h->t = select(h->t, t, hit);
-            h->u = select(h->u, vv * inv, hit);
-            h->v = select(h->v, ww * inv, hit);
+            h->u = select(h->u, vv, hit);
+            h->v = select(h->v, ww, hit);
+            h->det = select(h->det, det, hit);
             h->tri = select(h->tri, (LINT)(ids[k]), hit);
         }
     }
@@ -282,6 +285,7 @@ inline uint packet_trace_bvh(__global const FcBvhNode* buffer, const float* o, c
     h.t = tmax;
     h.u = (LFLOAT)(0.0f);
     h.v = (LFLOAT)(0.0f);
+    h.det = (LFLOAT)(1.0f);
     h.tri = (LINT)(-1);
     uint found = 0u, alone = 0u; /* lanes that met a triangle: in packets, alone */
     const uint traced = bits;
