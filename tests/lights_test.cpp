@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "host/bvh/bvh.hpp"
 #include "tests/cl_test_env.hpp"
@@ -152,6 +154,45 @@ TEST(Lights, RoughConductorInEnvironmentReflectsAtMostL) {
     // angles (docs/brdf.md's table): the disk averages about 0.62.
     EXPECT_GT(mean, 0.55);
     EXPECT_LT(mean, 0.70);
+}
+
+// The light pick is the cdf's inverse: light k for u in [cdf[k], cdf[k + 1]), for any number of
+// lights, lights of zero power (equal entries) never picked, and u at each entry and just below.
+TEST(Lights, PickInvertsTheCdf) {
+    ClContext& ctx = test::context();
+    cl::Kernel k(test::program("kernels/test/light_pick_kernels.cl"), "light_pick_batch");
+    for (std::uint32_t count = 1; count <= 19; ++count) {
+        // powers 1, 0, 3, 4, 0, 2, ... (every third light dark from the second on)
+        std::vector<double> power(count);
+        std::vector<float> cdf(count + 1, 0.0f);
+        double total = 0.0;
+        for (std::uint32_t i = 0; i < count; ++i)
+            total += power[i] = (i % 3 == 1 && count > 1) ? 0.0 : 1.0 + double(i % 4);
+        double run = 0.0;
+        for (std::uint32_t i = 0; i < count; ++i) cdf[i + 1] = float((run += power[i]) / total);
+        cdf[count] = 1.0f;
+        std::vector<float> u;
+        for (int s = 0; s < 997; ++s) u.push_back((float(s) + 0.5f) / 997.0f);
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (cdf[i] < 1.0f) u.push_back(cdf[i]);  // u lies in [0, 1)
+            if (cdf[i] > 0.0f) u.push_back(std::nextafter(cdf[i], 0.0f));
+        }
+        u.push_back(std::nextafter(1.0f, 0.0f));
+        cl::Buffer c(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, cdf.size() * sizeof(float), cdf.data());
+        cl::Buffer ub(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, u.size() * sizeof(float), u.data());
+        cl::Buffer ob(ctx.context(), CL_MEM_WRITE_ONLY, u.size() * sizeof(int));
+        k.setArg(0, c), k.setArg(1, count), k.setArg(2, ub), k.setArg(3, ob);
+        ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(u.size()));
+        std::vector<int> picked(u.size());
+        ctx.queue().enqueueReadBuffer(ob, CL_TRUE, 0, picked.size() * sizeof(int), picked.data());
+        for (std::size_t s = 0; s < u.size(); ++s) {
+            int expected = 0;  // the last k with cdf[k] <= u
+            for (std::uint32_t kk = 1; kk < count; ++kk)
+                if (cdf[kk] <= u[s]) expected = int(kk);
+            ASSERT_EQ(picked[s], expected) << count << " lights, u " << u[s];
+            ASSERT_GT(power[std::size_t(picked[s])], 0.0) << count << " lights, u " << u[s];
+        }
+    }
 }
 
 }  // namespace

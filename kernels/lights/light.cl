@@ -27,16 +27,19 @@ typedef struct {
     float3 normal;
 } LightSample;
 
-/* Picks a light with probability pick_pdf by binary search of the cdf
- * (light_count + 1 entries, cdf[0] = 0, cdf[light_count] = 1). */
+/* Picks a light with probability pick_pdf by binary search of the cdf (light_count + 1
+ * entries, cdf[0] = 0, cdf[light_count] = 1): the light k with cdf[k] <= u < cdf[k + 1]. The
+ * search halves a range of light_count entries whatever u is, so its loop runs the same
+ * ceil(log2(light_count)) times every call and its step is a select, not a branch on u (which
+ * a packet's lanes, picking in turn, mispredicted half the time). */
 inline int pick_light(__global const float* cdf, uint light_count, float u) {
-    uint lo = 0, hi = light_count; /* invariant: cdf[lo] <= u < cdf[hi] */
-    while (hi - lo > 1u) {
-        uint mid = (lo + hi) / 2u;
-        if (cdf[mid] <= u) lo = mid;
-        else hi = mid;
+    uint base = 0u, n = light_count; /* invariant: cdf[base] <= u < cdf[base + n] */
+    while (n > 1u) {
+        const uint step = n / 2u;
+        base = cdf[base + step] <= u ? base + step : base;
+        n -= step;
     }
-    return (int)lo;
+    return (int)base;
 }
 
 /* Samples a light as seen from point p. Returns false when the sample carries nothing. */
