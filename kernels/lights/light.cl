@@ -27,16 +27,23 @@ typedef struct {
     float3 normal;
 } LightSample;
 
-/* Picks a light with probability pick_pdf by binary search of the cdf (light_count + 1
- * entries, cdf[0] = 0, cdf[light_count] = 1): the light k with cdf[k] <= u < cdf[k + 1]. The
- * search halves a range of light_count entries whatever u is, so its loop runs the same
- * ceil(log2(light_count)) times every call and its step is a select, not a branch on u (which
- * a packet's lanes, picking in turn, mispredicted half the time). */
+/* Picks a light with probability pick_pdf from the cdf (light_count + 1 entries, cdf[0] = 0,
+ * cdf[light_count] = 1): the light k with cdf[k] <= u < cdf[k + 1]. A few lights are counted,
+ * the entries at or below u (the cdf rises, so that is k); more by binary search. Neither
+ * branches on u: a packet's lanes pick one after another, and a branch on u mispredicted half
+ * the time (LLVM made a select in the search's loop a branch again, so its step is masked).
+ * The count's comparisons add up as integers; the search's loop runs the same
+ * ceil(log2(light_count)) times every call, whatever u is. */
 inline int pick_light(__global const float* cdf, uint light_count, float u) {
+    if (light_count <= 8u) {
+        uint k = 0u;
+        for (uint i = 1u; i < light_count; ++i) k += (uint)(cdf[i] <= u);
+        return (int)k;
+    }
     uint base = 0u, n = light_count; /* invariant: cdf[base] <= u < cdf[base + n] */
     while (n > 1u) {
         const uint step = n / 2u;
-        base = cdf[base + step] <= u ? base + step : base;
+        base += step & (0u - (uint)(cdf[base + step] <= u)); /* a mask, not a select LLVM makes a branch */
         n -= step;
     }
     return (int)base;
