@@ -237,8 +237,13 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         for (int j = 0; j < FC_PACKET_W; ++j)
             if (active[j] && alive[j]) need |= 1u << j;
         for (;;) {
-            for (int j = 0; j < FC_PACKET_W; ++j) {
-                if (!active[j] || alive[j]) continue;
+            /* the lanes to refill, in lane order: a mask first, so that the loop does not
+             * branch on each lane's flags (which paths ended is as good as random) */
+            uint idle = 0u;
+            for (int j = 0; j < FC_PACKET_W; ++j)
+                if (active[j] && !alive[j]) idle |= 1u << j;
+            for (uint rest = idle; rest; rest &= rest - 1u) {
+                const int j = (int)lowest_bit(rest);
                 if (depth[j] == PATH_ENDED) {
                     const uint at = (index[j] & 1u) * pixels + y * params->width + x0 + slot[j];
                     float4 sum = (float4)(0.0f);
@@ -763,14 +768,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LSTORE(next_pdf, prev_pdf);
         int conta[FC_PACKET_W];
         LSTORE(cont, conta);
+        /* a live path goes on a bounce deeper or ends here: selects, not a branch a lane */
         for (int j = 0; j < FC_PACKET_W; ++j) {
-            if (!active[j] || !alive[j]) continue;
-            if (!conta[j]) {
-                alive[j] = 0;
-                depth[j] = PATH_ENDED;
-                continue;
-            }
-            depth[j] += 1u;
+            const int live = (active[j] != 0) & (alive[j] != 0);
+            const int go = live & (conta[j] != 0);
+            depth[j] = go ? depth[j] + 1u : live ? PATH_ENDED : depth[j];
+            alive[j] = live ? go : alive[j];
         }
     }
 }
