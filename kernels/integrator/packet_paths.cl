@@ -770,10 +770,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LSTORE(cont, conta);
         /* a live path goes on a bounce deeper or ends here: selects, not a branch a lane */
         for (int j = 0; j < FC_PACKET_W; ++j) {
-            const int live = (active[j] != 0) & (alive[j] != 0);
-            const int go = live & (conta[j] != 0);
-            depth[j] = go ? depth[j] + 1u : live ? PATH_ENDED : depth[j];
-            alive[j] = live ? go : alive[j];
+            const int running = (active[j] != 0) & (alive[j] != 0);
+            const int go = running & (conta[j] != 0);
+            depth[j] = go ? depth[j] + 1u : running ? PATH_ENDED : depth[j];
+            alive[j] = running ? go : alive[j];
         }
     }
 }
