@@ -48,12 +48,9 @@ inline Surface surface_at(const SceneView* sc, const Hit* hit) {
         n0 = normalize_or(instance_normal_to_world(in, n0), s.ng);
         n1 = normalize_or(instance_normal_to_world(in, n1), s.ng);
         n2 = normalize_or(instance_normal_to_world(in, n2), s.ng);
-    } else {
-        s.ng = sc->face_normals[hit->prim].xyz;
-    }
-#else
-    s.ng = sc->face_normals[hit->prim].xyz;
+    } else
 #endif
+        s.ng = sc->face_normals[hit->prim].xyz;
     float w = 1.0f - hit->u - hit->v;
     s.ns = normalize_or(w * n0 + hit->u * n1 + hit->v * n2, s.ng);
     if (dot(s.ng, s.ns) < 0.0f) s.ng = -s.ng;
