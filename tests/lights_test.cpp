@@ -157,10 +157,13 @@ TEST(Lights, RoughConductorInEnvironmentReflectsAtMostL) {
 }
 
 // The light pick is the cdf's inverse: light k for u in [cdf[k], cdf[k + 1]), for any number of
-// lights, lights of zero power (equal entries) never picked, and u at each entry and just below.
+// lights, lights of zero power (equal entries) never picked, and u at each entry and just below;
+// the same picks from its lane forms at W = 8 and 16 (the packets' light pick, by gathers where
+// the CPU has them).
 TEST(Lights, PickInvertsTheCdf) {
     ClContext& ctx = test::context();
     cl::Kernel k(test::program("kernels/test/light_pick_kernels.cl"), "light_pick_batch");
+    cl::Kernel lanes(test::program("kernels/test/light_pick_kernels.cl"), "light_pick_lanes");
     for (std::uint32_t count = 1; count <= 19; ++count) {
         // powers 1, 0, 3, 4, 0, 2, ... (every third light dark from the second on)
         std::vector<double> power(count);
@@ -178,19 +181,28 @@ TEST(Lights, PickInvertsTheCdf) {
             if (cdf[i] > 0.0f) u.push_back(std::nextafter(cdf[i], 0.0f));
         }
         u.push_back(std::nextafter(1.0f, 0.0f));
+        while (u.size() % 16 != 0) u.push_back(0.0f);  // whole vectors for the lane forms
         cl::Buffer c(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, cdf.size() * sizeof(float), cdf.data());
         cl::Buffer ub(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, u.size() * sizeof(float), u.data());
         cl::Buffer ob(ctx.context(), CL_MEM_WRITE_ONLY, u.size() * sizeof(int));
+        cl::Buffer o8(ctx.context(), CL_MEM_WRITE_ONLY, u.size() * sizeof(int));
+        cl::Buffer o16(ctx.context(), CL_MEM_WRITE_ONLY, u.size() * sizeof(int));
         k.setArg(0, c), k.setArg(1, count), k.setArg(2, ub), k.setArg(3, ob);
         ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(u.size()));
-        std::vector<int> picked(u.size());
+        lanes.setArg(0, c), lanes.setArg(1, count), lanes.setArg(2, ub), lanes.setArg(3, o8), lanes.setArg(4, o16);
+        ctx.queue().enqueueNDRangeKernel(lanes, cl::NullRange, cl::NDRange(u.size() / 16));
+        std::vector<int> picked(u.size()), picked8(u.size()), picked16(u.size());
         ctx.queue().enqueueReadBuffer(ob, CL_TRUE, 0, picked.size() * sizeof(int), picked.data());
+        ctx.queue().enqueueReadBuffer(o8, CL_TRUE, 0, picked8.size() * sizeof(int), picked8.data());
+        ctx.queue().enqueueReadBuffer(o16, CL_TRUE, 0, picked16.size() * sizeof(int), picked16.data());
         for (std::size_t s = 0; s < u.size(); ++s) {
             int expected = 0;  // the last k with cdf[k] <= u
             for (std::uint32_t kk = 1; kk < count; ++kk)
                 if (cdf[kk] <= u[s]) expected = int(kk);
             ASSERT_EQ(picked[s], expected) << count << " lights, u " << u[s];
             ASSERT_GT(power[std::size_t(picked[s])], 0.0) << count << " lights, u " << u[s];
+            ASSERT_EQ(picked8[s], expected) << "W = 8, " << count << " lights, u " << u[s];
+            ASSERT_EQ(picked16[s], expected) << "W = 16, " << count << " lights, u " << u[s];
         }
     }
 }

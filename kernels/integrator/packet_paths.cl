@@ -52,6 +52,12 @@ inline void l3_store(L3 v, float* a) {
     LSTORE(v.y, a + FC_PACKET_W);
     LSTORE(v.z, a + 2 * FC_PACKET_W);
 }
+/* The 3-vector at base[index], base[index + 1], base[index + 2] for each lane, gathered. */
+inline L3 packet_gather3(__global const float* base, LUINT index) {
+    return l3(LNAME(gather)(base, index), LNAME(gather)(base + 1, index), LNAME(gather)(base + 2, index));
+}
+/* An FcLight's size in floats: a light's index times it is its first float's. */
+#define FC_PACKET_LIGHT_FLOATS ((uint)(sizeof(FcLight) / sizeof(float)))
 inline float3 lane3(const float* a, int j) { return (float3)(a[j], a[FC_PACKET_W + j], a[2 * FC_PACKET_W + j]); }
 inline void set_lane3(float* a, int j, float3 v) {
     a[j] = v.x;
@@ -464,8 +470,13 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LNAME(sampler_get4)(sd, ir, 1u + 2u * dep, ul);
         LNAME(sampler_get4)(sd, ir, 2u + 2u * dep, ub);
 
-        /* the light: picked and read per lane; an environment sampled per lane (env_sample), a
-         * triangle's point below in lanes */
+        /* the light: each lane's triangle (its point below in lanes), or a light sampled per
+         * lane */
+        L3 LP, E1, E2, LN, LC;
+        LFLOAT LPICK, LAREA;
+        LUINT LFLAGS;
+#if FC_PACKET_LANE_LIGHTS
+        /* picked and read per lane; an environment sampled per lane (env_sample) */
         float lp0[3 * FC_PACKET_W], le1[3 * FC_PACKET_W], le2[3 * FC_PACKET_W], ln[3 * FC_PACKET_W],
             lc[3 * FC_PACKET_W], lpick[FC_PACKET_W], larea[FC_PACKET_W];
         uint lflags[FC_PACKET_W];
@@ -474,12 +485,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         float lu1[FC_PACKET_W], lu2[FC_PACKET_W]; /* the light sample's point, lane by lane */
         LSTORE(ul[1], lu1);
         LSTORE(ul[2], lu2);
-#if FC_PACKET_LANE_LIGHTS
         /* lanes whose light is sampled per lane: its direction, density (pick included; 0 for
          * nothing), shadow ray length, and whether it is a delta light */
         float xwi[3 * FC_PACKET_W], xpdf[FC_PACKET_W], xtmax[FC_PACKET_W];
         int xl[FC_PACKET_W], xdelta[FC_PACKET_W];
-#endif
 #if FC_HAS_ENVIRONMENT
         /* lanes that sample the map: env_sample_uv's point, and the light's pick density */
         float suv[2 * FC_PACKET_W], spick[FC_PACKET_W];
@@ -487,7 +496,6 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         const bool env_sampled = packet_env_map(&P->environment) && P->environment.total > 0.0f;
 #endif
         for (int j = 0; j < FC_PACKET_W; ++j) {
-#if FC_PACKET_LANE_LIGHTS
             /* A lane with no path (the queue is empty) samples nothing: it goes as a per-lane
              * light of zero density, since such a sample is not cheap. */
             xl[j] = -1;
@@ -529,10 +537,6 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 set_lane3(xwi, j, wi);
             }
             packet_no_triangle_light(j, lp0, le1, le2, ln, lpick, larea, lflags);
-#else
-            packet_triangle_light(sc, &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])], j,
-                                  (float2)(lu1[j], lu2[j]), lp0, le1, le2, ln, lc, lpick, larea, lflags);
-#endif
         }
 #if FC_HAS_ENVIRONMENT
         if (xenv) {
@@ -551,17 +555,63 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             }
         }
 #endif
+        LP = l3_load(lp0);
+        E1 = l3_load(le1);
+        E2 = l3_load(le2);
+        LN = l3_load(ln);
+        LC = l3_load(lc);
+        LPICK = LLOAD(lpick);
+        LAREA = LLOAD(larea);
+        LFLAGS = LLOAD(lflags);
+#else
+        {
+            /* every light is a triangle: each lane's pick, and its light's fields gathered in
+             * lanes */
+            const LUINT at = LNAME(pick_light)(sc->light_cdf, P->light_count, ul[0]) * FC_PACKET_LIGHT_FLOATS;
+            __global const FcLight* l0 = sc->lights;
+            LP = packet_gather3(l0->p0, at);
+            E1 = packet_gather3(l0->e1, at);
+            E2 = packet_gather3(l0->e2, at);
+            LN = packet_gather3(l0->n, at);
+            LC = packet_gather3(l0->color, at);
+            LPICK = LNAME(gather)(&l0->pick_pdf, at);
+            LAREA = LNAME(gather)(&l0->area, at);
+            LFLAGS = LCONVERT_UINT(LAS_INT(LNAME(gather)((__global const float*)&l0->flags, at)));
+#if FC_HAS_TEXTURES || FC_HAS_ALPHA
+            /* the emission texture and alpha coverage at each lane's point, per lane
+             * (packet_triangle_light's) */
+            float lc[3 * FC_PACKET_W], lu1[FC_PACKET_W], lu2[FC_PACKET_W];
+            uint li[FC_PACKET_W];
+            l3_store(LC, lc);
+            LSTORE(ul[1], lu1);
+            LSTORE(ul[2], lu2);
+            LSTORE(at / FC_PACKET_LIGHT_FLOATS, li);
+            for (int j = 0; j < FC_PACKET_W; ++j) {
+                __global const FcLight* l = &sc->lights[li[j]];
+                const float2 tu = square_to_triangle((float2)(lu1[j], lu2[j]));
+                float3 c = lane3(lc, j);
+#if FC_HAS_TEXTURES
+                c *= emission_texture_at(sc, l->prim, sc->shading[l->prim].material, tu);
+#endif
+#if FC_HAS_ALPHA
+                c *= alpha_light_coverage(sc, l->prim, tu);
+#endif
+                set_lane3(lc, j, c);
+            }
+            LC = l3_load(lc);
+#endif
+        }
+#endif
         LVEC2 bary = LNAME(square_to_triangle)(ul[1], ul[2]);
         LFLOAT b0 = bary.x, b1 = bary.y;
-        L3 LP = l3_load(lp0), E1 = l3_load(le1), E2 = l3_load(le2), LN = l3_load(ln), LC = l3_load(lc);
         L3 point = l3(LP.x + b0 * E1.x + b1 * E2.x, LP.y + b0 * E1.y + b1 * E2.y, LP.z + b0 * E1.z + b1 * E2.z);
         L3 to = l3(point.x - PP.x, point.y - PP.y, point.z - PP.z);
         LFLOAT d2 = l3_dot(to, to);
         LFLOAT dist = sqrt(d2);
         L3 wi = l3(to.x / dist, to.y / dist, to.z / dist);
         LFLOAT cl = l3_dot(LN, wi);
-        LFLOAT pdf_l = LNAME(area_light_pdf_solid_angle)(LLOAD(lpick), LLOAD(larea), dist, cl);
-        LINT lit = LNAME(area_light_lit)((LLOAD(lflags) & FC_MAT_TWO_SIDED_EMISSION) != 0u, -cl); /* toward -wi */
+        LFLOAT pdf_l = LNAME(area_light_pdf_solid_angle)(LPICK, LAREA, dist, cl);
+        LINT lit = LNAME(area_light_lit)((LFLAGS & FC_MAT_TWO_SIDED_EMISSION) != 0u, -cl); /* toward -wi */
         LINT ok = (d2 > 0.0f) & lit;
 #if FC_PACKET_LANE_LIGHTS
         const LINT is_x = LLOAD(xl);

@@ -52,8 +52,10 @@ typedef struct {
 } FcVec3x8;
 
 #if defined(__AVX__) && defined(__clang__)
-/* eight floats as clang's x86 builtins take them (vec3_lanes.cl's lanes_any) */
+/* eight and sixteen floats as clang's x86 builtins take them (vec3_lanes.cl's lanes_any,
+ * gather_lanes.cl) */
 typedef float FcLanesV8sf __attribute__((__vector_size__(32)));
+typedef float FcLanesV16sf __attribute__((__vector_size__(64)));
 /* eight and sixteen ints as clang's AVX2 and AVX-512 builtins take them */
 typedef int FcLanesV8si __attribute__((__vector_size__(32)));
 typedef int FcLanesV16si __attribute__((__vector_size__(64)));

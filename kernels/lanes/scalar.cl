@@ -29,6 +29,8 @@
 #include "kernels/trace/ray_lanes.cl"
 #include "kernels/trace/sphere_lanes.cl"
 #include "kernels/lights/area_lanes.cl"
+#include "kernels/lanes/gather_lanes.cl"
+#include "kernels/lights/light_pick_lanes.cl"
 #include "kernels/lights/environment_lanes.cl"
 #include "kernels/camera/filter_lanes.cl"
 #include "kernels/camera/camera_lanes.cl"

@@ -35,18 +35,7 @@ typedef struct {
  * The count's comparisons add up as integers; the search's loop runs the same
  * ceil(log2(light_count)) times every call, whatever u is. */
 inline int pick_light(__global const float* cdf, uint light_count, float u) {
-    if (light_count <= 8u) {
-        uint k = 0u;
-        for (uint i = 1u; i < light_count; ++i) k += (uint)(cdf[i] <= u);
-        return (int)k;
-    }
-    uint base = 0u, n = light_count; /* invariant: cdf[base] <= u < cdf[base + n] */
-    while (n > 1u) {
-        const uint step = n / 2u;
-        base += step & (0u - (uint)(cdf[base + step] <= u)); /* a mask, not a select LLVM makes a branch */
-        n -= step;
-    }
-    return (int)base;
+    return (int)pick_light_l1(cdf, light_count, u); /* kernels/lights/light_pick_lanes.cl */
 }
 
 /* Samples a light as seen from point p. Returns false when the sample carries nothing. */
