@@ -30,10 +30,10 @@ typedef struct {
 /* Picks a light with probability pick_pdf from the cdf (light_count + 1 entries, cdf[0] = 0,
  * cdf[light_count] = 1): the light k with cdf[k] <= u < cdf[k + 1]. A few lights are counted,
  * the entries at or below u (the cdf rises, so that is k); more by binary search. Neither
- * branches on u: a packet's lanes pick one after another, and a branch on u mispredicted half
- * the time (LLVM made a select in the search's loop a branch again, so its step is masked).
- * The count's comparisons add up as integers; the search's loop runs the same
- * ceil(log2(light_count)) times every call, whatever u is. */
+ * branches on u (a branch on u mispredicts half the time, and LLVM made a select in the
+ * search's loop a branch again, so its step is masked): the count's comparisons add up as
+ * integers, and the search's loop runs the same ceil(log2(light_count)) times every call,
+ * whatever u is. The packets run the same body in lanes. */
 inline int pick_light(__global const float* cdf, uint light_count, float u) {
     return (int)pick_light_l1(cdf, light_count, u); /* kernels/lights/light_pick_lanes.cl */
 }
