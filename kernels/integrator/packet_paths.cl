@@ -480,8 +480,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         float lp0[3 * FC_PACKET_W], le1[3 * FC_PACKET_W], le2[3 * FC_PACKET_W], ln[3 * FC_PACKET_W],
             lc[3 * FC_PACKET_W], lpick[FC_PACKET_W], larea[FC_PACKET_W];
         uint lflags[FC_PACKET_W];
-        float upick[FC_PACKET_W];
-        LSTORE(ul[0], upick);
+        uint lpicked[FC_PACKET_W]; /* each lane's light, picked in lanes */
+        LSTORE(LNAME(pick_light)(sc->light_cdf, P->light_count, ul[0]), lpicked);
         float lu1[FC_PACKET_W], lu2[FC_PACKET_W]; /* the light sample's point, lane by lane */
         LSTORE(ul[1], lu1);
         LSTORE(ul[2], lu2);
@@ -510,7 +510,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             const bool nee = true;
 #endif
             if (active[j] && alive[j] && nee) {
-                __global const FcLight* l = &sc->lights[pick_light(sc->light_cdf, P->light_count, upick[j])];
+                __global const FcLight* l = &sc->lights[lpicked[j]];
                 if (l->type == FC_LIGHT_AREA_TRIANGLE) {
                     xl[j] = 0;
                     packet_triangle_light(sc, l, j, (float2)(lu1[j], lu2[j]), lp0, le1, le2, ln, lc, lpick, larea,
