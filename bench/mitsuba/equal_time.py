@@ -225,7 +225,8 @@ class Mitsuba:
         """Passes of two fixed sizes, compiled beforehand: a large one (about a quarter
         of the budget, so that a stratified sampler keeps large stratified sets) while
         it fits in the time left, then a small one (3 % of the budget) while at least
-        half of it fits. With spp: one pass of that many samples."""
+        half of it fits. With spp: passes of that many samples in all (several where one
+        would be over MAX_LANES)."""
         cap = max(1, MAX_LANES // scene.pixels)
         s, per_spp = self.warm_up(scene)[:2]
         if seconds is not None:
@@ -234,8 +235,13 @@ class Mitsuba:
             small = self.round_spp(min(cap, max(1, int(0.03 * seconds / per_spp))))
             sizes = [big, small]
         else:
-            sizes = [self.round_spp(min(cap, spp))]
-        s, per_spp = self.warm_up(scene, sizes)[:2]
+            # passes of at most `cap` samples, the last of what is left (as the sampler takes
+            # it), so that every program renders the spp asked, not a whole pass beyond it
+            sizes, planned = [], 0
+            while planned < spp:
+                sizes.append(self.round_spp(min(cap, spp - planned)))
+                planned += sizes[-1]
+        s, per_spp = self.warm_up(scene, sorted(set(sizes)))[:2]
         sampler = s.sensors()[0].sampler()
         acc, done, elapsed, npass = None, 0, 0.0, 0
         while True:
@@ -248,9 +254,9 @@ class Mitsuba:
                 else:
                     break
             else:
-                if done >= spp:
+                if npass >= len(sizes):
                     break
-                n = sizes[0]
+                n = sizes[npass]
             img, t = self._pass(s, n, (seed * 4099 + npass) % (1 << 32))
             n = sampler.sample_count()   # what it really took
             img = np.array(img, dtype=np.float64)
