@@ -1,8 +1,9 @@
 /* The packet paths' lights (issue 29): what a lane's light sample reads per lane, a
- * triangle's fields for the sample in lanes, the environment map's directions in lanes, and the
- * environment's and punctual lights' samples per lane (sample_light's, lane by lane). Included
- * by kernels/integrator/packet_paths.cl inside its lanes (FC_LW = FC_PACKET_W), after its lane
- * helpers (l3_load, lane3, set_lane3). */
+ * triangle's fields for the sample in lanes (gathered where every light is a triangle), the
+ * environment map's directions in lanes, and the environment's and punctual lights' samples
+ * per lane (sample_light's, lane by lane). Included by kernels/integrator/packet_paths.cl
+ * inside its lanes (FC_LW = FC_PACKET_W), after its lane helpers (l3, l3_load, l3_store,
+ * lane3, set_lane3). */
 #ifndef FACET_INTEGRATOR_PACKET_LIGHTS_CL
 #define FACET_INTEGRATOR_PACKET_LIGHTS_CL
 
@@ -31,6 +32,52 @@ inline void packet_triangle_light(const SceneView* sc, __global const FcLight* l
     lpick[j] = l->pick_pdf;
     larea[j] = l->area;
     lflags[j] = l->flags;
+}
+
+/* The 3-vector at base[index], base[index + 1], base[index + 2] for each lane, gathered. */
+inline L3 packet_gather3(__global const float* base, LUINT index) {
+    return l3(LNAME(gather)(base, index), LNAME(gather)(base + 1, index), LNAME(gather)(base + 2, index));
+}
+/* An FcLight's size in floats: a light's index times it is its first float's. */
+#define FC_PACKET_LIGHT_FLOATS ((uint)(sizeof(FcLight) / sizeof(float)))
+
+/* Programs whose every light is a triangle: each lane's light picked in lanes at ul[0] (of the
+ * `light_count` lights) and its fields gathered straight into lanes, where copying them lane
+ * by lane into arrays left each vector load waiting on sixteen stores; the emission texture and
+ * alpha coverage at the lane's point (ul[1], ul[2]) read per lane (packet_triangle_light's). */
+inline void packet_triangle_lights(const SceneView* sc, uint light_count, const LFLOAT* ul, L3* p0, L3* e1, L3* e2,
+                                   L3* n, L3* color, LFLOAT* pick, LFLOAT* area, LUINT* flags) {
+    const LUINT at = LNAME(pick_light)(sc->light_cdf, light_count, ul[0]) * FC_PACKET_LIGHT_FLOATS;
+    __global const FcLight* l0 = sc->lights;
+    *p0 = packet_gather3(l0->p0, at);
+    *e1 = packet_gather3(l0->e1, at);
+    *e2 = packet_gather3(l0->e2, at);
+    *n = packet_gather3(l0->n, at);
+    *color = packet_gather3(l0->color, at);
+    *pick = LNAME(gather)(&l0->pick_pdf, at);
+    *area = LNAME(gather)(&l0->area, at);
+    *flags = LCONVERT_UINT(LAS_INT(LNAME(gather)((__global const float*)&l0->flags, at)));
+#if FC_HAS_TEXTURES || FC_HAS_ALPHA
+    float lc[3 * FC_PACKET_W], lu1[FC_PACKET_W], lu2[FC_PACKET_W];
+    uint li[FC_PACKET_W];
+    l3_store(*color, lc);
+    LSTORE(ul[1], lu1);
+    LSTORE(ul[2], lu2);
+    LSTORE(at / FC_PACKET_LIGHT_FLOATS, li);
+    for (int j = 0; j < FC_PACKET_W; ++j) {
+        __global const FcLight* l = &sc->lights[li[j]];
+        const float2 tu = square_to_triangle((float2)(lu1[j], lu2[j]));
+        float3 c = lane3(lc, j);
+#if FC_HAS_TEXTURES
+        c *= emission_texture_at(sc, l->prim, sc->shading[l->prim].material, tu);
+#endif
+#if FC_HAS_ALPHA
+        c *= alpha_light_coverage(sc, l->prim, tu);
+#endif
+        set_lane3(lc, j, c);
+    }
+    *color = l3_load(lc);
+#endif
 }
 
 /* Lane j's triangle fields where it sampled no triangle: values that keep the triangle's

@@ -52,12 +52,6 @@ inline void l3_store(L3 v, float* a) {
     LSTORE(v.y, a + FC_PACKET_W);
     LSTORE(v.z, a + 2 * FC_PACKET_W);
 }
-/* The 3-vector at base[index], base[index + 1], base[index + 2] for each lane, gathered. */
-inline L3 packet_gather3(__global const float* base, LUINT index) {
-    return l3(LNAME(gather)(base, index), LNAME(gather)(base + 1, index), LNAME(gather)(base + 2, index));
-}
-/* An FcLight's size in floats: a light's index times it is its first float's. */
-#define FC_PACKET_LIGHT_FLOATS ((uint)(sizeof(FcLight) / sizeof(float)))
 inline float3 lane3(const float* a, int j) { return (float3)(a[j], a[FC_PACKET_W + j], a[2 * FC_PACKET_W + j]); }
 inline void set_lane3(float* a, int j, float3 v) {
     a[j] = v.x;
@@ -564,43 +558,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         LAREA = LLOAD(larea);
         LFLAGS = LLOAD(lflags);
 #else
-        {
-            /* every light is a triangle: each lane's pick, and its light's fields gathered in
-             * lanes */
-            const LUINT at = LNAME(pick_light)(sc->light_cdf, P->light_count, ul[0]) * FC_PACKET_LIGHT_FLOATS;
-            __global const FcLight* l0 = sc->lights;
-            LP = packet_gather3(l0->p0, at);
-            E1 = packet_gather3(l0->e1, at);
-            E2 = packet_gather3(l0->e2, at);
-            LN = packet_gather3(l0->n, at);
-            LC = packet_gather3(l0->color, at);
-            LPICK = LNAME(gather)(&l0->pick_pdf, at);
-            LAREA = LNAME(gather)(&l0->area, at);
-            LFLAGS = LCONVERT_UINT(LAS_INT(LNAME(gather)((__global const float*)&l0->flags, at)));
-#if FC_HAS_TEXTURES || FC_HAS_ALPHA
-            /* the emission texture and alpha coverage at each lane's point, per lane
-             * (packet_triangle_light's) */
-            float lc[3 * FC_PACKET_W], lu1[FC_PACKET_W], lu2[FC_PACKET_W];
-            uint li[FC_PACKET_W];
-            l3_store(LC, lc);
-            LSTORE(ul[1], lu1);
-            LSTORE(ul[2], lu2);
-            LSTORE(at / FC_PACKET_LIGHT_FLOATS, li);
-            for (int j = 0; j < FC_PACKET_W; ++j) {
-                __global const FcLight* l = &sc->lights[li[j]];
-                const float2 tu = square_to_triangle((float2)(lu1[j], lu2[j]));
-                float3 c = lane3(lc, j);
-#if FC_HAS_TEXTURES
-                c *= emission_texture_at(sc, l->prim, sc->shading[l->prim].material, tu);
-#endif
-#if FC_HAS_ALPHA
-                c *= alpha_light_coverage(sc, l->prim, tu);
-#endif
-                set_lane3(lc, j, c);
-            }
-            LC = l3_load(lc);
-#endif
-        }
+        /* every light is a triangle: each lane's pick, and its light's fields gathered */
+        packet_triangle_lights(sc, P->light_count, ul, &LP, &E1, &E2, &LN, &LC, &LPICK, &LAREA, &LFLAGS);
 #endif
         LVEC2 bary = LNAME(square_to_triangle)(ul[1], ul[2]);
         LFLOAT b0 = bary.x, b1 = bary.y;
