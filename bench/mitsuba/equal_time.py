@@ -208,7 +208,8 @@ class Mitsuba:
     def round_spp(self, n):
         """The largest pass size <= n (at least the smallest) that the sampler takes as
         it is: ldsampler wants powers of 4, stratified squares, orthogonal squares of
-        primes; independent and multijitter any count."""
+        primes, multijitter products r * ceil(n / r) with r = isqrt(n) (others it rounds
+        up: 186 to 195); independent any count."""
         if self.sampler in ("ldsampler", "stratified"):
             r = max(1, int(math.isqrt(n)))
             if self.sampler == "ldsampler":
@@ -219,6 +220,11 @@ class Mitsuba:
             while p > 2 and any(p % d == 0 for d in range(2, int(math.isqrt(p)) + 1)):
                 p -= 1
             return p * p
+        if self.sampler == "multijitter":
+            m = max(1, n)
+            while math.isqrt(m) * -(-m // math.isqrt(m)) != m:
+                m -= 1
+            return m
         return max(1, n)
 
     def render(self, scene, seed, seconds=None, spp=None):
