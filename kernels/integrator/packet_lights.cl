@@ -7,8 +7,25 @@
 #ifndef FACET_INTEGRATOR_PACKET_LIGHTS_CL
 #define FACET_INTEGRATOR_PACKET_LIGHTS_CL
 
+/* Triangle light l's radiance `color` at point u of the square: times its emission texture
+ * and its alpha coverage there, where the program has them (sample_light's, per lane). */
+inline float3 packet_light_color_at(const SceneView* sc, __global const FcLight* l, float2 u, float3 color) {
+#if FC_HAS_TEXTURES
+    color *= emission_texture_at(sc, l->prim, sc->shading[l->prim].material, square_to_triangle(u));
+#endif
+#if FC_HAS_ALPHA
+    color *= alpha_light_coverage(sc, l->prim, square_to_triangle(u));
+#endif
+#if !FC_HAS_TEXTURES && !FC_HAS_ALPHA
+    (void)sc;
+    (void)l;
+    (void)u;
+#endif
+    return color;
+}
+
 /* Lane j's fields of triangle light l, for its sample in lanes at point u of the square (its
- * emission texture and its alpha coverage, if any, read there per lane: sample_light's). */
+ * emission texture and its alpha coverage, if any, read there per lane). */
 inline void packet_triangle_light(const SceneView* sc, __global const FcLight* l, int j, float2 u, float* lp0,
                                   float* le1, float* le2, float* ln, float* lc, float* lpick, float* larea,
                                   uint* lflags) {
@@ -16,19 +33,7 @@ inline void packet_triangle_light(const SceneView* sc, __global const FcLight* l
     set_lane3(le1, j, load3(l->e1));
     set_lane3(le2, j, load3(l->e2));
     set_lane3(ln, j, load3(l->n));
-#if FC_HAS_TEXTURES
-    set_lane3(lc, j,
-              load3(l->color) * emission_texture_at(sc, l->prim, sc->shading[l->prim].material, square_to_triangle(u)));
-#else
-    set_lane3(lc, j, load3(l->color));
-#endif
-#if FC_HAS_ALPHA
-    set_lane3(lc, j, lane3(lc, j) * alpha_light_coverage(sc, l->prim, square_to_triangle(u)));
-#endif
-#if !FC_HAS_TEXTURES && !FC_HAS_ALPHA
-    (void)sc;
-    (void)u;
-#endif
+    set_lane3(lc, j, packet_light_color_at(sc, l, u, load3(l->color)));
     lpick[j] = l->pick_pdf;
     larea[j] = l->area;
     lflags[j] = l->flags;
@@ -44,7 +49,7 @@ inline L3 packet_gather3(__global const float* base, LUINT index) {
 /* Programs whose every light is a triangle: each lane's light picked in lanes at ul[0] (of the
  * `light_count` lights) and its fields gathered straight into lanes, where copying them lane
  * by lane into arrays left each vector load waiting on sixteen stores; the emission texture and
- * alpha coverage at the lane's point (ul[1], ul[2]) read per lane (packet_triangle_light's). */
+ * alpha coverage at the lane's point (ul[1], ul[2]) read per lane (packet_light_color_at). */
 inline void packet_triangle_lights(const SceneView* sc, uint light_count, const LFLOAT* ul, L3* p0, L3* e1, L3* e2,
                                    L3* n, L3* color, LFLOAT* pick, LFLOAT* area, LUINT* flags) {
     const LUINT at = LNAME(pick_light)(sc->light_cdf, light_count, ul[0]) * FC_PACKET_LIGHT_FLOATS;
@@ -64,18 +69,8 @@ inline void packet_triangle_lights(const SceneView* sc, uint light_count, const 
     LSTORE(ul[1], lu1);
     LSTORE(ul[2], lu2);
     LSTORE(at / FC_PACKET_LIGHT_FLOATS, li);
-    for (int j = 0; j < FC_PACKET_W; ++j) {
-        __global const FcLight* l = &sc->lights[li[j]];
-        const float2 tu = square_to_triangle((float2)(lu1[j], lu2[j]));
-        float3 c = lane3(lc, j);
-#if FC_HAS_TEXTURES
-        c *= emission_texture_at(sc, l->prim, sc->shading[l->prim].material, tu);
-#endif
-#if FC_HAS_ALPHA
-        c *= alpha_light_coverage(sc, l->prim, tu);
-#endif
-        set_lane3(lc, j, c);
-    }
+    for (int j = 0; j < FC_PACKET_W; ++j)
+        set_lane3(lc, j, packet_light_color_at(sc, &sc->lights[li[j]], (float2)(lu1[j], lu2[j]), lane3(lc, j)));
     *color = l3_load(lc);
 #endif
 }
