@@ -1,6 +1,7 @@
-// PLY headers, checked line by line.
+// PLY headers, checked line by line, and the body walked against them.
 #include "host/readers/ply_header.hpp"
 
+#include <cstring>
 #include <vector>
 
 #include <fmt/format.h>
@@ -11,21 +12,58 @@
 namespace facet {
 namespace {
 
-bool scalar_type(std::string_view t) {
-    for (std::string_view k : {"char", "uchar", "short", "ushort", "int", "uint", "float", "double", "int8", "uint8",
-                               "int16", "uint16", "int32", "uint32", "float32", "float64"})
-        if (t == k) return true;
-    return false;
+// The bytes of one value of a PLY scalar type, 0 when `t` is not one.
+int scalar_bytes(std::string_view t) {
+    for (std::string_view k : {"char", "uchar", "int8", "uint8"})
+        if (t == k) return 1;
+    for (std::string_view k : {"short", "ushort", "int16", "uint16"})
+        if (t == k) return 2;
+    for (std::string_view k : {"int", "uint", "float", "int32", "uint32", "float32"})
+        if (t == k) return 4;
+    for (std::string_view k : {"double", "float64"})
+        if (t == k) return 8;
+    return 0;
 }
+
+struct PlyProperty {
+    std::string name;
+    bool list = false;
+    int count_bytes = 0;  // a list's count type
+    bool count_signed = false;
+    int value_bytes = 0;
+};
+
+struct PlyElement {
+    std::string name;
+    std::uint64_t count = 0;
+    std::vector<PlyProperty> properties;
+};
+
+// Assimp 5.2 reads a face's 'texcoord' list as two values per entry of its vertex index
+// list, indexing that list without a bound (and a null one when the face has none): a
+// list of more than two per vertex is refused. Assimp takes the last property of each
+// name, so the last lengths seen are what count. `line` is 0 in a binary body.
+struct FaceLists {
+    long indices = -1, texcoords = -1;  // -1: the face has no such list
+    void note(const PlyProperty& p, long n) {
+        if (p.name == "vertex_index" || p.name == "vertex_indices") indices = n;
+        if (p.name == "texcoord") texcoords = n;
+    }
+    void check(const std::string& path, long line, std::uint64_t i) const {
+        if (texcoords <= 0 || texcoords <= 2 * (indices < 0 ? 0 : indices)) return;
+        throw Error(fmt::format(
+            "{}{}: element 'face' {} has a 'texcoord' list of {} values for {} vertices (two "
+            "per vertex at most)",
+            path, line > 0 ? fmt::format(":{}", line) : std::string(), i, texcoords, indices < 0 ? 0 : indices));
+    }
+};
 
 // The elements of an ASCII body checked against the header: each on its own line (PLY's
 // rule) with exactly its properties' values, so a line with a number missing is an error
 // naming it rather than shifting every later value by one; and a list whose count is more
 // than the file holds is refused before Assimp allocates for it (minutes for a count of
-// 7777777777777: fuzz_ply). `lists[e]` says which properties of element e are lists.
-// `first_line` is the body's first line number in the file.
-void check_ascii_body(const std::string& path, std::string_view body, const std::vector<std::string>& names,
-                      const std::vector<std::uint64_t>& counts, const std::vector<std::vector<bool>>& lists,
+// 7777777777777: fuzz_ply). `first_line` is the body's first line number in the file.
+void check_ascii_body(const std::string& path, std::string_view body, const std::vector<PlyElement>& elements,
                       int first_line) {
     std::size_t pos = 0;
     long line = first_line;
@@ -36,30 +74,32 @@ void check_ascii_body(const std::string& path, std::string_view body, const std:
         while (pos < body.size() && !blank(body[pos]) && body[pos] != '\n') ++pos;
         return body.substr(start, pos - start);
     };
-    for (std::size_t e = 0; e < names.size(); ++e)
-        for (std::uint64_t i = 0; i < counts[e]; ++i) {
+    for (const PlyElement& el : elements)
+        for (std::uint64_t i = 0; i < el.count; ++i) {
             while (pos < body.size() && (blank(body[pos]) || body[pos] == '\n'))  // blank lines between
                 if (body[pos++] == '\n') ++line;
             if (pos >= body.size())
-                throw Error(fmt::format("{}: the PLY file ends inside element '{}' {} of {} (cut short)", path,
-                                        names[e], i, counts[e]));
+                throw Error(fmt::format("{}: the PLY file ends inside element '{}' {} of {} (cut short)", path, el.name,
+                                        i, el.count));
             std::size_t values = 0, wanted = 0;
             auto short_line = [&]() {
                 return Error(
                     fmt::format("{}:{}: element '{}' {} has {} values on its line, fewer than its "
                                 "properties need",
-                                path, line, names[e], i, values));
+                                path, line, el.name, i, values));
             };
-            for (bool list : lists[e]) {
+            FaceLists face;
+            for (const PlyProperty& p : el.properties) {
                 const std::string_view t = next();
                 ++wanted;
                 if (t.empty()) throw short_line();
                 ++values;
-                if (!list) continue;
+                if (!p.list) continue;
                 long n = 0;
                 if (!text::parse_int(t, n) || n < 0 || std::uint64_t(n) > (body.size() - pos) / 2 + 1)
                     throw Error(fmt::format("{}: element '{}' {} has a list of '{}' values, more than the file holds",
-                                            path, names[e], i, t));
+                                            path, el.name, i, t));
+                face.note(p, n);
                 for (long k = 0; k < n; ++k, ++wanted, ++values)
                     if (next().empty()) throw short_line();
             }
@@ -67,7 +107,48 @@ void check_ascii_body(const std::string& path, std::string_view body, const std:
                 throw Error(
                     fmt::format("{}:{}: element '{}' {} has more values on its line than the {} its "
                                 "properties take",
-                                path, line, names[e], i, wanted));
+                                path, line, el.name, i, wanted));
+            if (el.name == "face") face.check(path, line, i);
+        }
+}
+
+// A binary body walked against the header: every list's count read (in the file's byte
+// order) and its values found inside the file, so a count beyond it or a file cut short is
+// an error naming the element before Assimp reads (past the end) or allocates for it.
+void check_binary_body(const std::string& path, std::string_view body, const std::vector<PlyElement>& elements,
+                       bool big_endian) {
+    std::size_t pos = 0;
+    auto cut_short = [&](const PlyElement& el, std::uint64_t i) {
+        return Error(
+            fmt::format("{}: the PLY file ends inside element '{}' {} of {} (cut short)", path, el.name, i, el.count));
+    };
+    for (const PlyElement& el : elements)
+        for (std::uint64_t i = 0; i < el.count; ++i) {
+            FaceLists face;
+            for (const PlyProperty& p : el.properties) {
+                if (!p.list) {
+                    if (body.size() - pos < std::size_t(p.value_bytes)) throw cut_short(el, i);
+                    pos += std::size_t(p.value_bytes);
+                    continue;
+                }
+                if (body.size() - pos < std::size_t(p.count_bytes)) throw cut_short(el, i);
+                unsigned char b[4] = {};
+                for (int k = 0; k < p.count_bytes; ++k)
+                    b[k] = static_cast<unsigned char>(body[pos + std::size_t(big_endian ? p.count_bytes - 1 - k : k)]);
+                pos += std::size_t(p.count_bytes);
+                const std::uint32_t u = std::uint32_t(b[0]) | std::uint32_t(b[1]) << 8 | std::uint32_t(b[2]) << 16 |
+                                        std::uint32_t(b[3]) << 24;
+                const int bits = 8 * p.count_bytes;
+                if (p.count_signed && (u >> (bits - 1)) & 1u)
+                    throw Error(fmt::format("{}: element '{}' {} has a list count of {} (negative)", path, el.name, i,
+                                            std::int64_t(u) - (std::int64_t(1) << bits)));
+                if (std::uint64_t(u) * std::uint64_t(p.value_bytes) > body.size() - pos)
+                    throw Error(fmt::format("{}: element '{}' {} has a list of {} values, more than the file holds",
+                                            path, el.name, i, u));
+                face.note(p, long(u));
+                pos += std::size_t(u) * std::size_t(p.value_bytes);
+            }
+            if (el.name == "face") face.check(path, 0, i);
         }
 }
 
@@ -77,12 +158,9 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
     PlyHeader h;
     auto fail = [&](int line, const std::string& what) { throw Error(fmt::format("{}:{}: {}", path, line, what)); };
     std::size_t pos = 0;
-    std::string element;
-    std::uint64_t elements = 0;  // every element's count, summed
-    std::vector<std::string> names;
-    std::vector<std::uint64_t> counts;
-    std::vector<std::vector<bool>> lists;  // per element, whether each property is a list
-    bool format = false;
+    std::uint64_t total = 0;  // every element's count, summed
+    std::vector<PlyElement> elements;
+    bool format = false, big_endian = false;
     int body_line = 0;  // the first line after end_header
     for (int line = 1;; ++line) {
         const std::size_t end = bytes.find('\n', pos);
@@ -110,24 +188,41 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
             if (f.size() != 3 || (f[1] != "ascii" && f[1] != "binary_little_endian" && f[1] != "binary_big_endian"))
                 fail(line, "expected 'format ascii|binary_little_endian|binary_big_endian 1.0'");
             h.binary = f[1] != "ascii";
+            big_endian = f[1] == "binary_big_endian";
             format = true;
         } else if (f[0] == "element") {
             long count = 0;
             if (f.size() != 3 || !text::parse_int(f[2], count) || count < 0 || count > (1L << 40))
                 fail(line, "expected 'element NAME COUNT' with a count in [0, 2^40]");
-            element = std::string(f[1]);
-            elements += std::uint64_t(count);
-            names.push_back(element);
-            counts.push_back(std::uint64_t(count));
-            lists.emplace_back();
-            if (element == "vertex") h.vertices = std::uint64_t(count);
-            if (element == "face") h.faces = std::uint64_t(count);
+            // Assimp 5.2 sizes its arrays by the first 'vertex' and the first 'face' or
+            // 'tristrips' element and writes every later one's past them (heap corruption,
+            // found by fuzz_ply); and of a strip it keeps one triangle. So each name once,
+            // and strips refused.
+            for (const PlyElement& e : elements)
+                if (e.name == f[1])
+                    fail(line, fmt::format("a second element '{}' (each element is declared once)", f[1]));
+            if (f[1] == "tristrips")
+                fail(line,
+                     "'tristrips' elements are not read (Assimp 5.2 keeps one triangle of each strip): write the "
+                     "triangles as a 'face' element");
+            elements.push_back({std::string(f[1]), std::uint64_t(count), {}});
+            total += std::uint64_t(count);
+            if (f[1] == "vertex") h.vertices = std::uint64_t(count);
+            if (f[1] == "face") h.faces = std::uint64_t(count);
         } else if (f[0] == "property") {
-            if (element.empty()) fail(line, "a property before any element");
-            const bool list = f.size() == 5 && f[1] == "list" && scalar_type(f[2]) && scalar_type(f[3]);
-            if (!list && !(f.size() == 3 && scalar_type(f[1])))
+            if (elements.empty()) fail(line, "a property before any element");
+            PlyProperty p;
+            if (f.size() == 5 && f[1] == "list" && scalar_bytes(f[2]) > 0 && scalar_bytes(f[3]) > 0) {
+                if (f[2] == "float" || f[2] == "float32" || f[2] == "double" || f[2] == "float64")
+                    fail(line, fmt::format("a list's count type must be an integer type, not '{}'", f[2]));
+                p = {std::string(f[4]), true, scalar_bytes(f[2]), f[2].size() > 0 && f[2][0] != 'u',
+                     scalar_bytes(f[3])};
+            } else if (f.size() == 3 && scalar_bytes(f[1]) > 0) {
+                p = {std::string(f[2]), false, 0, false, scalar_bytes(f[1])};
+            } else {
                 fail(line, "expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
-            lists.back().push_back(list);
+            }
+            elements.back().properties.push_back(std::move(p));
         } else {
             fail(line, fmt::format("unknown PLY header line '{}'", f[0]));
         }
@@ -137,13 +232,14 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
         throw Error(fmt::format("{}: the PLY file has no vertices or no faces (element vertex / element face)", path));
     // Every element takes at least one byte (binary) or two (ASCII: a number and a blank):
     // a header promising more is cut short or corrupt (and would make Assimp allocate for it).
-    if (elements > (bytes.size() - pos) / (h.binary ? 1 : 2) + 1)
+    if (total > (bytes.size() - pos) / (h.binary ? 1 : 2) + 1)
         throw Error(
             fmt::format("{}: the PLY header promises {} elements, but only {} bytes follow it (the file is "
                         "cut short or corrupt)",
-                        path, elements, bytes.size() - pos));
+                        path, total, bytes.size() - pos));
     h.body_offset = pos;
-    if (!h.binary) check_ascii_body(path, bytes.substr(pos), names, counts, lists, body_line);
+    if (h.binary) check_binary_body(path, bytes.substr(pos), elements, big_endian);
+    else check_ascii_body(path, bytes.substr(pos), elements, body_line);
     return h;
 }
 

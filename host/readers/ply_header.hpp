@@ -17,7 +17,9 @@ struct PlyHeader {
 
 // Throws facet::Error naming `path` and the line when the header is not a PLY header
 // (first line "ply", a format line, elements with counts and typed properties, and
-// "end_header"), or when it has no vertex or face element.
+// "end_header"), when it has no vertex or face element, names an element twice or has
+// 'tristrips', or when the body (ASCII or binary) does not hold what the header says:
+// Assimp 5.2 reads past its arrays on such files (docs/robustness.md).
 PlyHeader check_ply_header(const std::string& path, std::string_view bytes);
 
 }  // namespace facet

@@ -67,8 +67,14 @@ std::size_t convert(const std::string& path, const aiMesh& m, IndexedMesh& out) 
 }  // namespace
 
 void load_ply(const std::string& path, Scene& scene, const MeshOptions& options) {
-    const std::string bytes = read_maybe_gzipped(path, "PLY file");
-    check_ply_header(path, bytes);
+    std::string bytes = read_maybe_gzipped(path, "PLY file");
+    const PlyHeader header = check_ply_header(path, bytes);
+    // Assimp 5.2 drops a binary body's first byte when it is 0x0A, taking it for the end of
+    // an "end_header\r\n" line; after "end_header\n" that byte is data (the first vertex's,
+    // one file in 256), and every value after it was read one byte out of step. Handing
+    // Assimp the "\r\n" it expects keeps the body as written (PlyValues.BinaryBody...).
+    if (header.binary && header.body_offset >= 2 && bytes[header.body_offset - 2] != '\r')
+        bytes.insert(header.body_offset - 1, 1, '\r');
     Assimp::Importer importer;
     const aiScene* ai = nullptr;
     try {
