@@ -133,5 +133,24 @@ TEST(PlyValues, FaceTexcoordListsMatchTheirFaces) {
                  {"uv_bin.ply: element 'face' 0 has a 'texcoord' list of 6 values for 2 vertices"});
 }
 
+// A header is ASCII text: a control byte in a name made Assimp read another header than
+// facet's check (and a list count from elsewhere in the body); UTF-8 is fine in comments.
+TEST(PlyValues, HeaderIsTextWithUtf8OnlyInComments) {
+    TempDir d;
+    std::string ok = square_ply("1 1 0");
+    ok.insert(ok.find("element"), "comment scanned by J\xC3\xBCrgen\n");
+    EXPECT_GE(load_scene(d.write("utf8.ply", ok)).triangle_count(), 2u);
+    std::string nul = square_ply("1 1 0");
+    nul.replace(nul.find("float y"), 7, std::string("float \0y", 8));
+    expect_error([&] { load_scene(d.write("nul.ply", nul)); }, {"nul.ply:5:", "byte 0x00 in a PLY header line"});
+    std::string cr = square_ply("1 1 0");
+    cr.replace(cr.find("float y"), 7, "float\ry");
+    expect_error([&] { load_scene(d.write("cr.ply", cr)); }, {"cr.ply:5:", "byte 0x0D in a PLY header line"});
+    std::string latin = square_ply("1 1 0");
+    latin.replace(latin.find("float y"), 7, "float \xC3\xBF");
+    expect_error([&] { load_scene(d.write("latin.ply", latin)); },
+                 {"latin.ply:5:", "byte 0xC3 in a PLY header line", "beyond comments"});
+}
+
 }  // namespace
 }  // namespace facet

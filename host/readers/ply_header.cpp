@@ -175,6 +175,17 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
         const auto f = text::split_fields(text);
         if (text.find('#') != std::string_view::npos && !(!f.empty() && (f[0] == "comment" || f[0] == "obj_info")))
             fail(line, "'#' in a PLY header line (PLY has no '#' comments; use a 'comment' line)");
+        // A header is text: a control byte (a NUL, a lone carriage return, ...) ends a field
+        // or a line for Assimp where it does not for this check, so the two would read
+        // different headers and Assimp would take the body at another step (it allocated
+        // 32 GB for a "count" so read: fuzz_ply). Bytes above 127 only in comments.
+        const bool comment = !f.empty() && (f[0] == "comment" || f[0] == "obj_info");
+        for (const char c : text) {
+            const auto b = static_cast<unsigned char>(c);
+            if ((b < 0x20 && b != '\t') || b == 0x7F || (b >= 0x80 && !comment))
+                fail(line, fmt::format("byte 0x{:02X} in a PLY header line (a header is ASCII text{})", b,
+                                       b >= 0x80 ? ", beyond comments" : ""));
+        }
         if (line == 1) {
             if (f.size() != 1 || f[0] != "ply") fail(1, "not a PLY file (the first line must be 'ply')");
             continue;
