@@ -73,7 +73,9 @@ TEST(FuzzRegression, GltfAndPlyFindingsFailCleanly) {
         {"ply/header_name_with_nul.ply", ":4: byte 0x0E in a PLY header line", 0},
         {"ply/face_texcoord_beyond_indices.ply", ":15: element 'face' 1 has a 'texcoord' list of 8 values for 1", 0},
         {"ply/header_line_with_hash.ply", ":15: '#' in a PLY header line", 0},
-        {"ply/ascii_list_count_huge.ply", "element 'vertex' 0 has more values on its line", 0},
+        {"ply/ascii_list_count_huge.ply", ":16: byte 0x00 in the PLY body", 0},
+        // a form feed ends a line for Assimp, not for the check: it read a list count of 5777...
+        {"ply/ascii_body_formfeed.ply", ":20: byte 0x0C in the PLY body", 0},
     };
     for (const Case& c : cases) {
         const std::string path = (std::filesystem::path(test::fuzz_dir()) / "regressions" / c.file).string();

@@ -152,5 +152,66 @@ TEST(PlyValues, HeaderIsTextWithUtf8OnlyInComments) {
                  {"latin.ply:5:", "byte 0xC3 in a PLY header line", "beyond comments"});
 }
 
+// Element counts as Assimp reads them (digits, below 2^32): "+3" was 3 here and 0 there, so
+// the body walked here was not the one Assimp read. 'TextureFile' is a file name to Assimp.
+TEST(PlyValues, ElementCountsAreDigitsBelowTwoToThe32) {
+    TempDir d;
+    std::string plus = square_ply("1 1 0");
+    plus.replace(plus.find("vertex 4"), 8, "vertex +4");
+    expect_error([&] { load_scene(d.write("plus.ply", plus)); }, {"plus.ply:3:", "a count of digits only"});
+    std::string big = square_ply("1 1 0");
+    big.replace(big.find("vertex 4"), 8, "vertex 4294967300");
+    expect_error([&] { load_scene(d.write("big.ply", big)); }, {"big.ply:3:", "below 2^32"});
+    std::string zeros = square_ply("1 1 0");
+    zeros.replace(zeros.find("vertex 4"), 8, "vertex 004");
+    EXPECT_GE(load_scene(d.write("zeros.ply", zeros)).triangle_count(), 2u);
+    std::string tex = square_ply("1 1 0");
+    tex.insert(tex.find("end_header"), "element TextureFile 0\n");
+    expect_error([&] { load_scene(d.write("tex.ply", tex)); }, {"tex.ply:9:", "an element named 'TextureFile'"});
+}
+
+// Assimp 5.2 takes a second blank line in a row (or one after "\r\n"), a line of blanks or a
+// lone carriage return for an element, so these bodies lost a face, silently; they are handed
+// to Assimp one element per line and load as written.
+TEST(PlyValues, BlankLinesInAnAsciiBodyLoseNothing) {
+    TempDir d;
+    const std::string plain = square_ply("1 1 0");
+    const Scene want = load_scene(d.write("plain.ply", plain));
+    ASSERT_EQ(want.triangle_count(), 2u + 2u);  // the square and the default light's two
+    std::string crlf;
+    for (char c : plain) {
+        if (c == '\n') crlf.push_back('\r');
+        crlf.push_back(c);
+    }
+    const std::string body = "0 0 0\n";
+    auto with = [&](std::string s, const std::string& at, const std::string& what) {
+        s.insert(s.find(at), what);
+        return s;
+    };
+    const std::string cases[] = {
+        with(plain, "0 1 0", "\n\n"),       // two blank lines
+        with(plain, "0 1 0", "  \t \n"),    // a line of blanks
+        with(plain, body, "\n"),            // a blank line before the first element
+        with(crlf, "0 1 0", "\r\n"),        // one blank line, CRLF
+        with(plain, "3 0 2 3", "\n \n\n"),  // between faces
+        [&] {
+            std::string s = plain;  // a lone CR between two values of a line
+            s.replace(s.find("1 0 0"), 5, "1\r0 0");
+            return s;
+        }(),
+    };
+    int k = 0;
+    for (const std::string& c : cases) {
+        SCOPED_TRACE(k++);
+        const Scene got = load_scene(d.write("blank.ply", c));
+        EXPECT_EQ(got.triangle_count(), want.triangle_count());
+        ASSERT_GE(got.vertices.size(), 6u);
+        for (int v = 0; v < 6; ++v) EXPECT_EQ(got.vertices[std::size_t(v)], want.vertices[std::size_t(v)]) << v;
+    }
+    std::string ctrl = plain;
+    ctrl.replace(ctrl.find("1 0 0"), 5, std::string("1 \f 0", 5));
+    expect_error([&] { load_scene(d.write("ctrl.ply", ctrl)); }, {"ctrl.ply:11:", "byte 0x0C in the PLY body"});
+}
+
 }  // namespace
 }  // namespace facet

@@ -63,24 +63,47 @@ struct FaceLists {
 // naming it rather than shifting every later value by one; and a list whose count is more
 // than the file holds is refused before Assimp allocates for it (minutes for a count of
 // 7777777777777: fuzz_ply). `first_line` is the body's first line number in the file.
-void check_ascii_body(const std::string& path, std::string_view body, const std::vector<PlyElement>& elements,
-                      int first_line) {
+// Assimp 5.2 reads one element per line and takes a second blank line in a row (a first
+// one after "\r\n"), a line of blanks, or a lone carriage return for an element, so such a
+// body loaded with elements shifted (a face lost, silently). Returns whether the body has
+// one; with `out`, writes it as Assimp reads it (one line per element, values as written).
+bool check_ascii_body(const std::string& path, std::string_view body, const std::vector<PlyElement>& elements,
+                      int first_line, std::string* out) {
     std::size_t pos = 0;
     long line = first_line;
+    bool rewrite = false, first = true;
     auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
     auto next = [&]() -> std::string_view {  // the next value on this line, "" at its end
-        while (pos < body.size() && blank(body[pos])) ++pos;
+        while (pos < body.size() && blank(body[pos])) {
+            if (body[pos] == '\r' && pos + 1 < body.size() && body[pos + 1] != '\n') rewrite = true;
+            ++pos;
+        }
         const std::size_t start = pos;
-        while (pos < body.size() && !blank(body[pos]) && body[pos] != '\n') ++pos;
-        return body.substr(start, pos - start);
+        while (pos < body.size() && !blank(body[pos]) && body[pos] != '\n') {
+            const auto b = static_cast<unsigned char>(body[pos]);
+            if (b < 0x20 || b == 0x7F)
+                throw Error(
+                    fmt::format("{}:{}: byte 0x{:02X} in the PLY body (an ASCII body holds numbers)", path, line, b));
+            ++pos;
+        }
+        const std::string_view t = body.substr(start, pos - start);
+        if (out && !t.empty()) {
+            if (!out->empty() && out->back() != '\n') out->push_back(' ');
+            out->append(t);
+        }
+        return t;
     };
     for (const PlyElement& el : elements)
         for (std::uint64_t i = 0; i < el.count; ++i) {
+            int newlines = 0;
             while (pos < body.size() && (blank(body[pos]) || body[pos] == '\n'))  // blank lines between
-                if (body[pos++] == '\n') ++line;
+                if (body[pos++] == '\n') ++line, ++newlines;
+            if (newlines > (first ? 0 : 1)) rewrite = true;
+            first = false;
             if (pos >= body.size())
                 throw Error(fmt::format("{}: the PLY file ends inside element '{}' {} of {} (cut short)", path, el.name,
                                         i, el.count));
+            if (out && !out->empty()) out->push_back('\n');
             std::size_t values = 0, wanted = 0;
             auto short_line = [&]() {
                 return Error(
@@ -95,8 +118,10 @@ void check_ascii_body(const std::string& path, std::string_view body, const std:
                 if (t.empty()) throw short_line();
                 ++values;
                 if (!p.list) continue;
+                // Digits only: Assimp reads an unsigned count with strtoul10 (no sign).
                 long n = 0;
-                if (!text::parse_int(t, n) || n < 0 || std::uint64_t(n) > (body.size() - pos) / 2 + 1)
+                if (t.find_first_not_of("0123456789") != std::string_view::npos || !text::parse_int(t, n) ||
+                    std::uint64_t(n) > (body.size() - pos) / 2 + 1)
                     throw Error(fmt::format("{}: element '{}' {} has a list of '{}' values, more than the file holds",
                                             path, el.name, i, t));
                 face.note(p, n);
@@ -110,6 +135,8 @@ void check_ascii_body(const std::string& path, std::string_view body, const std:
                                 path, line, el.name, i, wanted));
             if (el.name == "face") face.check(path, line, i);
         }
+    if (out) out->push_back('\n');
+    return rewrite;
 }
 
 // A binary body walked against the header: every list's count read (in the file's byte
@@ -202,9 +229,16 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
             big_endian = f[1] == "binary_big_endian";
             format = true;
         } else if (f[0] == "element") {
+            // Digits only, below 2^32: Assimp reads the count with strtoul10 (no sign, an
+            // unsigned int), and any other reading would walk another body than Assimp's.
             long count = 0;
-            if (f.size() != 3 || !text::parse_int(f[2], count) || count < 0 || count > (1L << 40))
-                fail(line, "expected 'element NAME COUNT' with a count in [0, 2^40]");
+            const bool digits = f.size() == 3 && f[2].find_first_not_of("0123456789") == std::string_view::npos;
+            if (!digits || !text::parse_int(f[2], count) || count > 0xFFFFFFFFL)
+                fail(line, "expected 'element NAME COUNT' with a count of digits only, below 2^32");
+            // Assimp 5.2 takes 'element TextureFile' for a texture's file name, with no count.
+            if (f[1] == "TextureFile")
+                fail(line,
+                     "an element named 'TextureFile' (Assimp 5.2 reads that name as a texture file, not an element)");
             // Assimp 5.2 sizes its arrays by the first 'vertex' and the first 'face' or
             // 'tristrips' element and writes every later one's past them (heap corruption,
             // found by fuzz_ply); and of a strip it keeps one triangle. So each name once,
@@ -250,7 +284,8 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
                         path, total, bytes.size() - pos));
     h.body_offset = pos;
     if (h.binary) check_binary_body(path, bytes.substr(pos), elements, big_endian);
-    else check_ascii_body(path, bytes.substr(pos), elements, body_line);
+    else if (check_ascii_body(path, bytes.substr(pos), elements, body_line, nullptr))
+        check_ascii_body(path, bytes.substr(pos), elements, body_line, &h.ascii_body);
     return h;
 }
 

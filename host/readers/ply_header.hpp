@@ -13,6 +13,9 @@ struct PlyHeader {
     std::uint64_t vertices = 0, faces = 0;
     bool binary = false;
     std::size_t body_offset = 0;  // the first byte after "end_header\n"
+    // An ASCII body with blank lines between elements (or a lone carriage return), written
+    // one element per line as Assimp 5.2 needs it; empty when the body is read as it is.
+    std::string ascii_body;
 };
 
 // Throws facet::Error naming `path` and the line when the header is not a PLY header
