@@ -213,5 +213,20 @@ TEST(PlyValues, BlankLinesInAnAsciiBodyLoseNothing) {
     expect_error([&] { load_scene(d.write("ctrl.ply", ctrl)); }, {"ctrl.ply:11:", "byte 0x0C in the PLY body"});
 }
 
+// Each ASCII value must read whole as its type: Assimp 5.2 stops inside "1-5" and takes "-5"
+// for the next value, so a list count could come from a place the check never saw.
+TEST(PlyValues, AsciiValuesReadWholeAsTheirType) {
+    TempDir d;
+    for (const char* ok : {"1 1 0", "1. .5 -0", "1e0 +1E-0 0.0e+0", "1 1 0.0"})
+        EXPECT_GE(load_scene(d.write("ok.ply", square_ply(ok))).triangle_count(), 2u) << ok;
+    expect_error([&] { load_scene(d.write("dash.ply", square_ply("1-5 1 0"))); },
+                 {"dash.ply:12:", "element 'vertex' 2 has '1-5' where its property 'x' needs a number"});
+    expect_error([&] { load_scene(d.write("e.ply", square_ply("1 1e 0"))); }, {"e.ply:12:", "'1e'"});
+    std::string face = square_ply("1 1 0");
+    face.replace(face.find("3 0 2 3"), 7, "3 0 2 3.5");
+    expect_error([&] { load_scene(d.write("idx.ply", face)); },
+                 {"idx.ply:15:", "element 'face' 1 has '3.5' where its property 'vertex_indices' needs an integer"});
+}
+
 }  // namespace
 }  // namespace facet

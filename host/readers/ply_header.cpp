@@ -31,7 +31,44 @@ struct PlyProperty {
     int count_bytes = 0;  // a list's count type
     bool count_signed = false;
     int value_bytes = 0;
+    char value_kind = 'f';  // 'f' float, 'i' signed, 'u' unsigned integer
 };
+
+char value_kind(std::string_view t) {
+    if (t == "float" || t == "float32" || t == "double" || t == "float64") return 'f';
+    return t[0] == 'u' ? 'u' : 'i';
+}
+
+// Whether an ASCII value reads as a whole the way Assimp 5.2 reads its type: an unsigned
+// integer as digits (strtoul10), a signed one with an optional sign (strtol10), a real as
+// fast_atoreal_move does (sign, digits, point, exponent, or nan / inf / infinity). Where
+// Assimp stops inside a value it takes the rest for the next one ("1-5" as 1 and -5), so
+// a list count could be read from a place facet's walk did not check.
+bool reads_whole(std::string_view t, char kind) {
+    std::size_t k = 0;
+    auto digits = [&]() {
+        const std::size_t s = k;
+        while (k < t.size() && t[k] >= '0' && t[k] <= '9') ++k;
+        return k - s;
+    };
+    if (kind != 'u' && k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
+    if (kind != 'f') return digits() > 0 && k == t.size();
+    std::string word(t.substr(k));
+    for (char& c : word) c = char(c | 0x20);  // lower case for letters
+    if (word == "nan" || word == "inf" || word == "infinity") return true;
+    std::size_t n = digits();
+    if (k < t.size() && t[k] == '.') {
+        ++k;
+        n += digits();
+    }
+    if (n == 0) return false;
+    if (k < t.size() && (t[k] == 'e' || t[k] == 'E')) {
+        ++k;
+        if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
+        if (digits() == 0) return false;
+    }
+    return k == t.size();
+}
 
 struct PlyElement {
     std::string name;
@@ -117,7 +154,18 @@ bool check_ascii_body(const std::string& path, std::string_view body, const std:
                 ++wanted;
                 if (t.empty()) throw short_line();
                 ++values;
-                if (!p.list) continue;
+                auto check_value = [&](std::string_view v, char kind) {
+                    if (!reads_whole(v, kind))
+                        throw Error(fmt::format("{}:{}: element '{}' {} has '{}' where its property '{}' needs {}",
+                                                path, line, el.name, i, v, p.name,
+                                                kind == 'f'   ? "a number"
+                                                : kind == 'i' ? "an integer"
+                                                              : "an unsigned integer (digits)"));
+                };
+                if (!p.list) {
+                    check_value(t, p.value_kind);
+                    continue;
+                }
                 // Digits only: Assimp reads an unsigned count with strtoul10 (no sign).
                 long n = 0;
                 if (t.find_first_not_of("0123456789") != std::string_view::npos || !text::parse_int(t, n) ||
@@ -125,8 +173,11 @@ bool check_ascii_body(const std::string& path, std::string_view body, const std:
                     throw Error(fmt::format("{}: element '{}' {} has a list of '{}' values, more than the file holds",
                                             path, el.name, i, t));
                 face.note(p, n);
-                for (long k = 0; k < n; ++k, ++wanted, ++values)
-                    if (next().empty()) throw short_line();
+                for (long k = 0; k < n; ++k, ++wanted, ++values) {
+                    const std::string_view v = next();
+                    if (v.empty()) throw short_line();
+                    check_value(v, p.value_kind);
+                }
             }
             if (!next().empty())
                 throw Error(
@@ -260,10 +311,10 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
             if (f.size() == 5 && f[1] == "list" && scalar_bytes(f[2]) > 0 && scalar_bytes(f[3]) > 0) {
                 if (f[2] == "float" || f[2] == "float32" || f[2] == "double" || f[2] == "float64")
                     fail(line, fmt::format("a list's count type must be an integer type, not '{}'", f[2]));
-                p = {std::string(f[4]), true, scalar_bytes(f[2]), f[2].size() > 0 && f[2][0] != 'u',
-                     scalar_bytes(f[3])};
+                p = {std::string(f[4]), true, scalar_bytes(f[2]), value_kind(f[2]) == 'i', scalar_bytes(f[3]),
+                     value_kind(f[3])};
             } else if (f.size() == 3 && scalar_bytes(f[1]) > 0) {
-                p = {std::string(f[2]), false, 0, false, scalar_bytes(f[1])};
+                p = {std::string(f[2]), false, 0, false, scalar_bytes(f[1]), value_kind(f[1])};
             } else {
                 fail(line, "expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
             }
