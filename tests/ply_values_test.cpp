@@ -194,6 +194,7 @@ TEST(PlyValues, BlankLinesInAnAsciiBodyLoseNothing) {
         with(plain, body, "\n"),            // a blank line before the first element
         with(crlf, "0 1 0", "\r\n"),        // one blank line, CRLF
         with(plain, "3 0 2 3", "\n \n\n"),  // between faces
+        with(crlf, "0 1 0", "\r \r\n"),     // a line of a CR and a blank, CRLF
         [&] {
             std::string s = plain;  // a lone CR between two values of a line
             s.replace(s.find("1 0 0"), 5, "1\r0 0");

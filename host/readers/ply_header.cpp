@@ -110,9 +110,10 @@ bool check_ascii_body(const std::string& path, std::string_view body, const std:
     long line = first_line;
     bool rewrite = false, first = true;
     auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    auto lone_cr = [&]() { return body[pos] == '\r' && pos + 1 < body.size() && body[pos + 1] != '\n'; };
     auto next = [&]() -> std::string_view {  // the next value on this line, "" at its end
         while (pos < body.size() && blank(body[pos])) {
-            if (body[pos] == '\r' && pos + 1 < body.size() && body[pos + 1] != '\n') rewrite = true;
+            if (lone_cr()) rewrite = true;
             ++pos;
         }
         const std::size_t start = pos;
@@ -133,8 +134,10 @@ bool check_ascii_body(const std::string& path, std::string_view body, const std:
     for (const PlyElement& el : elements)
         for (std::uint64_t i = 0; i < el.count; ++i) {
             int newlines = 0;
-            while (pos < body.size() && (blank(body[pos]) || body[pos] == '\n'))  // blank lines between
+            while (pos < body.size() && (blank(body[pos]) || body[pos] == '\n')) {  // blank lines between
+                if (lone_cr()) rewrite = true;
                 if (body[pos++] == '\n') ++line, ++newlines;
+            }
             if (newlines > (first ? 0 : 1)) rewrite = true;
             first = false;
             if (pos >= body.size())
