@@ -1,7 +1,6 @@
 // PLY headers, checked line by line, and the body walked against them.
 #include "host/readers/ply_header.hpp"
 
-#include <cstring>
 #include <vector>
 
 #include <fmt/format.h>
@@ -254,13 +253,13 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
         // while Assimp reads on past it into the binary data (and crashed there: fuzz_ply),
         // so a '#' anywhere but in a comment line is an error.
         const auto f = text::split_fields(text);
-        if (text.find('#') != std::string_view::npos && !(!f.empty() && (f[0] == "comment" || f[0] == "obj_info")))
+        const bool comment = !f.empty() && (f[0] == "comment" || f[0] == "obj_info");
+        if (text.find('#') != std::string_view::npos && !comment)
             fail(line, "'#' in a PLY header line (PLY has no '#' comments; use a 'comment' line)");
         // A header is text: a control byte (a NUL, a lone carriage return, ...) ends a field
         // or a line for Assimp where it does not for this check, so the two would read
         // different headers and Assimp would take the body at another step (it allocated
         // 32 GB for a "count" so read: fuzz_ply). Bytes above 127 only in comments.
-        const bool comment = !f.empty() && (f[0] == "comment" || f[0] == "obj_info");
         for (const char c : text) {
             const auto b = static_cast<unsigned char>(c);
             if ((b < 0x20 && b != '\t') || b == 0x7F || (b >= 0x80 && !comment))
