@@ -3,6 +3,7 @@
 // warning; device errors say their cause (docs/robustness.md lists what is checked).
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <string>
 
 #include <fmt/format.h>
@@ -264,6 +265,81 @@ TEST(Limits, CorruptExrHeaderIsRejectedBeforeReading) {
     // A valid EXR still reads.
     write_exr(d.path("ok.exr"), 4, 2, std::vector<float>(24, 0.5f));
     EXPECT_EQ(read_image(d.path("ok.exr")).width, 4);
+}
+
+// An uncompressed scanline EXR, written here byte by byte (OpenEXR's file layout): 3x2
+// pixels of R, G, B floats, pixel i of line y holding 10 * y + i in each channel.
+std::string uncompressed_exr() {
+    auto attr = [](const char* name, const char* type, const std::string& value) {
+        return std::string(name) + '\0' + type + '\0' + le32(std::int32_t(value.size())) + value;
+    };
+    auto f32 = [](float f) {
+        std::uint32_t u = 0;
+        std::memcpy(&u, &f, 4);
+        return le32(std::int32_t(u));
+    };
+    std::string channels;
+    for (const char* c : {"B", "G", "R"}) channels += std::string(c) + '\0' + le32(2) + le32(0) + le32(1) + le32(1);
+    channels += '\0';
+    const std::string window = le32(0) + le32(0) + le32(2) + le32(1);
+    std::string exr =
+        exr_header(attr("channels", "chlist", channels) + attr("compression", "compression", std::string(1, '\0')) +
+                   attr("dataWindow", "box2i", window) + attr("displayWindow", "box2i", window) +
+                   attr("lineOrder", "lineOrder", std::string(1, '\0')) + attr("pixelAspectRatio", "float", f32(1)) +
+                   attr("screenWindowCenter", "v2f", f32(0) + f32(0)) + attr("screenWindowWidth", "float", f32(1)));
+    const std::size_t line_bytes = 8 + 3 * 3 * 4;
+    const std::size_t first = exr.size() + 2 * 8;
+    for (std::size_t y = 0; y < 2; ++y) {
+        const std::uint64_t at = first + y * line_bytes;
+        exr += le32(std::int32_t(at & 0xffffffffu)) + le32(std::int32_t(at >> 32));
+    }
+    for (int y = 0; y < 2; ++y) {
+        exr += le32(y) + le32(3 * 3 * 4);
+        for (int c = 0; c < 3; ++c)  // B, G, R: each a run of the line's three pixels
+            for (int i = 0; i < 3; ++i) exr += f32(float(10 * y + i));
+    }
+    return exr;
+}
+
+// An uncompressed EXR smaller than its scanlines need. OpenEXR itself stops at a file cut
+// inside a chunk ("Unexpected end of file"), but reads a chunk that declares fewer bytes
+// than its line holds without an error, the rest of the line left as whatever memory held
+// (fuzz_env_map's corpus under valgrind: the stored finding). Both are refused by size.
+TEST(Limits, UncompressedExrCutShortIsRejected) {
+    TempDir d;
+    const std::string exr = uncompressed_exr();
+    const ImageRGB img = read_image(d.write("whole.exr", exr));
+    ASSERT_EQ(img.width, 3);
+    ASSERT_EQ(img.height, 2);
+    for (int y = 0; y < 2; ++y)
+        for (int i = 0; i < 3; ++i)
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(img.rgb[std::size_t(3 * (3 * y + i) + c)], float(10 * y + i));
+    for (std::size_t cut : {std::size_t(1), std::size_t(30)}) {
+        SCOPED_TRACE(cut);
+        expect_error([&] { read_image(d.write("cut.exr", exr.substr(0, exr.size() - cut))); },
+                     {"cut.exr", "2 uncompressed scanlines of 3 pixels need", "truncated"});
+    }
+    // Cut before the second line's chunk: its offset points past the end.
+    expect_error([&] { read_image(d.write("cut.exr", exr.substr(0, exr.size() - 44))); },
+                 {"cut.exr", "chunk 1 is at byte 373, outside its chunks", "incomplete or corrupt"});
+    // An offset table of zeros (a writer that stopped early): OpenEXR scanned for the chunks
+    // and, where it found none, the lines came back unread.
+    std::string zeros = exr;
+    zeros.replace(zeros.size() - 2 * 44 - 16, 16, std::string(16, '\0'));
+    expect_error([&] { read_image(d.write("zeros.exr", zeros)); }, {"zeros.exr", "chunk 0 is at byte 0"});
+    std::vector<std::string> warnings;
+    expect_error(
+        [&] {
+            load_environment_map(test::fuzz_dir() + "/regressions/env_map/exr_uncompressed_cut_short.exr",
+                                 glm::vec3(1.0f), glm::mat3(1.0f), warnings);
+        },
+        {"exr_uncompressed_cut_short.exr", "759 pixels need", "truncated"});
+    expect_error(
+        [&] {
+            load_environment_map(test::fuzz_dir() + "/regressions/env_map/exr_offset_table_zero.exr", glm::vec3(1.0f),
+                                 glm::mat3(1.0f), warnings);
+        },
+        {"exr_offset_table_zero.exr", "chunk 0 is at byte 0"});
 }
 
 // Environment scale: negative or non-finite is rejected.

@@ -280,6 +280,7 @@ void check_image_header_bytes(const std::string& path, const std::string& head, 
     std::int64_t width = 0, height = 0;
     int compression = 0;
     std::int64_t tile_w = 0, tile_h = 0;
+    std::int64_t pixel_bytes = 0;  // the channels' bytes a pixel, 0 when any is subsampled
     while (at < head.size() && head[at] != '\0') {
         const std::size_t name_end = head.find('\0', at);
         const std::size_t type_end = name_end == std::string::npos ? name_end : head.find('\0', name_end + 1);
@@ -319,6 +320,18 @@ void check_image_header_bytes(const std::string& path, const std::string& head, 
                     fmt::format("{}: the EXR header's channel list '{}' declares {} bytes, but its "
                                 "channels end elsewhere: it is corrupt",
                                 path, name.substr(0, 64), size));
+            if (name == "channels") {  // pixel type (UINT 4, HALF 2, FLOAT 4 bytes), x and y sampling
+                pixel_bytes = 0;
+                bool subsampled = false;
+                for (std::size_t c = value; c < end && head[c] != '\0';) {
+                    const std::size_t nul = head.find('\0', c);
+                    const std::int32_t type_id = int32_at(nul + 1);
+                    pixel_bytes += type_id == 1 ? 2 : 4;
+                    subsampled = subsampled || int32_at(nul + 9) != 1 || int32_at(nul + 13) != 1;
+                    c = nul + 1 + 16;
+                }
+                if (subsampled) pixel_bytes = 0;
+            }
         }
         if (name == "dataWindow" && type == "box2i" && size == 16) {
             width = std::int64_t(int32_at(value + 8)) - int32_at(value) + 1;
@@ -361,6 +374,36 @@ void check_image_header_bytes(const std::string& path, const std::string& head, 
             fmt::format("{}: the EXR header claims {} scanlines, whose offset table alone needs {} bytes, "
                         "but the file has {}: it is truncated or corrupt",
                         path, height, table, file_size));
+    // Each chunk offset (as far as the table lies in the bytes read) must point past the
+    // table and leave room for the chunk's y and byte count. A table of zeros (a file whose
+    // writer stopped early) made OpenEXR 3.1 fall back to scanning for the chunks, and
+    // where that found none OpenImageIO returned the lines unread, as whatever memory held
+    // (valgrind on fuzz_env_map's corpus): an error here instead.
+    const std::uint64_t table_at = std::uint64_t(at) + 1u;
+    for (std::uint64_t k = 0; at < head.size() && k < table / 8u && table_at + 8u * k + 8u <= head.size(); ++k) {
+        std::uint64_t offset = 0;
+        for (int b = 7; b >= 0; --b) offset = (offset << 8) | std::uint8_t(head[table_at + 8u * k + std::uint64_t(b)]);
+        if (offset < table_at + table || offset > file_size || file_size - offset < 8u)
+            throw Error(
+                fmt::format("{}: the EXR file's chunk {} is at byte {}, outside its chunks (bytes {} to {}): the "
+                            "file is incomplete or corrupt",
+                            path, k, offset, table_at + table, file_size));
+    }
+    // Uncompressed scanlines have a known size: the header, the table, and a line a chunk
+    // (its y and byte count, then its pixels). OpenEXR 3.1 (through OpenImageIO) reads a
+    // chunk that declares fewer bytes than its line holds without an error and leaves the
+    // rest of the line as whatever memory held (valgrind on fuzz_env_map's corpus: lines of
+    // 759 pixels in chunks of 96 bytes). Such a file is smaller than its lines need, and is
+    // refused here; one padded to the full size is left to OpenEXR.
+    if (compression == 0 && pixel_bytes > 0 && at < head.size()) {
+        const std::uint64_t need = std::uint64_t(at) + 1u + table +
+                                   std::uint64_t(height) * (8u + std::uint64_t(width) * std::uint64_t(pixel_bytes));
+        if (need > file_size)
+            throw Error(
+                fmt::format("{}: the EXR file's {} uncompressed scanlines of {} pixels need {} bytes, but the file "
+                            "has {}: it is truncated",
+                            path, height, width, need, file_size));
+    }
 }
 
 bool can_write_float_image(const std::string& path, std::string* why) {
