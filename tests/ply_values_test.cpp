@@ -28,6 +28,13 @@ std::string square_ply(const std::string& vertex2) {
     return s;
 }
 
+// square_ply("1 1 0") with the first `from` replaced by `to`.
+std::string square_ply_with(const std::string& from, const std::string& to) {
+    std::string s = square_ply("1 1 0");
+    s.replace(s.find(from), from.size(), to);
+    return s;
+}
+
 TEST(PlyValues, NonFiniteVerticesAreErrors) {
     TempDir d;
     EXPECT_GE(load_scene(d.write("ok.ply", square_ply("1 1 0"))).triangle_count(), 2u);
@@ -54,8 +61,7 @@ TEST(PlyValues, AsciiLineWithAValueMissingOrTooManyIsAnError) {
                  {"short.ply:12:", "element 'vertex' 2 has 2 values on its line"});
     expect_error([&] { load_scene(d.write("long.ply", square_ply("1 1 0 7"))); },
                  {"long.ply:12:", "element 'vertex' 2 has more values on its line than the 3"});
-    std::string face = square_ply("1 1 0");
-    face.replace(face.find("3 0 2 3"), 7, "3 0 2");
+    const std::string face = square_ply_with("3 0 2 3", "3 0 2");
     expect_error([&] { load_scene(d.write("face.ply", face)); }, {"face.ply:15:", "element 'face' 1 has 3 values"});
     // Blank lines between elements and CRLF line ends are fine.
     std::string crlf;
@@ -140,14 +146,11 @@ TEST(PlyValues, HeaderIsTextWithUtf8OnlyInComments) {
     std::string ok = square_ply("1 1 0");
     ok.insert(ok.find("element"), "comment scanned by J\xC3\xBCrgen\n");
     EXPECT_GE(load_scene(d.write("utf8.ply", ok)).triangle_count(), 2u);
-    std::string nul = square_ply("1 1 0");
-    nul.replace(nul.find("float y"), 7, std::string("float \0y", 8));
+    const std::string nul = square_ply_with("float y", std::string("float \0y", 8));
     expect_error([&] { load_scene(d.write("nul.ply", nul)); }, {"nul.ply:5:", "byte 0x00 in a PLY header line"});
-    std::string cr = square_ply("1 1 0");
-    cr.replace(cr.find("float y"), 7, "float\ry");
+    const std::string cr = square_ply_with("float y", "float\ry");
     expect_error([&] { load_scene(d.write("cr.ply", cr)); }, {"cr.ply:5:", "byte 0x0D in a PLY header line"});
-    std::string latin = square_ply("1 1 0");
-    latin.replace(latin.find("float y"), 7, "float \xC3\xBF");
+    const std::string latin = square_ply_with("float y", "float \xC3\xBF");
     expect_error([&] { load_scene(d.write("latin.ply", latin)); },
                  {"latin.ply:5:", "byte 0xC3 in a PLY header line", "beyond comments"});
 }
@@ -156,14 +159,11 @@ TEST(PlyValues, HeaderIsTextWithUtf8OnlyInComments) {
 // the body walked here was not the one Assimp read. 'TextureFile' is a file name to Assimp.
 TEST(PlyValues, ElementCountsAreDigitsBelowTwoToThe32) {
     TempDir d;
-    std::string plus = square_ply("1 1 0");
-    plus.replace(plus.find("vertex 4"), 8, "vertex +4");
+    const std::string plus = square_ply_with("vertex 4", "vertex +4");
     expect_error([&] { load_scene(d.write("plus.ply", plus)); }, {"plus.ply:3:", "a count of digits only"});
-    std::string big = square_ply("1 1 0");
-    big.replace(big.find("vertex 4"), 8, "vertex 4294967300");
+    const std::string big = square_ply_with("vertex 4", "vertex 4294967300");
     expect_error([&] { load_scene(d.write("big.ply", big)); }, {"big.ply:3:", "below 2^32"});
-    std::string zeros = square_ply("1 1 0");
-    zeros.replace(zeros.find("vertex 4"), 8, "vertex 004");
+    const std::string zeros = square_ply_with("vertex 4", "vertex 004");
     EXPECT_GE(load_scene(d.write("zeros.ply", zeros)).triangle_count(), 2u);
     std::string tex = square_ply("1 1 0");
     tex.insert(tex.find("end_header"), "element TextureFile 0\n");
@@ -189,17 +189,13 @@ TEST(PlyValues, BlankLinesInAnAsciiBodyLoseNothing) {
         return s;
     };
     const std::string cases[] = {
-        with(plain, "0 1 0", "\n\n"),       // two blank lines
-        with(plain, "0 1 0", "  \t \n"),    // a line of blanks
-        with(plain, body, "\n"),            // a blank line before the first element
-        with(crlf, "0 1 0", "\r\n"),        // one blank line, CRLF
-        with(plain, "3 0 2 3", "\n \n\n"),  // between faces
-        with(crlf, "0 1 0", "\r \r\n"),     // a line of a CR and a blank, CRLF
-        [&] {
-            std::string s = plain;  // a lone CR between two values of a line
-            s.replace(s.find("1 0 0"), 5, "1\r0 0");
-            return s;
-        }(),
+        with(plain, "0 1 0", "\n\n"),        // two blank lines
+        with(plain, "0 1 0", "  \t \n"),     // a line of blanks
+        with(plain, body, "\n"),             // a blank line before the first element
+        with(crlf, "0 1 0", "\r\n"),         // one blank line, CRLF
+        with(plain, "3 0 2 3", "\n \n\n"),   // between faces
+        with(crlf, "0 1 0", "\r \r\n"),      // a line of a CR and a blank, CRLF
+        square_ply_with("1 0 0", "1\r0 0"),  // a lone CR between two values of a line
     };
     int k = 0;
     for (const std::string& c : cases) {
@@ -209,8 +205,7 @@ TEST(PlyValues, BlankLinesInAnAsciiBodyLoseNothing) {
         ASSERT_GE(got.vertices.size(), 6u);
         for (int v = 0; v < 6; ++v) EXPECT_EQ(got.vertices[std::size_t(v)], want.vertices[std::size_t(v)]) << v;
     }
-    std::string ctrl = plain;
-    ctrl.replace(ctrl.find("1 0 0"), 5, std::string("1 \f 0", 5));
+    const std::string ctrl = square_ply_with("1 0 0", "1 \f 0");
     expect_error([&] { load_scene(d.write("ctrl.ply", ctrl)); }, {"ctrl.ply:11:", "byte 0x0C in the PLY body"});
 }
 
@@ -223,8 +218,7 @@ TEST(PlyValues, AsciiValuesReadWholeAsTheirType) {
     expect_error([&] { load_scene(d.write("dash.ply", square_ply("1-5 1 0"))); },
                  {"dash.ply:12:", "element 'vertex' 2 has '1-5' where its property 'x' needs a number"});
     expect_error([&] { load_scene(d.write("e.ply", square_ply("1 1e 0"))); }, {"e.ply:12:", "'1e'"});
-    std::string face = square_ply("1 1 0");
-    face.replace(face.find("3 0 2 3"), 7, "3 0 2 3.5");
+    const std::string face = square_ply_with("3 0 2 3", "3 0 2 3.5");
     expect_error([&] { load_scene(d.write("idx.ply", face)); },
                  {"idx.ply:15:", "element 'face' 1 has '3.5' where its property 'vertex_indices' needs an integer"});
 }
