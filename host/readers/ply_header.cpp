@@ -337,8 +337,10 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
                         path, total, bytes.size() - pos));
     h.body_offset = pos;
     if (h.binary) check_binary_body(path, bytes.substr(pos), elements, big_endian);
-    else if (check_ascii_body(path, bytes.substr(pos), elements, body_line, nullptr))
+    else if (check_ascii_body(path, bytes.substr(pos), elements, body_line, nullptr)) {
+        h.ascii_body.reserve(bytes.size() - pos + 1);  // at most the body and a final newline
         check_ascii_body(path, bytes.substr(pos), elements, body_line, &h.ascii_body);
+    }
     return h;
 }
 
