@@ -71,6 +71,7 @@ TEST(FuzzRegression, GltfAndPlyFindingsFailCleanly) {
         {"ply/face_and_tristrips.ply", ":9: 'tristrips' elements are not read", 0},
         {"ply/face_texcoord_without_indices.ply", ":13: element 'face' 0 has a 'texcoord' list of 6 values for 0", 0},
         {"ply/header_name_with_nul.ply", ":4: byte 0x0E in a PLY header line", 0},
+        {"ply/format_line_twice.ply", ":2: expected 'format ascii|binary_little_endian", 0},
         {"ply/face_texcoord_beyond_indices.ply", ":15: element 'face' 1 has a 'texcoord' list of 8 values for 1", 0},
         {"ply/header_line_with_hash.ply", ":15: '#' in a PLY header line", 0},
         {"ply/ascii_list_count_huge.ply", ":16: byte 0x00 in the PLY body", 0},

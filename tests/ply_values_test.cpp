@@ -223,5 +223,21 @@ TEST(PlyValues, AsciiValuesReadWholeAsTheirType) {
                  {"idx.ply:15:", "element 'face' 1 has '3.5' where its property 'vertex_indices' needs an integer"});
 }
 
+// The format line is the second line, once: Assimp 5.2 takes line 2 for it whatever it
+// says, so "format ascii" there and a binary format below had it read another body.
+TEST(PlyValues, FormatIsTheSecondLineAndComesOnce) {
+    TempDir d;
+    expect_error(
+        [&] { load_scene(d.write("twice.ply", square_ply_with("end_header", "format ascii 1.0\nend_header"))); },
+        {"twice.ply:9:", "a second 'format' line"});
+    expect_error(
+        [&] {
+            load_scene(d.write("late.ply", square_ply_with("format ascii 1.0\n", "comment x\nformat ascii 1.0\n")));
+        },
+        {"late.ply:2:", "the second line of a PLY file must be its 'format' line"});
+    expect_error([&] { load_scene(d.write("version.ply", square_ply_with("ascii 1.0", "ascii ply"))); },
+                 {"version.ply:2:", "expected 'format ascii|binary_little_endian|binary_big_endian 1.0'"});
+}
+
 }  // namespace
 }  // namespace facet
