@@ -239,5 +239,19 @@ TEST(PlyValues, FormatIsTheSecondLineAndComesOnce) {
                  {"version.ply:2:", "expected 'format ascii|binary_little_endian|binary_big_endian 1.0'"});
 }
 
+// Assimp 5.2 ends an element's property list at a comment or blank line and skips the
+// properties after it: such a header is an error naming the line; before an element, fine.
+TEST(PlyValues, NoCommentOrBlankLineBetweenAnElementsProperties) {
+    TempDir d;
+    expect_error(
+        [&] { load_scene(d.write("c.ply", square_ply_with("property float y", "comment y\nproperty float y"))); },
+        {"c.ply:5:", "a comment between the properties of element 'vertex'", "before the 'element' line"});
+    expect_error([&] { load_scene(d.write("b.ply", square_ply_with("property float z", "\nproperty float z"))); },
+                 {"b.ply:6:", "a blank line between the properties of element 'vertex'"});
+    EXPECT_EQ(load_scene(d.write("ok.ply", square_ply_with("element face", "comment faces\n\nelement face")))
+                  .triangle_count(),
+              2u + 2u);  // the square and the default light's two
+}
+
 }  // namespace
 }  // namespace facet

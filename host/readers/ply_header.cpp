@@ -241,7 +241,9 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
     std::uint64_t total = 0;  // every element's count, summed
     std::vector<PlyElement> elements;
     bool format = false, big_endian = false;
-    int body_line = 0;  // the first line after end_header
+    int body_line = 0;            // the first line after end_header
+    int break_in_properties = 0;  // a comment or blank line after an element line, until a property
+    bool break_is_comment = false;
     for (int line = 1;; ++line) {
         const std::size_t end = bytes.find('\n', pos);
         if (end == std::string_view::npos || line > 100000)
@@ -275,7 +277,21 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
         // here (an ASCII "format" on line 2 and a binary one on line 3: 15 GB, fuzz_ply).
         if (line == 2 && (f.empty() || f[0] != "format"))
             fail(2, "the second line of a PLY file must be its 'format' line");
-        if (f.empty() || comment) continue;
+        // Assimp 5.2 ends an element's property list at a comment or blank line and skips
+        // the properties after it as unknown lines: its body layout would not be this one.
+        if (f.empty() || comment) {
+            if (!elements.empty() && break_in_properties == 0) {
+                break_in_properties = line;
+                break_is_comment = comment;
+            }
+            continue;
+        }
+        if (f[0] == "property" && break_in_properties > 0)
+            fail(break_in_properties,
+                 fmt::format("a {} between the properties of element '{}' (Assimp 5.2 ends the element there): "
+                             "put it before the 'element' line",
+                             break_is_comment ? "comment" : "blank line", elements.back().name));
+        break_in_properties = 0;
         if (f[0] == "end_header") {
             body_line = line + 1;
             break;
