@@ -396,8 +396,8 @@ void check_image_header_bytes(const std::string& path, const std::string& head, 
     // 759 pixels in chunks of 96 bytes). Such a file is smaller than its lines need, and is
     // refused here; one padded to the full size is left to OpenEXR.
     if (compression == 0 && pixel_bytes > 0 && at < head.size()) {
-        const std::uint64_t need = std::uint64_t(at) + 1u + table +
-                                   std::uint64_t(height) * (8u + std::uint64_t(width) * std::uint64_t(pixel_bytes));
+        const std::uint64_t need =
+            table_at + table + std::uint64_t(height) * (8u + std::uint64_t(width) * std::uint64_t(pixel_bytes));
         if (need > file_size)
             throw Error(
                 fmt::format("{}: the EXR file's {} uncompressed scanlines of {} pixels need {} bytes, but the file "

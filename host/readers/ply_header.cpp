@@ -170,8 +170,7 @@ bool check_ascii_body(const std::string& path, std::string_view body, const std:
                 }
                 // Digits only: Assimp reads an unsigned count with strtoul10 (no sign).
                 long n = 0;
-                if (t.find_first_not_of("0123456789") != std::string_view::npos || !text::parse_int(t, n) ||
-                    std::uint64_t(n) > (body.size() - pos) / 2 + 1)
+                if (!reads_whole(t, 'u') || !text::parse_int(t, n) || std::uint64_t(n) > (body.size() - pos) / 2 + 1)
                     throw Error(fmt::format("{}: element '{}' {} has a list of '{}' values, more than the file holds",
                                             path, el.name, i, t));
                 face.note(p, n);
@@ -308,8 +307,7 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
             // Digits only, below 2^32: Assimp reads the count with strtoul10 (no sign, an
             // unsigned int), and any other reading would walk another body than Assimp's.
             long count = 0;
-            const bool digits = f.size() == 3 && f[2].find_first_not_of("0123456789") == std::string_view::npos;
-            if (!digits || !text::parse_int(f[2], count) || count > 0xFFFFFFFFL)
+            if (f.size() != 3 || !reads_whole(f[2], 'u') || !text::parse_int(f[2], count) || count > 0xFFFFFFFFL)
                 fail(line, "expected 'element NAME COUNT' with a count of digits only, below 2^32");
             // Assimp 5.2 takes 'element TextureFile' for a texture's file name, with no count.
             if (f[1] == "TextureFile")
@@ -334,7 +332,7 @@ PlyHeader check_ply_header(const std::string& path, std::string_view bytes) {
             if (elements.empty()) fail(line, "a property before any element");
             PlyProperty p;
             if (f.size() == 5 && f[1] == "list" && scalar_bytes(f[2]) > 0 && scalar_bytes(f[3]) > 0) {
-                if (f[2] == "float" || f[2] == "float32" || f[2] == "double" || f[2] == "float64")
+                if (value_kind(f[2]) == 'f')
                     fail(line, fmt::format("a list's count type must be an integer type, not '{}'", f[2]));
                 p = {std::string(f[4]), true, scalar_bytes(f[2]), value_kind(f[2]) == 'i', scalar_bytes(f[3]),
                      value_kind(f[3])};

@@ -75,7 +75,10 @@ void load_ply(const std::string& path, Scene& scene, const MeshOptions& options)
     // Assimp the "\r\n" it expects keeps the body as written (PlyValues.BinaryBody...).
     if (header.binary && header.body_offset >= 2 && bytes[header.body_offset - 2] != '\r')
         bytes.insert(header.body_offset - 1, 1, '\r');
-    if (!header.ascii_body.empty()) bytes = bytes.substr(0, header.body_offset) + header.ascii_body;
+    if (!header.ascii_body.empty()) {  // the header kept, the body as rewritten
+        bytes.resize(header.body_offset);
+        bytes += header.ascii_body;
+    }
     Assimp::Importer importer;
     const aiScene* ai = nullptr;
     try {
