@@ -21,7 +21,7 @@ using test::mf::f4;
 constexpr double kPi = 3.14159265358979323846;
 constexpr float kEtas[] = {1.33f, 1.5f, 1.0f / 1.5f, 2.4f};
 constexpr float kAlphas[] = {0.01f, 0.1f, 0.5f};
-constexpr int kChi2Tests = 4 * 3 * (3 + 1);
+constexpr int kChi2Tests = 4 * 3 * (3 + 1) + 8;
 const double kLevel = test::chi2::sidak(0.01, kChi2Tests);
 
 // Edges uniform in asinh((x - c) / w) over [lo, hi] (as chi2_test_util.cpp's).
@@ -113,6 +113,54 @@ void chi_square_ndf(int ndf, const std::vector<double>& angles) {
 TEST(DielectricChi2, ChiSquareGgx) { chi_square_ndf(FC_NDF_GGX, {0.0, 45.0, 80.0}); }
 
 TEST(DielectricChi2, ChiSquareBeckmann) { chi_square_ndf(FC_NDF_BECKMANN, {60.0}); }
+
+// The widened choice of reflection or refraction (FC_MAT_WIDE_CHOICE, set in scenes whose
+// light is not uniform): the density still the sampling's.
+TEST(DielectricChi2, ChiSquareWideChoice) {
+    unsigned seed = 7600u;
+    for (float eta : {1.5f, 1.0f / 1.5f})
+        for (float alpha : {0.1f, 0.5f})
+            for (double deg : {0.0, 80.0}) {
+                FcMaterial m = glass(FC_NDF_GGX, eta, alpha);
+                m.flags |= FC_MAT_WIDE_CHOICE;
+                auto r = chi_square(m, test::mf::direction(deg, 0.7), seed++);
+                EXPECT_TRUE(r.ok) << "eta " << eta << " alpha " << alpha << " theta_o " << deg << ": " << r.message;
+                EXPECT_EQ(r.invalid, 0u);
+            }
+}
+
+// The widened choice (dielectric_choice): F moved toward [0.25, 0.75], at most 4 times either
+// lobe's share, so the smooth interface still reflects F and transmits 1 - F in expectation,
+// chooses the reflection with that probability, and no sample weighs more than 4 / 3.
+TEST(DielectricChi2, WideChoiceKeepsTheFresnelSplit) {
+    std::vector<FcMaterial> mats;
+    std::vector<cl_float4> wo;
+    for (float eta : {1.0001f, 1.33f, 1.5f, 2.4f, 1.0f / 1.5f})
+        for (float a : {0.0f, 0.3f})
+            for (double deg : {0.0, 45.0, 70.0, 85.0}) {
+                FcMaterial m = glass(FC_NDF_GGX, eta, a);
+                m.flags |= FC_MAT_WIDE_CHOICE;
+                mats.push_back(m);
+                wo.push_back(f4(direction(deg, 1.1)));
+            }
+    const int samples = 40000;
+    std::vector<Albedo> r = albedo(mats, wo, samples);
+    for (std::size_t i = 0; i < mats.size(); ++i) {
+        SCOPED_TRACE(testing::Message() << "eta " << mats[i].ior << " alpha " << mats[i].alpha_x << " cos_o "
+                                        << wo[i].s[2]);
+        EXPECT_EQ(r[i].bad, 0.0);
+        EXPECT_LE(r[i].wmax, 4.0 / 3.0 + 1e-3);
+        if (mats[i].alpha_x > 0.0f) {
+            EXPECT_LE(r[i].r + r[i].t, 1.0 + 4.0 * std::hypot(r[i].r_err, r[i].t_err) + 1e-5);
+            continue;
+        }
+        const double F = fresnel(wo[i].s[2], mats[i].ior);
+        const double q = std::clamp(F, std::min(0.25, 4.0 * F), 1.0 - std::min(0.25, 4.0 * (1.0 - F)));
+        EXPECT_NEAR(r[i].r, F, 5.0 * r[i].r_err + 1e-6);
+        EXPECT_NEAR(r[i].t, 1.0 - F, 5.0 * r[i].t_err + 1e-6);
+        EXPECT_NEAR(r[i].reflected, q, 5.0 * std::sqrt(q * (1.0 - q) / samples) + 1e-6);
+    }
+}
 
 // Reflection plus transmission albedo (energy, i.e. with the radiance scaling 1/etap^2
 // undone) <= 1 for every eta, alpha and angle, from both sides. With visible-normal

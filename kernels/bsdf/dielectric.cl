@@ -16,14 +16,15 @@
  *       f_t = |wi.h| |wo.h| / (|cos_i| |cos_o|) n_o^2 (1 - F) G D / (n_i wi.h + n_o wo.h)^2.
  *   Microfacets seen from behind by wo or wi contribute nothing (the chi+ of eq. 23).
  *   Sampling draws h from the NDF seen from wo (visible normals: Heitz 2018 for GGX,
- *   beckmann.cl for Beckmann; or D cos), then reflects with probability F(wo.h) and
- *   refracts otherwise (Walter 2007, section 5.3), so the density of wi is
- *       reflection  F pdf_h / (4 |wo.h|)                               (eq. 14)
- *       refraction  (1 - F) pdf_h n_i^2 |wi.h| / (n_i wi.h + n_o wo.h)^2 (eq. 17).
+ *   beckmann.cl for Beckmann; or D cos), then reflects with probability q = F(wo.h) (Walter
+ *   2007, section 5.3), or with FC_MAT_WIDE_CHOICE F moved toward [0.25, 0.75]
+ *   (dielectric_choice), and refracts otherwise, so the density of wi is
+ *       reflection  q pdf_h / (4 |wo.h|)                                   (eq. 14)
+ *       refraction  (1 - q) pdf_h n_i^2 |wi.h| / (n_i wi.h + n_o wo.h)^2   (eq. 17).
  * - Smooth (alpha below FC_ALPHA_MIRROR, or an index-matched ior within FC_IOR_MATCHED
- *   of 1): a delta BSDF. Sampling reflects with probability F(cos_o) (exact Fresnel, fresnel_dielectric: 1 under total
- * internal reflection) and refracts otherwise (refraction.cl); the weight is 1 for the reflection and specular / etap^2
- * for the refraction; eval and pdf give 0.
+ *   of 1): a delta BSDF. Sampling reflects with probability q = dielectric_choice(F(cos_o)) (exact Fresnel,
+ * fresnel_dielectric: 1 under total internal reflection) and refracts otherwise (refraction.cl); the weight is F / q
+ * for the reflection and specular (1 - F) / ((1 - q) etap^2) for the refraction; eval and pdf give 0.
  *
  * Radiance scaling (docs/brdf.md, "Dielectrics"): eq. 21's n_o^2 / (...)^2 makes f_t the
  * BTDF that transports radiance, which is multiplied by (n_o / n_i)^2 = 1 / etap^2
@@ -135,10 +136,31 @@ inline float3 dielectric_eval_at(const FcMaterial* m, float3 wo, float3 wi, cons
     return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
 }
 
-/* The density of wi for the pair p, from h's density pdf_h. */
-inline float dielectric_pdf_at(const DielectricPair* p, float oh, float ih, float fl, float pdf_h) {
+/* The probability of choosing the lobe whose Fresnel factor is fl (F for the reflection, 1 - F for
+ * the refraction): fl itself; with FC_MAT_WIDE_CHOICE (scenes whose light is not uniform), fl raised toward
+ * FC_DIELECTRIC_MIN_CHOICE by at most a factor of 4 and lowered to match on the other side, so that the two choices add
+ * to 1 and a lobe that carries nothing (F = 0, total internal reflection's refraction) is never chosen: q = clamp(fl,
+ * min(Q, 4 fl), 1 - min(Q, 4 (1 - fl))). Choosing by F alone (pbrt-v4, Mitsuba 3) picks a glass ball's reflection of
+ * the sun once in 25 at normal incidence, each time carrying the sun's whole radiance: once the caustics are sampled,
+ * the brightest fireflies of glass_metal_sky (docs/sampling.md, "Sampling toward glass"). F's own choice stays where
+ * the light is uniform (a constant environment alone, the white furnace), where it is exact: every sample weighs 1. */
+#ifndef FC_DIELECTRIC_MIN_CHOICE
+#define FC_DIELECTRIC_MIN_CHOICE 0.25f
+#endif
+inline float dielectric_choice(const FcMaterial* m, float fl) {
+    fl = clamp(fl, 0.0f, 1.0f);
+    if (!(m->flags & FC_MAT_WIDE_CHOICE)) return fl;
+    return clamp(fl, fmin(FC_DIELECTRIC_MIN_CHOICE, 4.0f * fl),
+                 1.0f - fmin(FC_DIELECTRIC_MIN_CHOICE, 4.0f * (1.0f - fl)));
+}
+
+/* The density of wi for the pair p, from h's density pdf_h (fl: the lobe's Fresnel factor, which
+ * dielectric_choice turns into the lobe's probability). */
+inline float dielectric_pdf_at(const FcMaterial* m, const DielectricPair* p, float oh, float ih, float fl,
+                               float pdf_h) {
+    const float q = dielectric_choice(m, fl);
     float pdf =
-        p->reflect ? fl * pdf_h / (4.0f * fabs(oh)) : fl * pdf_h * (p->etap * p->etap) * fabs(ih) / (p->len * p->len);
+        p->reflect ? q * pdf_h / (4.0f * fabs(oh)) : q * pdf_h * (p->etap * p->etap) * fabs(ih) / (p->len * p->len);
     return isfinite(pdf) ? fmax(pdf, 0.0f) : 0.0f;
 }
 
@@ -160,7 +182,7 @@ inline float dielectric_pdf(const FcMaterial* m, float3 wo, float3 wi) {
     const bool visible = ndf_samples_visible(m);
     float d = visible ? ndf_D(m, p.h) : 0.0f;
     float area_o = visible ? ndf_projected_area(m, dielectric_upper(wo)) : 0.0f;
-    return dielectric_pdf_at(&p, oh, ih, fl, dielectric_pdf_h_at(m, wo, p.h, d, area_o));
+    return dielectric_pdf_at(m, &p, oh, ih, fl, dielectric_pdf_h_at(m, wo, p.h, d, area_o));
 }
 
 /* dielectric_eval's value and dielectric_pdf's in *pdf at once: the pair, D(h), the Fresnel
@@ -174,7 +196,7 @@ inline float3 dielectric_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, flo
     float oh = dot(wo, p.h), ih = dot(wi, p.h);
     float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
     float area_o = ndf_projected_area(m, dielectric_upper(wo));
-    *pdf = dielectric_pdf_at(&p, oh, ih, fl, dielectric_pdf_h_at(m, wo, p.h, d, area_o));
+    *pdf = dielectric_pdf_at(m, &p, oh, ih, fl, dielectric_pdf_h_at(m, wo, p.h, d, area_o));
     return dielectric_eval_at(m, wo, wi, &p, d, oh, ih, fl, area_o);
 }
 
@@ -184,15 +206,16 @@ inline bool dielectric_sample_smooth(const FcMaterial* m, float3 wo, float u, Bs
     s->pdf = INFINITY;
     s->f = (float3)(0.0f);
     float fr = fresnel_dielectric(wo.z, m->ior);
-    if (u < fr) {
+    float q = dielectric_choice(m, fr);
+    if (u < q) {
         s->wi = (float3)(-wo.x, -wo.y, wo.z);
-        s->weight = (float3)(1.0f);
+        s->weight = (float3)(fr / q);
         return true;
     }
     if (!refract_about(wo, (float3)(0.0f, 0.0f, 1.0f), m->ior, &s->wi)) return false;
     if (!(s->wi.z * wo.z < 0.0f)) return false;
     float etap = relative_eta(m->ior, wo.z);
-    s->weight = dielectric_tint(m) / (etap * etap);
+    s->weight = dielectric_tint(m) * ((1.0f - fr) / ((1.0f - q) * etap * etap));
     return all_finite(s->weight);
 }
 
@@ -204,7 +227,7 @@ inline bool dielectric_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSamp
     float3 wv = wo.z < 0.0f ? -wo : wo;
     float3 h = ndf_sample_two_sided(m, wv, u.xy);
     float oh = dot(wo, h);
-    if (u.z < fresnel_dielectric(oh, m->ior)) {
+    if (u.z < dielectric_choice(m, fresnel_dielectric(oh, m->ior))) {
         s->wi = 2.0f * oh * h - wo; /* Walter 2007, eq. 39 */
         if (!(s->wi.z * wo.z > 0.0f)) return false;
     } else {

@@ -112,6 +112,12 @@ enum { FC_ALPHA_MODE_LIST(FC_MATERIAL_ENUM_VALUE) FC_ALPHA_MODE_COUNT };
  * anisotropy_direction (kernels/bsdf/anisotropy.cl) instead of an arbitrary one. The host
  * sets it (material_is_anisotropic); without it the frame is frame_from_normal's. */
 #define FC_MAT_ANISOTROPIC 128u
+/* A dielectric chooses reflection or refraction by its Fresnel factor moved toward
+ * [0.25, 0.75] (kernels/bsdf/dielectric.cl, dielectric_choice) instead of by the factor
+ * alone: set by the host on the dielectrics of scenes whose light is not uniform
+ * (host/scene/device_scene.cpp), where a glass surface's reflection of a bright light is
+ * otherwise a rare, bright sample. */
+#define FC_MAT_WIDE_CHOICE 256u
 
 /* Phong-style exponents are clamped to [0, FC_PHONG_EXPONENT_MAX] (the kernels'
  * fc_phong_exponent, the host's shininess conversions and its clamp_material). */
