@@ -105,6 +105,37 @@ TEST(DeviceScene, CompileViewsTheSceneAndConvertsMaterials) {
     EXPECT_EQ(std::memcmp(&d.materials[1], &expected, sizeof expected), 0);
 }
 
+// A dielectric chooses reflection by its Fresnel factor alone under uniform light (a constant
+// environment and no other light: the white furnace, where that choice is exact), widened
+// anywhere else (FC_MAT_WIDE_CHOICE); the glass balls and floor of a sunlit scene become
+// casters of the caustic guide (two float4 each, the ball's index as a lens).
+TEST(DeviceScene, GlassChoiceAndCastersFollowTheLight) {
+    auto scene = [](bool lamp) {
+        Scene s;
+        Material glass = make_material("dielectric");
+        add_material(s, default_material(), "floor");
+        add_material(s, glass, "glass");
+        add_analytic_sphere(s, glm::vec3(0.0f, 1.0f, 0.0f), 1.0f, 1, false);
+        add_quad(s, glm::vec3(-5, 0, -5), glm::vec3(0, 0, 10), glm::vec3(10, 0, 0), 0);
+        s.environment = constant_environment(glm::vec3(1.0f));
+        if (lamp) s.punctual_lights.push_back(PunctualLight{});
+        s.settings.width = s.settings.height = 8;
+        build_lights(s);
+        return s;
+    };
+    const Scene white = scene(false), lit = scene(true);
+    const Bvh bw = build_bvh(white.vertices), bl = build_bvh(lit.vertices);
+    const DeviceScene dw = compile(white, bw), dl = compile(lit, bl);
+    EXPECT_EQ(dw.materials[1].flags & FC_MAT_WIDE_CHOICE, 0u);
+    EXPECT_EQ(dl.materials[1].flags & FC_MAT_WIDE_CHOICE, FC_MAT_WIDE_CHOICE);
+    EXPECT_EQ(dl.materials[0].flags & FC_MAT_WIDE_CHOICE, 0u);  // not a dielectric
+    ASSERT_EQ(dl.params.caster_count, 1u);
+    EXPECT_EQ(dl.casters.size(), 8u);
+    EXPECT_EQ(dl.casters[3], 1.0f);
+    EXPECT_EQ(dl.casters[4], 1.5f);
+    EXPECT_EQ(dl.params.caster_fraction, 0.5f);
+}
+
 // The world triangles' unit geometric normals (face_normals, read by surface_at), from the
 // vertices in double: right where a float cross product of the edges underflows (edges of
 // 1e-25) or overflows (1e20), where the kernel's own normalisation fell back to +z; +z for a

@@ -272,6 +272,15 @@ int run_cli(int argc, char** argv) {
                      "biased (darker); off by default, recorded in the EXR metadata and the report")
         ->option_text("X")
         ->check(kFinite & positive_up_to(FC_MAX_RADIANCE, "radiance"));
+    render
+        ->add_option("--caustic-guide", opt.caustic_guide,
+                     fmt::format("Share of a Lambertian surface's sampled directions drawn toward the glass in the "
+                                 "scene (its bounds; through smooth glass balls, toward the environment's light), for "
+                                 "caustics seen by diffuse surfaces; unbiased at any value, 0 to {:g} (default: the "
+                                 "scene's, else 0.5; 0: the BSDF alone; docs/sampling.md)",
+                                 limits::kMaxCausticGuide))
+        ->option_text("F")
+        ->check(kFinite & CLI::Range(0.0, limits::kMaxCausticGuide));
     render->add_option("--camera", opt.camera, "A glTF file's camera by name (default: the first one)")
         ->option_text("NAME");
     render->add_option("--eye", opt.eye, "Camera position X,Y,Z (default: the scene's; a bare mesh is framed to fit)")

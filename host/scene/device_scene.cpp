@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "host/scene/caustic_casters.hpp"
 #include "host/scene/pixel_filter.hpp"
 #include "host/util/vec3.hpp"
 #include "host/util/wide_vector.hpp"
@@ -31,6 +32,15 @@ FcRenderParams render_params(const Scene& scene) {
     p.filter_radius = pixel_filter_radius(s.filter, s.filter_radius);
     p.clamp = s.clamp > 0.0f ? s.clamp : FC_MAX_RADIANCE;
     return p;
+}
+
+// Whether light is equal in every direction: a constant environment lights the scene and nothing
+// else does (the white furnace). There a dielectric's choice by its Fresnel factor is exact;
+// elsewhere its choice is widened (FC_MAT_WIDE_CHOICE, kernels/bsdf/dielectric.cl).
+bool uniform_light(const Scene& scene) {
+    for (const FcLight& l : scene.lights)
+        if (l.type != FC_LIGHT_ENVIRONMENT || scene.environment.params.width != 0) return false;
+    return true;
 }
 
 // The shared meshes' BLASes, their shading after the world's, and the instances.
@@ -204,7 +214,12 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     }
     d.face_normals = d.face_normals_owned;
     d.materials_owned.reserve(scene.materials.size());
-    for (const Material& m : scene.materials) d.materials_owned.push_back(device_material(m));
+    const bool wide_choice = !uniform_light(scene);
+    for (const Material& m : scene.materials) {
+        d.materials_owned.push_back(device_material(m));
+        if (wide_choice && m.specular_model == FC_SPECULAR_DIELECTRIC)
+            d.materials_owned.back().flags |= FC_MAT_WIDE_CHOICE;
+    }
     d.materials = d.materials_owned;
     d.texture_data = compile_textures(scene);
     d.sphere_tree = build_sphere_bvh(scene.spheres, bvh.stats.width);
@@ -227,6 +242,10 @@ DeviceScene compile(const Scene& scene, const Bvh& bvh) {
     d.texels = d.texture_data.texels;
     d.material_textures = d.texture_data.materials;
     d.texcoords = d.texture_data.texcoords;
+    d.casters_owned = caustic_casters(scene);
+    d.casters = d.casters_owned;
+    d.params.caster_count = std::uint32_t(d.casters_owned.size() / 8);
+    d.params.caster_fraction = d.params.caster_count > 0 ? scene.settings.caustic_guide : 0.0f;
     return d;
 }
 

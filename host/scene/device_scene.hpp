@@ -71,8 +71,9 @@ struct DeviceScene {
     // normalising the cross product of each hit took a twentieth of the Cornell box's time;
     // an instance's triangles keep theirs computed from its placed vertices.
     std::vector<float> face_normals_owned;
-    DeviceTextures texture_data;  // texture pool, material bindings and uvs (host/scene/texture.hpp)
-    SphereBvh sphere_tree;        // the analytic spheres and their tree (a root only when there are none)
+    std::vector<float> casters_owned;  // caustic_casters (host/scene/caustic_casters.hpp)
+    DeviceTextures texture_data;       // texture pool, material bindings and uvs (host/scene/texture.hpp)
+    SphereBvh sphere_tree;             // the analytic spheres and their tree (a root only when there are none)
     // Instancing (host/bvh/instance_bvh.hpp): the instances and their top-level tree (a root
     // with two empty children when there are none). With instances, nodes, tris and
     // shading view the owned arrays below: the world's, then each shared mesh's once.

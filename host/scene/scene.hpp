@@ -43,6 +43,9 @@ struct RenderSettings {
     int filter = FC_FILTER_BOX;      // FC_FILTER_*: the pixel filter (scene/pixel_filter.hpp)
     float filter_radius = 0.0f;      // pixels; 0: the filter's default
     float clamp = 0.0f;              // the largest contribution of one sample; 0: no clamp (unbiased)
+    // The share of a Lambertian vertex's directions drawn toward the glass objects' bounds
+    // (kernels/integrator/caustic_guide.cl); 0: the BSDF alone. Unbiased at any value.
+    float caustic_guide = 0.5f;
 };
 
 // A point, spot or directional light as the scene file gives it (docs/lights.md).

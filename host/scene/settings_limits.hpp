@@ -25,6 +25,9 @@ inline constexpr SettingRange kRrDepth{0, 1024};
 inline constexpr SettingRange kSeed{0, 0xffffffffLL};
 // The time limit (--time) is a finite number of seconds > 0.
 inline constexpr const char* kTimeWords = "a finite number of seconds > 0";
+// The share of Lambertian vertices' directions drawn toward glass (caustic_guide): at most
+// 0.9, so that the BSDF keeps sampling every direction often.
+inline constexpr double kMaxCausticGuide = 0.9;
 }  // namespace limits
 
 }  // namespace facet

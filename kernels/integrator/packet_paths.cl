@@ -454,6 +454,26 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         Tt = LNAME(vec3_select)(Tt, l3_load(ft), G);
         wo_z = select(wo_z, LLOAD(wol + 2 * FC_PACKET_W), G);
 #endif
+#if FC_HAS_DIELECTRIC
+        /* the Lambertian lanes' mixtures toward glass (path_radiance's, caustic_guide.cl), per
+         * lane at the frame's normal; guided: the lanes whose mixture draws toward glass */
+        CausticGuide cgs[FC_PACKET_W];
+        uint guided = 0u;
+        if (P->caster_count > 0u) {
+            float nn[3 * FC_PACKET_W];
+            int la[FC_PACKET_W];
+            l3_store(N, nn);
+            LSTORE(live, la);
+            const bool env_ok = FC_HAS_ENVIRONMENT && P->environment_light >= 0;
+            for (int j = 0; j < FC_PACKET_W; ++j) {
+                cgs[j] = caustic_guide_none();
+                if (!la[j] || gen[j]) continue;
+                cgs[j] = caustic_guide_of_receiver(sc->casters, P->caster_count, P->caster_fraction, env_ok,
+                                                   lane3(p, j), lane3(nn, j));
+                if (cgs[j].g > 0.0f) guided |= 1u << j;
+            }
+        }
+#endif
 #if FC_PACKET_OWN_ORIGINS
         L3 so = l3_load(org);
 #else
@@ -644,6 +664,25 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             F = LNAME(vec3_select)(F, Fg, G);
             bsdf_pdf_l = select(bsdf_pdf_l, pg, G);
         }
+#if FC_HAS_DIELECTRIC
+        if (guided && P->strategy == FC_STRATEGY_MIS) {
+            /* a guided lane's density of the light's direction: the mixture's */
+            float pdf_b[FC_PACKET_W], wia[3 * FC_PACKET_W];
+            LSTORE(bsdf_pdf_l, pdf_b);
+            l3_store(wi, wia);
+            for (uint rest = guided; rest; rest &= rest - 1u) {
+                const uint j = lowest_bit(rest);
+#if FC_PACKET_LANE_LIGHTS
+                const bool finite = !(xl[j] && !isfinite(xtmax[j])); /* the environment, a directional light */
+#else
+                const bool finite = true;
+#endif
+                pdf_b[j] = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters,
+                                             P->caster_count, &cgs[j], pdf_b[j], lane3(wia, j), finite, 0);
+            }
+            bsdf_pdf_l = LLOAD(pdf_b);
+        }
+#endif
         LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, bsdf_pdf_l);
 #else
         LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, LNAME(cosine_hemisphere_pdf)(wo_z, wi_z));
@@ -760,6 +799,58 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 next_pdf = select(next_pdf, select((LFLOAT)(0.0f), pl, okp), PL);
                 A = LNAME(vec3_select)(A, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), wt, okp), PL);
             }
+        }
+#endif
+#if FC_HAS_DIELECTRIC
+        if (guided) {
+            /* the guided lanes' directions (path_radiance's): ub[2] picks the guide or the
+             * cosine lobe; the weight f cos / density of the mixture */
+            float u0[FC_PACKET_W], u1[FC_PACKET_W], u2[FC_PACKET_W], gwi[3 * FC_PACKET_W], gw[3 * FC_PACKET_W],
+                gp[FC_PACKET_W], nn[3 * FC_PACKET_W], nga[3 * FC_PACKET_W], woz[FC_PACKET_W];
+            int ga[FC_PACKET_W];
+            LSTORE(wo_z, woz);
+            LSTORE(ub[0], u0);
+            LSTORE(ub[1], u1);
+            LSTORE(ub[2], u2);
+            l3_store(nwi, gwi);
+            l3_store(A, gw);
+            LSTORE(next_pdf, gp);
+            LSTORE(cont, ga);
+            l3_store(N, nn);
+            l3_store(NG, nga);
+            for (uint rest = guided; rest; rest &= rest - 1u) {
+                const uint j = lowest_bit(rest);
+                const CausticGuide* cg = &cgs[j];
+                const float3 n = lane3(nn, j);
+                float3 wg = lane3(gwi, j);
+                GuideDraw drawn = {-1, 0.0f};
+                if (u2[j] < cg->g) {
+                    /* toward glass: the direction must be above both normals, wo above the shading one */
+                    ga[j] = 0;
+                    if (!(woz[j] > 0.0f) ||
+                        !caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters,
+                                              P->caster_count, cg, u2[j] / cg->g, (float2)(u0[j], u1[j]), &wg,
+                                              &drawn) ||
+                        !(dot(wg, n) > 0.0f) || !(dot(lane3(nga, j), wg) > 0.0f))
+                        continue;
+                    ga[j] = -1;
+                }
+                if (!ga[j]) continue;
+                const float cos_i = dot(wg, n);
+                const float pdf = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters,
+                                                    P->caster_count, cg, cos_i * FC_INV_PI, wg, true, &drawn);
+                if (!(pdf > 0.0f)) {
+                    ga[j] = 0;
+                    continue;
+                }
+                set_lane3(gwi, j, wg);
+                set_lane3(gw, j, lane3(alb, j) * (FC_INV_PI * cos_i / pdf));
+                gp[j] = pdf;
+            }
+            nwi = l3_load(gwi);
+            A = l3_load(gw);
+            next_pdf = LLOAD(gp);
+            cont = LLOAD(ga);
         }
 #endif
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);

@@ -23,6 +23,7 @@
 #ifndef FACET_INTEGRATOR_PATH_CL
 #define FACET_INTEGRATOR_PATH_CL
 
+#include "kernels/integrator/caustic_guide.cl"
 #include "kernels/integrator/surface.cl"
 #include "kernels/camera/pixel_sample.cl"
 #include "kernels/lights/light.cl"
@@ -34,11 +35,12 @@
 #endif
 
 /* Next-event estimation at surface `s` seen from direction wo: one light sample,
- * weighted against the BSDF's density by the power heuristic (delta lights: weight 1).
+ * weighted against the density of the BSDF sample (with cg, the mixture of
+ * caustic_guide.cl) by the power heuristic (delta lights: weight 1).
  * `alpha_seed` is the shadow ray's (kernels/trace/alpha_test.cl). Returns its
  * contribution before throughput. */
 inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* frame, const FcMaterial* m,
-                            float3 wo_local, float3 u_light, uint alpha_seed) {
+                            const CausticGuide* cg, float3 wo_local, float3 u_light, uint alpha_seed) {
     float u_pick = u_light.x;
     float2 u = u_light.yz;
     LightSample ls;
@@ -73,8 +75,12 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
     uint strategy = sc->params->strategy;
     if (strategy == FC_STRATEGY_BSDF) return (float3)(0.0f);
     /* (path_lanes.cl; BSDF sampling alone left above, before the BSDF's density) */
-    float w = light_strategy_weight_l1(strategy, ls.pdf,
-                                       strategy == FC_STRATEGY_MIS ? bsdf_pdf(m, wo_local, wi_local) : 0.0f);
+    float w = light_strategy_weight_l1(
+        strategy, ls.pdf,
+        strategy == FC_STRATEGY_MIS ? caustic_guide_pdf(&sc->params->environment, sc->env_texels, sc->env_dist,
+                                                        sc->casters, sc->params->caster_count, cg,
+                                                        bsdf_pdf(m, wo_local, wi_local), ls.wi, isfinite(ls.dist), 0)
+                                    : 0.0f);
     return f * ls.li * (cos_i * w / ls.pdf);
 }
 
@@ -144,16 +150,45 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         float3 wo_local;
         Frame frame = surface_orient(&s, &mat, wo, &wo_local);
 
+        /* a Lambertian vertex's directions: partly toward glass (caustic_guide.cl) */
+#if FC_HAS_DIELECTRIC
+        const CausticGuide cg = caustic_guide_at(sc->casters, P->caster_count, P->caster_fraction,
+                                                 FC_HAS_ENVIRONMENT && P->environment_light >= 0, m, s.p, frame.n);
+#else
+        const CausticGuide cg = caustic_guide_none();
+#endif
+
         if (!bsdf_is_delta(m)) {
             float4 ul = sampler_get4(sampler, sampler_set_light(depth));
-            radiance += throughput * sample_direct(sc, &s, &frame, m, wo_local, ul.xyz,
+            radiance += throughput * sample_direct(sc, &s, &frame, m, &cg, wo_local, ul.xyz,
                                                    alpha_ray_seed(sampler->seed, sampler->index_reversed, depth, 1u));
         }
 
         float4 ub = sampler_get4(sampler, sampler_set_bsdf(depth));
         float3 u = ub.xyz;
         BsdfSample bs;
-        if (!bsdf_sample(m, wo_local, u, &bs)) break;
+        if (cg.g > 0.0f) {
+            /* u.z picks the guide (then, rescaled, its cone) or the BSDF; the weight divides by
+             * the mixture's density */
+            GuideDraw drawn = {-1, 0.0f};
+            if (u.z < cg.g) {
+                float3 wg;
+                if (!caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count,
+                                          &cg, u.z / cg.g, u.xy, &wg, &drawn))
+                    break;
+                bs.wi = frame_to_local(&frame, wg);
+                if (!(bs.wi.z > 0.0f)) break;
+                bs.f = bsdf_eval_pdf(m, wo_local, bs.wi, &bs.pdf);
+                bs.delta = 0;
+            } else {
+                u.z = fmin((u.z - cg.g) / (1.0f - cg.g), FC_ONE_MINUS_EPSILON);
+                if (!bsdf_sample(m, wo_local, u, &bs)) break;
+            }
+            bs.pdf = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count, &cg,
+                                       bs.pdf, frame_to_world(&frame, bs.wi), true, &drawn);
+            if (!(bs.pdf > 0.0f)) break;
+            bs.weight = bs.f * (fabs(bs.wi.z) / bs.pdf);
+        } else if (!bsdf_sample(m, wo_local, u, &bs)) break;
         float3 wi = frame_to_world(&frame, bs.wi);
         /* The shading frame and the geometric normal must agree on wi's side (a
          * reflection stays on wo's side, a refraction crosses). */

@@ -42,6 +42,8 @@ enum { FC_SAMPLER_LIST(FC_RENDER_ENUM_VALUE) FC_SAMPLER_COUNT };
 /* The largest r^2 + g^2 + b^2 one sample adds to its pixel's second moment (larger ones
  * are clamped to it): 2^24 samples of it sum to 1.7e37, finite like the sums. */
 #define FC_MAX_SQUARE 1e30f
+/* The most glass bounds caustic_guide.cl samples toward (host/scene/caustic_casters.cpp keeps the largest). */
+#define FC_MAX_CASTERS 16u
 
 /* Paths a work-item of packet_pass (kernels/integrator/packet_paths.cl) runs at once, in
  * lanes (it renders a multiple of as many pixels of a row: fc_packet_pixels): 8, or 16 on
@@ -112,12 +114,15 @@ typedef struct FcRenderParams {
     fc_uint filter;           /* FC_FILTER_*: the pixel reconstruction filter */
     float filter_radius;      /* in pixels, > 0 */
     float clamp;              /* the largest contribution of one sample (its largest channel) */
+    fc_uint caster_count;     /* glass bounds to sample toward (kernels/integrator/caustic_guide.cl) */
+    float caster_fraction;    /* the share of Lambertian vertices' directions drawn toward them */
+    fc_uint pad3[2];
     FcEnvironment environment;
 } FcRenderParams;
 
 FC_STATIC_ASSERT(sizeof(FcCamera) == 64, "FcCamera is 64 bytes");
 FC_STATIC_ASSERT(offsetof(FcCamera, up) == 48, "FcCamera offsets");
-FC_STATIC_ASSERT(sizeof(FcRenderParams) == 208, "FcRenderParams is 208 bytes");
+FC_STATIC_ASSERT(sizeof(FcRenderParams) == 224, "FcRenderParams is 224 bytes");
 FC_STATIC_ASSERT(offsetof(FcRenderParams, width) == 64 && offsetof(FcRenderParams, row_count) == 100,
                  "FcRenderParams offsets");
 

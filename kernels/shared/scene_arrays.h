@@ -43,7 +43,8 @@
     X(FcSphere, FcSphere, spheres, "spheres", FC_ARRAY_CONTENT)                                                    \
     X(FcBvhNode, FcBvhNode, sphere_nodes, "sphere BVH", FC_ARRAY_TREE)                                             \
     X(FcInstance, FcInstance, instances, "instances", FC_ARRAY_TREE)                                               \
-    X(FcBvhNode, FcBvhNode, instance_nodes, "instance BVH", FC_ARRAY_TREE)
+    X(FcBvhNode, FcBvhNode, instance_nodes, "instance BVH", FC_ARRAY_TREE)                                         \
+    X(float4, float, casters, "glass bounds", FC_ARRAY_CONTENT)
 // clang-format on
 
 #endif
