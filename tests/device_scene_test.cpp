@@ -133,7 +133,7 @@ TEST(DeviceScene, GlassChoiceAndCastersFollowTheLight) {
     EXPECT_EQ(dl.casters.size(), 8u);
     EXPECT_EQ(dl.casters[3], 1.0f);
     EXPECT_EQ(dl.casters[4], 1.5f);
-    EXPECT_EQ(dl.params.caster_fraction, 0.5f);
+    EXPECT_EQ(dl.params.caster_fraction, 0.25f);
 }
 
 // The world triangles' unit geometric normals (face_normals, read by surface_at), from the

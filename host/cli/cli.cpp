@@ -277,7 +277,7 @@ int run_cli(int argc, char** argv) {
                      fmt::format("Share of a Lambertian surface's sampled directions drawn toward the glass in the "
                                  "scene (its bounds; through smooth glass balls, toward the environment's light), for "
                                  "caustics seen by diffuse surfaces; unbiased at any value, 0 to {:g} (default: the "
-                                 "scene's, else 0.5; 0: the BSDF alone; docs/sampling.md)",
+                                 "scene's, else 0.25; 0: the BSDF alone; docs/sampling.md)",
                                  limits::kMaxCausticGuide))
         ->option_text("F")
         ->check(kFinite & CLI::Range(0.0, limits::kMaxCausticGuide));

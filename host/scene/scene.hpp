@@ -45,7 +45,7 @@ struct RenderSettings {
     float clamp = 0.0f;              // the largest contribution of one sample; 0: no clamp (unbiased)
     // The share of a Lambertian vertex's directions drawn toward the glass objects' bounds
     // (kernels/integrator/caustic_guide.cl); 0: the BSDF alone. Unbiased at any value.
-    float caustic_guide = 0.5f;
+    float caustic_guide = 0.25f;
 };
 
 // A point, spot or directional light as the scene file gives it (docs/lights.md).
