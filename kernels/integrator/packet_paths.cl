@@ -58,100 +58,12 @@ inline void set_lane3(float* a, int j, float3 v) {
     a[FC_PACKET_W + j] = v.y;
     a[2 * FC_PACKET_W + j] = v.z;
 }
-#if FC_PACKET_BSDF_PER_LANE
-/* The lanes' plain-base parameters (bsdf.cl's plain_base_of, lane j at [j], 3-vectors as the
- * lane arrays; the masks stored as -1 or 0). */
-typedef struct {
-    float kd[3 * FC_PACKET_W], eta[3 * FC_PACKET_W], k[3 * FC_PACKET_W], f0[3 * FC_PACKET_W], fms[3 * FC_PACKET_W],
-        es_f0[3 * FC_PACKET_W], es_den[3 * FC_PACKET_W], mf0[3 * FC_PACKET_W], mfms[3 * FC_PACKET_W],
-        metallic[FC_PACKET_W], ax[FC_PACKET_W], ay[FC_PACKET_W], ior[FC_PACKET_W], dw[FC_PACKET_W], f90[FC_PACKET_W],
-        ec_r[FC_PACKET_W], ec_loss[FC_PACKET_W], es_f90[FC_PACKET_W];
-    int ggx[FC_PACKET_W], cor[FC_PACKET_W], cond[FC_PACKET_W], schlick[FC_PACKET_W], diff[FC_PACKET_W], ec[FC_PACKET_W],
-        coupled[FC_PACKET_W], mixed[FC_PACKET_W];
-} PacketPlain;
-
-/* Lane j's parameters from a plain base's. */
-inline void packet_plain_set(PacketPlain* q, int j, const PlainBase_l1* b) {
-    set_lane3(q->kd, j, b->kd);
-    set_lane3(q->eta, j, b->eta);
-    set_lane3(q->k, j, b->k);
-    q->ax[j] = b->ax;
-    q->ay[j] = b->ay;
-    q->ior[j] = b->ior;
-    q->dw[j] = b->diffuse_weight;
-    set_lane3(q->f0, j, b->f0);
-    set_lane3(q->fms, j, b->ec_fms);
-    set_lane3(q->es_f0, j, b->es_f0);
-    set_lane3(q->es_den, j, b->es_den);
-    q->f90[j] = b->f90;
-    q->ec_r[j] = b->ec_r;
-    q->ec_loss[j] = b->ec_loss;
-    q->es_f90[j] = b->es_f90;
-    q->ggx[j] = b->ggx ? -1 : 0;
-    q->cor[j] = b->correlated ? -1 : 0;
-    q->cond[j] = b->conductor ? -1 : 0;
-    q->schlick[j] = b->schlick ? -1 : 0;
-    q->diff[j] = b->diffuse ? -1 : 0;
-    q->ec[j] = b->ec ? -1 : 0;
-    q->coupled[j] = b->coupled ? -1 : 0;
-    set_lane3(q->mf0, j, b->metal_f0);
-    set_lane3(q->mfms, j, b->metal_fms);
-    q->metallic[j] = b->metallic;
-    q->mixed[j] = b->mixed ? -1 : 0;
-}
-
-/* Parameters every lane can evaluate, for a lane before its first plain surface: a
- * dielectric Beckmann base of alpha 1, no diffuse lobe, no compensation. */
-inline PlainBase_l1 packet_unplain(void) {
-    PlainBase_l1 b;
-    b.kd = b.k = b.f0 = b.ec_fms = b.es_f0 = b.metal_f0 = b.metal_fms = (float3)(0.0f);
-    b.eta = b.es_den = (float3)(1.0f);
-    b.ax = b.ay = b.f90 = b.ec_loss = b.es_f90 = 1.0f;
-    b.ior = 1.5f;
-    b.diffuse_weight = b.ec_r = b.metallic = 0.0f;
-    b.ggx = b.correlated = b.conductor = b.schlick = b.diffuse = b.ec = b.coupled = b.mixed = 0;
-    b.beckmann = 1;
-    b.e_table = fc_albedo_E;
-    b.e5_table = fc_albedo_E5;
-    return b;
-}
-
-/* The plain bases of the lanes `lanes` (the others' parameters are read, not used). */
-inline void packet_plain_base(LINT lanes, const PacketPlain* q, LNAME(PlainBase) * b) {
-    b->kd = l3_load(q->kd);
-    b->eta = l3_load(q->eta);
-    b->k = l3_load(q->k);
-    b->ax = LLOAD(q->ax);
-    b->ay = LLOAD(q->ay);
-    b->ior = LLOAD(q->ior);
-    b->diffuse_weight = LLOAD(q->dw);
-    b->ggx = lanes & LLOAD(q->ggx);
-    b->beckmann = lanes & ~LLOAD(q->ggx);
-    b->correlated = LLOAD(q->cor);
-    b->conductor = lanes & LLOAD(q->cond);
-    b->schlick = lanes & LLOAD(q->schlick);
-    b->diffuse = LLOAD(q->diff);
-    b->f0 = l3_load(q->f0);
-    b->f90 = LLOAD(q->f90);
-    b->ec = lanes & LLOAD(q->ec);
-    b->coupled = lanes & LLOAD(q->coupled);
-    b->ec_r = LLOAD(q->ec_r);
-    b->ec_loss = LLOAD(q->ec_loss);
-    b->ec_fms = l3_load(q->fms);
-    b->es_f0 = l3_load(q->es_f0);
-    b->es_f90 = LLOAD(q->es_f90);
-    b->es_den = l3_load(q->es_den);
-    b->mixed = lanes & LLOAD(q->mixed);
-    b->metallic = LLOAD(q->metallic);
-    b->metal_f0 = l3_load(q->mf0);
-    b->metal_fms = l3_load(q->mfms);
-    b->e_table = fc_albedo_E;
-    b->e5_table = fc_albedo_E5;
-}
-#endif
-
+#include "kernels/integrator/packet_plain.cl"
 #include "kernels/integrator/packet_scene_trace.cl"
 #include "kernels/integrator/packet_lights.cl"
+#if FC_HAS_DIELECTRIC
+#include "kernels/integrator/packet_caustic_guide.cl"
+#endif
 
 /* Work-item g renders samples [sample_begin, sample_begin + sample_count) of fc_packet_pixels
  * consecutive pixels of a row (fewer at the row's end): FC_PACKET_W, or a multiple of it when
@@ -455,24 +367,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         wo_z = select(wo_z, LLOAD(wol + 2 * FC_PACKET_W), G);
 #endif
 #if FC_HAS_DIELECTRIC
-        /* the Lambertian lanes' mixtures toward glass (path_radiance's, caustic_guide.cl), per
-         * lane at the frame's normal; guided: the lanes whose mixture draws toward glass */
+        /* the Lambertian lanes' mixtures toward glass, and which lanes they guide */
         CausticGuide cgs[FC_PACKET_W];
-        uint guided = 0u;
-        if (P->caster_count > 0u) {
-            float nn[3 * FC_PACKET_W];
-            int la[FC_PACKET_W];
-            l3_store(N, nn);
-            LSTORE(live, la);
-            const bool env_ok = FC_HAS_ENVIRONMENT && P->environment_light >= 0;
-            for (int j = 0; j < FC_PACKET_W; ++j) {
-                cgs[j] = caustic_guide_none();
-                if (!la[j] || gen[j]) continue;
-                cgs[j] = caustic_guide_of_receiver(sc->casters, P->caster_count, P->caster_fraction, env_ok,
-                                                   lane3(p, j), lane3(nn, j));
-                if (cgs[j].g > 0.0f) guided |= 1u << j;
-            }
-        }
+        const uint guided = packet_caustic_guides(sc, live, gen, p, N, cgs);
 #endif
 #if FC_PACKET_OWN_ORIGINS
         L3 so = l3_load(org);
@@ -666,21 +563,13 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         }
 #if FC_HAS_DIELECTRIC
         if (guided && P->strategy == FC_STRATEGY_MIS) {
-            /* a guided lane's density of the light's direction: the mixture's */
-            float pdf_b[FC_PACKET_W], wia[3 * FC_PACKET_W];
-            LSTORE(bsdf_pdf_l, pdf_b);
-            l3_store(wi, wia);
-            for (uint rest = guided; rest; rest &= rest - 1u) {
-                const uint j = lowest_bit(rest);
+            /* the lanes whose light is at infinity (the environment, a directional light) */
+            uint at_infinity = 0u;
 #if FC_PACKET_LANE_LIGHTS
-                const bool finite = !(xl[j] && !isfinite(xtmax[j])); /* the environment, a directional light */
-#else
-                const bool finite = true;
+            for (int j = 0; j < FC_PACKET_W; ++j)
+                if (xl[j] && !isfinite(xtmax[j])) at_infinity |= 1u << j;
 #endif
-                pdf_b[j] = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters,
-                                             P->caster_count, &cgs[j], pdf_b[j], lane3(wia, j), finite, 0);
-            }
-            bsdf_pdf_l = LLOAD(pdf_b);
+            bsdf_pdf_l = packet_guided_light_pdf(sc, guided, cgs, at_infinity, bsdf_pdf_l, wi);
         }
 #endif
         LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, bsdf_pdf_l);
@@ -802,56 +691,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         }
 #endif
 #if FC_HAS_DIELECTRIC
-        if (guided) {
-            /* the guided lanes' directions (path_radiance's): ub[2] picks the guide or the
-             * cosine lobe; the weight f cos / density of the mixture */
-            float u0[FC_PACKET_W], u1[FC_PACKET_W], u2[FC_PACKET_W], gwi[3 * FC_PACKET_W], gw[3 * FC_PACKET_W],
-                gp[FC_PACKET_W], nn[3 * FC_PACKET_W], nga[3 * FC_PACKET_W], woz[FC_PACKET_W];
-            int ga[FC_PACKET_W];
-            LSTORE(wo_z, woz);
-            LSTORE(ub[0], u0);
-            LSTORE(ub[1], u1);
-            LSTORE(ub[2], u2);
-            l3_store(nwi, gwi);
-            l3_store(A, gw);
-            LSTORE(next_pdf, gp);
-            LSTORE(cont, ga);
-            l3_store(N, nn);
-            l3_store(NG, nga);
-            for (uint rest = guided; rest; rest &= rest - 1u) {
-                const uint j = lowest_bit(rest);
-                const CausticGuide* cg = &cgs[j];
-                const float3 n = lane3(nn, j);
-                float3 wg = lane3(gwi, j);
-                GuideDraw drawn = {-1, 0.0f};
-                if (u2[j] < cg->g) {
-                    /* toward glass: the direction must be above both normals, wo above the shading one */
-                    ga[j] = 0;
-                    if (!(woz[j] > 0.0f) ||
-                        !caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters,
-                                              P->caster_count, cg, u2[j] / cg->g, (float2)(u0[j], u1[j]), &wg,
-                                              &drawn) ||
-                        !(dot(wg, n) > 0.0f) || !(dot(lane3(nga, j), wg) > 0.0f))
-                        continue;
-                    ga[j] = -1;
-                }
-                if (!ga[j]) continue;
-                const float cos_i = dot(wg, n);
-                const float pdf = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters,
-                                                    P->caster_count, cg, cos_i * FC_INV_PI, wg, true, &drawn);
-                if (!(pdf > 0.0f)) {
-                    ga[j] = 0;
-                    continue;
-                }
-                set_lane3(gwi, j, wg);
-                set_lane3(gw, j, lane3(alb, j) * (FC_INV_PI * cos_i / pdf));
-                gp[j] = pdf;
-            }
-            nwi = l3_load(gwi);
-            A = l3_load(gw);
-            next_pdf = LLOAD(gp);
-            cont = LLOAD(ga);
-        }
+        if (guided) packet_guided_directions(sc, guided, cgs, ub, wo_z, N, NG, alb, &nwi, &A, &next_pdf, &cont);
 #endif
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);
         LINT rr = LCONVERT_INT(dep + 1u >= P->rr_depth);

@@ -1,0 +1,101 @@
+/* The packet paths' sampling toward glass (kernels/integrator/caustic_guide.cl): the mixtures of
+ * the Lambertian lanes, their density at the light samples' directions, and their directions
+ * drawn, per lane by caustic_guide.cl's functions, as path_radiance draws them. Included by
+ * kernels/integrator/packet_paths.cl inside its lanes (FC_LW = FC_PACKET_W) in programs with
+ * dielectrics, after its lane helpers (l3, l3_load, l3_store, lane3, set_lane3). */
+#ifndef FACET_INTEGRATOR_PACKET_CAUSTIC_GUIDE_CL
+#define FACET_INTEGRATOR_PACKET_CAUSTIC_GUIDE_CL
+
+/* Each live lane's mixture in cgs (gen: whether the lane's BSDF is more than a Lambertian lobe;
+ * p: the points; N: the frames' normals); returns the lanes it guides. */
+inline uint packet_caustic_guides(const SceneView* sc, LINT live, const int* gen, const float* p, L3 N,
+                                  CausticGuide* cgs) {
+    __constant const FcRenderParams* P = sc->params;
+    uint guided = 0u;
+    for (int j = 0; j < FC_PACKET_W; ++j) cgs[j] = caustic_guide_none();
+    if (P->caster_count == 0u) return 0u;
+    float nn[3 * FC_PACKET_W];
+    int la[FC_PACKET_W];
+    l3_store(N, nn);
+    LSTORE(live, la);
+    const bool env_ok = FC_HAS_ENVIRONMENT && P->environment_light >= 0;
+    for (int j = 0; j < FC_PACKET_W; ++j) {
+        if (!la[j] || gen[j]) continue;
+        cgs[j] = caustic_guide_of_receiver(sc->casters, P->caster_count, P->caster_fraction, env_ok, lane3(p, j),
+                                           lane3(nn, j));
+        if (cgs[j].g > 0.0f) guided |= 1u << j;
+    }
+    return guided;
+}
+
+/* The guided lanes' density of the light samples' directions wi: the mixture's, from the
+ * BSDF's bsdf_pdf_l (the lens guide's share left out for lights at infinity). */
+inline LFLOAT packet_guided_light_pdf(const SceneView* sc, uint guided, const CausticGuide* cgs, uint at_infinity,
+                                      LFLOAT bsdf_pdf_l, L3 wi) {
+    __constant const FcRenderParams* P = sc->params;
+    float pdf_b[FC_PACKET_W], wia[3 * FC_PACKET_W];
+    LSTORE(bsdf_pdf_l, pdf_b);
+    l3_store(wi, wia);
+    for (uint rest = guided; rest; rest &= rest - 1u) {
+        const uint j = lowest_bit(rest);
+        pdf_b[j] = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count,
+                                     &cgs[j], pdf_b[j], lane3(wia, j), !((at_infinity >> j) & 1u), 0);
+    }
+    return LLOAD(pdf_b);
+}
+
+/* The guided lanes' directions (path_radiance's): ub[2] picks the guide or the cosine lobe
+ * (whose direction *nwi already holds); the weight albedo cos / (pi density of the mixture) in
+ * *A, the density in *next_pdf, whether the path goes on in *cont. */
+inline void packet_guided_directions(const SceneView* sc, uint guided, const CausticGuide* cgs, const LFLOAT* ub,
+                                     LFLOAT wo_z, L3 N, L3 NG, const float* alb, L3* nwi, L3* A, LFLOAT* next_pdf,
+                                     LINT* cont) {
+    __constant const FcRenderParams* P = sc->params;
+    float u0[FC_PACKET_W], u1[FC_PACKET_W], u2[FC_PACKET_W], gwi[3 * FC_PACKET_W], gw[3 * FC_PACKET_W], gp[FC_PACKET_W],
+        nn[3 * FC_PACKET_W], nga[3 * FC_PACKET_W], woz[FC_PACKET_W];
+    int ga[FC_PACKET_W];
+    LSTORE(wo_z, woz);
+    LSTORE(ub[0], u0);
+    LSTORE(ub[1], u1);
+    LSTORE(ub[2], u2);
+    l3_store(*nwi, gwi);
+    l3_store(*A, gw);
+    LSTORE(*next_pdf, gp);
+    LSTORE(*cont, ga);
+    l3_store(N, nn);
+    l3_store(NG, nga);
+    for (uint rest = guided; rest; rest &= rest - 1u) {
+        const uint j = lowest_bit(rest);
+        const CausticGuide* cg = &cgs[j];
+        const float3 n = lane3(nn, j);
+        float3 wg = lane3(gwi, j);
+        GuideDraw drawn = {-1, 0.0f};
+        if (u2[j] < cg->g) {
+            /* toward glass: the direction must be above both normals, wo above the shading one */
+            ga[j] = 0;
+            if (!(woz[j] > 0.0f) ||
+                !caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count, cg,
+                                      u2[j] / cg->g, (float2)(u0[j], u1[j]), &wg, &drawn) ||
+                !(dot(wg, n) > 0.0f) || !(dot(lane3(nga, j), wg) > 0.0f))
+                continue;
+            ga[j] = -1;
+        }
+        if (!ga[j]) continue;
+        const float cos_i = dot(wg, n);
+        const float pdf = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count,
+                                            cg, cos_i * FC_INV_PI, wg, true, &drawn);
+        if (!(pdf > 0.0f)) {
+            ga[j] = 0;
+            continue;
+        }
+        set_lane3(gwi, j, wg);
+        set_lane3(gw, j, lane3(alb, j) * (FC_INV_PI * cos_i / pdf));
+        gp[j] = pdf;
+    }
+    *nwi = l3_load(gwi);
+    *A = l3_load(gw);
+    *next_pdf = LLOAD(gp);
+    *cont = LLOAD(ga);
+}
+
+#endif
