@@ -17,17 +17,20 @@
  *       G(alpha) = alpha - D(b),  D(b) = 2 (asin(b / r) - asin(b / (n r)))
  *   (Snell's law at both surfaces, which meet the ray at equal angles), so the directions
  *   are the roots of G(alpha) = +-phi, phi the environment direction's angle from the axis:
- *   bracketed on FC_LENS_STEPS steps of [0, alpha_max], then bisected; one of them is taken.
- *   Its density is the environment's at the direction it leaves along times the Jacobian
- *   |sin G G'(alpha)| / sin(alpha) (the map keeps the azimuth about the axis), over the
- *   roots' count and the lenses'. A root two brackets share is never drawn and its density
- *   is 0 (the evaluation finds the roots the same way).
+ *   bracketed on FC_LENS_STEPS steps of [0, lens_reach] (the rim less a thousandth), then
+ *   bisected; one of them is taken. Its density is the environment's at the direction it
+ *   leaves along times the Jacobian |sin G G'(alpha)| / sin(alpha) (the map keeps the azimuth
+ *   about the axis), over the roots' count and the lenses'. Two roots in one step are never
+ *   drawn and their density is 0 (the evaluation finds the roots the same way).
  * - the cone guide (share 1 - h): uniform inside the cone that a glass object's bounding
  *   sphere subtends (pbrt-v4's cone sampling, as kernels/lights/sphere_light.cl), the object
  *   picked in proportion to its cone's solid angle: for glass that is not a smooth ball.
  *
  * The density of the whole mixture is what the sample's weight divides by and what MIS weighs
- * against light sampling, on both sides. The cosine lobe keeps every direction possible, so
+ * against light sampling, on both sides (for a light at infinity, without the lens share:
+ * caustic_guide_density). g is the scene's share scaled down where the cones fill less than
+ * FC_CAUSTIC_GUIDE_FULL; h is 1 where every caster that counts is a lens, 1/2 where some are,
+ * else 0. The cosine lobe keeps every direction possible, so
  * the estimate stays unbiased whatever the guide; a guided direction below the surface ends
  * the path (its integrand is zero there).
  *
