@@ -265,8 +265,7 @@ inline CausticGuide caustic_guide_none(void) {
 }
 
 /* The mixture at a vertex whose BSDF caustic_guide_receiver takes, at p with shading normal n
- * (env: whether the environment can be sampled, for the lenses); caustic_guide_at for a vertex
- * of material m. */
+ * (env: whether the environment can be sampled, for the lenses). */
 inline CausticGuide caustic_guide_of_receiver(__global const float4* casters, uint count, float fraction, bool env,
                                               float3 p, float3 n) {
     CausticGuide c = caustic_guide_none();
@@ -289,9 +288,16 @@ inline CausticGuide caustic_guide_of_receiver(__global const float4* casters, ui
     return c;
 }
 
-inline CausticGuide caustic_guide_at(__global const float4* casters, uint count, float fraction, bool env,
+/* Whether a render's lens guides can draw: the environment is a light (env_sample). */
+inline bool caustic_guide_lenses_draw(__constant const FcRenderParams* P) {
+    return FC_HAS_ENVIRONMENT && P->environment_light >= 0;
+}
+
+/* The mixture at a vertex of material m in a render of parameters P. */
+inline CausticGuide caustic_guide_at(__constant const FcRenderParams* P, __global const float4* casters,
                                      const FcMaterial* m, float3 p, float3 n) {
-    return caustic_guide_receiver(m) ? caustic_guide_of_receiver(casters, count, fraction, env, p, n)
+    return caustic_guide_receiver(m) ? caustic_guide_of_receiver(casters, P->caster_count, P->caster_fraction,
+                                                                 caustic_guide_lenses_draw(P), p, n)
                                      : caustic_guide_none();
 }
 

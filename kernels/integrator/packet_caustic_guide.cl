@@ -18,7 +18,7 @@ inline uint packet_caustic_guides(const SceneView* sc, LINT live, const int* gen
     int la[FC_PACKET_W];
     l3_store(N, nn);
     LSTORE(live, la);
-    const bool env_ok = FC_HAS_ENVIRONMENT && P->environment_light >= 0;
+    const bool env_ok = caustic_guide_lenses_draw(P);
     for (int j = 0; j < FC_PACKET_W; ++j) {
         if (!la[j] || gen[j]) continue;
         cgs[j] = caustic_guide_of_receiver(sc->casters, P->caster_count, P->caster_fraction, env_ok, lane3(p, j),

@@ -152,8 +152,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
 
         /* a Lambertian vertex's directions: partly toward glass (caustic_guide.cl) */
 #if FC_HAS_DIELECTRIC
-        const CausticGuide cg = caustic_guide_at(sc->casters, P->caster_count, P->caster_fraction,
-                                                 FC_HAS_ENVIRONMENT && P->environment_light >= 0, m, s.p, frame.n);
+        const CausticGuide cg = caustic_guide_at(P, sc->casters, m, s.p, frame.n);
 #else
         const CausticGuide cg = caustic_guide_none();
 #endif
@@ -167,29 +166,32 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         float4 ub = sampler_get4(sampler, sampler_set_bsdf(depth));
         float3 u = ub.xyz;
         BsdfSample bs;
+        float3 wi;
         if (cg.g > 0.0f) {
             /* u.z picks the guide (then, rescaled, its cone) or the BSDF; the weight divides by
              * the mixture's density */
             GuideDraw drawn = {-1, 0.0f};
             if (u.z < cg.g) {
-                float3 wg;
                 if (!caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count,
-                                          &cg, u.z / cg.g, u.xy, &wg, &drawn))
+                                          &cg, u.z / cg.g, u.xy, &wi, &drawn))
                     break;
-                bs.wi = frame_to_local(&frame, wg);
+                bs.wi = frame_to_local(&frame, wi);
                 if (!(bs.wi.z > 0.0f)) break;
                 bs.f = bsdf_eval_pdf(m, wo_local, bs.wi, &bs.pdf);
                 bs.delta = 0;
             } else {
                 u.z = fmin((u.z - cg.g) / (1.0f - cg.g), FC_ONE_MINUS_EPSILON);
                 if (!bsdf_sample(m, wo_local, u, &bs)) break;
+                wi = frame_to_world(&frame, bs.wi);
             }
             bs.pdf = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count, &cg,
-                                       bs.pdf, frame_to_world(&frame, bs.wi), true, &drawn);
+                                       bs.pdf, wi, true, &drawn);
             if (!(bs.pdf > 0.0f)) break;
             bs.weight = bs.f * (fabs(bs.wi.z) / bs.pdf);
-        } else if (!bsdf_sample(m, wo_local, u, &bs)) break;
-        float3 wi = frame_to_world(&frame, bs.wi);
+        } else {
+            if (!bsdf_sample(m, wo_local, u, &bs)) break;
+            wi = frame_to_world(&frame, bs.wi);
+        }
         /* The shading frame and the geometric normal must agree on wi's side (a
          * reflection stays on wo's side, a refraction crosses). */
         float side = dot(s.ng, wi);
