@@ -5,7 +5,7 @@
 // pi, by cos / density over >= 2 M mixture samples (the estimate is bounded by pi / (1 - g),
 // so its error is small and known): a density off by a tenth over the sun's image through a
 // ball moves it by many standard errors. Also: the density the sampling reports for a lens
-// draw (from its own scan) is the one evaluated from scratch, and the mixture's share g
+// draw (from its own root finding) is the one evaluated from scratch, and the mixture's share g
 // follows the cones' solid angle. Host side: which objects become casters
 // (host/scene/caustic_casters.cpp).
 #include <gtest/gtest.h>

@@ -16,12 +16,13 @@
  *   b = d sin(alpha) its distance from the centre, it leaves turned by
  *       G(alpha) = alpha - D(b),  D(b) = 2 (asin(b / r) - asin(b / (n r)))
  *   (Snell's law at both surfaces, which meet the ray at equal angles), so the directions
- *   are the roots of G(alpha) = +-phi, phi the environment direction's angle from the axis:
- *   bracketed on FC_LENS_STEPS steps of [0, lens_reach] (the rim less a thousandth), then
- *   bisected; one of them is taken. Its density is the environment's at the direction it
- *   leaves along times the Jacobian |sin G G'(alpha)| / sin(alpha) (the map keeps the azimuth
- *   about the axis), over the roots' count and the lenses'. Two roots in one step are never
- *   drawn and their density is 0 (the evaluation finds the roots the same way).
+ *   are the roots of G(alpha) = +-phi, phi the environment direction's angle from the axis,
+ *   alpha up to lens_reach (the rim less a thousandth). G is concave (Lens, below), so its
+ *   maximum, found once per ball and vertex, tells how many roots there are (at most three),
+ *   and each is found by Newton's method from the side where it converges monotonically; one
+ *   of them is taken. Its density is the environment's at the direction it leaves along times
+ *   the Jacobian |sin G G'(alpha)| / sin(alpha) (the map keeps the azimuth about the axis),
+ *   over the roots' count and the lenses'.
  * - the cone guide (share 1 - h): uniform inside the cone that a glass object's bounding
  *   sphere subtends (pbrt-v4's cone sampling, as kernels/lights/sphere_light.cl), the object
  *   picked in proportion to its cone's solid angle: for glass that is not a smooth ball.
@@ -58,9 +59,6 @@
 #ifndef FC_CAUSTIC_GUIDE_FULL
 #define FC_CAUSTIC_GUIDE_FULL 0.5f
 #endif
-/* Steps of the lens guide's bracketing, and its bisection's halvings. */
-#define FC_LENS_STEPS 16
-#define FC_LENS_HALVINGS 20
 
 /* Whether the BSDF of m is sampled with the mixture: a Lambertian lobe, no specular lobe, no
  * layer (the packet path's lanes that keep no material of their own). */
@@ -90,75 +88,106 @@ inline float lens_asin(float x) { return atan2_fast(x, safe_sqrt((1.0f - x) * (1
 /* (sin, cos) of an angle in radians, by sincos_turns. */
 inline float2 lens_sincos(float a) { return sincos_turns(a * (0.5f * FC_INV_PI)); }
 
-/* A ball of radius r and relative index n seen from distance dc: G(alpha). */
-inline float lens_turn(float alpha, float dc, float r, float n) {
-    const float b = fmin(dc * lens_sincos(alpha).x, r);
-    return alpha - 2.0f * (lens_asin(b / r) - lens_asin(b / (n * r)));
-}
-
-/* G'(alpha) = 1 - D'(b) dc cos(alpha), D'(b) = 2 (1 / sqrt(r^2 - b^2) - 1 / sqrt(n^2 r^2 - b^2)). */
-inline float lens_slope(float alpha, float dc, float r, float n) {
-    const float2 sc = lens_sincos(alpha);
-    const float b = fmin(dc * sc.x, r);
-    const float x = b / r, y = b / (n * r);
-    const float dd = 2.0f * (1.0f / (r * safe_sqrt(1.0f - x * x)) - 1.0f / (n * r * safe_sqrt(1.0f - y * y)));
-    return 1.0f - dd * dc * sc.y;
-}
-
-/* The largest alpha the lens guide draws: the ball's rim, less a thousandth. At the rim G'
- * is infinite and G's roots, and the density there, hang on the last bits of alpha (the
- * sampling's and the evaluation's would disagree); these grazing rays mostly reflect anyway. */
+/* The largest alpha the lens guide draws: the ball's rim, less a thousandth. At the rim
+ * dG/dalpha is infinite and the density there hangs on the last bits of alpha (the sampling's
+ * and the evaluation's would disagree); these grazing rays mostly reflect anyway. */
 inline float lens_reach(float r, float dc) { return 0.999f * lens_asin(fmin(r / dc, 1.0f)); }
 
-/* G on the FC_LENS_STEPS + 1 points alpha_max k / FC_LENS_STEPS of one ball seen from one point. */
+/* One ball (radius r, relative index n) seen from distance dc = k r, in the angle of incidence
+ * theta at its surface (sin(theta) = b / r = k sin(alpha)), where the turn is smooth up to the
+ * rim:
+ *     G(theta) = asin(sin(theta) / k) - 2 (theta - asin(sin(theta) / n)),
+ *     G'(theta) = cos(theta) (1 / sqrt(k^2 - sin^2) + 2 / sqrt(n^2 - sin^2)) - 2,
+ *     G''(theta) = sin(theta) sum_m w_m / sqrt(m^2 - sin^2) (cos^2(theta) / (m^2 - sin^2) - 1)
+ * (m = k, n; w = 1, 2), and each bracket is negative (k, n > 1): G is concave on the whole
+ * range, rising from G(0) = 0 while G'(0) = 1 / k + 2 / n - 2 > 0, to its maximum m_top at
+ * theta_top, then falling to m_end at the range's end theta_end. So G = +phi has a root on
+ * the rising side where phi < m_top and one on the falling side where also m_end < phi, and
+ * G = -phi one on the falling side where m_end < -phi: the roots' count is known without a
+ * search, and each root is one Newton iteration's monotone approach away (a concave function
+ * approached from the side where it is below the target). */
 typedef struct {
-    float g[FC_LENS_STEPS + 1];
-    float alpha_max, dc, r, n;
-} LensScan;
+    float dc, r, n, k;
+    float alpha_end, theta_end;
+    float theta_top, m_top, m_end;
+} Lens;
 
-inline void lens_scan(LensScan* l, float alpha_max, float dc, float r, float n) {
-    l->alpha_max = alpha_max;
-    l->dc = dc;
-    l->r = r;
-    l->n = n;
-    l->g[0] = 0.0f;
-    for (int k = 1; k <= FC_LENS_STEPS; ++k)
-        l->g[k] = lens_turn(alpha_max * ((float)k / (float)FC_LENS_STEPS), dc, r, n);
+/* G(theta) from sin(theta) and theta. */
+inline float lens_turn(const Lens* l, float s, float theta) {
+    return lens_asin(s / l->k) - 2.0f * (theta - lens_asin(s / l->n));
 }
 
-/* Whether step k (from point k - 1 to k) brackets a root of G = target. */
-inline bool lens_brackets(const LensScan* l, int k, float target) {
-    return (l->g[k - 1] < target) != (l->g[k] < target);
+/* G'(theta) from sin(theta) and cos(theta). */
+inline float lens_slope(const Lens* l, float s, float c) {
+    const float s2 = s * s;
+    return c * (rsqrt(fmax(l->k * l->k - s2, 1e-12f)) + 2.0f * rsqrt(l->n * l->n - s2)) - 2.0f;
 }
 
-/* The roots of G = target the scan brackets. */
-inline uint lens_count(const LensScan* l, float target) {
-    uint found = 0u;
-    for (int k = 1; k <= FC_LENS_STEPS; ++k) found += lens_brackets(l, k, target) ? 1u : 0u;
-    return found;
-}
-
-/* The root of G = target in step k, by bisection. */
-inline float lens_bisect(const LensScan* l, int k, float target) {
-    float lo = l->alpha_max * ((float)(k - 1) / (float)FC_LENS_STEPS);
-    float hi = l->alpha_max * ((float)k / (float)FC_LENS_STEPS);
-    const bool below = l->g[k - 1] < target;
-    for (int i = 0; i < FC_LENS_HALVINGS; ++i) {
-        const float mid = 0.5f * (lo + hi);
-        if ((lens_turn(mid, l->dc, l->r, l->n) < target) == below) lo = mid;
-        else hi = mid;
+inline Lens lens_of(float dc, float r, float n) {
+    Lens l;
+    l.dc = dc;
+    l.r = r;
+    l.n = n;
+    l.k = fmax(dc / r, 1.0f);
+    l.alpha_end = lens_reach(r, dc);
+    const float s_end = fmin(l.k * lens_sincos(l.alpha_end).x, 1.0f);
+    l.theta_end = lens_asin(s_end);
+    const float c_end = safe_sqrt((1.0f - s_end) * (1.0f + s_end));
+    l.m_end = lens_turn(&l, s_end, l.theta_end);
+    /* G' as a function of c = cos(theta) rises with c: its zero, if inside, by Newton's
+     * method safeguarded by bisection */
+    if (!(lens_slope(&l, 0.0f, 1.0f) > 0.0f)) {
+        l.theta_top = 0.0f;
+        l.m_top = 0.0f;
+    } else if (lens_slope(&l, s_end, c_end) >= 0.0f) {
+        l.theta_top = l.theta_end;
+        l.m_top = l.m_end;
+    } else {
+        const float kk = l.k * l.k - 1.0f, nn = n * n - 1.0f;
+        float lo = c_end, hi = 1.0f, c = c_end;
+        for (int i = 0; i < 16; ++i) {
+            const float a = rsqrt(fmax(kk + c * c, 1e-12f)), b = rsqrt(nn + c * c);
+            const float f = c * (a + 2.0f * b) - 2.0f;
+            if (f < 0.0f) lo = c;
+            else hi = c;
+            const float df = kk * a * a * a + 2.0f * nn * b * b * b;
+            float next = c - f / df;
+            if (!(next >= lo && next <= hi)) next = 0.5f * (lo + hi);
+            const bool done = fabs(next - c) <= 1e-6f;
+            c = next;
+            if (done) break;
+        }
+        const float s = safe_sqrt((1.0f - c) * (1.0f + c));
+        l.theta_top = atan2_fast(s, c);
+        l.m_top = lens_turn(&l, s, l.theta_top);
     }
-    return 0.5f * (lo + hi);
+    return l;
 }
 
-/* The root of index j (in order of alpha) of G = target. */
-inline float lens_root(const LensScan* l, float target, uint j) {
-    for (int k = 1; k <= FC_LENS_STEPS; ++k) {
-        if (!lens_brackets(l, k, target)) continue;
-        if (j == 0u) return lens_bisect(l, k, target);
-        j -= 1u;
+/* How many directions leave toward an environment direction phi from the axis. */
+inline uint lens_count(const Lens* l, float phi) {
+    return (phi < l->m_top ? 1u : 0u) + (l->m_end < phi && phi < l->m_top ? 1u : 0u) + (l->m_end < -phi ? 1u : 0u);
+}
+
+/* The root of G = target in [lo, hi], where G rises (rising) or falls: Newton's method from the
+ * end where G is below the target (there it approaches monotonically), safeguarded by
+ * bisection. */
+inline float lens_solve(const Lens* l, float target, float lo, float hi, bool rising) {
+    float x = rising ? lo : hi;
+    for (int i = 0; i < 16; ++i) {
+        const float2 sc = lens_sincos(x);
+        const float f = lens_turn(l, sc.x, x) - target;
+        /* the turn to its rounding error (the direction it leaves along is then that close) */
+        if (fabs(f) <= 1e-6f) break;
+        if ((f < 0.0f) == rising) lo = x;
+        else hi = x;
+        float next = x - f / lens_slope(l, sc.x, sc.y);
+        if (!(next >= lo && next <= hi)) next = 0.5f * (lo + hi);
+        const bool done = fabs(next - x) <= 1e-6f;
+        x = next;
+        if (done) break;
     }
-    return 0.0f;
+    return x;
 }
 
 /* The environment direction s on the ball's plane: its angle phi from the axis and the unit e
@@ -173,73 +202,70 @@ inline bool lens_plane(float3 axis, float3 s, float* phi, float3* e) {
     return true;
 }
 
-/* The lens guide's density at the root alpha (turned by G = turn) of a direction of the
- * environment's density pdf_s that has `count` roots: pdf_s |sin G G'(alpha)| / sin(alpha) / count. */
-inline float lens_root_density(float pdf_s, uint count, float alpha, float turn, float dc, float r, float n) {
-    const float slope = lens_slope(alpha, dc, r, n);
-    const float jacobian = alpha > 1e-6f ? fabs(lens_sincos(turn).x * slope) / lens_sincos(alpha).x : slope * slope;
+/* The lens guide's density at the direction alpha from the axis, of incidence theta (sine s,
+ * cosine c), turned by G = turn, toward an environment direction of density pdf_s:
+ * pdf_s |sin G dG/dalpha| / sin(alpha) / count, dG/dalpha = G'(theta) k cos(alpha) / cos(theta). */
+inline float lens_root_density(const Lens* l, float pdf_s, float alpha, float s, float c, float turn) {
+    const uint count = lens_count(l, fabs(turn));
+    if (count == 0u) return 0.0f;
+    const float2 sa = lens_sincos(alpha);
+    const float slope = lens_slope(l, s, c) * l->k * sa.y / fmax(c, 1e-7f);
+    const float jacobian = alpha > 1e-6f ? fabs(lens_sincos(turn).x * slope) / sa.x : slope * slope;
     return pdf_s * jacobian / (float)count;
 }
 
 /* The density of the lens guide of ball (c, n) at wi, as lens_sample draws it, before the
  * pick among the lenses. */
 inline float lens_density(__constant const FcEnvironment* env, __global const float4* texels,
-                          __global const float* dist, float4 c, float n, float3 p, float3 wi) {
-    const float3 pc = c.xyz - p;
-    const float dc = length(pc), r = c.w;
+                          __global const float* dist, float4 ball, float n, float3 p, float3 wi) {
+    const float3 pc = ball.xyz - p;
+    const float dc = length(pc), r = ball.w;
     const float3 axis = pc / dc;
-    const float alpha_max = lens_reach(r, dc);
     float alpha;
     float3 e;
-    if (!lens_plane(axis, wi, &alpha, &e) || !(alpha < alpha_max)) return 0.0f;
-    const float turn = lens_turn(alpha, dc, r, n);
-    const float2 sc = lens_sincos(turn);
-    const float pdf_s = env_pdf(env, texels, dist, sc.y * axis + sc.x * e);
+    if (!lens_plane(axis, wi, &alpha, &e) || !(alpha < lens_reach(r, dc))) return 0.0f;
+    const Lens l = lens_of(dc, r, n);
+    const float s = fmin(l.k * lens_sincos(alpha).x, 1.0f), theta = lens_asin(s);
+    const float turn = lens_turn(&l, s, theta);
+    const float2 st = lens_sincos(turn);
+    const float pdf_s = env_pdf(env, texels, dist, st.y * axis + st.x * e);
     if (!(pdf_s > 0.0f)) return 0.0f;
-    /* is alpha the root the scan finds for the direction it leaves along (G = +phi on e's
-     * side, -phi beyond)? Its own step must bracket turn, and the bisection there end at it. */
-    LensScan l;
-    lens_scan(&l, alpha_max, dc, r, n);
-    const float at = alpha / alpha_max * (float)FC_LENS_STEPS;
-    const int k = clamp((int)at + 1, 1, FC_LENS_STEPS);
-    bool held = lens_brackets(&l, k, turn) && fabs(lens_bisect(&l, k, turn) - alpha) <= alpha_max * 1e-4f;
-    /* a root at a step's end: the bisection of the step beside may be the one that found it */
-    const int side = at - (float)(k - 1) < 0.5f ? k - 1 : k + 1;
-    if (!held && side >= 1 && side <= FC_LENS_STEPS && lens_brackets(&l, side, turn))
-        held = fabs(lens_bisect(&l, side, turn) - alpha) <= alpha_max * 1e-4f;
-    if (!held) return 0.0f;
-    return lens_root_density(pdf_s, lens_count(&l, turn) + lens_count(&l, -turn), alpha, turn, dc, r, n);
+    return lens_root_density(&l, pdf_s, alpha, s, safe_sqrt((1.0f - s) * (1.0f + s)), turn);
 }
 
 /* A direction whose ray leaves ball (c, n) along an environment direction drawn by u; u_root
- * picks the root. False where there is none. *density: lens_density's at it, from the same
- * scan. */
+ * picks the root. False where there is none. *density: lens_density's at it. */
 inline bool lens_sample(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
-                        float4 c, float n, float3 p, float2 u, float u_root, float3* wi, float* density) {
+                        float4 ball, float n, float3 p, float2 u, float u_root, float3* wi, float* density) {
     float3 s;
     float pdf_s;
     env_sample(env, texels, dist, u, &s, &pdf_s);
     if (!(pdf_s > 0.0f)) return false;
-    const float3 pc = c.xyz - p;
-    const float dc = length(pc), r = c.w;
+    const float3 pc = ball.xyz - p;
+    const float dc = length(pc), r = ball.w;
     const float3 axis = pc / dc;
     float phi;
     float3 e;
     if (!lens_plane(axis, s, &phi, &e)) return false;
-    LensScan l;
-    lens_scan(&l, lens_reach(r, dc), dc, r, n);
-    const uint plus = lens_count(&l, phi), minus = lens_count(&l, -phi);
-    if (plus + minus == 0u) return false;
-    const uint j = min((uint)(u_root * (float)(plus + minus)), plus + minus - 1u);
-    float root;
-    if (j < plus) root = lens_root(&l, phi, j);
+    const Lens l = lens_of(dc, r, n);
+    const uint count = lens_count(&l, phi);
+    if (count == 0u) return false;
+    /* the roots in order: on the rising side (+phi), on the falling side (+phi), (-phi) */
+    const bool rising = phi < l.m_top, falling = rising && l.m_end < phi;
+    const uint j = min((uint)(u_root * (float)count), count - 1u);
+    float theta, turn = phi;
+    if (rising && j == 0u) theta = lens_solve(&l, phi, 0.0f, l.theta_top, true);
+    else if (falling && j == 1u) theta = lens_solve(&l, phi, l.theta_top, l.theta_end, false);
     else {
-        root = lens_root(&l, -phi, j - plus);
+        turn = -phi;
         e = -e;
+        theta = lens_solve(&l, -phi, l.theta_top, l.theta_end, false);
     }
-    const float2 sc = lens_sincos(root);
-    *wi = normalize(sc.y * axis + sc.x * e);
-    *density = lens_root_density(pdf_s, plus + minus, root, j < plus ? phi : -phi, dc, r, n);
+    const float2 st = lens_sincos(theta);
+    const float alpha = lens_asin(fmin(st.x / l.k, 1.0f));
+    const float2 sa = lens_sincos(alpha);
+    *wi = normalize(sa.y * axis + sa.x * e);
+    *density = lens_root_density(&l, pdf_s, alpha, st.x, st.y, turn);
     return true;
 }
 
@@ -302,7 +328,7 @@ inline CausticGuide caustic_guide_at(__constant const FcRenderParams* P, __globa
 }
 
 /* What caustic_guide_sample drew: the caster of the lens guide (-1: another way) and its
- * density there (lens_density's, from the sampling's own scan). */
+ * density there (lens_density's, from the sampling's own roots). */
 typedef struct {
     int lens;
     float density;
@@ -322,10 +348,13 @@ inline float caustic_guide_density(__constant const FcEnvironment* env, __global
         float omc;
         const float4 s = casters[2u * i];
         if (!(caustic_cone(s, c->p, c->n, &axis, &omc) > 0.0f)) continue;
-        if (1.0f - dot(wi, axis) <= omc) held += 1u;
+        const bool inside = 1.0f - dot(wi, axis) <= omc;
+        if (inside) held += 1u;
         const float n = casters[2u * i + 1u].x;
         if (!lenses || c->lenses == 0u || !(n > 1.0f)) continue;
-        lens += drawn && drawn->lens == (int)i ? drawn->density : lens_density(env, texels, dist, s, n, c->p, wi);
+        /* a lens's density is 0 outside its cone (lens_reach is inside it) */
+        if (drawn && drawn->lens == (int)i) lens += drawn->density;
+        else if (inside) lens += lens_density(env, texels, dist, s, n, c->p, wi);
     }
     const float cone = (float)held / c->total;
     return c->h >= 1.0f ? lens / (float)c->lenses
