@@ -66,18 +66,27 @@ inline bool caustic_guide_receiver(const FcMaterial* m) {
     return m->diffuse_model == FC_DIFFUSE_LAMBERT && m->specular_model == FC_SPECULAR_NONE && !bsdf_layered(m);
 }
 
-/* Caster c's cone seen from p: its axis and 1 - cos(theta_max); returns its solid angle, 0 where
- * it does not count (p inside the sphere, or the whole cone below the plane of n). */
-inline float caustic_cone(float4 c, float3 p, float3 n, float3* axis, float* one_minus_cos) {
-    const float3 pc = c.xyz - p;
-    const float dc2 = dot(pc, pc), r = c.w;
-    if (!(dc2 > r * r * (1.0f + 1e-3f))) return 0.0f;
-    const float dc = sqrt(dc2);
-    *axis = pc / dc;
-    /* below the horizon: the axis more than 90 degrees + theta_max from n */
-    if (!(dot(*axis, n) > -r / dc)) return 0.0f;
-    *one_minus_cos = sphere_cone_one_minus_cos(r, dc2);
-    return 2.0f * FC_PI * *one_minus_cos;
+/* Whether caster c counts at p (shading normal n): p is outside its sphere and part of its cone
+ * is above the plane of n (the axis less than 90 degrees + theta_max from n, sin(theta_max) =
+ * r / dc); *pc: the vector to its centre, *dc2 its squared length. */
+inline bool caustic_counts(float4 c, float3 p, float3 n, float3* pc, float* dc2) {
+    *pc = c.xyz - p;
+    *dc2 = dot(*pc, *pc);
+    return *dc2 > c.w * c.w * (1.0f + 1e-3f) && dot(*pc, n) > -c.w;
+}
+
+/* Caster c's cone seen from p: 1 - cos(theta_max), 0 where it does not count; *pc as
+ * caustic_counts. Its solid angle is 2 pi times that. */
+inline float caustic_cone(float4 c, float3 p, float3 n, float3* pc) {
+    float dc2;
+    return caustic_counts(c, p, n, pc, &dc2) ? sphere_cone_one_minus_cos(c.w, dc2) : 0.0f;
+}
+
+/* Whether the unit wi is inside the cone of a sphere of radius r at pc: by the sine of its angle
+ * from the axis, |wi x pc| <= r, on pc's side (no cancellation for small cones). */
+inline bool caustic_cone_holds(float3 pc, float r, float3 wi) {
+    const float3 x = cross(wi, pc);
+    return dot(wi, pc) > 0.0f && dot(x, x) <= r * r;
 }
 
 /* ---- the lens guide ---- */
@@ -300,9 +309,8 @@ inline CausticGuide caustic_guide_of_receiver(__global const float4* casters, ui
     c.n = n;
     uint counting = 0u;
     for (uint i = 0; i < count; ++i) {
-        float3 axis;
-        float omc;
-        const float w = caustic_cone(casters[2u * i], p, n, &axis, &omc);
+        float3 pc;
+        const float w = 2.0f * FC_PI * caustic_cone(casters[2u * i], p, n, &pc);
         if (!(w > 0.0f)) continue;
         c.total += w;
         counting += 1u;
@@ -344,11 +352,11 @@ inline float caustic_guide_density(__constant const FcEnvironment* env, __global
     uint held = 0u;
     float lens = 0.0f;
     for (uint i = 0; i < count; ++i) {
-        float3 axis;
-        float omc;
+        float3 pc;
+        float dc2;
         const float4 s = casters[2u * i];
-        if (!(caustic_cone(s, c->p, c->n, &axis, &omc) > 0.0f)) continue;
-        const bool inside = 1.0f - dot(wi, axis) <= omc;
+        if (!caustic_counts(s, c->p, c->n, &pc, &dc2)) continue;
+        const bool inside = caustic_cone_holds(pc, s.w, wi);
         if (inside) held += 1u;
         const float n = casters[2u * i + 1u].x;
         if (!lenses || c->lenses == 0u || !(n > 1.0f)) continue;
@@ -375,11 +383,11 @@ inline bool caustic_guide_sample(__constant const FcEnvironment* env, __global c
         const float u_root = t - (float)pick;
         uint seen = 0u;
         for (uint i = 0; i < count; ++i) {
-            float3 axis;
-            float omc;
+            float3 pc;
+            float dc2;
             const float4 s = casters[2u * i];
             const float n = casters[2u * i + 1u].x;
-            if (!(n > 1.0f) || !(caustic_cone(s, c->p, c->n, &axis, &omc) > 0.0f)) continue;
+            if (!(n > 1.0f) || !caustic_counts(s, c->p, c->n, &pc, &dc2)) continue;
             if (seen == pick) {
                 drawn->lens = (int)i;
                 return lens_sample(env, texels, dist, s, n, c->p, u, u_root, wi, &drawn->density);
@@ -390,12 +398,13 @@ inline bool caustic_guide_sample(__constant const FcEnvironment* env, __global c
     }
     /* a cone, in proportion to its solid angle */
     float t = fmin((v - c->h) / (1.0f - c->h), FC_ONE_MINUS_EPSILON) * c->total;
-    float3 axis = c->n, a;
-    float omc = 0.0f, o;
+    float3 axis = c->n, pc;
+    float omc = 0.0f;
     for (uint i = 0; i < count; ++i) {
-        const float w = caustic_cone(casters[2u * i], c->p, c->n, &a, &o);
+        const float o = caustic_cone(casters[2u * i], c->p, c->n, &pc);
+        const float w = 2.0f * FC_PI * o;
         if (!(w > 0.0f)) continue;
-        axis = a;
+        axis = normalize(pc);
         omc = o;
         if (t < w) break;
         t -= w;
