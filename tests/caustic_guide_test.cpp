@@ -47,7 +47,7 @@ struct Estimate {
 };
 
 Estimate estimate(const EnvironmentMap& e, const std::vector<Ball>& balls, glm::vec3 p, glm::vec3 n, float fraction,
-                  std::uint32_t seed) {
+                  std::uint32_t seed, float glint) {
     DeviceEnv d(e);
     ClContext& ctx = test::context();
     const std::vector<cl_float4> casters = casters_of(balls);
@@ -67,6 +67,7 @@ Estimate estimate(const EnvironmentMap& e, const std::vector<Ball>& balls, glm::
     k.setArg(8, cl_uint(seed));
     k.setArg(9, per_item);
     k.setArg(10, out);
+    k.setArg(11, glint);
     ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(items));
     std::vector<cl_float4> r(items);
     ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, items * sizeof(cl_float4), r.data());
@@ -94,8 +95,8 @@ EnvironmentMap sun_sky() {
 }
 
 void expect_unbiased(const std::string& what, const EnvironmentMap& e, const std::vector<Ball>& balls, glm::vec3 p,
-                     glm::vec3 n, float fraction, std::uint32_t seed, double min_lens_share) {
-    const Estimate est = estimate(e, balls, p, n, fraction, seed);
+                     glm::vec3 n, float fraction, std::uint32_t seed, double min_lens_share, float glint = 0.0f) {
+    const Estimate est = estimate(e, balls, p, n, fraction, seed, glint);
     const double z = (est.mean - kPi) / est.stderr_;
     std::printf("[ guide    ] %-34s mean %.5f (pi %+.2f se), lens draws %.3f, density apart %.1e\n", what.c_str(),
                 est.mean, z, est.lens_share, est.gap);
@@ -137,6 +138,101 @@ TEST(CausticGuide, MixtureDensityIsTheSamplersWithBoundsAndLenses) {
         {{0.0f, 0.5f, 0.0f}, 0.5f, 1.5f}, {{0.6f, 0.6f, 0.3f}, 0.6f, 0.0f}, {{-1.5f, -0.2f, 0.0f}, 0.5f, 0.0f}};
     expect_unbiased("sun, lens and bounds", e, mixed, {0.5f, 0.0f, -0.8f}, kUp, 0.5f, 30u, 0.01);
     expect_unbiased("sun, bounds only", e, {mixed[1], mixed[2]}, {0.5f, 0.0f, -0.8f}, kUp, 0.5f, 31u, 0.0);
+    // half the lens guide's draws aimed at the balls' glints (a glossy vertex's mixture)
+    expect_unbiased("sun, lens and bounds, glints", e, mixed, {0.5f, 0.0f, -0.8f}, kUp, 0.5f, 32u, 0.01, 0.5f);
+    expect_unbiased("sun, two balls, glints", e, {{{-1.8f, 0.5f, 1.0f}, 0.5f, 1.5f}, {{0.6f, 0.5f, 1.0f}, 0.5f, 1.33f}},
+                    {-0.6f, 0.0f, 1.0f}, kUp, 0.5f, 33u, 0.05, 0.5f);
+    expect_unbiased("constant, glass ball, near, glints", constant_environment(glm::vec3(1.0f)),
+                    {{{0.0f, 0.5f, 0.0f}, 0.5f, 1.5f}}, {0.9f, 0.0f, 0.3f}, kUp, 0.5f, 34u, 0.1, 0.5f);
+}
+
+// A glossy vertex's estimate of its directional albedo (red) by the mixture, against the
+// BSDF's own (fraction 0): (mean, standard error, share of guided draws).
+struct GlossyEstimate {
+    double mean = 0.0, stderr_ = 0.0, guided = 0.0;
+};
+
+GlossyEstimate glossy_estimate(const EnvironmentMap& e, const std::vector<Ball>& balls, const FcMaterial& m,
+                               glm::vec3 p, glm::vec3 n, glm::vec3 wo, float fraction, std::uint32_t seed) {
+    DeviceEnv d(e);
+    ClContext& ctx = test::context();
+    const std::vector<cl_float4> casters = casters_of(balls);
+    cl::Buffer cb(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, casters.size() * sizeof(cl_float4),
+                  const_cast<cl_float4*>(casters.data()));
+    cl::Buffer mb(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(FcMaterial),
+                  const_cast<FcMaterial*>(&m));
+    const cl_uint per_item = 256, items = 8192;
+    cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, items * sizeof(cl_float4));
+    cl::Kernel k(test::program(kGuideProgram), "cg_glossy_estimate");
+    k.setArg(0, d.params);
+    k.setArg(1, d.texels);
+    k.setArg(2, d.dist);
+    k.setArg(3, cb);
+    k.setArg(4, cl_uint(balls.size()));
+    k.setArg(5, mb);
+    k.setArg(6, cl_float4{{p.x, p.y, p.z, 0.0f}});
+    k.setArg(7, cl_float4{{n.x, n.y, n.z, 0.0f}});
+    k.setArg(8, cl_float4{{wo.x, wo.y, wo.z, 0.0f}});
+    k.setArg(9, fraction);
+    k.setArg(10, cl_uint(seed));
+    k.setArg(11, per_item);
+    k.setArg(12, out);
+    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(items));
+    std::vector<cl_float4> r(items);
+    ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, items * sizeof(cl_float4), r.data());
+    const double count = double(items) * double(per_item);
+    double s = 0.0, s2 = 0.0, g = 0.0;
+    for (const cl_float4& v : r) {
+        s += double(v.s[0]);
+        s2 += double(v.s[1]);
+        g += double(v.s[2]);
+    }
+    GlossyEstimate est;
+    est.mean = s / count;
+    est.stderr_ = std::sqrt(std::max(s2 / count - est.mean * est.mean, 0.0) / count);
+    est.guided = g / count;
+    return est;
+}
+
+FcMaterial glossy(float alpha, float diffuse, float f0) {
+    FcMaterial m{};
+    for (int c = 0; c < 3; ++c) {
+        m.diffuse[c] = diffuse;
+        m.specular[c] = f0;
+        m.eta[c] = 1.5f;
+    }
+    m.diffuse_model = diffuse > 0.0f ? FC_DIFFUSE_LAMBERT : FC_DIFFUSE_NONE;
+    m.specular_model = FC_SPECULAR_MICROFACET;
+    m.ndf = FC_NDF_GGX;
+    m.sampling = FC_SAMPLE_VISIBLE;
+    m.geometry = FC_G_SMITH_CORRELATED;
+    m.fresnel = FC_FRESNEL_SCHLICK;
+    m.alpha_x = m.alpha_y = alpha;
+    m.ior = 1.5f;
+    return m;
+}
+
+// At a glossy vertex (a rough metal-like lobe, a plastic) whose lobe points at a glass ball
+// under the sun, the mixture's weights f cos / density average to the BSDF's own albedo: the
+// density is the mixture's, and the BSDF's choice rescaled past the guide's share is still its
+// own.
+TEST(CausticGuide, GlossyMixtureKeepsTheBsdfsAlbedo) {
+    const EnvironmentMap e = sun_sky();
+    const std::vector<Ball> balls{{{0.0f, 0.5f, 0.0f}, 0.5f, 1.5f}, {{0.9f, 0.5f, 0.5f}, 0.4f, 0.0f}};
+    const glm::vec3 p{0.8f, 0.0f, -0.7f};
+    const glm::vec3 d = glm::normalize(glm::vec3(0.0f, 0.5f, 0.0f) - p);
+    const glm::vec3 wo{-d.x, d.y, -d.z};  // its mirror direction is the lens's centre
+    std::uint32_t seed = 40;
+    for (const auto& [what, m] : {std::pair<const char*, FcMaterial>{"rough metal", glossy(0.15f, 0.0f, 0.9f)},
+                                  std::pair<const char*, FcMaterial>{"plastic", glossy(0.3f, 0.5f, 0.04f)}}) {
+        const GlossyEstimate own = glossy_estimate(e, balls, m, p, kUp, wo, 0.0f, seed++);
+        const GlossyEstimate mix = glossy_estimate(e, balls, m, p, kUp, wo, 0.5f, seed++);
+        const double z = (mix.mean - own.mean) / std::hypot(mix.stderr_, own.stderr_);
+        std::printf("[ guide    ] glossy, %-12s albedo %.5f (BSDF) / %.5f (mixture, %+.2f se), guided %.3f\n", what,
+                    own.mean, mix.mean, z, mix.guided);
+        EXPECT_LT(std::abs(z), 4.5) << what;
+        EXPECT_GT(mix.guided, 0.1) << what;
+    }
 }
 
 TEST(CausticGuide, ShareFollowsTheConesSolidAngle) {

@@ -59,10 +59,13 @@ void triangle_runs(const Scene& scene, std::span<const glm::vec3> vertices, std:
 
 std::vector<float> caustic_casters(const Scene& scene) {
     if (!(scene.settings.caustic_guide > 0.0f)) return {};
-    const bool lambertian = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {
-        return m.diffuse_model == FC_DIFFUSE_LAMBERT && m.specular_model == FC_SPECULAR_NONE;
+    // the receivers (caustic_guide_receiver): Lambertian materials, and rough microfacet ones
+    // (the kernels tell which of these are plain bases)
+    const bool receiver = std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) {
+        return (m.diffuse_model == FC_DIFFUSE_LAMBERT && m.specular_model == FC_SPECULAR_NONE) ||
+               (m.specular_model == FC_SPECULAR_MICROFACET && std::max(m.alpha_x, m.alpha_y) >= FC_ALPHA_MIRROR);
     });
-    if (!lambertian) return {};
+    if (!receiver) return {};
     std::vector<Bound> bounds;
     for (const FcSphere& s : scene.spheres) {
         if (!is_glass(scene, s.material)) continue;

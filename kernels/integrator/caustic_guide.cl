@@ -1,11 +1,13 @@
-/* Sampling toward glass at Lambertian vertices: caustics seen by diffuse surfaces.
+/* Sampling toward glass at Lambertian and glossy vertices: caustics and glints.
  *
  * Light that reaches a diffuse surface through glass (the sun focused by a glass ball onto
  * the floor) is found only by BSDF sampling: next-event estimation's shadow ray stops at the
  * glass. With the cosine lobe alone such a path is rare and, when found, a firefly; on
- * glass_metal_sky these few samples are nearly all of the image's error. So at a vertex whose
- * BSDF is a Lambertian lobe and no more (caustic_guide_receiver), the direction is drawn from
- * a one-sample mixture (Veach 1997, section 9.2.4): with probability 1 - g by the BSDF, with
+ * glass_metal_sky these few samples are nearly all of the image's error. The same holds for a
+ * rough metal that sees the sun's glint on a glass ball (its reflection). So at a vertex whose
+ * BSDF is a Lambertian lobe and no more, or a plain rough microfacet base (caustic_guide_receiver;
+ * a smaller share), the direction is drawn from a one-sample mixture (Veach 1997, section
+ * 9.2.4): with probability 1 - g by the BSDF (its choice of lobe rescaled past g), with
  * probability g by a guide, itself a mixture of two:
  *
  * - the lens guide (share h): for a smooth analytic glass sphere (a ball lens), a direction
@@ -22,7 +24,10 @@
  *   and each is found by Newton's method from the side where it converges monotonically; one
  *   of them is taken. Its density is the environment's at the direction it leaves along times
  *   the Jacobian |sin G G'(alpha)| / sin(alpha) (the map keeps the azimuth about the axis),
- *   over the roots' count and the lenses'.
+ *   over the roots' count and the lenses'. At glossy vertices a share (FC_LENS_GLINT) of the
+ *   lens guide's draws aims instead at the ball's glint: the direction whose ray, reflected
+ *   off the ball, leaves along the environment direction (R, below: one root), with the same
+ *   Jacobian in R.
  * - the cone guide (share 1 - h): uniform inside the cone that a glass object's bounding
  *   sphere subtends (pbrt-v4's cone sampling, as kernels/lights/sphere_light.cl), the object
  *   picked in proportion to its cone's solid angle: for glass that is not a smooth ball.
@@ -31,9 +36,9 @@
  * against light sampling, on both sides (for a light at infinity, without the lens share:
  * caustic_guide_density). g is the scene's share scaled down where the cones fill less than
  * FC_CAUSTIC_GUIDE_FULL; h is 1 where every caster that counts is a lens, 1/2 where some are,
- * else 0. The cosine lobe keeps every direction possible, so
- * the estimate stays unbiased whatever the guide; a guided direction below the surface ends
- * the path (its integrand is zero there).
+ * else 0. The BSDF's own sampling keeps every direction of its support possible, so the
+ * estimate stays unbiased whatever the guide; a guided direction below the surface ends the
+ * path (its integrand is zero there), and one where the BSDF is 0 weighs 0.
  *
  * The casters (host/scene/caustic_casters.cpp, at most FC_MAX_CASTERS) are two float4 each:
  * (centre, radius) of a dielectric object's bounding sphere, then (n, 0, 0, 0) with n the
@@ -60,11 +65,34 @@
 #define FC_CAUSTIC_GUIDE_FULL 0.5f
 #endif
 
-/* Whether the BSDF of m is sampled with the mixture: a Lambertian lobe, no specular lobe, no
- * layer (the packet path's lanes that keep no material of their own). */
-inline bool caustic_guide_receiver(const FcMaterial* m) {
-    return m->diffuse_model == FC_DIFFUSE_LAMBERT && m->specular_model == FC_SPECULAR_NONE && !bsdf_layered(m);
+/* The guide's share at a glossy vertex, relative to a Lambertian one's. Seen in a rough metal,
+ * the sun through a glass ball is found only by the BSDF's samples (the shadow ray stops at
+ * the glass), rarely and then as a firefly of the sun's whole radiance; a small share of
+ * directions toward the glass puts the mixture's density there (the sample's weight divides by
+ * it), while most of the glossy lobe's own samples stay. */
+/* The share of a lens guide's draws aimed at the ball's glint (the sun reflected off it, seen
+ * in a rough metal beside it) rather than through the ball. */
+#ifndef FC_LENS_GLINT
+#define FC_LENS_GLINT 0.5f
+#endif
+#ifndef FC_CAUSTIC_GUIDE_GLOSSY
+#define FC_CAUSTIC_GUIDE_GLOSSY 0.2f
+#endif
+
+/* The guide's share at a vertex of material m, relative to the scene's: 1 where its BSDF is a
+ * Lambertian lobe and no more (the packet path's lanes that keep no material of their own),
+ * FC_CAUSTIC_GUIDE_GLOSSY where it is a plain base (a rough microfacet lobe, perhaps over a
+ * Lambertian one: no delta lobe, no layer), 0 for others. */
+inline float caustic_guide_receiver(const FcMaterial* m) {
+    if (bsdf_layered(m)) return 0.0f;
+    if (m->diffuse_model == FC_DIFFUSE_LAMBERT && m->specular_model == FC_SPECULAR_NONE) return 1.0f;
+    return bsdf_plain(m) ? FC_CAUSTIC_GUIDE_GLOSSY : 0.0f;
 }
+
+/* The lens guide's share aimed at the balls' glints at a vertex of the receiver's share:
+ * FC_LENS_GLINT at glossy vertices, none at Lambertian ones (whose glints, the sun reflected
+ * off a ball onto the floor, are faint: F of a few hundredths spread wide). */
+inline float caustic_guide_glint(float share) { return share < 1.0f ? FC_LENS_GLINT : 0.0f; }
 
 /* Whether caster c counts at p (shading normal n): p is outside its sphere and part of its cone
  * is above the plane of n (the axis less than 90 degrees + theta_max from n, sin(theta_max) =
@@ -119,6 +147,7 @@ typedef struct {
     float dc, r, n, k;
     float alpha_end, theta_end;
     float theta_top, m_top, m_end;
+    float r_end; /* the glint's turn at theta_end */
 } Lens;
 
 /* G(theta) from sin(theta) and theta. */
@@ -132,6 +161,18 @@ inline float lens_slope(const Lens* l, float s, float c) {
     return c * (rsqrt(fmax(l->k * l->k - s2, 1e-12f)) + 2.0f * rsqrt(l->n * l->n - s2)) - 2.0f;
 }
 
+/* The ball's glint, the sun reflected off its surface: a ray at incidence theta is turned by
+ * pi - 2 theta, so it leaves at
+ *     R(theta) = asin(sin(theta) / k) + pi - 2 theta
+ * from the axis, on its own side; R'(theta) = cos(theta) / sqrt(k^2 - sin^2) - 2 < 0 and
+ * R'' = sin(theta) / sqrt(k^2 - sin^2) (cos^2(theta) / (k^2 - sin^2) - 1) < 0: R falls, concave,
+ * from pi to r_end, and a direction phi > r_end has one root. */
+inline float glint_turn(const Lens* l, float s, float theta) { return lens_asin(s / l->k) + FC_PI - 2.0f * theta; }
+
+inline float glint_slope(const Lens* l, float s, float c) {
+    return c * rsqrt(fmax(l->k * l->k - s * s, 1e-12f)) - 2.0f;
+}
+
 inline Lens lens_of(float dc, float r, float n) {
     Lens l;
     l.dc = dc;
@@ -143,6 +184,7 @@ inline Lens lens_of(float dc, float r, float n) {
     l.theta_end = lens_asin(s_end);
     const float c_end = safe_sqrt((1.0f - s_end) * (1.0f + s_end));
     l.m_end = lens_turn(&l, s_end, l.theta_end);
+    l.r_end = lens_asin(s_end / l.k) + FC_PI - 2.0f * l.theta_end;
     /* G' as a function of c = cos(theta) rises with c: its zero, if inside, by Newton's
      * method safeguarded by bisection */
     if (!(lens_slope(&l, 0.0f, 1.0f) > 0.0f)) {
@@ -181,16 +223,16 @@ inline uint lens_count(const Lens* l, float phi) {
 /* The root of G = target in [lo, hi], where G rises (rising) or falls: Newton's method from the
  * end where G is below the target (there it approaches monotonically), safeguarded by
  * bisection. */
-inline float lens_solve(const Lens* l, float target, float lo, float hi, bool rising) {
+inline float lens_solve(const Lens* l, float target, float lo, float hi, bool rising, bool glint) {
     float x = rising ? lo : hi;
     for (int i = 0; i < 16; ++i) {
         const float2 sc = lens_sincos(x);
-        const float f = lens_turn(l, sc.x, x) - target;
+        const float f = (glint ? glint_turn(l, sc.x, x) : lens_turn(l, sc.x, x)) - target;
         /* the turn to its rounding error (the direction it leaves along is then that close) */
         if (fabs(f) <= 1e-6f) break;
         if ((f < 0.0f) == rising) lo = x;
         else hi = x;
-        float next = x - f / lens_slope(l, sc.x, sc.y);
+        float next = x - f / (glint ? glint_slope(l, sc.x, sc.y) : lens_slope(l, sc.x, sc.y));
         if (!(next >= lo && next <= hi)) next = 0.5f * (lo + hi);
         const bool done = fabs(next - x) <= 1e-6f;
         x = next;
@@ -211,22 +253,44 @@ inline bool lens_plane(float3 axis, float3 s, float* phi, float3* e) {
     return true;
 }
 
-/* The lens guide's density at the direction alpha from the axis, of incidence theta (sine s,
- * cosine c), turned by G = turn, toward an environment direction of density pdf_s:
- * pdf_s |sin G dG/dalpha| / sin(alpha) / count, dG/dalpha = G'(theta) k cos(alpha) / cos(theta). */
-inline float lens_root_density(const Lens* l, float pdf_s, float alpha, float s, float c, float turn) {
-    const uint count = lens_count(l, fabs(turn));
+/* The density at the direction alpha from the axis, of incidence theta (sine s, cosine c),
+ * that the ray leaving at turn (G or R, of slope dturn/dtheta) and count roots of it give:
+ * pdf_s |sin(turn) dturn/dalpha| / sin(alpha) / count, with dturn/dalpha = slope k cos(alpha) /
+ * cos(theta), pdf_s the environment's density at the direction it leaves along. */
+inline float lens_root_density(const Lens* l, float pdf_s, uint count, float alpha, float c, float turn, float slope) {
     if (count == 0u) return 0.0f;
     const float2 sa = lens_sincos(alpha);
-    const float slope = lens_slope(l, s, c) * l->k * sa.y / fmax(c, 1e-7f);
-    const float jacobian = alpha > 1e-6f ? fabs(lens_sincos(turn).x * slope) / sa.x : slope * slope;
+    const float d = slope * l->k * sa.y / fmax(c, 1e-7f);
+    const float jacobian = alpha > 1e-6f ? fabs(lens_sincos(turn).x * d) / sa.x : d * d;
     return pdf_s * jacobian / (float)count;
+}
+
+/* The lens guide's density of ball l (seen along axis) at the direction alpha from the axis
+ * toward e, of incidence theta (sine s): FC_LENS_GLINT of it the glint's, the rest the way
+ * through the ball's. */
+inline float lens_density_at(__constant const FcEnvironment* env, __global const float4* texels,
+                             __global const float* dist, const Lens* l, float3 axis, float3 e, float alpha, float s,
+                             float theta, float glint) {
+    const float c = safe_sqrt((1.0f - s) * (1.0f + s));
+    float density = 0.0f;
+    const float turn = lens_turn(l, s, theta);
+    const float2 st = lens_sincos(turn);
+    const float pdf_t = env_pdf(env, texels, dist, st.y * axis + st.x * e);
+    if (pdf_t > 0.0f)
+        density += (1.0f - glint) *
+                   lens_root_density(l, pdf_t, lens_count(l, fabs(turn)), alpha, c, turn, lens_slope(l, s, c));
+    if (!(glint > 0.0f)) return density;
+    const float turn_g = glint_turn(l, s, theta);
+    const float2 sg = lens_sincos(turn_g);
+    const float pdf_g = env_pdf(env, texels, dist, sg.y * axis + sg.x * e);
+    if (pdf_g > 0.0f) density += glint * lens_root_density(l, pdf_g, 1u, alpha, c, turn_g, glint_slope(l, s, c));
+    return density;
 }
 
 /* The density of the lens guide of ball (c, n) at wi, as lens_sample draws it, before the
  * pick among the lenses. */
 inline float lens_density(__constant const FcEnvironment* env, __global const float4* texels,
-                          __global const float* dist, float4 ball, float n, float3 p, float3 wi) {
+                          __global const float* dist, float4 ball, float n, float glint, float3 p, float3 wi) {
     const float3 pc = ball.xyz - p;
     const float dc = length(pc), r = ball.w;
     const float3 axis = pc / dc;
@@ -234,18 +298,16 @@ inline float lens_density(__constant const FcEnvironment* env, __global const fl
     float3 e;
     if (!lens_plane(axis, wi, &alpha, &e) || !(alpha < lens_reach(r, dc))) return 0.0f;
     const Lens l = lens_of(dc, r, n);
-    const float s = fmin(l.k * lens_sincos(alpha).x, 1.0f), theta = lens_asin(s);
-    const float turn = lens_turn(&l, s, theta);
-    const float2 st = lens_sincos(turn);
-    const float pdf_s = env_pdf(env, texels, dist, st.y * axis + st.x * e);
-    if (!(pdf_s > 0.0f)) return 0.0f;
-    return lens_root_density(&l, pdf_s, alpha, s, safe_sqrt((1.0f - s) * (1.0f + s)), turn);
+    const float s = fmin(l.k * lens_sincos(alpha).x, 1.0f);
+    return lens_density_at(env, texels, dist, &l, axis, e, alpha, s, lens_asin(s), glint);
 }
 
-/* A direction whose ray leaves ball (c, n) along an environment direction drawn by u; u_root
- * picks the root. False where there is none. *density: lens_density's at it. */
+/* A direction whose ray, through ball (c, n) or reflected off it (its glint, with probability
+ * FC_LENS_GLINT), leaves along an environment direction drawn by u; u_root picks the way and
+ * the root. False where there is none. *density: lens_density's at it. */
 inline bool lens_sample(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
-                        float4 ball, float n, float3 p, float2 u, float u_root, float3* wi, float* density) {
+                        float4 ball, float n, float glint, float3 p, float2 u, float u_root, float3* wi,
+                        float* density) {
     float3 s;
     float pdf_s;
     env_sample(env, texels, dist, u, &s, &pdf_s);
@@ -257,24 +319,30 @@ inline bool lens_sample(__constant const FcEnvironment* env, __global const floa
     float3 e;
     if (!lens_plane(axis, s, &phi, &e)) return false;
     const Lens l = lens_of(dc, r, n);
-    const uint count = lens_count(&l, phi);
-    if (count == 0u) return false;
-    /* the roots in order: on the rising side (+phi), on the falling side (+phi), (-phi) */
-    const bool rising = phi < l.m_top, falling = rising && l.m_end < phi;
-    const uint j = min((uint)(u_root * (float)count), count - 1u);
-    float theta, turn = phi;
-    if (rising && j == 0u) theta = lens_solve(&l, phi, 0.0f, l.theta_top, true);
-    else if (falling && j == 1u) theta = lens_solve(&l, phi, l.theta_top, l.theta_end, false);
-    else {
-        turn = -phi;
-        e = -e;
-        theta = lens_solve(&l, -phi, l.theta_top, l.theta_end, false);
+    float theta;
+    if (u_root < glint) {
+        /* the glint: one root where phi is past r_end */
+        if (!(phi > l.r_end)) return false;
+        theta = lens_solve(&l, phi, 0.0f, l.theta_end, false, true);
+    } else {
+        const uint count = lens_count(&l, phi);
+        if (count == 0u) return false;
+        /* the roots in order: on the rising side (+phi), on the falling side (+phi), (-phi) */
+        const bool rising = phi < l.m_top, falling = rising && l.m_end < phi;
+        const float v = (u_root - glint) / (1.0f - glint);
+        const uint j = min((uint)(v * (float)count), count - 1u);
+        if (rising && j == 0u) theta = lens_solve(&l, phi, 0.0f, l.theta_top, true, false);
+        else if (falling && j == 1u) theta = lens_solve(&l, phi, l.theta_top, l.theta_end, false, false);
+        else {
+            e = -e;
+            theta = lens_solve(&l, -phi, l.theta_top, l.theta_end, false, false);
+        }
     }
-    const float2 st = lens_sincos(theta);
-    const float alpha = lens_asin(fmin(st.x / l.k, 1.0f));
+    const float st = lens_sincos(theta).x;
+    const float alpha = lens_asin(fmin(st / l.k, 1.0f));
     const float2 sa = lens_sincos(alpha);
     *wi = normalize(sa.y * axis + sa.x * e);
-    *density = lens_root_density(&l, pdf_s, alpha, st.x, st.y, turn);
+    *density = lens_density_at(env, texels, dist, &l, axis, e, alpha, st, theta, glint);
     return true;
 }
 
@@ -285,6 +353,7 @@ inline bool lens_sample(__constant const FcEnvironment* env, __global const floa
 typedef struct {
     float g;
     float h;
+    float glint; /* the lens guide's share aimed at the balls' glints */
     float total;
     uint lenses;
     float3 p;
@@ -293,7 +362,7 @@ typedef struct {
 
 inline CausticGuide caustic_guide_none(void) {
     CausticGuide c;
-    c.g = c.h = c.total = 0.0f;
+    c.g = c.h = c.glint = c.total = 0.0f;
     c.lenses = 0u;
     c.p = c.n = (float3)(0.0f);
     return c;
@@ -301,12 +370,13 @@ inline CausticGuide caustic_guide_none(void) {
 
 /* The mixture at a vertex whose BSDF caustic_guide_receiver takes, at p with shading normal n
  * (env: whether the environment can be sampled, for the lenses). */
-inline CausticGuide caustic_guide_of_receiver(__global const float4* casters, uint count, float fraction, bool env,
-                                              float3 p, float3 n) {
+inline CausticGuide caustic_guide_of_receiver(__global const float4* casters, uint count, float fraction, float glint,
+                                              bool env, float3 p, float3 n) {
     CausticGuide c = caustic_guide_none();
     if (!(fraction > 0.0f)) return c;
     c.p = p;
     c.n = n;
+    c.glint = glint;
     uint counting = 0u;
     for (uint i = 0; i < count; ++i) {
         float3 pc;
@@ -330,9 +400,10 @@ inline bool caustic_guide_lenses_draw(__constant const FcRenderParams* P) {
 /* The mixture at a vertex of material m in a render of parameters P. */
 inline CausticGuide caustic_guide_at(__constant const FcRenderParams* P, __global const float4* casters,
                                      const FcMaterial* m, float3 p, float3 n) {
-    return caustic_guide_receiver(m) ? caustic_guide_of_receiver(casters, P->caster_count, P->caster_fraction,
-                                                                 caustic_guide_lenses_draw(P), p, n)
-                                     : caustic_guide_none();
+    const float share = caustic_guide_receiver(m);
+    return share > 0.0f ? caustic_guide_of_receiver(casters, P->caster_count, P->caster_fraction * share,
+                                                    caustic_guide_glint(share), caustic_guide_lenses_draw(P), p, n)
+                        : caustic_guide_none();
 }
 
 /* What caustic_guide_sample drew: the caster of the lens guide (-1: another way) and its
@@ -362,7 +433,7 @@ inline float caustic_guide_density(__constant const FcEnvironment* env, __global
         if (!lenses || c->lenses == 0u || !(n > 1.0f)) continue;
         /* a lens's density is 0 outside its cone (lens_reach is inside it) */
         if (drawn && drawn->lens == (int)i) lens += drawn->density;
-        else if (inside) lens += lens_density(env, texels, dist, s, n, c->p, wi);
+        else if (inside) lens += lens_density(env, texels, dist, s, n, c->glint, c->p, wi);
     }
     const float cone = (float)held / c->total;
     return c->h >= 1.0f ? lens / (float)c->lenses
@@ -390,7 +461,7 @@ inline bool caustic_guide_sample(__constant const FcEnvironment* env, __global c
             if (!(n > 1.0f) || !caustic_counts(s, c->p, c->n, &pc, &dc2)) continue;
             if (seen == pick) {
                 drawn->lens = (int)i;
-                return lens_sample(env, texels, dist, s, n, c->p, u, u_root, wi, &drawn->density);
+                return lens_sample(env, texels, dist, s, n, c->glint, c->p, u, u_root, wi, &drawn->density);
             }
             seen += 1u;
         }

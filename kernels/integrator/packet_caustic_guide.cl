@@ -6,12 +6,14 @@
 #ifndef FACET_INTEGRATOR_PACKET_CAUSTIC_GUIDE_CL
 #define FACET_INTEGRATOR_PACKET_CAUSTIC_GUIDE_CL
 
-/* Each live lane's mixture in cgs (gen: whether the lane's BSDF is more than a Lambertian lobe;
- * p: the points; N: the frames' normals); returns the lanes it guides. */
-inline uint packet_caustic_guides(const SceneView* sc, LINT live, const int* gen, const float* p, L3 N,
-                                  CausticGuide* cgs) {
+/* Each live lane's mixture in cgs (gen: whether the lane's BSDF is more than a Lambertian lobe,
+ * mats: the lanes' materials; p: the points; N: the frames' normals); returns the lanes it
+ * guides, and in *own those of them whose BSDF is their own (glossy: caustic_guide_receiver). */
+inline uint packet_caustic_guides(const SceneView* sc, LINT live, const int* gen, const FcMaterial* mats,
+                                  const float* p, L3 N, CausticGuide* cgs, uint* own) {
     __constant const FcRenderParams* P = sc->params;
     uint guided = 0u;
+    *own = 0u;
     for (int j = 0; j < FC_PACKET_W; ++j) cgs[j] = caustic_guide_none();
     if (P->caster_count == 0u) return 0u;
     float nn[3 * FC_PACKET_W];
@@ -20,12 +22,29 @@ inline uint packet_caustic_guides(const SceneView* sc, LINT live, const int* gen
     LSTORE(live, la);
     const bool env_ok = caustic_guide_lenses_draw(P);
     for (int j = 0; j < FC_PACKET_W; ++j) {
-        if (!la[j] || gen[j]) continue;
-        cgs[j] = caustic_guide_of_receiver(sc->casters, P->caster_count, P->caster_fraction, env_ok, lane3(p, j),
-                                           lane3(nn, j));
-        if (cgs[j].g > 0.0f) guided |= 1u << j;
+        if (!la[j]) continue;
+        const float share = gen[j] ? caustic_guide_receiver(&mats[j]) : 1.0f;
+        if (!(share > 0.0f)) continue;
+        cgs[j] = caustic_guide_of_receiver(sc->casters, P->caster_count, P->caster_fraction * share,
+                                           caustic_guide_glint(share), env_ok, lane3(p, j), lane3(nn, j));
+        if (!(cgs[j].g > 0.0f)) continue;
+        guided |= 1u << j;
+        if (gen[j]) *own |= 1u << j;
     }
     return guided;
+}
+
+/* The BSDF's choice u2 of the lanes in `own` whose BSDF samples (u2 at or past g), rescaled to
+ * [0, 1) past the guide's share (path_radiance's). */
+inline LFLOAT packet_guided_bsdf_u(uint own, const CausticGuide* cgs, LFLOAT u2) {
+    float u[FC_PACKET_W];
+    LSTORE(u2, u);
+    for (uint rest = own; rest; rest &= rest - 1u) {
+        const uint j = lowest_bit(rest);
+        const float g = cgs[j].g;
+        if (u[j] >= g) u[j] = fmin((u[j] - g) / (1.0f - g), FC_ONE_MINUS_EPSILON);
+    }
+    return LLOAD(u);
 }
 
 /* The guided lanes' density of the light samples' directions wi: the mixture's, from the
@@ -90,6 +109,65 @@ inline void packet_guided_directions(const SceneView* sc, uint guided, const Cau
         }
         set_lane3(gwi, j, wg);
         set_lane3(gw, j, lane3(alb, j) * (FC_INV_PI * cos_i / pdf));
+        gp[j] = pdf;
+    }
+    *nwi = l3_load(gwi);
+    *A = l3_load(gw);
+    *next_pdf = LLOAD(gp);
+    *cont = LLOAD(ga);
+}
+
+/* The glossy guided lanes' directions (path_radiance's), after their plain bases sampled the
+ * BSDF with packet_guided_bsdf_u's choice: where ub[2] picks the guide, its direction, f and
+ * the BSDF's density there (bsdf_eval_pdf, per lane, in the lane's frame fs, ft, ns); else the
+ * BSDF's sample (its f in pf, cos in pcos, density in *next_pdf). The weight f cos / (density
+ * of the mixture) in *A, that density in *next_pdf, whether the path goes on in *cont. */
+inline void packet_guided_own_directions(const SceneView* sc, uint own, const CausticGuide* cgs, const LFLOAT* ub,
+                                         const FcMaterial* mats, const float* wol, const float* fs, const float* ft,
+                                         const float* ns, const float* ng, L3 pf, LFLOAT pcos, L3* nwi, L3* A,
+                                         LFLOAT* next_pdf, LINT* cont) {
+    __constant const FcRenderParams* P = sc->params;
+    float u0[FC_PACKET_W], u1[FC_PACKET_W], u2[FC_PACKET_W], gwi[3 * FC_PACKET_W], gw[3 * FC_PACKET_W], gp[FC_PACKET_W],
+        fa[3 * FC_PACKET_W], ca[FC_PACKET_W];
+    int ga[FC_PACKET_W];
+    LSTORE(ub[0], u0);
+    LSTORE(ub[1], u1);
+    LSTORE(ub[2], u2);
+    l3_store(*nwi, gwi);
+    l3_store(*A, gw);
+    LSTORE(*next_pdf, gp);
+    LSTORE(*cont, ga);
+    l3_store(pf, fa);
+    LSTORE(pcos, ca);
+    for (uint rest = own; rest; rest &= rest - 1u) {
+        const uint j = lowest_bit(rest);
+        const CausticGuide* cg = &cgs[j];
+        float3 wg = lane3(gwi, j), f = lane3(fa, j);
+        float cos_l = ca[j], pdf_b = gp[j];
+        GuideDraw drawn = {-1, 0.0f};
+        if (u2[j] < cg->g) {
+            ga[j] = 0;
+            if (!caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count, cg,
+                                      u2[j] / cg->g, (float2)(u0[j], u1[j]), &wg, &drawn))
+                continue;
+            const Frame fr = {lane3(fs, j), lane3(ft, j), lane3(ns, j)};
+            const float3 wl = frame_to_local(&fr, wg);
+            if (!(wl.z > 0.0f)) continue;
+            f = bsdf_eval_pdf(&mats[j], lane3(wol, j), wl, &pdf_b);
+            cos_l = wl.z;
+            /* the shading frame and the geometric normal agree on wi's side */
+            if (!(dot(lane3(ng, j), wg) * wl.z > 0.0f)) continue;
+            ga[j] = -1;
+        }
+        if (!ga[j]) continue;
+        const float pdf = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count,
+                                            cg, pdf_b, wg, true, &drawn);
+        if (!(pdf > 0.0f)) {
+            ga[j] = 0;
+            continue;
+        }
+        set_lane3(gwi, j, wg);
+        set_lane3(gw, j, f * (fabs(cos_l) / pdf));
         gp[j] = pdf;
     }
     *nwi = l3_load(gwi);

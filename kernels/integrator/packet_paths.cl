@@ -367,9 +367,11 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         wo_z = select(wo_z, LLOAD(wol + 2 * FC_PACKET_W), G);
 #endif
 #if FC_HAS_DIELECTRIC
-        /* the Lambertian lanes' mixtures toward glass, and which lanes they guide */
+        /* the mixtures toward glass of the Lambertian and glossy lanes, and which lanes they
+         * guide (own: those whose BSDF is their own) */
         CausticGuide cgs[FC_PACKET_W];
-        const uint guided = packet_caustic_guides(sc, live, gen, p, N, cgs);
+        uint own = 0u;
+        const uint guided = packet_caustic_guides(sc, live, gen, mats, p, N, cgs, &own);
 #endif
 #if FC_PACKET_OWN_ORIGINS
         L3 so = l3_load(org);
@@ -676,22 +678,35 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #if FC_HAS_DIELECTRIC
             so = LNAME(vec3_select)(so, l3_load(orgb), LLOAD(below));
 #endif
-            /* plain bases in lanes, reflections only */
+            /* plain bases in lanes, reflections only (the glossy guided lanes' choice of lobe
+             * rescaled past the guide's share) */
             if (some_plain) {
                 L3 wl, fl, wt;
                 LFLOAT pl;
-                LINT okp = LNAME(plain_base_sample)(&pb, &pv, l3_load(wol), ub[0], ub[1], ub[2], &wl, &fl, &pl, &wt);
+#if FC_HAS_DIELECTRIC
+                const LFLOAT u2p = own ? packet_guided_bsdf_u(own, cgs, ub[2]) : ub[2];
+#else
+                const LFLOAT u2p = ub[2];
+#endif
+                LINT okp = LNAME(plain_base_sample)(&pb, &pv, l3_load(wol), ub[0], ub[1], u2p, &wl, &fl, &pl, &wt);
                 const L3 ww = LNAME(vec3_combine)(wl.x, S, wl.y, Tt, wl.z, N);
                 okp &= l3_dot(NG, ww) * wl.z > 0.0f;
                 nwi = LNAME(vec3_select)(nwi, LNAME(vec3_select)(l3(0.0f, 0.0f, 1.0f), ww, okp), PL);
                 cont = select(cont, okp, PL);
                 next_pdf = select(next_pdf, select((LFLOAT)(0.0f), pl, okp), PL);
                 A = LNAME(vec3_select)(A, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), wt, okp), PL);
+#if FC_HAS_DIELECTRIC
+                /* the glossy guided lanes: the mixture's density and the guide's directions */
+                if (own)
+                    packet_guided_own_directions(sc, own, cgs, ub, mats, wol, fs, ft, ns, ng, fl, wl.z, &nwi, &A,
+                                                 &next_pdf, &cont);
+#endif
             }
         }
 #endif
 #if FC_HAS_DIELECTRIC
-        if (guided) packet_guided_directions(sc, guided, cgs, ub, wo_z, N, NG, alb, &nwi, &A, &next_pdf, &cont);
+        if (guided & ~own)
+            packet_guided_directions(sc, guided & ~own, cgs, ub, wo_z, N, NG, alb, &nwi, &A, &next_pdf, &cont);
 #endif
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);
         LINT rr = LCONVERT_INT(dep + 1u >= P->rr_depth);
