@@ -276,7 +276,8 @@ int run_cli(int argc, char** argv) {
         ->add_option("--caustic-guide", opt.caustic_guide,
                      fmt::format("Share of a Lambertian surface's sampled directions drawn toward the glass in the "
                                  "scene (its bounds; through smooth glass balls, toward the environment's light), for "
-                                 "caustics seen by diffuse surfaces; unbiased at any value, 0 to {:g} (default: the "
+                                 "caustics seen by diffuse surfaces; a fifth of it at rough metals and plastics, half "
+                                 "of that toward the balls' glints; unbiased at any value, 0 to {:g} (default: the "
                                  "scene's, else 0.25; 0: the BSDF alone; docs/sampling.md)",
                                  limits::kMaxCausticGuide))
         ->option_text("F")
