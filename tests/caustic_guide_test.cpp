@@ -40,6 +40,32 @@ std::vector<cl_float4> casters_of(const std::vector<Ball>& balls) {
     return out;
 }
 
+constexpr cl_uint kPerItem = 256, kItems = 8192;
+
+// Runs the test program's kernel `name` over kItems work-items of kPerItem samples each: its
+// arguments the environment (0 to 2) and the casters (3, 4), then those `rest(kernel, out)`
+// sets from 5 on; returns each work-item's float4.
+template <typename Rest>
+std::vector<cl_float4> run_items(const char* name, const EnvironmentMap& e, const std::vector<Ball>& balls, Rest rest) {
+    DeviceEnv d(e);
+    ClContext& ctx = test::context();
+    const std::vector<cl_float4> casters = casters_of(balls);
+    cl::Buffer cb(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, casters.size() * sizeof(cl_float4),
+                  const_cast<cl_float4*>(casters.data()));
+    cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, kItems * sizeof(cl_float4));
+    cl::Kernel k(test::program(kGuideProgram), name);
+    k.setArg(0, d.params);
+    k.setArg(1, d.texels);
+    k.setArg(2, d.dist);
+    k.setArg(3, cb);
+    k.setArg(4, cl_uint(balls.size()));
+    rest(k, out);
+    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(kItems));
+    std::vector<cl_float4> r(kItems);
+    ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, kItems * sizeof(cl_float4), r.data());
+    return r;
+}
+
 struct Estimate {
     double mean = 0.0, stderr_ = 0.0, lens_share = 0.0;
     double gap = 0.0;  // the share of lens draws whose two densities are more than 1e-3 apart
@@ -48,31 +74,17 @@ struct Estimate {
 
 Estimate estimate(const EnvironmentMap& e, const std::vector<Ball>& balls, glm::vec3 p, glm::vec3 n, float fraction,
                   std::uint32_t seed, float glint) {
-    DeviceEnv d(e);
-    ClContext& ctx = test::context();
-    const std::vector<cl_float4> casters = casters_of(balls);
-    cl::Buffer cb(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, casters.size() * sizeof(cl_float4),
-                  const_cast<cl_float4*>(casters.data()));
-    const cl_uint per_item = 256, items = 8192;
-    cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, items * sizeof(cl_float4));
-    cl::Kernel k(test::program(kGuideProgram), "cg_estimate");
-    k.setArg(0, d.params);
-    k.setArg(1, d.texels);
-    k.setArg(2, d.dist);
-    k.setArg(3, cb);
-    k.setArg(4, cl_uint(balls.size()));
-    k.setArg(5, cl_float4{{p.x, p.y, p.z, 0.0f}});
-    k.setArg(6, cl_float4{{n.x, n.y, n.z, 0.0f}});
-    k.setArg(7, fraction);
-    k.setArg(8, cl_uint(seed));
-    k.setArg(9, per_item);
-    k.setArg(10, out);
-    k.setArg(11, glint);
-    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(items));
-    std::vector<cl_float4> r(items);
-    ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, items * sizeof(cl_float4), r.data());
+    const std::vector<cl_float4> r = run_items("cg_estimate", e, balls, [&](cl::Kernel& k, const cl::Buffer& out) {
+        k.setArg(5, cl_float4{{p.x, p.y, p.z, 0.0f}});
+        k.setArg(6, cl_float4{{n.x, n.y, n.z, 0.0f}});
+        k.setArg(7, fraction);
+        k.setArg(8, cl_uint(seed));
+        k.setArg(9, kPerItem);
+        k.setArg(10, out);
+        k.setArg(11, glint);
+    });
     Estimate est;
-    est.n = std::uint64_t(items) * per_item;
+    est.n = std::uint64_t(kItems) * kPerItem;
     double s = 0.0, s2 = 0.0, lens = 0.0;
     for (const cl_float4& v : r) {
         s += double(v.s[0]);
@@ -154,33 +166,20 @@ struct GlossyEstimate {
 
 GlossyEstimate glossy_estimate(const EnvironmentMap& e, const std::vector<Ball>& balls, const FcMaterial& m,
                                glm::vec3 p, glm::vec3 n, glm::vec3 wo, float fraction, std::uint32_t seed) {
-    DeviceEnv d(e);
-    ClContext& ctx = test::context();
-    const std::vector<cl_float4> casters = casters_of(balls);
-    cl::Buffer cb(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, casters.size() * sizeof(cl_float4),
-                  const_cast<cl_float4*>(casters.data()));
-    cl::Buffer mb(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(FcMaterial),
+    cl::Buffer mb(test::context().context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(FcMaterial),
                   const_cast<FcMaterial*>(&m));
-    const cl_uint per_item = 256, items = 8192;
-    cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, items * sizeof(cl_float4));
-    cl::Kernel k(test::program(kGuideProgram), "cg_glossy_estimate");
-    k.setArg(0, d.params);
-    k.setArg(1, d.texels);
-    k.setArg(2, d.dist);
-    k.setArg(3, cb);
-    k.setArg(4, cl_uint(balls.size()));
-    k.setArg(5, mb);
-    k.setArg(6, cl_float4{{p.x, p.y, p.z, 0.0f}});
-    k.setArg(7, cl_float4{{n.x, n.y, n.z, 0.0f}});
-    k.setArg(8, cl_float4{{wo.x, wo.y, wo.z, 0.0f}});
-    k.setArg(9, fraction);
-    k.setArg(10, cl_uint(seed));
-    k.setArg(11, per_item);
-    k.setArg(12, out);
-    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(items));
-    std::vector<cl_float4> r(items);
-    ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, items * sizeof(cl_float4), r.data());
-    const double count = double(items) * double(per_item);
+    const std::vector<cl_float4> r =
+        run_items("cg_glossy_estimate", e, balls, [&](cl::Kernel& k, const cl::Buffer& out) {
+            k.setArg(5, mb);
+            k.setArg(6, cl_float4{{p.x, p.y, p.z, 0.0f}});
+            k.setArg(7, cl_float4{{n.x, n.y, n.z, 0.0f}});
+            k.setArg(8, cl_float4{{wo.x, wo.y, wo.z, 0.0f}});
+            k.setArg(9, fraction);
+            k.setArg(10, cl_uint(seed));
+            k.setArg(11, kPerItem);
+            k.setArg(12, out);
+        });
+    const double count = double(kItems) * double(kPerItem);
     double s = 0.0, s2 = 0.0, g = 0.0;
     for (const cl_float4& v : r) {
         s += double(v.s[0]);

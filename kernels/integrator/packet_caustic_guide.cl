@@ -63,6 +63,31 @@ inline LFLOAT packet_guided_light_pdf(const SceneView* sc, uint guided, const Ca
     return LLOAD(pdf_b);
 }
 
+/* The BSDF sample's state of a packet's lanes, spilled to arrays for the guided lanes' per-lane
+ * draws: the sample's numbers, the direction, weight and density, whether the path goes on. */
+typedef struct {
+    float u0[FC_PACKET_W], u1[FC_PACKET_W], u2[FC_PACKET_W];
+    float wi[3 * FC_PACKET_W], w[3 * FC_PACKET_W], pdf[FC_PACKET_W];
+    int go[FC_PACKET_W];
+} GuidedLanes;
+
+inline void guided_lanes_load(GuidedLanes* g, const LFLOAT* ub, L3 nwi, L3 A, LFLOAT next_pdf, LINT cont) {
+    LSTORE(ub[0], g->u0);
+    LSTORE(ub[1], g->u1);
+    LSTORE(ub[2], g->u2);
+    l3_store(nwi, g->wi);
+    l3_store(A, g->w);
+    LSTORE(next_pdf, g->pdf);
+    LSTORE(cont, g->go);
+}
+
+inline void guided_lanes_store(const GuidedLanes* g, L3* nwi, L3* A, LFLOAT* next_pdf, LINT* cont) {
+    *nwi = l3_load(g->wi);
+    *A = l3_load(g->w);
+    *next_pdf = LLOAD(g->pdf);
+    *cont = LLOAD(g->go);
+}
+
 /* The guided lanes' directions (path_radiance's): ub[2] picks the guide or the cosine lobe
  * (whose direction *nwi already holds); the weight albedo cos / (pi density of the mixture) in
  * *A, the density in *next_pdf, whether the path goes on in *cont. */
@@ -70,51 +95,41 @@ inline void packet_guided_directions(const SceneView* sc, uint guided, const Cau
                                      LFLOAT wo_z, L3 N, L3 NG, const float* alb, L3* nwi, L3* A, LFLOAT* next_pdf,
                                      LINT* cont) {
     __constant const FcRenderParams* P = sc->params;
-    float u0[FC_PACKET_W], u1[FC_PACKET_W], u2[FC_PACKET_W], gwi[3 * FC_PACKET_W], gw[3 * FC_PACKET_W], gp[FC_PACKET_W],
-        nn[3 * FC_PACKET_W], nga[3 * FC_PACKET_W], woz[FC_PACKET_W];
-    int ga[FC_PACKET_W];
+    GuidedLanes g;
+    guided_lanes_load(&g, ub, *nwi, *A, *next_pdf, *cont);
+    float nn[3 * FC_PACKET_W], nga[3 * FC_PACKET_W], woz[FC_PACKET_W];
     LSTORE(wo_z, woz);
-    LSTORE(ub[0], u0);
-    LSTORE(ub[1], u1);
-    LSTORE(ub[2], u2);
-    l3_store(*nwi, gwi);
-    l3_store(*A, gw);
-    LSTORE(*next_pdf, gp);
-    LSTORE(*cont, ga);
     l3_store(N, nn);
     l3_store(NG, nga);
     for (uint rest = guided; rest; rest &= rest - 1u) {
         const uint j = lowest_bit(rest);
         const CausticGuide* cg = &cgs[j];
         const float3 n = lane3(nn, j);
-        float3 wg = lane3(gwi, j);
+        float3 wg = lane3(g.wi, j);
         GuideDraw drawn = {-1, 0.0f};
-        if (u2[j] < cg->g) {
+        if (g.u2[j] < cg->g) {
             /* toward glass: the direction must be above both normals, wo above the shading one */
-            ga[j] = 0;
+            g.go[j] = 0;
             if (!(woz[j] > 0.0f) ||
                 !caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count, cg,
-                                      u2[j] / cg->g, (float2)(u0[j], u1[j]), &wg, &drawn) ||
+                                      g.u2[j] / cg->g, (float2)(g.u0[j], g.u1[j]), &wg, &drawn) ||
                 !(dot(wg, n) > 0.0f) || !(dot(lane3(nga, j), wg) > 0.0f))
                 continue;
-            ga[j] = -1;
+            g.go[j] = -1;
         }
-        if (!ga[j]) continue;
+        if (!g.go[j]) continue;
         const float cos_i = dot(wg, n);
         const float pdf = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count,
                                             cg, cos_i * FC_INV_PI, wg, true, &drawn);
         if (!(pdf > 0.0f)) {
-            ga[j] = 0;
+            g.go[j] = 0;
             continue;
         }
-        set_lane3(gwi, j, wg);
-        set_lane3(gw, j, lane3(alb, j) * (FC_INV_PI * cos_i / pdf));
-        gp[j] = pdf;
+        set_lane3(g.wi, j, wg);
+        set_lane3(g.w, j, lane3(alb, j) * (FC_INV_PI * cos_i / pdf));
+        g.pdf[j] = pdf;
     }
-    *nwi = l3_load(gwi);
-    *A = l3_load(gw);
-    *next_pdf = LLOAD(gp);
-    *cont = LLOAD(ga);
+    guided_lanes_store(&g, nwi, A, next_pdf, cont);
 }
 
 /* The glossy guided lanes' directions (path_radiance's), after their plain bases sampled the
@@ -127,28 +142,21 @@ inline void packet_guided_own_directions(const SceneView* sc, uint own, const Ca
                                          const float* ns, const float* ng, L3 pf, LFLOAT pcos, L3* nwi, L3* A,
                                          LFLOAT* next_pdf, LINT* cont) {
     __constant const FcRenderParams* P = sc->params;
-    float u0[FC_PACKET_W], u1[FC_PACKET_W], u2[FC_PACKET_W], gwi[3 * FC_PACKET_W], gw[3 * FC_PACKET_W], gp[FC_PACKET_W],
-        fa[3 * FC_PACKET_W], ca[FC_PACKET_W];
-    int ga[FC_PACKET_W];
-    LSTORE(ub[0], u0);
-    LSTORE(ub[1], u1);
-    LSTORE(ub[2], u2);
-    l3_store(*nwi, gwi);
-    l3_store(*A, gw);
-    LSTORE(*next_pdf, gp);
-    LSTORE(*cont, ga);
+    GuidedLanes g;
+    guided_lanes_load(&g, ub, *nwi, *A, *next_pdf, *cont);
+    float fa[3 * FC_PACKET_W], ca[FC_PACKET_W];
     l3_store(pf, fa);
     LSTORE(pcos, ca);
     for (uint rest = own; rest; rest &= rest - 1u) {
         const uint j = lowest_bit(rest);
         const CausticGuide* cg = &cgs[j];
-        float3 wg = lane3(gwi, j), f = lane3(fa, j);
-        float cos_l = ca[j], pdf_b = gp[j];
+        float3 wg = lane3(g.wi, j), f = lane3(fa, j);
+        float cos_l = ca[j], pdf_b = g.pdf[j];
         GuideDraw drawn = {-1, 0.0f};
-        if (u2[j] < cg->g) {
-            ga[j] = 0;
+        if (g.u2[j] < cg->g) {
+            g.go[j] = 0;
             if (!caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count, cg,
-                                      u2[j] / cg->g, (float2)(u0[j], u1[j]), &wg, &drawn))
+                                      g.u2[j] / cg->g, (float2)(g.u0[j], g.u1[j]), &wg, &drawn))
                 continue;
             const Frame fr = {lane3(fs, j), lane3(ft, j), lane3(ns, j)};
             const float3 wl = frame_to_local(&fr, wg);
@@ -157,23 +165,20 @@ inline void packet_guided_own_directions(const SceneView* sc, uint own, const Ca
             cos_l = wl.z;
             /* the shading frame and the geometric normal agree on wi's side */
             if (!(dot(lane3(ng, j), wg) * wl.z > 0.0f)) continue;
-            ga[j] = -1;
+            g.go[j] = -1;
         }
-        if (!ga[j]) continue;
+        if (!g.go[j]) continue;
         const float pdf = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count,
                                             cg, pdf_b, wg, true, &drawn);
         if (!(pdf > 0.0f)) {
-            ga[j] = 0;
+            g.go[j] = 0;
             continue;
         }
-        set_lane3(gwi, j, wg);
-        set_lane3(gw, j, f * (fabs(cos_l) / pdf));
-        gp[j] = pdf;
+        set_lane3(g.wi, j, wg);
+        set_lane3(g.w, j, f * (fabs(cos_l) / pdf));
+        g.pdf[j] = pdf;
     }
-    *nwi = l3_load(gwi);
-    *A = l3_load(gw);
-    *next_pdf = LLOAD(gp);
-    *cont = LLOAD(ga);
+    guided_lanes_store(&g, nwi, A, next_pdf, cont);
 }
 
 #endif
