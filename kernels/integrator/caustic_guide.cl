@@ -66,17 +66,17 @@
 #endif
 
 /* The guide's share at a glossy vertex, relative to a Lambertian one's. Seen in a rough metal,
- * the sun through a glass ball is found only by the BSDF's samples (the shadow ray stops at
- * the glass), rarely and then as a firefly of the sun's whole radiance; a small share of
- * directions toward the glass puts the mixture's density there (the sample's weight divides by
- * it), while most of the glossy lobe's own samples stay. */
-/* The share of a lens guide's draws aimed at the ball's glint (the sun reflected off it, seen
- * in a rough metal beside it) rather than through the ball. */
-#ifndef FC_LENS_GLINT
-#define FC_LENS_GLINT 0.5f
-#endif
+ * the sun reflected off a glass ball (its glint) or through it is found only by the BSDF's
+ * samples (the shadow ray stops at the glass), rarely and then as a firefly of the sun's whole
+ * radiance; a small share of directions toward the glass puts the mixture's density there (the
+ * sample's weight divides by it), while most of the glossy lobe's own samples stay. */
 #ifndef FC_CAUSTIC_GUIDE_GLOSSY
 #define FC_CAUSTIC_GUIDE_GLOSSY 0.2f
+#endif
+/* The share of a glossy vertex's lens guide draws aimed at the ball's glint rather than
+ * through the ball. */
+#ifndef FC_LENS_GLINT
+#define FC_LENS_GLINT 0.5f
 #endif
 
 /* The guide's share at a vertex of material m, relative to the scene's: 1 where its BSDF is a
@@ -141,8 +141,8 @@ inline float lens_reach(float r, float dc) { return 0.999f * lens_asin(fmin(r / 
  * theta_top, then falling to m_end at the range's end theta_end. So G = +phi has a root on
  * the rising side where phi < m_top and one on the falling side where also m_end < phi, and
  * G = -phi one on the falling side where m_end < -phi: the roots' count is known without a
- * search, and each root is one Newton iteration's monotone approach away (a concave function
- * approached from the side where it is below the target). */
+ * search, and Newton's method approaches each root monotonically from the end of its side
+ * where G is below the target (the tangent of a concave function lies above it). */
 typedef struct {
     float dc, r, n, k;
     float alpha_end, theta_end;
@@ -184,7 +184,7 @@ inline Lens lens_of(float dc, float r, float n) {
     l.theta_end = lens_asin(s_end);
     const float c_end = safe_sqrt((1.0f - s_end) * (1.0f + s_end));
     l.m_end = lens_turn(&l, s_end, l.theta_end);
-    l.r_end = lens_asin(s_end / l.k) + FC_PI - 2.0f * l.theta_end;
+    l.r_end = glint_turn(&l, s_end, l.theta_end);
     /* G' as a function of c = cos(theta) rises with c: its zero, if inside, by Newton's
      * method safeguarded by bisection */
     if (!(lens_slope(&l, 0.0f, 1.0f) > 0.0f)) {
@@ -266,7 +266,7 @@ inline float lens_root_density(const Lens* l, float pdf_s, uint count, float alp
 }
 
 /* The lens guide's density of ball l (seen along axis) at the direction alpha from the axis
- * toward e, of incidence theta (sine s): FC_LENS_GLINT of it the glint's, the rest the way
+ * toward e, of incidence theta (sine s): a share glint of it the glint's, the rest the way
  * through the ball's. */
 inline float lens_density_at(__constant const FcEnvironment* env, __global const float4* texels,
                              __global const float* dist, const Lens* l, float3 axis, float3 e, float alpha, float s,
@@ -303,8 +303,8 @@ inline float lens_density(__constant const FcEnvironment* env, __global const fl
 }
 
 /* A direction whose ray, through ball (c, n) or reflected off it (its glint, with probability
- * FC_LENS_GLINT), leaves along an environment direction drawn by u; u_root picks the way and
- * the root. False where there is none. *density: lens_density's at it. */
+ * glint), leaves along an environment direction drawn by u; u_root picks the way and the root.
+ * False where there is none. *density: lens_density's at it. */
 inline bool lens_sample(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
                         float4 ball, float n, float glint, float3 p, float2 u, float u_root, float3* wi,
                         float* density) {
