@@ -58,6 +58,12 @@
 #include "kernels/util/math.cl"
 #include "kernels/util/trig.cl"
 
+/* The casters' cones from a vertex: the W = 1 forms (caustic_cones_l1, caustic_cones_holding_l1) */
+#define FC_LW 1
+#include "kernels/lanes/lanes_open.cl"
+#include "kernels/integrator/caustic_cones_lanes.cl"
+#include "kernels/lanes/lanes_close.cl"
+
 /* The cones' total solid angle (sr) at and above which a vertex draws the full fraction toward
  * them; below, a share in proportion (glass far off seldom focuses light here, and every
  * guided direction costs the BSDF's own samples elsewhere). */
@@ -93,29 +99,6 @@ inline float caustic_guide_receiver(const FcMaterial* m) {
  * FC_LENS_GLINT at glossy vertices, none at Lambertian ones (whose glints, the sun reflected
  * off a ball onto the floor, are faint: F of a few hundredths spread wide). */
 inline float caustic_guide_glint(float share) { return share < 1.0f ? FC_LENS_GLINT : 0.0f; }
-
-/* Whether caster c counts at p (shading normal n): p is outside its sphere and part of its cone
- * is above the plane of n (the axis less than 90 degrees + theta_max from n, sin(theta_max) =
- * r / dc); *pc: the vector to its centre, *dc2 its squared length. */
-inline bool caustic_counts(float4 c, float3 p, float3 n, float3* pc, float* dc2) {
-    *pc = c.xyz - p;
-    *dc2 = dot(*pc, *pc);
-    return *dc2 > c.w * c.w * (1.0f + 1e-3f) && dot(*pc, n) > -c.w;
-}
-
-/* Caster c's cone seen from p: 1 - cos(theta_max), 0 where it does not count; *pc as
- * caustic_counts. Its solid angle is 2 pi times that. */
-inline float caustic_cone(float4 c, float3 p, float3 n, float3* pc) {
-    float dc2;
-    return caustic_counts(c, p, n, pc, &dc2) ? sphere_cone_one_minus_cos(c.w, dc2) : 0.0f;
-}
-
-/* Whether the unit wi is inside the cone of a sphere of radius r at pc: by the sine of its angle
- * from the axis, |wi x pc| <= r, on pc's side (no cancellation for small cones). */
-inline bool caustic_cone_holds(float3 pc, float r, float3 wi) {
-    const float3 x = cross(wi, pc);
-    return dot(wi, pc) > 0.0f && dot(x, x) <= r * r;
-}
 
 /* ---- the lens guide ---- */
 
@@ -267,15 +250,17 @@ inline float lens_root_density(const Lens* l, float pdf_s, uint count, float alp
 
 /* The lens guide's density of ball l (seen along axis) at the direction alpha from the axis
  * toward e, of incidence theta (sine s): a share glint of it the glint's, the rest the way
- * through the ball's. */
+ * through the ball's. through: the environment's density at the direction the ray through the
+ * ball leaves along where the caller has it (lens_sample's draw through the ball: the direction
+ * drawn, which the root turns to within 1e-6), else negative (looked up here). */
 inline float lens_density_at(__constant const FcEnvironment* env, __global const float4* texels,
                              __global const float* dist, const Lens* l, float3 axis, float3 e, float alpha, float s,
-                             float theta, float glint) {
+                             float theta, float glint, float through) {
     const float c = safe_sqrt((1.0f - s) * (1.0f + s));
     float density = 0.0f;
     const float turn = lens_turn(l, s, theta);
     const float2 st = lens_sincos(turn);
-    const float pdf_t = env_pdf(env, texels, dist, st.y * axis + st.x * e);
+    const float pdf_t = through >= 0.0f ? through : env_pdf(env, texels, dist, st.y * axis + st.x * e);
     if (pdf_t > 0.0f)
         density += (1.0f - glint) *
                    lens_root_density(l, pdf_t, lens_count(l, fabs(turn)), alpha, c, turn, lens_slope(l, s, c));
@@ -299,7 +284,7 @@ inline float lens_density(__constant const FcEnvironment* env, __global const fl
     if (!lens_plane(axis, wi, &alpha, &e) || !(alpha < lens_reach(r, dc))) return 0.0f;
     const Lens l = lens_of(dc, r, n);
     const float s = fmin(l.k * lens_sincos(alpha).x, 1.0f);
-    return lens_density_at(env, texels, dist, &l, axis, e, alpha, s, lens_asin(s), glint);
+    return lens_density_at(env, texels, dist, &l, axis, e, alpha, s, lens_asin(s), glint, -1.0f);
 }
 
 /* A direction whose ray, through ball (c, n) or reflected off it (its glint, with probability
@@ -320,7 +305,8 @@ inline bool lens_sample(__constant const FcEnvironment* env, __global const floa
     if (!lens_plane(axis, s, &phi, &e)) return false;
     const Lens l = lens_of(dc, r, n);
     float theta;
-    if (u_root < glint) {
+    const bool through = !(u_root < glint);
+    if (!through) {
         /* the glint: one root where phi is past r_end */
         if (!(phi > l.r_end)) return false;
         theta = lens_solve(&l, phi, 0.0f, l.theta_end, false, true);
@@ -342,7 +328,7 @@ inline bool lens_sample(__constant const FcEnvironment* env, __global const floa
     const float alpha = lens_asin(fmin(st / l.k, 1.0f));
     const float2 sa = lens_sincos(alpha);
     *wi = normalize(sa.y * axis + sa.x * e);
-    *density = lens_density_at(env, texels, dist, &l, axis, e, alpha, st, theta, glint);
+    *density = lens_density_at(env, texels, dist, &l, axis, e, alpha, st, theta, glint, through ? pdf_s : -1.0f);
     return true;
 }
 
@@ -356,6 +342,8 @@ typedef struct {
     float glint; /* the lens guide's share aimed at the balls' glints */
     float total;
     uint lenses;
+    uint casters;   /* the casters that count, bit i for caster i (caustic_cones) */
+    uint lens_bits; /* the lenses among them */
     float3 p;
     float3 n;
 } CausticGuide;
@@ -363,8 +351,26 @@ typedef struct {
 inline CausticGuide caustic_guide_none(void) {
     CausticGuide c;
     c.g = c.h = c.glint = c.total = 0.0f;
-    c.lenses = 0u;
+    c.lenses = c.casters = c.lens_bits = 0u;
     c.p = c.n = (float3)(0.0f);
+    return c;
+}
+
+/* The mixture at p (shading normal n) of the guide's share `fraction`, from the casters' cones
+ * there (caustic_cones: their total solid angle, the casters that count, the lenses among them). */
+inline CausticGuide caustic_guide_of_cones(float fraction, float glint, float total, uint casters, uint lens_bits,
+                                           float3 p, float3 n) {
+    CausticGuide c = caustic_guide_none();
+    if (!(fraction > 0.0f) || !(total > 0.0f)) return c;
+    c.p = p;
+    c.n = n;
+    c.glint = glint;
+    c.total = total;
+    c.casters = casters;
+    c.lens_bits = lens_bits;
+    c.lenses = popcount(lens_bits);
+    c.g = fraction * fmin(total * (1.0f / FC_CAUSTIC_GUIDE_FULL), 1.0f);
+    c.h = c.lenses == 0u ? 0.0f : c.lenses == popcount(casters) ? 1.0f : 0.5f;
     return c;
 }
 
@@ -372,24 +378,10 @@ inline CausticGuide caustic_guide_none(void) {
  * (env: whether the environment can be sampled, for the lenses). */
 inline CausticGuide caustic_guide_of_receiver(__global const float4* casters, uint count, float fraction, float glint,
                                               bool env, float3 p, float3 n) {
-    CausticGuide c = caustic_guide_none();
-    if (!(fraction > 0.0f)) return c;
-    c.p = p;
-    c.n = n;
-    c.glint = glint;
-    uint counting = 0u;
-    for (uint i = 0; i < count; ++i) {
-        float3 pc;
-        const float w = 2.0f * FC_PI * caustic_cone(casters[2u * i], p, n, &pc);
-        if (!(w > 0.0f)) continue;
-        c.total += w;
-        counting += 1u;
-        if (env && casters[2u * i + 1u].x > 1.0f) c.lenses += 1u;
-    }
-    if (!(c.total > 0.0f)) return c;
-    c.g = fraction * fmin(c.total * (1.0f / FC_CAUSTIC_GUIDE_FULL), 1.0f);
-    c.h = c.lenses == 0u ? 0.0f : c.lenses == counting ? 1.0f : 0.5f;
-    return c;
+    if (!(fraction > 0.0f)) return caustic_guide_none();
+    uint bits, lens_bits;
+    const float total = caustic_cones_l1(casters, count, env, p, n, &bits, &lens_bits);
+    return caustic_guide_of_cones(fraction, glint, total, bits, lens_bits, p, n);
 }
 
 /* Whether a render's lens guides can draw: the environment is a light (env_sample). */
@@ -417,34 +409,39 @@ typedef struct {
  * for a light at infinity, whose shadow ray a lens's cone would have stopped (the ray meets
  * the ball wherever the lens guide's density is not 0), so the weight of an unblocked light
  * sample is the same. */
-inline float caustic_guide_density(__constant const FcEnvironment* env, __global const float4* texels,
-                                   __global const float* dist, __global const float4* casters, uint count,
-                                   const CausticGuide* c, float3 wi, bool lenses, const GuideDraw* drawn) {
-    uint held = 0u;
+inline float caustic_guide_density_held(__constant const FcEnvironment* env, __global const float4* texels,
+                                        __global const float* dist, __global const float4* casters,
+                                        const CausticGuide* c, float3 wi, bool lenses, const GuideDraw* drawn,
+                                        uint held, uint inside) {
     float lens = 0.0f;
-    for (uint i = 0; i < count; ++i) {
-        float3 pc;
-        float dc2;
-        const float4 s = casters[2u * i];
-        if (!caustic_counts(s, c->p, c->n, &pc, &dc2)) continue;
-        const bool inside = caustic_cone_holds(pc, s.w, wi);
-        if (inside) held += 1u;
-        const float n = casters[2u * i + 1u].x;
-        if (!lenses || c->lenses == 0u || !(n > 1.0f)) continue;
-        /* a lens's density is 0 outside its cone (lens_reach is inside it) */
-        if (drawn && drawn->lens == (int)i) lens += drawn->density;
-        else if (inside) lens += lens_density(env, texels, dist, s, n, c->glint, c->p, wi);
+    if (lenses) {
+        for (uint rest = c->lens_bits; rest; rest &= rest - 1u) {
+            const uint i = lowest_bit(rest);
+            /* a lens's density is 0 outside its cone (lens_reach is inside it) */
+            if (drawn && drawn->lens == (int)i) lens += drawn->density;
+            else if ((inside >> i) & 1u)
+                lens += lens_density(env, texels, dist, casters[2u * i], casters[2u * i + 1u].x, c->glint, c->p, wi);
+        }
     }
     const float cone = (float)held / c->total;
     return c->h >= 1.0f ? lens / (float)c->lenses
                         : (1.0f - c->h) * cone + (c->lenses > 0u ? c->h * lens / (float)c->lenses : 0.0f);
 }
 
+/* The guide's density at wi (caustic_guide_density_held's), its cones tested here. */
+inline float caustic_guide_density(__constant const FcEnvironment* env, __global const float4* texels,
+                                   __global const float* dist, __global const float4* casters, uint count,
+                                   const CausticGuide* c, float3 wi, bool lenses, const GuideDraw* drawn) {
+    uint inside;
+    const uint held = caustic_cones_holding_l1(casters, count, c->casters, c->p, wi, &inside);
+    return caustic_guide_density_held(env, texels, dist, casters, c, wi, lenses, drawn, held, inside);
+}
+
 /* A direction drawn by the guide: v picks the lens or cone guide and, rescaled, the caster (and
  * the root); u draws the environment direction or the point in the cone. False: nothing drawn. */
 inline bool caustic_guide_sample(__constant const FcEnvironment* env, __global const float4* texels,
-                                 __global const float* dist, __global const float4* casters, uint count,
-                                 const CausticGuide* c, float v, float2 u, float3* wi, GuideDraw* drawn) {
+                                 __global const float* dist, __global const float4* casters, const CausticGuide* c,
+                                 float v, float2 u, float3* wi, GuideDraw* drawn) {
     drawn->lens = -1;
     drawn->density = 0.0f;
     if (v < c->h) {
@@ -452,29 +449,23 @@ inline bool caustic_guide_sample(__constant const FcEnvironment* env, __global c
         const float t = fmin(v / c->h, FC_ONE_MINUS_EPSILON) * (float)c->lenses;
         const uint pick = min((uint)t, c->lenses - 1u);
         const float u_root = t - (float)pick;
-        uint seen = 0u;
-        for (uint i = 0; i < count; ++i) {
-            float3 pc;
-            float dc2;
-            const float4 s = casters[2u * i];
-            const float n = casters[2u * i + 1u].x;
-            if (!(n > 1.0f) || !caustic_counts(s, c->p, c->n, &pc, &dc2)) continue;
-            if (seen == pick) {
-                drawn->lens = (int)i;
-                return lens_sample(env, texels, dist, s, n, c->glint, c->p, u, u_root, wi, &drawn->density);
-            }
-            seen += 1u;
-        }
-        return false;
+        uint rest = c->lens_bits;
+        for (uint seen = 0u; seen < pick; ++seen) rest &= rest - 1u;
+        if (!rest) return false;
+        const uint i = lowest_bit(rest);
+        drawn->lens = (int)i;
+        return lens_sample(env, texels, dist, casters[2u * i], casters[2u * i + 1u].x, c->glint, c->p, u, u_root, wi,
+                           &drawn->density);
     }
     /* a cone, in proportion to its solid angle */
     float t = fmin((v - c->h) / (1.0f - c->h), FC_ONE_MINUS_EPSILON) * c->total;
     float3 axis = c->n, pc;
     float omc = 0.0f;
-    for (uint i = 0; i < count; ++i) {
-        const float o = caustic_cone(casters[2u * i], c->p, c->n, &pc);
+    for (uint rest = c->casters; rest; rest &= rest - 1u) {
+        const float4 s = casters[2u * lowest_bit(rest)];
+        pc = s.xyz - c->p;
+        const float o = caustic_cone_omc_l1(s, vec3_dot_l1(pc, pc));
         const float w = 2.0f * FC_PI * o;
-        if (!(w > 0.0f)) continue;
         axis = normalize(pc);
         omc = o;
         if (t < w) break;
@@ -489,6 +480,11 @@ inline bool caustic_guide_sample(__constant const FcEnvironment* env, __global c
     return true;
 }
 
+/* The mixture's density from the BSDF's and the guide's at the same direction. */
+inline float caustic_guide_mix(const CausticGuide* c, float bsdf_pdf, float guide_pdf) {
+    return (1.0f - c->g) * bsdf_pdf + c->g * guide_pdf;
+}
+
 /* The mixture's density at wi (world), given the BSDF's there (exactly bsdf_pdf unguided);
  * `lenses` as caustic_guide_density takes it, and `drawn` (or 0) what caustic_guide_sample drew
  * for wi. */
@@ -496,8 +492,8 @@ inline float caustic_guide_pdf(__constant const FcEnvironment* env, __global con
                                __global const float* dist, __global const float4* casters, uint count,
                                const CausticGuide* c, float bsdf_pdf, float3 wi, bool lenses, const GuideDraw* drawn) {
     if (!(c->g > 0.0f)) return bsdf_pdf;
-    return (1.0f - c->g) * bsdf_pdf +
-           c->g * caustic_guide_density(env, texels, dist, casters, count, c, wi, lenses, drawn);
+    return caustic_guide_mix(c, bsdf_pdf,
+                             caustic_guide_density(env, texels, dist, casters, count, c, wi, lenses, drawn));
 }
 
 #endif

@@ -6,28 +6,42 @@
 #ifndef FACET_INTEGRATOR_PACKET_CAUSTIC_GUIDE_CL
 #define FACET_INTEGRATOR_PACKET_CAUSTIC_GUIDE_CL
 
-/* Each live lane's mixture in cgs (gen: whether the lane's BSDF is more than a Lambertian lobe,
- * mats: the lanes' materials; p: the points; N: the frames' normals); returns the lanes it
- * guides, and in *own those of them whose BSDF is their own (glossy: caustic_guide_receiver). */
-inline uint packet_caustic_guides(const SceneView* sc, LINT live, const int* gen, const FcMaterial* mats,
-                                  const float* p, L3 N, CausticGuide* cgs, uint* own) {
+/* the casters' cones in the packets' lanes */
+#include "kernels/integrator/caustic_cones_lanes.cl"
+
+/* Each live lane's mixture in cgs, set in the lanes it guides only (gen: whether the lane's BSDF
+ * is more than a Lambertian lobe, mats: the lanes' materials; PP: the points; N: the frames'
+ * normals), the casters' cones tested in lanes (caustic_cones); returns the lanes it guides, in
+ * *own those of them whose BSDF is their own (glossy: caustic_guide_receiver), and in
+ * cone_bits each lane's casters that count (0 where not guided). */
+inline uint packet_caustic_guides(const SceneView* sc, LINT live, const int* gen, const FcMaterial* mats, L3 PP, L3 N,
+                                  CausticGuide* cgs, uint* own, uint* cone_bits) {
     __constant const FcRenderParams* P = sc->params;
     uint guided = 0u;
     *own = 0u;
-    for (int j = 0; j < FC_PACKET_W; ++j) cgs[j] = caustic_guide_none();
+    for (int j = 0; j < FC_PACKET_W; ++j) cone_bits[j] = 0u;
     if (P->caster_count == 0u) return 0u;
-    float nn[3 * FC_PACKET_W];
+    LUINT bits, lens_bits;
+    const LFLOAT total =
+        LNAME(caustic_cones)(sc->casters, P->caster_count, caustic_guide_lenses_draw(P), PP, N, &bits, &lens_bits);
+    float pa[3 * FC_PACKET_W], nn[3 * FC_PACKET_W], ta[FC_PACKET_W];
+    uint ba[FC_PACKET_W], la_bits[FC_PACKET_W];
     int la[FC_PACKET_W];
+    LSTORE(live & (total > 0.0f), la);
+    LSTORE(total, ta);
+    LSTORE(bits, ba);
+    LSTORE(lens_bits, la_bits);
+    l3_store(PP, pa);
     l3_store(N, nn);
-    LSTORE(live, la);
-    const bool env_ok = caustic_guide_lenses_draw(P);
     for (int j = 0; j < FC_PACKET_W; ++j) {
         if (!la[j]) continue;
         const float share = gen[j] ? caustic_guide_receiver(&mats[j]) : 1.0f;
         if (!(share > 0.0f)) continue;
-        cgs[j] = caustic_guide_of_receiver(sc->casters, P->caster_count, P->caster_fraction * share,
-                                           caustic_guide_glint(share), env_ok, lane3(p, j), lane3(nn, j));
-        if (!(cgs[j].g > 0.0f)) continue;
+        const CausticGuide c = caustic_guide_of_cones(P->caster_fraction * share, caustic_guide_glint(share), ta[j],
+                                                      ba[j], la_bits[j], lane3(pa, j), lane3(nn, j));
+        if (!(c.g > 0.0f)) continue;
+        cgs[j] = c;
+        cone_bits[j] = ba[j];
         guided |= 1u << j;
         if (gen[j]) *own |= 1u << j;
     }
@@ -48,17 +62,26 @@ inline LFLOAT packet_guided_bsdf_u(uint own, const CausticGuide* cgs, LFLOAT u2)
 }
 
 /* The guided lanes' density of the light samples' directions wi: the mixture's, from the
- * BSDF's bsdf_pdf_l (the lens guide's share left out for lights at infinity). */
-inline LFLOAT packet_guided_light_pdf(const SceneView* sc, uint guided, const CausticGuide* cgs, uint at_infinity,
-                                      LFLOAT bsdf_pdf_l, L3 wi) {
+ * BSDF's bsdf_pdf_l (the lens guide's share left out for lights at infinity), the cones that
+ * hold wi tested in lanes (PP: the points, cone_bits: packet_caustic_guides's). */
+inline LFLOAT packet_guided_light_pdf(const SceneView* sc, uint guided, const CausticGuide* cgs, const uint* cone_bits,
+                                      L3 PP, uint at_infinity, LFLOAT bsdf_pdf_l, L3 wi) {
     __constant const FcRenderParams* P = sc->params;
+    LUINT inside;
+    const LUINT held = LNAME(caustic_cones_holding)(sc->casters, P->caster_count, LLOAD(cone_bits), PP, wi, &inside);
     float pdf_b[FC_PACKET_W], wia[3 * FC_PACKET_W];
+    uint ha[FC_PACKET_W], ia[FC_PACKET_W];
     LSTORE(bsdf_pdf_l, pdf_b);
+    LSTORE(held, ha);
+    LSTORE(inside, ia);
     l3_store(wi, wia);
     for (uint rest = guided; rest; rest &= rest - 1u) {
         const uint j = lowest_bit(rest);
-        pdf_b[j] = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count,
-                                     &cgs[j], pdf_b[j], lane3(wia, j), !((at_infinity >> j) & 1u), 0);
+        const CausticGuide* c = &cgs[j];
+        pdf_b[j] =
+            caustic_guide_mix(c, pdf_b[j],
+                              caustic_guide_density_held(&P->environment, sc->env_texels, sc->env_dist, sc->casters, c,
+                                                         lane3(wia, j), !((at_infinity >> j) & 1u), 0, ha[j], ia[j]));
     }
     return LLOAD(pdf_b);
 }
@@ -90,10 +113,12 @@ inline void guided_lanes_store(const GuidedLanes* g, L3* nwi, L3* A, LFLOAT* nex
 
 /* The guided lanes' directions (path_radiance's): ub[2] picks the guide or the cosine lobe
  * (whose direction *nwi already holds); the weight albedo cos / (pi density of the mixture) in
- * *A, the density in *next_pdf, whether the path goes on in *cont. */
-inline void packet_guided_directions(const SceneView* sc, uint guided, const CausticGuide* cgs, const LFLOAT* ub,
-                                     LFLOAT wo_z, L3 N, L3 NG, const float* alb, L3* nwi, L3* A, LFLOAT* next_pdf,
-                                     LINT* cont) {
+ * *A, the density in *next_pdf, whether the path goes on in *cont. The guide draws per lane,
+ * then the cones holding each lane's direction are tested in lanes (PP: the points, cone_bits:
+ * packet_caustic_guides's), then the mixture's density is made per lane. */
+inline void packet_guided_directions(const SceneView* sc, uint guided, const CausticGuide* cgs, const uint* cone_bits,
+                                     const LFLOAT* ub, LFLOAT wo_z, L3 PP, L3 N, L3 NG, const float* alb, L3* nwi,
+                                     L3* A, LFLOAT* next_pdf, LINT* cont) {
     __constant const FcRenderParams* P = sc->params;
     GuidedLanes g;
     guided_lanes_load(&g, ub, *nwi, *A, *next_pdf, *cont);
@@ -101,31 +126,48 @@ inline void packet_guided_directions(const SceneView* sc, uint guided, const Cau
     LSTORE(wo_z, woz);
     l3_store(N, nn);
     l3_store(NG, nga);
+    GuideDraw drawn[FC_PACKET_W];
+    uint bits[FC_PACKET_W];
+    for (int j = 0; j < FC_PACKET_W; ++j) bits[j] = 0u;
     for (uint rest = guided; rest; rest &= rest - 1u) {
         const uint j = lowest_bit(rest);
         const CausticGuide* cg = &cgs[j];
-        const float3 n = lane3(nn, j);
-        float3 wg = lane3(g.wi, j);
-        GuideDraw drawn = {-1, 0.0f};
+        drawn[j].lens = -1;
+        drawn[j].density = 0.0f;
         if (g.u2[j] < cg->g) {
             /* toward glass: the direction must be above both normals, wo above the shading one */
+            float3 wg;
             g.go[j] = 0;
             if (!(woz[j] > 0.0f) ||
-                !caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count, cg,
-                                      g.u2[j] / cg->g, (float2)(g.u0[j], g.u1[j]), &wg, &drawn) ||
-                !(dot(wg, n) > 0.0f) || !(dot(lane3(nga, j), wg) > 0.0f))
+                !caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, cg, g.u2[j] / cg->g,
+                                      (float2)(g.u0[j], g.u1[j]), &wg, &drawn[j]) ||
+                !(dot(wg, lane3(nn, j)) > 0.0f) || !(dot(lane3(nga, j), wg) > 0.0f))
                 continue;
             g.go[j] = -1;
+            set_lane3(g.wi, j, wg);
         }
+        if (g.go[j]) bits[j] = cone_bits[j];
+    }
+    LUINT inside;
+    const LUINT held =
+        LNAME(caustic_cones_holding)(sc->casters, P->caster_count, LLOAD(bits), PP, l3_load(g.wi), &inside);
+    uint ha[FC_PACKET_W], ia[FC_PACKET_W];
+    LSTORE(held, ha);
+    LSTORE(inside, ia);
+    for (uint rest = guided; rest; rest &= rest - 1u) {
+        const uint j = lowest_bit(rest);
         if (!g.go[j]) continue;
-        const float cos_i = dot(wg, n);
-        const float pdf = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count,
-                                            cg, cos_i * FC_INV_PI, wg, true, &drawn);
+        const CausticGuide* cg = &cgs[j];
+        const float3 wg = lane3(g.wi, j);
+        const float cos_i = dot(wg, lane3(nn, j));
+        const float pdf =
+            caustic_guide_mix(cg, cos_i * FC_INV_PI,
+                              caustic_guide_density_held(&P->environment, sc->env_texels, sc->env_dist, sc->casters, cg,
+                                                         wg, true, &drawn[j], ha[j], ia[j]));
         if (!(pdf > 0.0f)) {
             g.go[j] = 0;
             continue;
         }
-        set_lane3(g.wi, j, wg);
         set_lane3(g.w, j, lane3(alb, j) * (FC_INV_PI * cos_i / pdf));
         g.pdf[j] = pdf;
     }
@@ -155,8 +197,8 @@ inline void packet_guided_own_directions(const SceneView* sc, uint own, const Ca
         GuideDraw drawn = {-1, 0.0f};
         if (g.u2[j] < cg->g) {
             g.go[j] = 0;
-            if (!caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count, cg,
-                                      g.u2[j] / cg->g, (float2)(g.u0[j], g.u1[j]), &wg, &drawn))
+            if (!caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, cg, g.u2[j] / cg->g,
+                                      (float2)(g.u0[j], g.u1[j]), &wg, &drawn))
                 continue;
             const Frame fr = {lane3(fs, j), lane3(ft, j), lane3(ns, j)};
             const float3 wl = frame_to_local(&fr, wg);

@@ -370,8 +370,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         /* the mixtures toward glass of the Lambertian and glossy lanes, and which lanes they
          * guide (own: those whose BSDF is their own) */
         CausticGuide cgs[FC_PACKET_W];
-        uint own = 0u;
-        const uint guided = packet_caustic_guides(sc, live, gen, mats, p, N, cgs, &own);
+        uint own = 0u, cone_bits[FC_PACKET_W];
+        const uint guided = packet_caustic_guides(sc, live, gen, mats, PP, N, cgs, &own, cone_bits);
 #endif
 #if FC_PACKET_OWN_ORIGINS
         L3 so = l3_load(org);
@@ -571,7 +571,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             for (int j = 0; j < FC_PACKET_W; ++j)
                 if (xl[j] && !isfinite(xtmax[j])) at_infinity |= 1u << j;
 #endif
-            bsdf_pdf_l = packet_guided_light_pdf(sc, guided, cgs, at_infinity, bsdf_pdf_l, wi);
+            bsdf_pdf_l = packet_guided_light_pdf(sc, guided, cgs, cone_bits, PP, at_infinity, bsdf_pdf_l, wi);
         }
 #endif
         LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, bsdf_pdf_l);
@@ -706,7 +706,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #endif
 #if FC_HAS_DIELECTRIC
         if (guided & ~own)
-            packet_guided_directions(sc, guided & ~own, cgs, ub, wo_z, N, NG, alb, &nwi, &A, &next_pdf, &cont);
+            packet_guided_directions(sc, guided & ~own, cgs, cone_bits, ub, wo_z, PP, N, NG, alb, &nwi, &A, &next_pdf,
+                                     &cont);
 #endif
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);
         LINT rr = LCONVERT_INT(dep + 1u >= P->rr_depth);

@@ -172,8 +172,8 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
              * the mixture's density */
             GuideDraw drawn = {-1, 0.0f};
             if (u.z < cg.g) {
-                if (!caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count,
-                                          &cg, u.z / cg.g, u.xy, &wi, &drawn))
+                if (!caustic_guide_sample(&P->environment, sc->env_texels, sc->env_dist, sc->casters, &cg, u.z / cg.g,
+                                          u.xy, &wi, &drawn))
                     break;
                 bs.wi = frame_to_local(&frame, wi);
                 if (!(bs.wi.z > 0.0f)) break;

@@ -23,7 +23,7 @@ __kernel void cg_estimate(__constant const FcEnvironment* env, __global const fl
         float3 wi;
         GuideDraw d = {-1, 0.0f};
         if (c.g > 0.0f && v < c.g) {
-            if (!caustic_guide_sample(env, texels, dist, casters, count, &c, v / c.g, u, &wi, &d)) continue;
+            if (!caustic_guide_sample(env, texels, dist, casters, &c, v / c.g, u, &wi, &d)) continue;
         } else wi = frame_to_world(&f, square_to_cosine_hemisphere(u));
         const float cos_i = dot(wi, nn);
         if (!(cos_i > 0.0f)) continue;
@@ -72,7 +72,7 @@ __kernel void cg_glossy_estimate(__constant const FcEnvironment* env, __global c
         float pdf_b;
         if (c.g > 0.0f && u.z < c.g) {
             guided += 1.0f;
-            if (!caustic_guide_sample(env, texels, dist, casters, count, &c, u.z / c.g, u.xy, &wi, &d)) continue;
+            if (!caustic_guide_sample(env, texels, dist, casters, &c, u.z / c.g, u.xy, &wi, &d)) continue;
             wl = frame_to_local(&f, wi);
             if (!(wl.z > 0.0f)) continue;
             fv = bsdf_eval_pdf(&m, wo, wl, &pdf_b);

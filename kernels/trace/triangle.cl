@@ -84,9 +84,6 @@ inline void tri4_weights(float4 v, float4 w, float4 det, uint lane, float* u_out
 /* A 4-bit mask from an int4 of 0 / -1 lanes: bit c set where lane c is. */
 inline uint lane_bits(int4 m) { return (uint)((m.x & 1) | (m.y & 2) | (m.z & 4) | (m.w & 8)); }
 
-/* Index of the lowest set bit of a non-zero mask (OpenCL C 1.2 has clz, not ctz). */
-inline uint lowest_bit(uint bits) { return 31u - clz(bits & (0u - bits)); }
-
 /* The nearest of the hit lanes (mask non-zero), the lowest lane among equal distances:
  * the one a loop over the lanes in order keeping only strictly nearer hits would keep. */
 inline uint tri4_nearest(int4 mask, float4 t) {

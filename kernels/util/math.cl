@@ -37,6 +37,9 @@ inline float pow_positive(float x, float y) { return exp2(y * log2(x)); }
 
 inline float safe_sqrt(float x) { return sqrt(fmax(x, 0.0f)); }
 
+/* Index of the lowest set bit of a non-zero mask (OpenCL C 1.2 has clz, not ctz). */
+inline uint lowest_bit(uint bits) { return 31u - clz(bits & (0u - bits)); }
+
 /* Normalises v, or returns `fallback` when v has zero or non-finite length. */
 inline float3 normalize_or(float3 v, float3 fallback) {
     float len2 = dot(v, v);
