@@ -105,6 +105,22 @@ inline void packet_env_locate(__constant const FcEnvironment* env, L3 dir, float
     LSTORE(st, sin_theta);
 }
 
+/* Starts the loads of what env_map_radiance_pdf reads at the lanes' (u, v) (uv as
+ * packet_env_locate leaves it) for the lanes in `lanes`: the texel and its entry of the row's
+ * conditional cdf, which in a large map are mostly cache misses; started together, the misses
+ * overlap instead of following one another lane by lane. Only a hint: nothing is read. */
+inline void packet_env_prefetch(__constant const FcEnvironment* env, __global const float4* texels,
+                                __global const float* dist, const float* uv, uint lanes) {
+#if defined(__clang__) && defined(__x86_64__)
+    for (uint rest = lanes; rest; rest &= rest - 1u) {
+        const uint j = lowest_bit(rest);
+        const int2 t = env_texel(env, (float2)(uv[j], uv[FC_PACKET_W + j]));
+        __builtin_prefetch(texels + t.y * env->width + t.x);
+        __builtin_prefetch(dist + (env->height + 1) + t.y * (env->width + 1) + t.x);
+    }
+#endif
+}
+
 /* The directions of the map's points `suv` (env_sample_uv's, in lanes) in dir, and their
  * location again (uv, sin_theta) for the lookup: env_sample's middle steps, in lanes. */
 inline void packet_env_directions(__constant const FcEnvironment* env, const float* suv, float* dir, float* uv,

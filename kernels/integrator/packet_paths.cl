@@ -232,7 +232,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             /* the escaped rays' directions on the map, in lanes */
             float euv[2 * FC_PACKET_W], est[FC_PACKET_W];
             const bool env_map = packet_env_map(&P->environment);
-            if (env_map && (need & ~met)) packet_env_locate(&P->environment, l3_load(d), euv, est);
+            if (env_map && (need & ~met)) {
+                packet_env_locate(&P->environment, l3_load(d), euv, est);
+                packet_env_prefetch(&P->environment, sc->env_texels, sc->env_dist, euv, need & ~met);
+            }
 #endif
             for (uint rest = need; rest; rest &= rest - 1u) {
                 const int j = (int)lowest_bit(rest);
@@ -457,6 +460,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
              * by the lookup of env_sample (per lane) */
             float sdir[3 * FC_PACKET_W], luv[2 * FC_PACKET_W], lst[FC_PACKET_W];
             packet_env_directions(&P->environment, suv, sdir, luv, lst);
+            packet_env_prefetch(&P->environment, sc->env_texels, sc->env_dist, luv, xenv);
             for (uint rest = xenv; rest; rest &= rest - 1u) {
                 const uint j = lowest_bit(rest);
                 float pdf_dir;
