@@ -200,13 +200,13 @@ inline float3 dielectric_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, flo
     return dielectric_eval_at(m, wo, wi, &p, d, oh, ih, fl, area_o);
 }
 
-/* The smooth interface: reflect with probability F, else refract (delta lobes). */
-inline bool dielectric_sample_smooth(const FcMaterial* m, float3 wo, float u, BsdfSample* s) {
+/* The smooth interface (delta lobes) whose Fresnel factor at wo is fr: reflect with
+ * probability q, else refract; q in (0, 1) wherever both lobes carry (kernels/integrator/glass_choice.cl
+ * chooses one toward the light). */
+inline bool dielectric_sample_smooth_by(const FcMaterial* m, float3 wo, float u, float fr, float q, BsdfSample* s) {
     s->delta = 1;
     s->pdf = INFINITY;
     s->f = (float3)(0.0f);
-    float fr = fresnel_dielectric(wo.z, m->ior);
-    float q = dielectric_choice(m, fr);
     if (u < q) {
         s->wi = (float3)(-wo.x, -wo.y, wo.z);
         s->weight = (float3)(fr / q);
@@ -217,6 +217,12 @@ inline bool dielectric_sample_smooth(const FcMaterial* m, float3 wo, float u, Bs
     float etap = relative_eta(m->ior, wo.z);
     s->weight = dielectric_tint(m) * ((1.0f - fr) / ((1.0f - q) * etap * etap));
     return all_finite(s->weight);
+}
+
+/* The smooth interface: reflect with probability dielectric_choice(F), else refract. */
+inline bool dielectric_sample_smooth(const FcMaterial* m, float3 wo, float u, BsdfSample* s) {
+    const float fr = fresnel_dielectric(wo.z, m->ior);
+    return dielectric_sample_smooth_by(m, wo, u, fr, dielectric_choice(m, fr), s);
 }
 
 /* u.xy draws the microfacet normal, u.z chooses reflection or refraction. */

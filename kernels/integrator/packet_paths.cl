@@ -659,8 +659,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 if (!ga[j] || plain[j]) continue;
                 ga[j] = 0;
                 BsdfSample bs;
-                if (!bsdf_sample(&mats[j], lane3(wol, j), (float3)(u0[j], u1[j], u2[j]), &bs)) continue;
                 const Frame fr = {lane3(fs, j), lane3(ft, j), lane3(ns, j)};
+                if (!path_bsdf_sample(&P->environment, sc->env_texels, sc->env_dist, &mats[j], &fr, lane3(wol, j),
+                                      (float3)(u0[j], u1[j], u2[j]), &bs))
+                    continue;
                 const float3 wi_world = frame_to_world(&fr, bs.wi);
                 /* the shading frame and the geometric normal agree on wi's side (a reflection
                  * stays on wo's side, a refraction crosses) */

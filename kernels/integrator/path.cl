@@ -24,6 +24,7 @@
 #define FACET_INTEGRATOR_PATH_CL
 
 #include "kernels/integrator/caustic_guide.cl"
+#include "kernels/integrator/glass_choice.cl"
 #include "kernels/integrator/surface.cl"
 #include "kernels/camera/pixel_sample.cl"
 #include "kernels/lights/light.cl"
@@ -189,7 +190,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
             if (!(bs.pdf > 0.0f)) break;
             bs.weight = bs.f * (fabs(bs.wi.z) / bs.pdf);
         } else {
-            if (!bsdf_sample(m, wo_local, u, &bs)) break;
+            if (!path_bsdf_sample(&P->environment, sc->env_texels, sc->env_dist, m, &frame, wo_local, u, &bs)) break;
             wi = frame_to_world(&frame, bs.wi);
         }
         /* The shading frame and the geometric normal must agree on wi's side (a
