@@ -15,11 +15,12 @@ inline LFLOAT LNAME(caustic_cone_omc)(float4 c, LFLOAT dc2) {
     return select(1.0f - sqrt(fmax(1.0f - sin2_max, 0.0f)), 0.5f * sin2_max, sin2_max < FC_SPHERE_SMALL_CONE_SIN2);
 }
 
-/* The casters that count at p (shading normal n): p outside the sphere and part of its cone
- * above the plane of n (caustic_counts), as bit i of *counting; the lenses among them (smooth
- * glass balls, a relative index above 1) in *lens_bits where `env` (the environment can be
- * sampled); returns the cones' total solid angle, each 2 pi (1 - cos(theta_max)), summed in the
- * casters' order. */
+/* The casters that count at p (shading normal n): p outside the sphere (by more than a
+ * thousandth of r^2, as sphere lights take it) and part of its cone above the plane of n (the
+ * axis less than 90 degrees + theta_max from n, sin(theta_max) = r / dc), as bit i of
+ * *counting; the lenses among them (smooth glass balls, a relative index above 1) in *lens_bits
+ * where `env` (the environment can be sampled); returns the cones' total solid angle, each
+ * 2 pi (1 - cos(theta_max)), summed in the casters' order. */
 inline LFLOAT LNAME(caustic_cones)(__global const float4* casters, uint count, bool env, LVEC3 p, LVEC3 n,
                                    LUINT* counting, LUINT* lens_bits) {
     LFLOAT total = (LFLOAT)(0.0f);
@@ -41,8 +42,9 @@ inline LFLOAT LNAME(caustic_cones)(__global const float4* casters, uint count, b
 }
 
 /* How many of the casters in `counting` (caustic_cones's bits) hold the unit wi inside their
- * cones seen from p, each by |wi x pc| <= r on pc's side (caustic_cone_holds); the lenses among
- * those that hold it as bit i of *inside. */
+ * cones seen from p, each by the sine of wi's angle from the axis, |wi x pc| <= r, on pc's side
+ * (no 1 - cos cancellation for small cones); the lenses among those that hold it as bit i of
+ * *inside. */
 inline LUINT LNAME(caustic_cones_holding)(__global const float4* casters, uint count, LUINT counting, LVEC3 p, LVEC3 wi,
                                           LUINT* inside) {
     LUINT held = (LUINT)(0u), in = (LUINT)(0u);
