@@ -85,17 +85,11 @@ Estimate estimate(const EnvironmentMap& e, const std::vector<Ball>& balls, glm::
     });
     Estimate est;
     est.n = std::uint64_t(kItems) * kPerItem;
-    double s = 0.0, s2 = 0.0, lens = 0.0;
-    for (const cl_float4& v : r) {
-        s += double(v.s[0]);
-        s2 += double(v.s[1]);
-        est.gap += double(v.s[2]);
-        lens += double(v.s[3]);
-    }
+    const auto [s, s2, gaps, lens] = sum_items(r);
     est.mean = s / double(est.n);
     est.stderr_ = std::sqrt(std::max(s2 / double(est.n) - est.mean * est.mean, 0.0) / double(est.n));
     est.lens_share = lens / double(est.n);
-    est.gap = lens > 0.0 ? est.gap / lens : 0.0;
+    est.gap = lens > 0.0 ? gaps / lens : 0.0;
     return est;
 }
 
@@ -180,12 +174,7 @@ GlossyEstimate glossy_estimate(const EnvironmentMap& e, const std::vector<Ball>&
             k.setArg(12, out);
         });
     const double count = double(kItems) * double(kPerItem);
-    double s = 0.0, s2 = 0.0, g = 0.0;
-    for (const cl_float4& v : r) {
-        s += double(v.s[0]);
-        s2 += double(v.s[1]);
-        g += double(v.s[2]);
-    }
+    [[maybe_unused]] const auto [s, s2, g, unused] = sum_items(r);
     GlossyEstimate est;
     est.mean = s / count;
     est.stderr_ = std::sqrt(std::max(s2 / count - est.mean * est.mean, 0.0) / count);

@@ -2,6 +2,7 @@
 // an EnvironmentMap on the device and the kernels of kernels/test/environment_kernels.cl.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -17,6 +18,14 @@ namespace facet::test::env {
 
 constexpr double kPi = std::numbers::pi;
 inline const char* kProgram = "kernels/test/environment_kernels.cl";
+
+// The sums over work-items of each of their float4 results' four parts, in double.
+inline std::array<double, 4> sum_items(const std::vector<cl_float4>& r) {
+    std::array<double, 4> s{};
+    for (const cl_float4& v : r)
+        for (int c = 0; c < 4; ++c) s[c] += double(v.s[c]);
+    return s;
+}
 
 struct DeviceEnv {
     cl::Buffer params, texels, dist;

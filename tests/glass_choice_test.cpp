@@ -49,12 +49,7 @@ Choice estimate(const EnvironmentMap& e, const FcMaterial& m, glm::vec3 n, glm::
     std::vector<cl_float4> r(kItems);
     ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, kItems * sizeof(cl_float4), r.data());
     const double count = double(kItems) * kPerItem;
-    double sr = 0.0, nr = 0.0, st = 0.0;
-    for (const cl_float4& v : r) {
-        sr += double(v.s[0]);
-        nr += double(v.s[1]);
-        st += double(v.s[2]);
-    }
+    [[maybe_unused]] const auto [sr, nr, st, unused] = sum_items(r);
     Choice c;
     c.q = double(r[0].s[3]);
     c.share = nr / count;
