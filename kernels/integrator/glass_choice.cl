@@ -32,16 +32,12 @@
 #define FC_GLASS_LIGHT_CHOICE_MAX 0.9f
 #endif
 
+#if FC_HAS_DIELECTRIC && FC_HAS_ENVIRONMENT
 /* Whether the path samples material m by glass_light_sample. */
 inline bool glass_light_choice(const FcMaterial* m) {
-#if FC_HAS_DIELECTRIC && FC_HAS_ENVIRONMENT
     return bsdf_is_dielectric(m) && !bsdf_layered(m) && dielectric_is_smooth(m) && (m->flags & FC_MAT_WIDE_CHOICE);
-#else
-    return false;
-#endif
 }
 
-#if FC_HAS_DIELECTRIC && FC_HAS_ENVIRONMENT
 /* The probability of reflection at a smooth dielectric of Fresnel factor fr seen from wo (local
  * to frame f): dielectric_choice's, raised toward the reflection's share of the light. */
 inline float glass_light_q(__constant const FcEnvironment* env, __global const float4* texels,
@@ -54,10 +50,12 @@ inline float glass_light_q(__constant const FcEnvironment* env, __global const f
 }
 
 /* A sample of a smooth dielectric (glass_light_choice) with glass_light_q's choice, u its
- * number. */
+ * number (dielectric_sample's, but for the choice). */
 inline bool glass_light_sample(__constant const FcEnvironment* env, __global const float4* texels,
                                __global const float* dist, const FcMaterial* m, const Frame* f, float3 wo, float u,
                                BsdfSample* s) {
+    s->delta = 0;
+    if (!(fabs(wo.z) > 0.0f)) return false;
     const float fr = fresnel_dielectric(wo.z, m->ior);
     return dielectric_sample_smooth_by(m, wo, u, fr, glass_light_q(env, texels, dist, m, f, wo, fr), s);
 }
@@ -70,11 +68,7 @@ inline bool path_bsdf_sample(__constant const FcEnvironment* env, __global const
                              __global const float* dist, const FcMaterial* m, const Frame* f, float3 wo, float3 u,
                              BsdfSample* s) {
 #if FC_HAS_DIELECTRIC && FC_HAS_ENVIRONMENT
-    if (glass_light_choice(m)) {
-        s->delta = 0;
-        if (!(fabs(wo.z) > 0.0f)) return false;
-        return glass_light_sample(env, texels, dist, m, f, wo, u.z, s);
-    }
+    if (glass_light_choice(m)) return glass_light_sample(env, texels, dist, m, f, wo, u.z, s);
 #else
     (void)env;
     (void)texels;
