@@ -437,6 +437,12 @@ inline float caustic_guide_density(__constant const FcEnvironment* env, __global
     return caustic_guide_density_held(env, texels, dist, casters, c, wi, lenses, drawn, held, inside);
 }
 
+/* Russian roulette's scale for a direction the guide's mixture sampled (path.cl's rr_scale):
+ * the mixture's density pdf_mix over the BSDF's own pdf_own at it, so that roulette judges the
+ * path by the weight the BSDF alone would have given it; 1 where the BSDF's is 0 (its f is 0
+ * too). */
+inline float roulette_guide_scale(float pdf_mix, float pdf_own) { return pdf_own > 0.0f ? pdf_mix / pdf_own : 1.0f; }
+
 /* A direction drawn by the guide: v picks the lens or cone guide and, rescaled, the caster (and
  * the root); u draws the environment direction or the point in the cone. False: nothing drawn. */
 inline bool caustic_guide_sample(__constant const FcEnvironment* env, __global const float4* texels,

@@ -113,12 +113,13 @@ inline void guided_lanes_store(const GuidedLanes* g, L3* nwi, L3* A, LFLOAT* nex
 
 /* The guided lanes' directions (path_radiance's): ub[2] picks the guide or the cosine lobe
  * (whose direction *nwi already holds); the weight albedo cos / (pi density of the mixture) in
- * *A, the density in *next_pdf, whether the path goes on in *cont. The guide draws per lane,
- * then the cones holding each lane's direction are tested in lanes (PP: the points, cone_bits:
+ * *A, the density in *next_pdf, whether the path goes on in *cont, roulette's scale times the
+ * mixture's density over the cosine lobe's in rr_scale. The guide draws per lane, then the
+ * cones holding each lane's direction are tested in lanes (PP: the points, cone_bits:
  * packet_caustic_guides's), then the mixture's density is made per lane. */
 inline void packet_guided_directions(const SceneView* sc, uint guided, const CausticGuide* cgs, const uint* cone_bits,
                                      const LFLOAT* ub, LFLOAT wo_z, L3 PP, L3 N, L3 NG, const float* alb, L3* nwi,
-                                     L3* A, LFLOAT* next_pdf, LINT* cont) {
+                                     L3* A, LFLOAT* next_pdf, LINT* cont, float* rr_scale) {
     __constant const FcRenderParams* P = sc->params;
     GuidedLanes g;
     guided_lanes_load(&g, ub, *nwi, *A, *next_pdf, *cont);
@@ -160,8 +161,9 @@ inline void packet_guided_directions(const SceneView* sc, uint guided, const Cau
         const CausticGuide* cg = &cgs[j];
         const float3 wg = lane3(g.wi, j);
         const float cos_i = dot(wg, lane3(nn, j));
+        const float pdf_own = cos_i * FC_INV_PI;
         const float pdf =
-            caustic_guide_mix(cg, cos_i * FC_INV_PI,
+            caustic_guide_mix(cg, pdf_own,
                               caustic_guide_density_held(&P->environment, sc->env_texels, sc->env_dist, sc->casters, cg,
                                                          wg, true, &drawn[j], ha[j], ia[j]));
         if (!(pdf > 0.0f)) {
@@ -170,6 +172,7 @@ inline void packet_guided_directions(const SceneView* sc, uint guided, const Cau
         }
         set_lane3(g.w, j, lane3(alb, j) * (FC_INV_PI * cos_i / pdf));
         g.pdf[j] = pdf;
+        rr_scale[j] = roulette_scale_times(rr_scale[j], roulette_guide_scale(pdf, pdf_own));
     }
     guided_lanes_store(&g, nwi, A, next_pdf, cont);
 }
@@ -178,11 +181,12 @@ inline void packet_guided_directions(const SceneView* sc, uint guided, const Cau
  * BSDF with packet_guided_bsdf_u's choice: where ub[2] picks the guide, its direction, f and
  * the BSDF's density there (bsdf_eval_pdf, per lane, in the lane's frame fs, ft, ns); else the
  * BSDF's sample (its f in pf, cos in pcos, density in *next_pdf). The weight f cos / (density
- * of the mixture) in *A, that density in *next_pdf, whether the path goes on in *cont. */
+ * of the mixture) in *A, that density in *next_pdf, whether the path goes on in *cont,
+ * roulette's scale times the mixture's density over the BSDF's in rr_scale. */
 inline void packet_guided_own_directions(const SceneView* sc, uint own, const CausticGuide* cgs, const LFLOAT* ub,
                                          const FcMaterial* mats, const float* wol, const float* fs, const float* ft,
                                          const float* ns, const float* ng, L3 pf, LFLOAT pcos, L3* nwi, L3* A,
-                                         LFLOAT* next_pdf, LINT* cont) {
+                                         LFLOAT* next_pdf, LINT* cont, float* rr_scale) {
     __constant const FcRenderParams* P = sc->params;
     GuidedLanes g;
     guided_lanes_load(&g, ub, *nwi, *A, *next_pdf, *cont);
@@ -219,6 +223,7 @@ inline void packet_guided_own_directions(const SceneView* sc, uint own, const Ca
         set_lane3(g.wi, j, wg);
         set_lane3(g.w, j, f * (fabs(cos_l) / pdf));
         g.pdf[j] = pdf;
+        rr_scale[j] = roulette_scale_times(rr_scale[j], roulette_guide_scale(pdf, pdf_b));
     }
     guided_lanes_store(&g, nwi, A, next_pdf, cont);
 }

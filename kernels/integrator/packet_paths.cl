@@ -95,9 +95,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     float org[3 * FC_PACKET_W];
 #endif
 #if FC_HAS_DIELECTRIC
-    /* a refracting lane's: the origin on the far side, the product of etap^2 over its
-     * refractions (roulette's eta_scale), and whether its material is a dielectric */
-    float orgb[3 * FC_PACKET_W], eta[FC_PACKET_W];
+    /* a refracting lane's: the origin on the far side, roulette's scale (path.cl's rr_scale: etap^2
+     * of its refractions, the guide's densities over its BSDFs'), and whether its material is a
+     * dielectric */
+    float orgb[3 * FC_PACKET_W], rr_scale[FC_PACKET_W];
     int trans[FC_PACKET_W];
 #endif
     float prev_pdf[FC_PACKET_W], fweight[FC_PACKET_W];
@@ -184,7 +185,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 plen[j] = 0.0f;
 #endif
 #if FC_HAS_DIELECTRIC
-                eta[j] = 1.0f;
+                rr_scale[j] = 1.0f;
 #endif
                 depth[j] = 0u;
                 alive[j] = 1;
@@ -670,7 +671,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 if (!(wi_side * bs.wi.z > 0.0f)) continue;
 #if FC_HAS_DIELECTRIC
                 below[j] = wi_side < 0.0f ? -1 : 0;
-                if (bs.wi.z < 0.0f) eta[j] *= mats[j].ior * mats[j].ior;
+                if (bs.wi.z < 0.0f) rr_scale[j] = roulette_scale_times(rr_scale[j], mats[j].ior * mats[j].ior);
 #endif
                 set_lane3(gwi, j, wi_world);
                 set_lane3(gw, j, bs.weight);
@@ -705,7 +706,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 /* the glossy guided lanes: the mixture's density and the guide's directions */
                 if (own)
                     packet_guided_own_directions(sc, own, cgs, ub, mats, wol, fs, ft, ns, ng, fl, wl.z, &nwi, &A,
-                                                 &next_pdf, &cont);
+                                                 &next_pdf, &cont, rr_scale);
 #endif
             }
         }
@@ -713,14 +714,14 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #if FC_HAS_DIELECTRIC
         if (guided & ~own)
             packet_guided_directions(sc, guided & ~own, cgs, cone_bits, ub, wo_z, PP, N, NG, alb, &nwi, &A, &next_pdf,
-                                     &cont);
+                                     &cont, rr_scale);
 #endif
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);
         LINT rr = LCONVERT_INT(dep + 1u >= P->rr_depth);
 #if FC_HAS_DIELECTRIC
-        LFLOAT survive = LNAME(roulette_survival)(T2, LLOAD(eta));
+        LFLOAT survive = LNAME(roulette_survival)(T2, LLOAD(rr_scale));
 #else
-        LFLOAT survive = LNAME(roulette_survival)(T2, 1.0f); /* no refraction: eta_scale 1 */
+        LFLOAT survive = LNAME(roulette_survival)(T2, 1.0f); /* no refraction, no guide: rr_scale 1 */
 #endif
         cont &= select((LINT)(-1), ub[3] < survive, rr);
         T2 = l3(select(T2.x, T2.x / survive, rr), select(T2.y, T2.y / survive, rr), select(T2.z, T2.z / survive, rr));

@@ -6,12 +6,17 @@
  * sampling the BSDF and hitting an emitter, and the two are combined by multiple
  * importance sampling with the power heuristic (Veach 1997, ch. 9). Paths end at
  * max_depth bounces or by Russian roulette after rr_depth bounces (survival
- * probability = the largest channel of the path throughput times eta_scale, at most
- * 0.95; pbrt-v4's and Mitsuba 3's rule). eta_scale is the product of etap^2 over the
- * refractions so far: a refraction's weight carries the radiance scaling 1 / etap^2
- * (dielectric.cl), which the way out of the medium undoes, so without it roulette would
- * kill most paths inside glass (survival 1 / 2.25 at ior 1.5, 1 / 5.76 in diamond) and
- * the survivors would return as fireflies (docs/sampling.md, "Russian roulette").
+ * probability = the largest channel of the path throughput times rr_scale, at most
+ * 0.95; pbrt-v4's and Mitsuba 3's rule, rr_scale their etaScale and more). rr_scale is what
+ * the throughput understates of the path's worth: the product of etap^2 over the
+ * refractions so far (a refraction's weight carries the radiance scaling 1 / etap^2,
+ * dielectric.cl, which the way out of the medium undoes; without it roulette would kill
+ * most paths inside glass, survival 1 / 2.25 at ior 1.5, 1 / 5.76 in diamond, and the
+ * survivors would return as fireflies), and at a vertex that samples the guide's mixture
+ * the mixture's density over the BSDF's own at the direction taken (a direction drawn
+ * through a lens toward the sun has a weight thousands of times below the BSDF's, and its
+ * path's worth is not that much lower): roulette judges each path as the BSDF alone would
+ * have weighted it (docs/sampling.md, "Russian roulette").
  *
  * Dielectrics transmit: a sampled or light direction may cross the surface, and the
  * next ray then starts on the far side (offset along -ng); inside or outside is read
@@ -85,6 +90,10 @@ inline float3 sample_direct(const SceneView* sc, const Surface* s, const Frame* 
     return f * ls.li * (cos_i * w / ls.pdf);
 }
 
+/* roulette's rr_scale times a factor, at most 1e20: finite however many guided vertices a path
+ * has (any survival probability drawn from the path so far keeps roulette unbiased). */
+inline float roulette_scale_times(float rr_scale, float factor) { return fmin(rr_scale * factor, 1e20f); }
+
 /* The weight of light found by BSDF sampling, against light sampling's density
  * (kernels/integrator/path_lanes.cl). */
 inline float bsdf_strategy_weight(uint strategy, float bsdf_pdf, float light_pdf) {
@@ -95,7 +104,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
     __constant const FcRenderParams* P = sc->params;
     float3 radiance = (float3)(0.0f);
     float3 throughput = (float3)(1.0f);
-    float eta_scale = 1.0f;         /* product of etap^2 over the refractions (roulette only) */
+    float rr_scale = 1.0f;          /* roulette's scale of the throughput (above) */
     float prev_bsdf_pdf = INFINITY; /* density of the sampled direction; camera rays: a delta */
 #if FC_HAS_TEXTURES
     float path_length = 0.0f; /* from the camera, for the ray cone of texture filtering */
@@ -185,10 +194,12 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
                 if (!bsdf_sample(m, wo_local, u, &bs)) break;
                 wi = frame_to_world(&frame, bs.wi);
             }
+            const float pdf_own = bs.pdf; /* the BSDF's own density at wi */
             bs.pdf = caustic_guide_pdf(&P->environment, sc->env_texels, sc->env_dist, sc->casters, P->caster_count, &cg,
                                        bs.pdf, wi, true, &drawn);
             if (!(bs.pdf > 0.0f)) break;
             bs.weight = bs.f * (fabs(bs.wi.z) / bs.pdf);
+            rr_scale = roulette_scale_times(rr_scale, roulette_guide_scale(bs.pdf, pdf_own));
         } else {
             if (!path_bsdf_sample(&P->environment, sc->env_texels, sc->env_dist, m, &frame, wo_local, u, &bs)) break;
             wi = frame_to_world(&frame, bs.wi);
@@ -200,10 +211,10 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         throughput *= bs.weight;
         prev_bsdf_pdf = bs.delta ? INFINITY : bs.pdf;
         /* A refraction (wi below, wo above) from the side of relative index mat.ior. */
-        if (bs.wi.z < 0.0f) eta_scale *= mat.ior * mat.ior;
+        if (bs.wi.z < 0.0f) rr_scale = roulette_scale_times(rr_scale, mat.ior * mat.ior);
 
         if (depth + 1u >= P->rr_depth) {
-            float survive = roulette_survival_l1(throughput, eta_scale);
+            float survive = roulette_survival_l1(throughput, rr_scale);
             if (ub.w >= survive) break;
             throughput /= survive;
         }

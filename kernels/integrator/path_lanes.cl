@@ -22,11 +22,11 @@ inline LFLOAT LNAME(bsdf_strategy_weight)(uint strategy, LFLOAT bsdf_pdf, LFLOAT
     return select(w, (LFLOAT)(1.0f), isinf(bsdf_pdf));
 }
 
-/* Russian roulette's survival probability for a path of this throughput (eta_scale: the
- * product of etap^2 over its refractions, which the way out of a medium undoes): the
- * largest channel, at most 0.95. */
-inline LFLOAT LNAME(roulette_survival)(LVEC3 throughput, LFLOAT eta_scale) {
-    return fmin(fmax(throughput.x, fmax(throughput.y, throughput.z)) * eta_scale, 0.95f);
+/* Russian roulette's survival probability for a path of this throughput (rr_scale: what the
+ * throughput understates of the path's worth, path.cl's): the largest channel times rr_scale,
+ * at most 0.95. */
+inline LFLOAT LNAME(roulette_survival)(LVEC3 throughput, LFLOAT rr_scale) {
+    return fmin(fmax(throughput.x, fmax(throughput.y, throughput.z)) * rr_scale, 0.95f);
 }
 
 #undef FACET_INTEGRATOR_PATH_LANES_PASS
