@@ -24,6 +24,15 @@ struct Furnace {
     double mean = 0.0, worst = 0.0, rms = 0.0, rejected = -1.0;
 };
 
+// The scene's image (RGB floats) at spp samples per pixel, in passes of 16.
+std::vector<float> render_image(Scene& scene, std::uint32_t spp, double* rejected) {
+    build_lights(scene);
+    Bvh bvh = build_bvh(scene.vertices);
+    Renderer r(test::context(), scene, bvh);
+    render_fixed(r, spp, 16);
+    return r.image(rejected);
+}
+
 // The image (RGB floats) of a smooth or rough sphere of index eta and `transmittance`
 // in a uniform white environment.
 std::vector<float> sphere_in_white(float eta, float alpha, std::uint32_t spp, int subdivisions, std::uint32_t rr_depth,
@@ -46,11 +55,7 @@ std::vector<float> sphere_in_white(float eta, float alpha, std::uint32_t spp, in
     scene.settings.max_depth = 1 << 20;
     scene.settings.rr_depth = rr_depth;
     scene.settings.sampler = sampler;
-    build_lights(scene);
-    Bvh bvh = build_bvh(scene.vertices);
-    Renderer r(test::context(), scene, bvh);
-    render_fixed(r, spp, 16);
-    return r.image(rejected);
+    return render_image(scene, spp, rejected);
 }
 
 Furnace glass_sphere_in_white(float eta, float alpha, std::uint32_t spp, int subdivisions = 3,
@@ -163,11 +168,7 @@ std::vector<float> caustic_under_ball(std::uint32_t rr_depth, std::uint32_t spp,
     scene.settings.rr_depth = int(rr_depth);
     scene.settings.sampler = FC_SAMPLER_INDEPENDENT;
     scene.settings.seed = seed;
-    build_lights(scene);
-    Bvh bvh = build_bvh(scene.vertices);
-    Renderer r(test::context(), scene, bvh);
-    render_fixed(r, spp, 16);
-    return r.image(rejected);
+    return render_image(scene, spp, rejected);
 }
 
 double image_mean(const std::vector<float>& img) {
