@@ -95,9 +95,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     float org[3 * FC_PACKET_W];
 #endif
 #if FC_HAS_DIELECTRIC
-    /* a refracting lane's: the origin on the far side, roulette's scale (path.cl's rr_scale: etap^2
-     * of its refractions, the guide's densities over its BSDFs'), and whether its material is a
-     * dielectric */
+    /* a lane's origin on the far side (a refraction's), roulette's scale (path.cl's rr_scale:
+     * etap^2 of its refractions, the guide's densities over its BSDFs'), and whether its material
+     * is a dielectric */
     float orgb[3 * FC_PACKET_W], rr_scale[FC_PACKET_W];
     int trans[FC_PACKET_W];
 #endif

@@ -7,7 +7,7 @@
  * importance sampling with the power heuristic (Veach 1997, ch. 9). Paths end at
  * max_depth bounces or by Russian roulette after rr_depth bounces (survival
  * probability = the largest channel of the path throughput times rr_scale, at most
- * 0.95; pbrt-v4's and Mitsuba 3's rule, rr_scale their etaScale and more). rr_scale is what
+ * 0.95; pbrt-v4's and Mitsuba 3's rule, rr_scale extending their etaScale). rr_scale is what
  * the throughput understates of the path's worth: the product of etap^2 over the
  * refractions so far (a refraction's weight carries the radiance scaling 1 / etap^2,
  * dielectric.cl, which the way out of the medium undoes; without it roulette would kill
