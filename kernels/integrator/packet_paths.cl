@@ -112,6 +112,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
      * (kernels/bsdf/plain_base_lanes.cl) from their parameters */
     PacketPlain pls;
     int plain[FC_PACKET_W];
+#if !FC_HAS_TEXTURES
+    /* the material whose plain base lane j of pls holds (-1: none): a lane that meets it again
+     * keeps it, since without textures a plain base is its material's alone (plain_base_of: a
+     * conductor's Fresnel average is eight evaluations of its Fresnel term) */
+    int pls_material[FC_PACKET_W];
+#endif
 #endif
 #if FC_HAS_TEXTURES
     float plen[FC_PACKET_W]; /* each path's length from the camera: its ray cone (texture filtering) */
@@ -137,6 +143,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         gen[j] = 0;
         plain[j] = 0;
         packet_plain_set(&pls, j, &unplain);
+#if !FC_HAS_TEXTURES
+        pls_material[j] = -1;
+#endif
 #endif
     }
     for (;;) {
@@ -320,7 +329,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                     delta_bsdf[j] = bsdf_is_delta(&mats[j]);
                     s.ns = fr.n;
                     plain[j] = !bsdf_layered(&mats[j]) && bsdf_plain(&mats[j]);
+#if FC_HAS_TEXTURES
                     if (plain[j]) {
+#else
+                    if (plain[j] && pls_material[j] != s.material) {
+                        pls_material[j] = s.material;
+#endif
                         const PlainBase_l1 b = plain_base_of(&mats[j]);
                         packet_plain_set(&pls, j, &b);
                     }
@@ -514,6 +528,43 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         ok &= live & (pdf_l > 0.0f) & isfinite(pdf_l) & (side > 0.0f) & (wi_z * side > 0.0f) & (wo_z > 0.0f) &
               (wi_z > 0.0f);
 #endif
+        /* D: the shadow rays, in a packet where they can be, from the offset point on wi's side to
+         * the offset point on a triangle; traced before the BSDF and the guide's density at wi
+         * are made, so that those are made only where the light is seen (a glass vertex's light
+         * behind its surface, or any seen from inside a ball, is blocked by the ball itself) */
+#if FC_HAS_DIELECTRIC
+        const L3 sso = LNAME(vec3_select)(so, l3_load(orgb), side < 0.0f);
+#else
+        const L3 sso = so;
+#endif
+        LINT back = cl < 0.0f;
+        L3 tn = l3(select(-LN.x, LN.x, back), select(-LN.y, LN.y, back), select(-LN.z, LN.z, back));
+        L3 target = LNAME(offset_ray_origin)(point, tn);
+        L3 seg = l3(target.x - sso.x, target.y - sso.y, target.z - sso.z);
+        LFLOAT tmax = sqrt(l3_dot(seg, seg));
+        L3 sdir = l3(seg.x / tmax, seg.y / tmax, seg.z / tmax);
+#if FC_PACKET_LANE_LIGHTS
+        /* toward a per-lane light: along its direction, to its distance (unbounded for the
+         * environment and a directional light) */
+        sdir = LNAME(vec3_select)(sdir, wi, is_x);
+        tmax = select(tmax, LLOAD(xtmax), is_x);
+#endif
+        ok &= tmax > 0.0f;
+        uint unblocked;
+        {
+            float so_a[3 * FC_PACKET_W], sd_a[3 * FC_PACKET_W], tmax_a[FC_PACKET_W];
+            l3_store(sso, so_a);
+            l3_store(sdir, sd_a);
+            LSTORE(tmax, tmax_a);
+            int oka[FC_PACKET_W];
+            LSTORE(ok, oka);
+            uint shadow = 0u;
+            for (int j = 0; j < FC_PACKET_W; ++j)
+                if (oka[j]) shadow |= 1u << j;
+            unblocked = shadow & ~packet_trace_any(sc, so_a, sd_a, tmax_a, shadow, seed, irev, depth);
+            for (int j = 0; j < FC_PACKET_W; ++j) oka[j] = (unblocked >> j) & 1u ? -1 : 0;
+            ok = LLOAD(oka);
+        }
 #if FC_PACKET_BSDF_PER_LANE
         /* a lane's own BSDF at the light's direction, per lane (sample_direct's), where it
          * has one; f and its density (for MIS) */
@@ -569,14 +620,15 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             bsdf_pdf_l = select(bsdf_pdf_l, pg, G);
         }
 #if FC_HAS_DIELECTRIC
-        if (guided && P->strategy == FC_STRATEGY_MIS) {
+        if ((guided & unblocked) && P->strategy == FC_STRATEGY_MIS) {
             /* the lanes whose light is at infinity (the environment, a directional light) */
             uint at_infinity = 0u;
 #if FC_PACKET_LANE_LIGHTS
             for (int j = 0; j < FC_PACKET_W; ++j)
                 if (xl[j] && !isfinite(xtmax[j])) at_infinity |= 1u << j;
 #endif
-            bsdf_pdf_l = packet_guided_light_pdf(sc, guided, cgs, cone_bits, PP, at_infinity, bsdf_pdf_l, wi);
+            bsdf_pdf_l =
+                packet_guided_light_pdf(sc, guided & unblocked, cgs, cone_bits, PP, at_infinity, bsdf_pdf_l, wi);
         }
 #endif
         LFLOAT w = LNAME(light_strategy_weight)(P->strategy, pdf_l, bsdf_pdf_l);
@@ -592,44 +644,15 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #else
         L3 contrib = l3(T.x * A.x * f_scale * LC.x * k, T.y * A.y * f_scale * LC.y * k, T.z * A.z * f_scale * LC.z * k);
 #endif
-        /* the shadow rays, in lanes: from the offset point on wi's side to the offset point on a
-         * triangle */
-#if FC_HAS_DIELECTRIC
-        const L3 sso = LNAME(vec3_select)(so, l3_load(orgb), side < 0.0f);
-#else
-        const L3 sso = so;
-#endif
-        LINT back = cl < 0.0f;
-        L3 tn = l3(select(-LN.x, LN.x, back), select(-LN.y, LN.y, back), select(-LN.z, LN.z, back));
-        L3 target = LNAME(offset_ray_origin)(point, tn);
-        L3 seg = l3(target.x - sso.x, target.y - sso.y, target.z - sso.z);
-        LFLOAT tmax = sqrt(l3_dot(seg, seg));
-        L3 sdir = l3(seg.x / tmax, seg.y / tmax, seg.z / tmax);
-#if FC_PACKET_LANE_LIGHTS
-        /* toward a per-lane light: along its direction, to its distance (unbounded for the
-         * environment and a directional light) */
-        sdir = LNAME(vec3_select)(sdir, wi, is_x);
-        tmax = select(tmax, LLOAD(xtmax), is_x);
-#endif
-        ok &= tmax > 0.0f;
-        float cx[3 * FC_PACKET_W], so_a[3 * FC_PACKET_W], sd_a[3 * FC_PACKET_W], tmax_a[FC_PACKET_W];
-        int oka[FC_PACKET_W];
-        l3_store(contrib, cx);
-        l3_store(sso, so_a);
-        l3_store(sdir, sd_a);
-        LSTORE(tmax, tmax_a);
-        LSTORE(ok, oka);
-
-        /* D: shadow rays, in a packet where they can be */
-        uint shadow = 0u;
-        for (int j = 0; j < FC_PACKET_W; ++j)
-            if (oka[j]) shadow |= 1u << j;
-        const uint unblocked = shadow & ~packet_trace_any(sc, so_a, sd_a, tmax_a, shadow, seed, irev, depth);
-        for (uint rest = unblocked; rest; rest &= rest - 1u) {
-            const uint j = lowest_bit(rest);
-            set_lane3(rad, j, lane3(rad, j) + lane3(cx, j));
+        {
+            /* the lanes whose light is seen and counts */
+            float cx[3 * FC_PACKET_W];
+            int oka[FC_PACKET_W];
+            l3_store(contrib, cx);
+            LSTORE(ok, oka);
+            for (int j = 0; j < FC_PACKET_W; ++j)
+                if (oka[j]) set_lane3(rad, j, lane3(rad, j) + lane3(cx, j));
         }
-
         /* E: the BSDF sample (cosine hemisphere), throughput and roulette, in lanes */
         L3 dir_local = LNAME(square_to_cosine_hemisphere)(ub[0], ub[1]);
         LFLOAT dz = dir_local.z;
