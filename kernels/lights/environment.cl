@@ -168,9 +168,17 @@ inline float3 env_radiance_pdf(__constant const FcEnvironment* env, __global con
     return env_map_dir_radiance_pdf(env, texels, dist, dir, pdf);
 }
 
-/* Solid-angle density with which env_sample produces `dir` (env_radiance_pdf's). */
+/* Solid-angle density with which env_sample produces `dir` (env_radiance_pdf's): a nearest
+ * lookup's is its texel's, read from the sampling tables without the texel itself (the glass's
+ * choice and the lens guide ask for densities only). */
 inline float env_pdf(__constant const FcEnvironment* env, __global const float4* texels, __global const float* dist,
                      float3 dir) {
+    if (env->enabled && env->width > 0 && env->filter != FC_ENV_FILTER_BILINEAR) {
+        float sin_theta;
+        float2 uv;
+        const int2 t = env_locate(env, dir, &sin_theta, &uv);
+        return env_texel_pdf(env, dist, t, sin_theta);
+    }
     float pdf;
     env_radiance_pdf(env, texels, dist, dir, &pdf);
     return pdf;
