@@ -196,20 +196,12 @@ inline int env_bisect(__global const float* cdf, int lo, int hi, float u) {
 }
 
 /* The interval of cdf[0..n] (cdf[0] = 0, cdf[n] = 1) holding u, from the cdf's guide
- * table guide[0..g] (g = env_guide_size(n); entry k the interval holding k / g, as uint
- * bits; Chen & Asau 1974): floor(u g) / g <= u < (floor(u g) + 1) / g, so the answer lies
- * between entries k and k + 1, a step or two of bisection instead of log2(n). The same
- * interval as bisecting all of [0, n). */
+ * table guide[0..g] in the same buffer (g = env_guide_size(n); entry k the interval holding
+ * k / g, as uint bits; Chen & Asau 1974): env_sample_texel's search
+ * (kernels/lights/environment_lanes.cl), a step or two of bisection instead of log2(n). The
+ * same interval as env_bisect over all of [0, n). */
 inline int env_find_interval(__global const float* cdf, __global const float* guide, uint g, float u) {
-    uint k = min((uint)(u * (float)g), g - 1u);
-    return env_bisect(cdf, (int)as_uint(guide[k]), (int)as_uint(guide[k + 1u]) + 1, u);
-}
-
-/* u's position inside interval i of cdf, in [0, 1). */
-inline float env_remap(__global const float* cdf, int i, float u) {
-    float w = cdf[i + 1] - cdf[i];
-    float t = (w > 0.0f) ? (u - cdf[i]) / w : 0.5f;
-    return clamp(t, 0.0f, FC_ONE_MINUS_EPSILON);
+    return env_find_interval_l1(cdf, 0u, (uint)(guide - cdf), g, u);
 }
 
 /* x in [0, 1) with density in proportion to (1 - x) a + x b (a, b >= 0, not both 0), by
@@ -274,25 +266,19 @@ inline float2 env_bilinear_in_texel(__constant const FcEnvironment* env, __globa
 }
 
 /* The point (u, v) of a map (width > 0, total > 0) that env_sample takes at u of the square:
- * the row from the marginal cdf, the column from the row's conditional cdf, and the point
- * inside the texel. */
+ * the texel and the point across it (env_sample_texel, kernels/lights/environment_lanes.cl),
+ * for the bilinear lookup moved inside the texel. */
 inline float2 env_sample_uv(__constant const FcEnvironment* env, __global const float4* texels,
                             __global const float* dist, float2 u) {
-    u = clamp(u, 0.0f, FC_ONE_MINUS_EPSILON);
-    int w = env->width, h = env->height;
-    uint gm = env_guide_size((uint)h), gc = env_guide_size((uint)w);
-    __global const float* guides = dist + (h + 1) + h * (w + 1);
-    int y = env_find_interval(dist, guides, gm, u.y);
-    float dv = env_remap(dist, y, u.y);
-    __global const float* cond = dist + (h + 1) + y * (w + 1);
-    int x = env_find_interval(cond, guides + (gm + 1u) + (uint)y * (gc + 1u), gc, u.x);
-    float du = env_remap(cond, x, u.x);
+    int x, y;
+    float du, dv;
+    env_sample_texel_l1(env->width, env->height, dist, u.x, u.y, &x, &y, &du, &dv);
     if (env->filter == FC_ENV_FILTER_BILINEAR) {
         float2 in = env_bilinear_in_texel(env, texels, x, y, (float2)(du, dv));
         du = in.x;
         dv = in.y;
     }
-    return (float2)(((float)x + du) / (float)w, ((float)y + dv) / (float)h);
+    return (float2)(((float)x + du) / (float)env->width, ((float)y + dv) / (float)env->height);
 }
 
 /* Samples a direction toward the environment: returns the radiance along it, `dir`

@@ -49,5 +49,56 @@ inline LVEC3 LNAME(env_uv_to_dir)(float3 r0, float3 r1, float3 r2, LVEC2 uv) {
                        select((LFLOAT)(0.0f), v.z * inv, ok));
 }
 
+/* A comparison's lanes as every bit set where true: a scalar comparison gives 1, a vector
+ * one -1. */
+#if FC_LW == 1
+#define FC_ENV_ALL_BITS(m) (-(m))
+#else
+#define FC_ENV_ALL_BITS(m) (m)
+#endif
+
+/* For each lane, the interval i of the cdf at base[off .. off + n] (non-decreasing, from 0 to 1)
+ * with cdf[i] <= u < cdf[i + 1], from its guide table at base[goff .. goff + g] (entry k the
+ * interval holding k / g, as uint bits; Chen & Asau 1974): the answer lies between entries k =
+ * floor(u g) and k + 1, and bisection finds it there, the lanes in step, each reading its
+ * entries by a gather (a lane whose interval is found adds 0). Any bisection that keeps cdf[lo]
+ * <= u finds the same i, the largest with cdf[i] <= u. */
+inline LINT LNAME(env_find_interval)(__global const float* base, LUINT off, LUINT goff, uint g, LFLOAT u) {
+    const LUINT k = min(LCONVERT_UINT(u * (float)g), (LUINT)(g - 1u));
+    LINT lo = LAS_INT(LNAME(gather)(base, goff + k));
+    LINT n = LAS_INT(LNAME(gather)(base, goff + k + 1u)) + 1 - lo; /* i in [lo, lo + n) */
+    while (LNAME(lanes_any)(n > 1)) {
+        const LINT step = n / 2;
+        lo += step & FC_ENV_ALL_BITS(LNAME(gather)(base, off + LCONVERT_UINT(lo + step)) <= u);
+        n -= step;
+    }
+    return lo;
+}
+
+/* u's position inside interval i of the cdf at base[off ..], in [0, 1). */
+inline LFLOAT LNAME(env_remap)(__global const float* base, LUINT off, LINT i, LFLOAT u) {
+    const LFLOAT c0 = LNAME(gather)(base, off + LCONVERT_UINT(i)), c1 = LNAME(gather)(base, off + LCONVERT_UINT(i + 1));
+    const LFLOAT w = c1 - c0;
+    return clamp(select((LFLOAT)(0.5f), (u - c0) / w, w > 0.0f), 0.0f, FC_ONE_MINUS_EPSILON);
+}
+
+/* The texel (x, y) of a w x h map that env_sample takes at (ux, uy) of the square, and the point
+ * (du, dv) in [0, 1)^2 across it: the row from the marginal cdf, the column from the row's
+ * conditional, both through their guide tables (dist's layout: host/scene/environment_map.cpp). */
+inline void LNAME(env_sample_texel)(int w, int h, __global const float* dist, LFLOAT ux, LFLOAT uy, LINT* x, LINT* y,
+                                    LFLOAT* du, LFLOAT* dv) {
+    ux = clamp(ux, 0.0f, FC_ONE_MINUS_EPSILON);
+    uy = clamp(uy, 0.0f, FC_ONE_MINUS_EPSILON);
+    const uint gm = env_guide_size((uint)h), gc = env_guide_size((uint)w);
+    const uint guides = (uint)(h + 1) + (uint)h * (uint)(w + 1);
+    *y = LNAME(env_find_interval)(dist, (LUINT)(0u), (LUINT)(guides), gm, uy);
+    *dv = LNAME(env_remap)(dist, (LUINT)(0u), *y, uy);
+    const LUINT row = LCONVERT_UINT(*y);
+    const LUINT cond = (uint)(h + 1) + row * (uint)(w + 1);
+    *x = LNAME(env_find_interval)(dist, cond, guides + (gm + 1u) + row * (gc + 1u), gc, ux);
+    *du = LNAME(env_remap)(dist, cond, *x, ux);
+}
+
+#undef FC_ENV_ALL_BITS
 #undef FACET_LIGHTS_ENVIRONMENT_LANES_PASS
 #endif
