@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstdio>
 #include <filesystem>
 #include <random>
@@ -292,6 +293,75 @@ TEST(Environment, GuidedSearchFindsTheBisectedInterval) {
         ASSERT_EQ(f[i].s[0], f[i].s[1]) << "row, u = " << us[i];
         ASSERT_EQ(f[i].s[2], f[i].s[3]) << "column, u = " << us[i];
         ASSERT_EQ(g[i], env_guide_size(std::uint32_t(i + 1))) << "n = " << i + 1;
+    }
+}
+
+// env_sample_texel's lane forms at the packets' widths, 8 and 16 (the environment's samples in
+// the packets, by gathers where the CPU has them), find the same texel and the same point
+// across it, to the bit, as its W = 1 form (env_sample_uv's, whose intervals the test above
+// checks), for points at random and on every guide boundary and cdf entry, on a map with
+// black rows and columns (intervals of zero width).
+TEST(Environment, SampleTexelLanesAgreeWithW1) {
+    ClContext& ctx = test::context();
+    constexpr int w = 200, h = 100;
+    std::vector<float> rgb = smooth_map(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            if (y < 10 || (x > 50 && x < 90))
+                for (int c = 0; c < 3; ++c) rgb[3 * (std::size_t(y) * w + x) + c] = 0.0f;
+    std::vector<std::string> warnings;
+    const EnvironmentMap e = environment_from_pixels(w, h, rgb, glm::vec3(1.0f), glm::mat3(1.0f), "lanes", warnings);
+    std::vector<float> ux, uy;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    for (int i = 0; i < 8000; ++i) {
+        ux.push_back(std::min(uniform(rng), 0x1.fffffep-1f));
+        uy.push_back(std::min(uniform(rng), 0x1.fffffep-1f));
+    }
+    // every guide boundary and the floats beside it, and the cdfs' own entries, each paired
+    // with a point at random in the other coordinate
+    std::vector<float> edges;
+    for (std::uint32_t g : {env_guide_size(w), env_guide_size(h)})
+        for (std::uint32_t k = 0; k <= g; ++k) {
+            const float t = float(k) / float(g);
+            edges.push_back(t);
+            edges.push_back(std::nextafter(t, 0.0f));
+            edges.push_back(std::nextafter(t, 1.0f));
+        }
+    for (std::size_t i = 0; i < e.distribution.size() && i < std::size_t(h + 1) + std::size_t(w + 1) * 20; ++i)
+        edges.push_back(e.distribution[i]);
+    for (float t : edges) {
+        const float c = std::clamp(t, 0.0f, 0x1.fffffep-1f);
+        ux.push_back(c), uy.push_back(uniform(rng));
+        ux.push_back(uniform(rng)), uy.push_back(c);
+    }
+    ux.push_back(1.0f), uy.push_back(1.0f);  // clamped as env_sample_uv clamps
+    while (ux.size() % 16 != 0) ux.push_back(0.5f), uy.push_back(0.5f);
+    const DeviceEnv d(e);
+    cl::Buffer bx(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, ux.size() * sizeof(float), ux.data());
+    cl::Buffer by(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, uy.size() * sizeof(float), uy.data());
+    cl::Buffer texels(ctx.context(), CL_MEM_WRITE_ONLY, 3 * ux.size() * sizeof(cl_int2));
+    cl::Buffer across(ctx.context(), CL_MEM_WRITE_ONLY, 3 * ux.size() * sizeof(cl_float2));
+    cl::Kernel k(test::program(kProgram), "env_sample_texel_lanes");
+    k.setArg(0, d.params), k.setArg(1, d.dist), k.setArg(2, bx), k.setArg(3, by), k.setArg(4, texels),
+        k.setArg(5, across);
+    ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(ux.size() / 16));
+    std::vector<cl_int2> t(3 * ux.size());
+    std::vector<cl_float2> a(3 * ux.size());
+    ctx.queue().enqueueReadBuffer(texels, CL_TRUE, 0, t.size() * sizeof(cl_int2), t.data());
+    ctx.queue().enqueueReadBuffer(across, CL_TRUE, 0, a.size() * sizeof(cl_float2), a.data());
+    for (std::size_t i = 0; i < ux.size(); ++i) {
+        const cl_int2 t1 = t[3 * i];
+        ASSERT_TRUE(t1.s[0] >= 0 && t1.s[0] < w && t1.s[1] >= 0 && t1.s[1] < h) << "u " << ux[i] << ", " << uy[i];
+        for (int m = 1; m <= 2; ++m) {
+            const char* width = m == 1 ? "W = 8" : "W = 16";
+            ASSERT_EQ(t[3 * i + m].s[0], t1.s[0]) << width << ", u " << ux[i] << ", " << uy[i];
+            ASSERT_EQ(t[3 * i + m].s[1], t1.s[1]) << width << ", u " << ux[i] << ", " << uy[i];
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(a[3 * i + m].s[0]), std::bit_cast<std::uint32_t>(a[3 * i].s[0]))
+                << width << ", u " << ux[i] << ", " << uy[i];
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(a[3 * i + m].s[1]), std::bit_cast<std::uint32_t>(a[3 * i].s[1]))
+                << width << ", u " << ux[i] << ", " << uy[i];
+        }
     }
 }
 

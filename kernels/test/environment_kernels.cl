@@ -87,3 +87,66 @@ __kernel void env_guided_search(__constant const FcEnvironment* env, __global co
                       env_bisect(cond, 0, w, u));
     sizes[i] = env_guide_size(i + 1u);
 }
+
+/* env_sample_texel at the packets' widths, 8 and 16 (kernels/lights/environment_lanes.cl, its
+ * gathers those of the CPU where it has them), beside its W = 1 form. */
+#define FC_LW 8
+#include "kernels/lanes/lanes_open.cl"
+#include "kernels/lanes/vec3_lanes.cl"
+#include "kernels/util/trig_lanes.cl"
+#include "kernels/lanes/gather_lanes.cl"
+#include "kernels/lights/environment_lanes.cl"
+#include "kernels/lanes/lanes_close.cl"
+#define FC_LW 16
+#include "kernels/lanes/lanes_open.cl"
+#include "kernels/lanes/vec3_lanes.cl"
+#include "kernels/util/trig_lanes.cl"
+#include "kernels/lanes/gather_lanes.cl"
+#include "kernels/lights/environment_lanes.cl"
+#include "kernels/lanes/lanes_close.cl"
+
+/* Work-item i finds the texels of the points (ux, uy)[16 i .. 16 i + 15]: texel[3 k + m] and
+ * across[3 k + m] ((x, y) and (du, dv) of point k) at W = 1 (m = 0), 8 (m = 1) and 16 (m = 2). */
+__kernel void env_sample_texel_lanes(__constant const FcEnvironment* env, __global const float* dist,
+                                     __global const float* ux, __global const float* uy, __global int2* texel,
+                                     __global float2* across) {
+    const uint i = (uint)get_global_id(0);
+    const int w = env->width, h = env->height;
+    for (uint k = 16u * i; k < 16u * i + 16u; ++k) {
+        int x, y;
+        float du, dv;
+        env_sample_texel_l1(w, h, dist, ux[k], uy[k], &x, &y, &du, &dv);
+        texel[3u * k] = (int2)(x, y);
+        across[3u * k] = (float2)(du, dv);
+    }
+    for (uint part = 0u; part < 2u; ++part) {
+        int8 x, y;
+        float8 du, dv;
+        env_sample_texel_l8(w, h, dist, vload8(2u * i + part, ux), vload8(2u * i + part, uy), &x, &y, &du, &dv);
+        int xa[8], ya[8];
+        float ua[8], va[8];
+        vstore8(x, 0, xa);
+        vstore8(y, 0, ya);
+        vstore8(du, 0, ua);
+        vstore8(dv, 0, va);
+        for (int j = 0; j < 8; ++j) {
+            const uint k = 16u * i + 8u * part + (uint)j;
+            texel[3u * k + 1u] = (int2)(xa[j], ya[j]);
+            across[3u * k + 1u] = (float2)(ua[j], va[j]);
+        }
+    }
+    int16 x, y;
+    float16 du, dv;
+    env_sample_texel_l16(w, h, dist, vload16(i, ux), vload16(i, uy), &x, &y, &du, &dv);
+    int xa[16], ya[16];
+    float ua[16], va[16];
+    vstore16(x, 0, xa);
+    vstore16(y, 0, ya);
+    vstore16(du, 0, ua);
+    vstore16(dv, 0, va);
+    for (int j = 0; j < 16; ++j) {
+        const uint k = 16u * i + (uint)j;
+        texel[3u * k + 2u] = (int2)(xa[j], ya[j]);
+        across[3u * k + 2u] = (float2)(ua[j], va[j]);
+    }
+}
