@@ -112,41 +112,23 @@ __kernel void env_sample_texel_lanes(__constant const FcEnvironment* env, __glob
                                      __global float2* across) {
     const uint i = (uint)get_global_id(0);
     const int w = env->width, h = env->height;
-    for (uint k = 16u * i; k < 16u * i + 16u; ++k) {
-        int x, y;
-        float du, dv;
-        env_sample_texel_l1(w, h, dist, ux[k], uy[k], &x, &y, &du, &dv);
-        texel[3u * k] = (int2)(x, y);
-        across[3u * k] = (float2)(du, dv);
-    }
+    int xa[3][16], ya[3][16];
+    float ua[3][16], va[3][16];
+    for (int j = 0; j < 16; ++j)
+        env_sample_texel_l1(w, h, dist, ux[16u * i + j], uy[16u * i + j], &xa[0][j], &ya[0][j], &ua[0][j], &va[0][j]);
     for (uint part = 0u; part < 2u; ++part) {
         int8 x, y;
         float8 du, dv;
         env_sample_texel_l8(w, h, dist, vload8(2u * i + part, ux), vload8(2u * i + part, uy), &x, &y, &du, &dv);
-        int xa[8], ya[8];
-        float ua[8], va[8];
-        vstore8(x, 0, xa);
-        vstore8(y, 0, ya);
-        vstore8(du, 0, ua);
-        vstore8(dv, 0, va);
-        for (int j = 0; j < 8; ++j) {
-            const uint k = 16u * i + 8u * part + (uint)j;
-            texel[3u * k + 1u] = (int2)(xa[j], ya[j]);
-            across[3u * k + 1u] = (float2)(ua[j], va[j]);
-        }
+        vstore8(x, part, xa[1]), vstore8(y, part, ya[1]), vstore8(du, part, ua[1]), vstore8(dv, part, va[1]);
     }
     int16 x, y;
     float16 du, dv;
     env_sample_texel_l16(w, h, dist, vload16(i, ux), vload16(i, uy), &x, &y, &du, &dv);
-    int xa[16], ya[16];
-    float ua[16], va[16];
-    vstore16(x, 0, xa);
-    vstore16(y, 0, ya);
-    vstore16(du, 0, ua);
-    vstore16(dv, 0, va);
-    for (int j = 0; j < 16; ++j) {
-        const uint k = 16u * i + (uint)j;
-        texel[3u * k + 2u] = (int2)(xa[j], ya[j]);
-        across[3u * k + 2u] = (float2)(ua[j], va[j]);
-    }
+    vstore16(x, 0, xa[2]), vstore16(y, 0, ya[2]), vstore16(du, 0, ua[2]), vstore16(dv, 0, va[2]);
+    for (int j = 0; j < 16; ++j)
+        for (int m = 0; m < 3; ++m) {
+            texel[3u * (16u * i + j) + m] = (int2)(xa[m][j], ya[m][j]);
+            across[3u * (16u * i + j) + m] = (float2)(ua[m][j], va[m][j]);
+        }
 }
