@@ -121,6 +121,37 @@ inline void packet_env_prefetch(__constant const FcEnvironment* env, __global co
 #endif
 }
 
+/* The map's points env_sample_uv takes at the lanes' numbers (u1, u2) in suv (u in
+ * suv[0..W-1], v in suv[W..2W-1]): the texels and the points across them in lanes
+ * (env_sample_texel), moved inside the texel per lane for a bilinear lookup, in the lanes of
+ * `lanes`. */
+inline void packet_env_sample_points(__constant const FcEnvironment* env, __global const float4* texels,
+                                     __global const float* dist, const float* u1, const float* u2, uint lanes,
+                                     float* suv) {
+    LINT tx, ty;
+    LFLOAT tdu, tdv;
+    LNAME(env_sample_texel)(env->width, env->height, dist, LLOAD(u1), LLOAD(u2), &tx, &ty, &tdu, &tdv);
+    if (env->filter == FC_ENV_FILTER_BILINEAR) {
+        int xa[FC_PACKET_W], ya[FC_PACKET_W];
+        float across[2 * FC_PACKET_W];
+        LSTORE(tx, xa);
+        LSTORE(ty, ya);
+        LSTORE(tdu, across);
+        LSTORE(tdv, across + FC_PACKET_W);
+        for (uint rest = lanes; rest; rest &= rest - 1u) {
+            const uint j = lowest_bit(rest);
+            const float2 in =
+                env_bilinear_in_texel(env, texels, xa[j], ya[j], (float2)(across[j], across[FC_PACKET_W + j]));
+            across[j] = in.x;
+            across[FC_PACKET_W + j] = in.y;
+        }
+        tdu = LLOAD(across);
+        tdv = LLOAD(across + FC_PACKET_W);
+    }
+    LSTORE((LCONVERT_FLOAT(tx) + tdu) / (float)env->width, suv);
+    LSTORE((LCONVERT_FLOAT(ty) + tdv) / (float)env->height, suv + FC_PACKET_W);
+}
+
 /* The directions of the map's points `suv` (env_sample_uv's, in lanes) in dir, and their
  * location again (uv, sin_theta) for the lookup: env_sample's middle steps, in lanes. */
 inline void packet_env_directions(__constant const FcEnvironment* env, const float* suv, float* dir, float* uv,

@@ -467,32 +467,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         }
 #if FC_HAS_ENVIRONMENT
         if (xenv) {
-            /* the map's samples: their points (env_sample_uv's: the texels in lanes, the bilinear
-             * lookup's point inside one per lane) and directions in lanes, then each one's
-             * radiance and density by the lookup of env_sample (per lane) */
-            const int ew = P->environment.width, eh = P->environment.height;
-            LINT tx, ty;
-            LFLOAT tdu, tdv;
-            LNAME(env_sample_texel)(ew, eh, sc->env_dist, LLOAD(lu1), LLOAD(lu2), &tx, &ty, &tdu, &tdv);
-            if (P->environment.filter == FC_ENV_FILTER_BILINEAR) {
-                int xa[FC_PACKET_W], ya[FC_PACKET_W];
-                float dua[FC_PACKET_W], dva[FC_PACKET_W];
-                LSTORE(tx, xa);
-                LSTORE(ty, ya);
-                LSTORE(tdu, dua);
-                LSTORE(tdv, dva);
-                for (uint rest = xenv; rest; rest &= rest - 1u) {
-                    const uint j = lowest_bit(rest);
-                    const float2 in =
-                        env_bilinear_in_texel(&P->environment, sc->env_texels, xa[j], ya[j], (float2)(dua[j], dva[j]));
-                    dua[j] = in.x;
-                    dva[j] = in.y;
-                }
-                tdu = LLOAD(dua);
-                tdv = LLOAD(dva);
-            }
-            LSTORE((LCONVERT_FLOAT(tx) + tdu) / (float)ew, suv);
-            LSTORE((LCONVERT_FLOAT(ty) + tdv) / (float)eh, suv + FC_PACKET_W);
+            /* the map's samples: their points and directions in lanes (packet_lights.cl), then
+             * each one's radiance and density by the lookup of env_sample (per lane) */
+            packet_env_sample_points(&P->environment, sc->env_texels, sc->env_dist, lu1, lu2, xenv, suv);
             float sdir[3 * FC_PACKET_W], luv[2 * FC_PACKET_W], lst[FC_PACKET_W];
             packet_env_directions(&P->environment, suv, sdir, luv, lst);
             packet_env_prefetch(&P->environment, sc->env_texels, sc->env_dist, luv, xenv);
