@@ -133,9 +133,11 @@ class Scene:
 class Facet:
     renderer = "facet"
 
-    def __init__(self, exe, sampler, work):
-        self.exe, self.sampler, self.work = exe, sampler, work
-        self.label = "facet" if sampler is None else f"facet --sampler {sampler}"
+    def __init__(self, exe, sampler, work, options=()):
+        """options: more of facet's options, as its label shows them (facet_unguided's
+        --caustic-guide 0: the sampling strategies Mitsuba has, BSDF and light with MIS)."""
+        self.exe, self.sampler, self.work, self.options = exe, sampler, work, list(options)
+        self.label = " ".join(["facet"] + ([f"--sampler {sampler}"] if sampler else []) + self.options)
 
     def version(self):
         """facet's references are kept per build: a change to the kernels or to how the
@@ -150,7 +152,7 @@ class Facet:
         cmd += ["--time", f"{seconds:g}", "--spp", str(1 << 24)] if seconds else ["--spp", str(spp)]
         if self.sampler:
             cmd += ["--sampler", self.sampler]
-        run(cmd)
+        run(cmd + self.options)
         with open(out[:-4] + ".json") as f:
             rep = json.load(f)
         return read_exr(out), int(rep["spp"]) * scene.pixels, float(rep["render_s"])
@@ -597,8 +599,9 @@ def main():
     ap.add_argument("--check", action="store_true",
                     help="agreement in mean: the two references compared region by region")
     ap.add_argument("--programs", default="facet,facet_independent,mitsuba,mitsuba_best",
-                    help="which programs to run, of facet, facet_independent, mitsuba (its default sampler) "
-                         "and mitsuba_best (default: all four)")
+                    help="which programs to run, of facet, facet_independent, facet_unguided (--caustic-guide 0: "
+                         "no sampling toward glass, Mitsuba's strategies), mitsuba (its default sampler) and "
+                         "mitsuba_best (default: facet, facet_independent, mitsuba, mitsuba_best)")
     ap.add_argument("--threads", type=int, default=2, help="Mitsuba threads (default 2, as facet's PoCL here)")
     ap.add_argument("--facet", default=os.path.join(ROOT, "build", "facet"), help="the facet binary")
     ap.add_argument("--out", default=os.path.join(ROOT, "out", "bench"), help="output folder")
@@ -614,6 +617,7 @@ def main():
     translate.write_assets(assets, a.facet)
     scenes = [Scene(n, a.scale) for n in a.scenes.split(",")]
     progs = {"facet": Facet(a.facet, None, work), "facet_independent": Facet(a.facet, "independent", work),
+             "facet_unguided": Facet(a.facet, None, work, ("--caustic-guide", "0")),
              "mitsuba": Mitsuba("independent", assets)}
     best_auto = a.mitsuba_best == "auto"
     if best_auto and (a.equal_spp or a.per_sample):
@@ -633,7 +637,7 @@ def main():
     unknown = [k for k in wanted if k not in set(progs) | {"mitsuba_best"}]
     if unknown or "facet" not in wanted:
         raise SystemExit(f"equal_time.py: --programs {a.programs}: needs facet, and only facet, "
-                         "facet_independent, mitsuba, mitsuba_best")
+                         "facet_independent, facet_unguided, mitsuba, mitsuba_best")
     refs_progs = dict(progs)   # both renderers' references are made whatever runs
     progs = {k: p for k, p in progs.items() if k in wanted}
     info = {"mitsuba": mi.__version__, "variant": mi.variant(), "threads": a.threads,
