@@ -243,8 +243,11 @@ TEST(CausticGuide, ShareFollowsTheConesSolidAngle) {
         ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, sizeof(cl_float4), &r);
         return r;
     };
-    // beside the ball: its cone is wide, the full share; both casters count, one a lens
-    cl_float4 near = at({0.8f, 0.0f, 0.0f}, kUp);
+    // the cones' solid angle from which a vertex takes the full share (FC_CAUSTIC_GUIDE_FULL, sr)
+    constexpr float kFullShareCones = 1.0f;
+    // beside the ball: its cone is wide (1.17 sr), the full share; both casters count, one a lens
+    cl_float4 near = at({0.7f, 0.0f, 0.0f}, kUp);
+    EXPECT_GT(near.s[2], kFullShareCones);
     EXPECT_FLOAT_EQ(near.s[0], 0.5f);
     EXPECT_FLOAT_EQ(near.s[1], 0.5f);
     EXPECT_FLOAT_EQ(near.s[3], 1.0f);
@@ -252,7 +255,7 @@ TEST(CausticGuide, ShareFollowsTheConesSolidAngle) {
     cl_float4 far = at({2.5f, 0.0f, 30.0f}, kUp);
     EXPECT_GT(far.s[0], 0.0f);
     EXPECT_LT(far.s[0], 0.05f);
-    EXPECT_NEAR(far.s[0], 0.5f * far.s[2] / 0.5f, 1e-6f);
+    EXPECT_NEAR(far.s[0], 0.5f * far.s[2] / kFullShareCones, 1e-6f);
     // inside the ball: only the other bound counts, no lens
     cl_float4 inside = at({0.0f, 0.5f, 0.1f}, kUp);
     EXPECT_EQ(inside.s[3], 0.0f);

@@ -66,9 +66,13 @@
 
 /* The cones' total solid angle (sr) at and above which a vertex draws the full fraction toward
  * them; below, a share in proportion (glass far off seldom focuses light here, and every
- * guided direction costs the BSDF's own samples elsewhere). */
+ * guided direction costs the BSDF's own samples elsewhere, and a guided path through glass
+ * costs more time than a cosine one). 1 sr: a ball fills it within about 1.85 radii of its
+ * centre. On glass_metal_sky it renders 1.09x the samples of 0.5 sr with lower error in every
+ * band of the image, where 1.5 and 2 sr render more still but leave the floor's caustics
+ * noisier (docs/performance.md, "The guide's full share at 1 sr"). */
 #ifndef FC_CAUSTIC_GUIDE_FULL
-#define FC_CAUSTIC_GUIDE_FULL 0.5f
+#define FC_CAUSTIC_GUIDE_FULL 1.0f
 #endif
 
 /* The guide's share at a glossy vertex, relative to a Lambertian one's. Seen in a rough metal,
