@@ -250,8 +250,8 @@ def measure(scenes, progs, budgets, repeats, ref_seconds, refs_dir, out_dir, inf
                          **errors(img, refs, p.renderer, cross)}
                     runs[key].append(r)
                     print(f"  {sc.name} {budget:g} s #{rep + 1} {p.label:8s} {r['spp']:8.1f} spp {t:7.2f} s "
-                          f"{r['msamples_s']:6.3f} Msamples/s  rmse own {r['rmse_own']:.4g} other "
-                          f"{r['rmse_other']:.4g} 3c {r['rmse_3c']:.4g}", flush=True)
+                          f"{r['msamples_s']:6.3f} Msamples/s  rmse own {met.fmt_rmse(r['rmse_own'])} other "
+                          f"{met.fmt_rmse(r['rmse_other'])} 3c {met.fmt_rmse(r['rmse_3c'])}", flush=True)
             for key, rs in runs.items():
                 med = {k: statistics.median(r[k] for r in rs) for k in rs[0]}
                 med["rmse_pooled"] = math.sqrt(statistics.fmean(r["rmse_own"] ** 2 for r in rs))
@@ -271,11 +271,14 @@ def measure(scenes, progs, budgets, repeats, ref_seconds, refs_dir, out_dir, inf
         base = next(x for x in rows if x["scene"] == r["scene"] and x["s"] == r["s"] and x["renderer"] == "facet")
         m, b3 = r["median"], base["median"]["rmse_3c"]
         lines.append(f"| {r['scene']} {r['size']} | {r['s']:g} | {r['program']} | {m['spp']:.1f} | "
-                     f"{m['msamples_s']:.3f} | {m['rmse_own']:.4g} | {m['rmse_other']:.4g} | {m['rmse_3c']:.4g} | "
+                     f"{m['msamples_s']:.3f} | {met.fmt_rmse(m['rmse_own'])} | {met.fmt_rmse(m['rmse_other'])} | "
+                     f"{met.fmt_rmse(m['rmse_3c'])} | "
                      f"{m['rmse_3c'] / b3 if b3 > 0 else float('nan'):.2f} |")
     refs_line = sorted({(r["scene"], r["size"], round(r["ref_spp"]["facet"]), round(r["ref_spp"]["cycles"]))
                         for r in rows})
     lines += ["", "References (spp): " + "; ".join(f"{s} {sz}: facet {a}, Cycles {b}" for s, sz, a, b in refs_line)]
+    if any(r["median"][k] <= 0.0 for r in rows for k in ("rmse_own", "rmse_other", "rmse_3c")):
+        lines += ["", met.UNDER_NOISE_NOTE]
     info["rows"] = rows
     met.write_outputs(out_dir, "cycles_equal_time", lines, info)
 

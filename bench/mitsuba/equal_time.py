@@ -318,6 +318,20 @@ def rmse(img, ref):
     return math.sqrt(max(mse, 0.0))
 
 
+# Where a noise-corrected RMSE clamps at 0, the tables say so instead of printing 0.
+UNDER_NOISE = "< ref. noise"
+UNDER_NOISE_NOTE = (f"'{UNDER_NOISE}': the image's squared difference to that reference is below the "
+                    "reference's own noise, which is taken out (the difference clamps at 0): the error "
+                    "is too small for that reference to measure; longer references (--reference-seconds) "
+                    "resolve it.")
+
+
+def fmt_rmse(x):
+    """An RMSE for the tables and the progress lines: 4 significant digits, or UNDER_NOISE
+    where it clamped at 0."""
+    return f"{x:.4g}" if x > 0.0 else UNDER_NOISE
+
+
 # --------------------------------------------------------------------------------------
 # Agreement in mean (--check)
 
@@ -455,8 +469,9 @@ def measure(scenes, progs, makers, budgets, repeats, spp, ref_seconds, refs_dir,
                                       "rmse_own": rmse(img, own), "rmse_other": rmse(img, other),
                                       "rmse_3c": rmse_three_cornered(img, own, other, cross)})
                     print(f"  {sc.name} {amount:g} {kind} #{rep + 1} {p.label:28s} {n / sc.pixels:8.1f} spp "
-                          f"{t:7.2f} s {n / t * 1e-6:6.2f} Msamples/s  rmse own {runs[key][-1]['rmse_own']:.4g} "
-                          f"other {runs[key][-1]['rmse_other']:.4g} 3c {runs[key][-1]['rmse_3c']:.4g}", flush=True)
+                          f"{t:7.2f} s {n / t * 1e-6:6.2f} Msamples/s  rmse own {fmt_rmse(runs[key][-1]['rmse_own'])} "
+                          f"other {fmt_rmse(runs[key][-1]['rmse_other'])} 3c {fmt_rmse(runs[key][-1]['rmse_3c'])}",
+                          flush=True)
             for key, rs in runs.items():
                 med = {k: statistics.median(r[k] for r in rs) for k in rs[0]}
                 # The RMSE of the mean squared error over the runs: what the expected error
@@ -487,11 +502,13 @@ def measure(scenes, progs, makers, budgets, repeats, spp, ref_seconds, refs_dir,
         b3 = base["median"]["rmse_3c"]
         ratio3 = m["rmse_3c"] / b3 if b3 > 0 else float("nan")
         lines.append(f"| {r['scene']} | {amount:g} | {r['program']} | {m['spp']:.1f} | {m['msamples_s']:.2f} | "
-                     f"{m['rmse_own']:.4g} | {m['rmse_other']:.4g} | {ratio:.2f} | {m['rmse_pooled']:.4g} | {pooled:.2f} "
-                     f"| {m['rmse_3c']:.4g} | {ratio3:.2f} |")
+                     f"{fmt_rmse(m['rmse_own'])} | {fmt_rmse(m['rmse_other'])} | {ratio:.2f} | {fmt_rmse(m['rmse_pooled'])} "
+                     f"| {pooled:.2f} | {fmt_rmse(m['rmse_3c'])} | {ratio3:.2f} |")
     refs_line = sorted({(r["scene"], r["size"], round(r["ref_spp"]["facet"]), round(r["ref_spp"]["mitsuba"]))
                         for r in rows})
     lines += ["", "References (spp): " + "; ".join(f"{s} {sz}: facet {a}, Mitsuba {b}" for s, sz, a, b in refs_line)]
+    if any(r["median"][k] <= 0.0 for r in rows for k in ("rmse_own", "rmse_other", "rmse_3c")):
+        lines += ["", UNDER_NOISE_NOTE]
     cautions = reference_cautions(rows, ref_seconds)
     if cautions:
         lines += [""] + cautions  # printed with the table by write_outputs
