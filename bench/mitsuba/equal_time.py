@@ -502,8 +502,8 @@ def measure(scenes, progs, makers, budgets, repeats, spp, ref_seconds, refs_dir,
         b3 = base["median"]["rmse_3c"]
         ratio3 = m["rmse_3c"] / b3 if b3 > 0 else float("nan")
         lines.append(f"| {r['scene']} | {amount:g} | {r['program']} | {m['spp']:.1f} | {m['msamples_s']:.2f} | "
-                     f"{fmt_rmse(m['rmse_own'])} | {fmt_rmse(m['rmse_other'])} | {ratio:.2f} | {fmt_rmse(m['rmse_pooled'])} "
-                     f"| {pooled:.2f} | {fmt_rmse(m['rmse_3c'])} | {ratio3:.2f} |")
+                     f"{fmt_rmse(m['rmse_own'])} | {fmt_rmse(m['rmse_other'])} | {ratio:.2f} | "
+                     f"{fmt_rmse(m['rmse_pooled'])} | {pooled:.2f} | {fmt_rmse(m['rmse_3c'])} | {ratio3:.2f} |")
     refs_line = sorted({(r["scene"], r["size"], round(r["ref_spp"]["facet"]), round(r["ref_spp"]["mitsuba"]))
                         for r in rows})
     lines += ["", "References (spp): " + "; ".join(f"{s} {sz}: facet {a}, Mitsuba {b}" for s, sz, a, b in refs_line)]
