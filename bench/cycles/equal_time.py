@@ -277,8 +277,7 @@ def measure(scenes, progs, budgets, repeats, ref_seconds, refs_dir, out_dir, inf
     refs_line = sorted({(r["scene"], r["size"], round(r["ref_spp"]["facet"]), round(r["ref_spp"]["cycles"]))
                         for r in rows})
     lines += ["", "References (spp): " + "; ".join(f"{s} {sz}: facet {a}, Cycles {b}" for s, sz, a, b in refs_line)]
-    if any(r["median"][k] <= 0.0 for r in rows for k in ("rmse_own", "rmse_other", "rmse_3c")):
-        lines += ["", met.UNDER_NOISE_NOTE]
+    lines += met.under_noise_lines(rows)
     info["rows"] = rows
     met.write_outputs(out_dir, "cycles_equal_time", lines, info)
 

@@ -332,6 +332,13 @@ def fmt_rmse(x):
     return f"{x:.4g}" if x > 0.0 else UNDER_NOISE
 
 
+def under_noise_lines(rows):
+    """The note for under a table of rows (each with its "median" figures) where any RMSE
+    clamped at 0, as lines to append; none otherwise."""
+    clamped = any(r["median"][k] <= 0.0 for r in rows for k in ("rmse_own", "rmse_other", "rmse_3c"))
+    return ["", UNDER_NOISE_NOTE] if clamped else []
+
+
 # --------------------------------------------------------------------------------------
 # Agreement in mean (--check)
 
@@ -507,8 +514,7 @@ def measure(scenes, progs, makers, budgets, repeats, spp, ref_seconds, refs_dir,
     refs_line = sorted({(r["scene"], r["size"], round(r["ref_spp"]["facet"]), round(r["ref_spp"]["mitsuba"]))
                         for r in rows})
     lines += ["", "References (spp): " + "; ".join(f"{s} {sz}: facet {a}, Mitsuba {b}" for s, sz, a, b in refs_line)]
-    if any(r["median"][k] <= 0.0 for r in rows for k in ("rmse_own", "rmse_other", "rmse_3c")):
-        lines += ["", UNDER_NOISE_NOTE]
+    lines += under_noise_lines(rows)
     cautions = reference_cautions(rows, ref_seconds)
     if cautions:
         lines += [""] + cautions  # printed with the table by write_outputs
