@@ -210,6 +210,56 @@ TEST(Environment, CompensatedPdf) {
     EXPECT_EQ(environment_sampling_distribution(asked, FC_STRATEGY_MIS), sky.distribution);
 }
 
+// Each row's bound of the density (env_row_pdf_bound, which glass's choice reads before a
+// texel's density: kernels/integrator/glass_choice.cl) is never below env_pdf in its row, at
+// every texel centre and at directions spread over the sphere, and equals it at the row's most
+// likely texel (the same operations on the same probability): so a choice the bound settles is
+// the one the density would make. On a sun and sky, plain and compensated, and a smooth map.
+TEST(Environment, RowBoundsHoldEveryDensity) {
+    ClContext& ctx = test::context();
+    SunSkyParams sp;
+    EnvironmentMap sky = sun_sky_environment(sp, 256);
+    set_environment_rotation(sky, test_rotation());
+    for (const EnvironmentMap& e : {sky, compensated(sky), smooth_env(200, 100, test_rotation())}) {
+        std::vector<cl_float4> dirs;
+        std::vector<double> wts;
+        texel_centres(e, dirs, wts);
+        const std::size_t centres = dirs.size();
+        for (int i = 0; i < 4096; ++i) {
+            const double z = 1.0 - 2.0 * (i + 0.5) / 4096.0, ph = 2.399963 * i, s = std::sqrt(1.0 - z * z);
+            dirs.push_back({{float(s * std::cos(ph)), float(s * std::sin(ph)), float(z), 0.0f}});
+        }
+        const DeviceEnv d(e);
+        cl::Buffer in(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, dirs.size() * sizeof(cl_float4),
+                      dirs.data());
+        cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, dirs.size() * sizeof(cl_float4));
+        cl::Kernel k(test::program(kProgram), "env_row_bounds");
+        k.setArg(0, d.params), k.setArg(1, d.texels), k.setArg(2, d.dist), k.setArg(3, in), k.setArg(4, out);
+        ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(dirs.size()));
+        std::vector<cl_float4> r(dirs.size());
+        ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, r.size() * sizeof(cl_float4), r.data());
+        const int h = e.params.height;
+        std::vector<int> attained(h, 0);
+        std::size_t finite = 0;
+        for (std::size_t i = 0; i < r.size(); ++i) {
+            const float pdf = r[i].s[0], bound = r[i].s[1];
+            const int row = int(r[i].s[2]);
+            ASSERT_TRUE(row >= 0 && row < h) << "direction " << i;
+            if (!(std::isfinite(bound))) continue;  // sin(theta) = 0: the density is read
+            ++finite;
+            ASSERT_GE(bound, pdf) << "direction " << i << ", row " << row;
+            if (i < centres && bound == pdf && pdf > 0.0f) attained[row] = 1;
+        }
+        EXPECT_GT(finite, r.size() * 99 / 100);
+        // the rows whose texels are lit: the bound is their most likely texel's density
+        int lit = 0, tight = 0;
+        for (int y = 0; y < h; ++y)
+            if (e.distribution[std::size_t(y) + 1] > e.distribution[std::size_t(y)]) ++lit, tight += attained[y];
+        EXPECT_GT(lit, h / 4);  // compensation leaves the rows below the mean black
+        EXPECT_EQ(tight, lit);
+    }
+}
+
 TEST(Environment, RotationAndConvention) {
     // every texel of a map with distinct values is found at the direction the documented
     // convention gives it, after the rotation

@@ -115,5 +115,63 @@ TEST(GlassChoice, ReflectsTowardTheSunAndStaysUnbiased) {
     EXPECT_NEAR(inside.q, wide_choice(test::dl::fresnel(cos_sun, 1.0 / 1.5)), 1e-5);
 }
 
+// The choice reads a texel's density only where its row's bound (env_row_pdf_bound) could
+// raise q: at every wo it tried, the q it makes is, to the bit, the one the density read at
+// every mirror direction makes. The mirror directions sweep the sphere and crowd around the
+// sun, where the bound passes the share and the density decides (both cases are counted).
+TEST(GlassChoice, RowBoundLeavesTheChoiceUnchanged) {
+    SunSkyParams sp;
+    sp.elevation_degrees = 30.0f;
+    sp.azimuth_degrees = -60.0f;
+    const SunSkyImage img = render_sun_sky(sp, 512);
+    EnvironmentMap e = sun_sky_environment(sp, 512);
+    const glm::vec3 sun = glm::normalize(glm::vec3(img.sun_direction[0], img.sun_direction[1], img.sun_direction[2]));
+    const glm::vec3 n = glm::normalize(glm::vec3(0.3f, 1.0f, -0.2f));
+    std::vector<cl_float4> wos;
+    auto mirror_of = [&](glm::vec3 r) {
+        const glm::vec3 wo = 2.0f * glm::dot(r, n) * n - r;
+        wos.push_back(cl_float4{{wo.x, wo.y, wo.z, 0.0f}});
+    };
+    for (int i = 0; i < 16384; ++i) {  // the sphere, Fibonacci spiral
+        const float z = 1.0f - 2.0f * (float(i) + 0.5f) / 16384.0f, ph = 2.399963f * float(i),
+                    s = std::sqrt(1.0f - z * z);
+        mirror_of(glm::vec3(s * std::cos(ph), z, s * std::sin(ph)));
+    }
+    const glm::vec3 a = glm::normalize(glm::cross(sun, glm::vec3(0.0f, 0.0f, 1.0f))), b = glm::cross(sun, a);
+    for (int i = 0; i < 16384; ++i) {  // within 3 degrees of the sun
+        const float r = 0.052f * std::sqrt((float(i) + 0.5f) / 16384.0f), ph = 2.399963f * float(i);
+        mirror_of(glm::normalize(sun + r * std::cos(ph) * a + r * std::sin(ph) * b));
+    }
+    const FcMaterial m = smooth_glass(1.5f);
+    for (const bool rotated : {false, true}) {
+        if (rotated) set_environment_rotation(e, test_rotation());
+        DeviceEnv d(e);
+        ClContext& ctx = test::context();
+        cl::Buffer mb(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, sizeof(FcMaterial),
+                      const_cast<FcMaterial*>(&m));
+        cl::Buffer in(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, wos.size() * sizeof(cl_float4),
+                      wos.data());
+        cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, wos.size() * sizeof(cl_float2));
+        cl::Kernel k(test::program("kernels/test/glass_choice_kernels.cl"), "glass_choice_q");
+        k.setArg(0, d.params), k.setArg(1, d.texels), k.setArg(2, d.dist), k.setArg(3, mb);
+        k.setArg(4, cl_float4{{n.x, n.y, n.z, 0.0f}}), k.setArg(5, in), k.setArg(6, out);
+        ctx.queue().enqueueNDRangeKernel(k, cl::NullRange, cl::NDRange(wos.size()));
+        std::vector<cl_float2> r(wos.size());
+        ctx.queue().enqueueReadBuffer(out, CL_TRUE, 0, r.size() * sizeof(cl_float2), r.data());
+        std::size_t raised = 0, widened = 0;
+        for (std::size_t i = 0; i < r.size(); ++i) {
+            ASSERT_EQ(r[i].s[0], r[i].s[1]) << "wo " << i << (rotated ? ", the map rotated" : "");
+            const float f =
+                float(test::dl::fresnel(double(glm::dot(glm::vec3(wos[i].s[0], wos[i].s[1], wos[i].s[2]), n)), 1.5));
+            if (r[i].s[0] > float(wide_choice(f)) + 1e-4f) ++raised;
+            else ++widened;
+        }
+        std::printf("[ glass    ] %s: %zu choices raised toward the light, %zu left as dielectric_choice's\n",
+                    rotated ? "rotated map" : "map frame = world", raised, widened);
+        EXPECT_GT(raised, 100u);
+        EXPECT_GT(widened, 10000u);
+    }
+}
+
 }  // namespace
 }  // namespace facet

@@ -161,6 +161,18 @@ void append_guides(std::vector<float>& dist, int w, int h) {
     for (int y = 0; y < h; ++y) append_guide(dist, std::size_t(h + 1) + std::size_t(y) * (w + 1), w);
 }
 
+// Appends to `dist` each row's largest conditional probability, the largest step of its
+// conditional cdf as the kernels take it (a float difference of two entries): with the row's
+// own probability it bounds the density of every direction in the row (env_row_pdf_bound).
+void append_row_bounds(std::vector<float>& dist, int w, int h) {
+    std::vector<float> bound(h, 0.0f);
+    for (int y = 0; y < h; ++y) {
+        const float* cond = dist.data() + std::size_t(h + 1) + std::size_t(y) * (w + 1);
+        for (int x = 0; x < w; ++x) bound[y] = std::max(bound[y], cond[x + 1] - cond[x]);
+    }
+    dist.insert(dist.end(), bound.begin(), bound.end());
+}
+
 // Fills `dist` (the layout of EnvironmentMap::distribution) with the cdfs of texel weights
 // max(luminance - subtract, 0) * sin(theta), the luminance as texel_luminance gives it,
 // and returns their sum; `mean` gets the integral of the luminance over the sphere.
@@ -201,6 +213,7 @@ double build_cdfs(const EnvironmentMap& env, double subtract, std::vector<float>
     }
     marginal[h] = 1.0f;
     append_guides(dist, w, h);
+    append_row_bounds(dist, w, h);
     return total;
 }
 

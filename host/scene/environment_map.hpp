@@ -20,6 +20,9 @@
 //      env_guide_size(n) (kernels/shared/environment_layout.h): entry k is the interval
 //      holding k / g, the bits of a uint; env_sample bisects only between entries k and
 //      k + 1 (kernels/lights/environment.cl, env_find_interval)
+//      then H floats, each row's largest conditional probability (the largest step of its
+//      conditional cdf): the bound of a row's densities that glass's choice reads first
+//      (kernels/lights/environment.cl, env_row_pdf_bound)
 //    Texel (x, y) weighs f = luminance(texel * scale) * sin(theta of row y's centre) (for
 //    the bilinear lookup, the luminance is its mean over the texel's square); a
 //    texel's probability is the product of its two cdf steps. params.total is the

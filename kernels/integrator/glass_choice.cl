@@ -13,7 +13,8 @@
  * sampling density there, which integrates to 1 over the sphere), weighs the reflection's
  * expected share of the light, F rho / (F rho + 1 - F), the refraction's taken at the mean;
  * reflection is chosen with that probability where it exceeds dielectric_choice's, at most
- * FC_GLASS_LIGHT_CHOICE_MAX. Under a uniform environment rho is 1 and the share is F: nothing
+ * FC_GLASS_LIGHT_CHOICE_MAX (rho read only where its row's bound could raise the choice:
+ * env_row_pdf_bound). Under a uniform environment rho is 1 and the share is F: nothing
  * changes. From inside the ball the mirror direction stays inside, and the choice is
  * dielectric_choice's. Only for materials whose choice is widened (FC_MAT_WIDE_CHOICE, scenes
  * whose light is not uniform), smooth (the delta lobes have no density to evaluate, so MIS
@@ -44,7 +45,21 @@ inline float glass_light_q(__constant const FcEnvironment* env, __global const f
                            __global const float* dist, const FcMaterial* m, const Frame* f, float3 wo, float fr) {
     const float q = dielectric_choice(m, fr);
     if (!(wo.z > 0.0f) || !(fr > 0.0f) || !(q < FC_GLASS_LIGHT_CHOICE_MAX)) return q;
-    const float rho = 4.0f * FC_PI * env_pdf(env, texels, dist, frame_to_world(f, (float3)(-wo.x, -wo.y, wo.z)));
+    const float3 wr = frame_to_world(f, (float3)(-wo.x, -wo.y, wo.z));
+    float rho;
+    if (env->enabled && env->width > 0 && env->filter != FC_ENV_FILTER_BILINEAR) {
+        /* a nearest lookup's density (env_pdf's), unless its row's bound already leaves the share
+         * below q (with a margin of 0.1 %, far above the share's rounding): then q, as the
+         * density would give, without the read of the texel's column */
+        float sin_theta;
+        float2 uv;
+        const int2 t = env_locate(env, wr, &sin_theta, &uv);
+        const float bound = 4.0f * FC_PI * env_row_pdf_bound(env, dist, t.y, sin_theta);
+        if (fr * bound / (fr * bound + (1.0f - fr)) < 0.999f * q) return q;
+        rho = 4.0f * FC_PI * env_texel_pdf(env, dist, t, sin_theta);
+    } else {
+        rho = 4.0f * FC_PI * env_pdf(env, texels, dist, wr);
+    }
     const float share = fr * rho / (fr * rho + (1.0f - fr));
     return share > q ? fmin(share, FC_GLASS_LIGHT_CHOICE_MAX) : q;
 }

@@ -122,6 +122,22 @@ inline float env_texel_pdf(__constant const FcEnvironment* env, __global const f
     return isfinite(pdf) ? pdf : 0.0f;
 }
 
+/* An upper bound of env_texel_pdf over the texels of row y at sin(theta) `sin_theta`: the same
+ * operations with the row's largest conditional probability (the table after the guide tables,
+ * host/scene/environment_map.hpp) for the texel's, which no rounding can carry below
+ * env_texel_pdf's (float rounding is monotone); infinite or NaN where sin_theta is 0. It reads
+ * the small marginal cdf and one float a row, not the row's conditional cdf (megabytes for a
+ * map 1024 texels wide, most of a density's cost on a CPU). */
+inline float env_row_pdf_bound(__constant const FcEnvironment* env, __global const float* dist, int y,
+                               float sin_theta) {
+    if (!(env->total > 0.0f)) return 0.0f;
+    const uint w = (uint)env->width, h = (uint)env->height;
+    const uint bounds =
+        (h + 1u) + h * (w + 1u) + (env_guide_size(h) + 1u) + h * (env_guide_size(w) + 1u); /* past the guides */
+    const float p_row = dist[y + 1] - dist[y];
+    return p_row * (float)env->height * dist[bounds + (uint)y] * (float)env->width * FC_INV_2PI2 / sin_theta;
+}
+
 /* The pdf of env_sample at a direction in texel t, where the lookup gives `value` (scale
  * included): the texel's, and for the bilinear lookup times the density inside the texel
  * relative to a uniform one, the interpolated luminance over its mean over the texel's square

@@ -15,7 +15,8 @@
  * Sampling uses a piecewise-constant 2D distribution over luminance x sin(theta):
  * a marginal cdf over rows (H + 1 floats) then a conditional cdf per row (W + 1 floats
  * each) in the distribution buffer, then their guide tables (Chen & Asau 1974) that
- * start each search near its answer (host/scene/environment_map.hpp documents the layout;
+ * start each search near its answer, then each row's largest conditional probability
+ * (host/scene/environment_map.hpp documents the layout;
  * docs/environment.md the whole). */
 #ifndef FACET_SHARED_ENVIRONMENT_LAYOUT_H
 #define FACET_SHARED_ENVIRONMENT_LAYOUT_H

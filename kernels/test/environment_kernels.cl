@@ -27,6 +27,17 @@ __kernel void env_eval_batch(__constant const FcEnvironment* env, __global const
     out[i] = (float4)(env_radiance(env, texels, d), env_pdf(env, texels, dist, d));
 }
 
+/* At each direction of `dirs` (xyz): (env_pdf, the bound of its row, env_row_pdf_bound, the row). */
+__kernel void env_row_bounds(__constant const FcEnvironment* env, __global const float4* texels,
+                             __global const float* dist, __global const float4* dirs, __global float4* out) {
+    uint i = (uint)get_global_id(0);
+    float3 d = dirs[i].xyz;
+    float sin_theta;
+    float2 uv;
+    const int2 t = env_locate(env, d, &sin_theta, &uv);
+    out[i] = (float4)(env_pdf(env, texels, dist, d), env_row_pdf_bound(env, dist, t.y, sin_theta), (float)t.y, 0.0f);
+}
+
 /* `per_item` samples per work-item, each binned by its texel in blocks of bu x bv
  * texels: bin = (y / bv) * (width / bu) + x / bu, with `cells` = the number of bins for
  * a refused sample (pdf 0) and cells + 1 for an invalid one (non-finite or negative).

@@ -26,3 +26,23 @@ __kernel void glass_choice_estimate(__constant const FcEnvironment* env, __globa
     }
     out[i] = (float4)(reflected, reflections, refracted, q);
 }
+
+/* glass_light_q at the surface of normal n seen from each wo_world of `wos` (xyz), and the q of
+ * env_pdf's density read at every mirror direction (the choice's own formula without the rows'
+ * bound): (q, the density's q). */
+__kernel void glass_choice_q(__constant const FcEnvironment* env, __global const float4* texels,
+                             __global const float* dist, __global const FcMaterial* mat, float4 n,
+                             __global const float4* wos, __global float2* out) {
+    const uint i = (uint)get_global_id(0);
+    const FcMaterial m = *mat;
+    const Frame f = frame_from_normal(normalize(n.xyz));
+    const float3 wo = frame_to_local(&f, normalize(wos[i].xyz));
+    const float fr = fresnel_dielectric(wo.z, m.ior);
+    float q = dielectric_choice(&m, fr);
+    if (wo.z > 0.0f && fr > 0.0f && q < FC_GLASS_LIGHT_CHOICE_MAX) {
+        const float rho = 4.0f * FC_PI * env_pdf(env, texels, dist, frame_to_world(&f, (float3)(-wo.x, -wo.y, wo.z)));
+        const float share = fr * rho / (fr * rho + (1.0f - fr));
+        q = share > q ? fmin(share, FC_GLASS_LIGHT_CHOICE_MAX) : q;
+    }
+    out[i] = (float2)(glass_light_q(env, texels, dist, &m, &f, wo, fr), q);
+}
