@@ -27,7 +27,7 @@ __kernel void env_eval_batch(__constant const FcEnvironment* env, __global const
     out[i] = (float4)(env_radiance(env, texels, d), env_pdf(env, texels, dist, d));
 }
 
-/* At each direction of `dirs` (xyz): (env_pdf, the bound of its row, env_row_pdf_bound, the row). */
+/* At each direction of `dirs` (xyz): (env_pdf, its row's bound env_row_pdf_bound, the row, 0). */
 __kernel void env_row_bounds(__constant const FcEnvironment* env, __global const float4* texels,
                              __global const float* dist, __global const float4* dirs, __global float4* out) {
     uint i = (uint)get_global_id(0);
