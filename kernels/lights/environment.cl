@@ -112,20 +112,25 @@ inline float3 env_radiance(__constant const FcEnvironment* env, __global const f
     return env_lookup(env, texels, uv, t) * load3c(env->scale);
 }
 
+/* The solid-angle density of a texel of row probability p_row and conditional probability
+ * p_col at sin(theta) `sin_theta`: p(u, v) / (2 pi^2 sin(theta)). Non-decreasing in p_col as
+ * float rounding is monotone, which env_row_pdf_bound relies on. */
+inline float env_density(__constant const FcEnvironment* env, float p_row, float p_col, float sin_theta) {
+    return p_row * (float)env->height * p_col * (float)env->width * FC_INV_2PI2 / sin_theta;
+}
+
 /* The solid-angle pdf of texel t at sin(theta) `sin_theta` (0 at the poles). */
 inline float env_texel_pdf(__constant const FcEnvironment* env, __global const float* dist, int2 t, float sin_theta) {
     if (!(env->total > 0.0f) || !(sin_theta > 0.0f)) return 0.0f;
     __global const float* cond = dist + (env->height + 1) + t.y * (env->width + 1);
-    float p_row = dist[t.y + 1] - dist[t.y];
-    float p_col = cond[t.x + 1] - cond[t.x];
-    float pdf = p_row * (float)env->height * p_col * (float)env->width * FC_INV_2PI2 / sin_theta;
+    float pdf = env_density(env, dist[t.y + 1] - dist[t.y], cond[t.x + 1] - cond[t.x], sin_theta);
     return isfinite(pdf) ? pdf : 0.0f;
 }
 
-/* An upper bound of env_texel_pdf over the texels of row y at sin(theta) `sin_theta`: the same
- * operations with the row's largest conditional probability (the table after the guide tables,
- * host/scene/environment_map.hpp) for the texel's, which no rounding can carry below
- * env_texel_pdf's (float rounding is monotone); infinite or NaN where sin_theta is 0. It reads
+/* An upper bound of env_texel_pdf over the texels of row y at sin(theta) `sin_theta`:
+ * env_density with the row's largest conditional probability (the table after the guide
+ * tables, host/scene/environment_map.hpp) for the texel's; infinite or NaN where sin_theta is
+ * 0. It reads
  * the small marginal cdf and one float a row, not the row's conditional cdf (megabytes for a
  * map 1024 texels wide, most of a density's cost on a CPU). */
 inline float env_row_pdf_bound(__constant const FcEnvironment* env, __global const float* dist, int y,
@@ -134,8 +139,7 @@ inline float env_row_pdf_bound(__constant const FcEnvironment* env, __global con
     const uint w = (uint)env->width, h = (uint)env->height;
     const uint bounds =
         (h + 1u) + h * (w + 1u) + (env_guide_size(h) + 1u) + h * (env_guide_size(w) + 1u); /* past the guides */
-    const float p_row = dist[y + 1] - dist[y];
-    return p_row * (float)env->height * dist[bounds + (uint)y] * (float)env->width * FC_INV_2PI2 / sin_theta;
+    return env_density(env, dist[y + 1] - dist[y], dist[bounds + (uint)y], sin_theta);
 }
 
 /* The pdf of env_sample at a direction in texel t, where the lookup gives `value` (scale
