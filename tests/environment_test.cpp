@@ -225,10 +225,7 @@ TEST(Environment, RowBoundsHoldEveryDensity) {
         std::vector<double> wts;
         texel_centres(e, dirs, wts);
         const std::size_t centres = dirs.size();
-        for (int i = 0; i < 4096; ++i) {
-            const double z = 1.0 - 2.0 * (i + 0.5) / 4096.0, ph = 2.399963 * i, s = std::sqrt(1.0 - z * z);
-            dirs.push_back({{float(s * std::cos(ph)), float(s * std::sin(ph)), float(z), 0.0f}});
-        }
+        for (const cl_float4& v : spiral_directions(4096)) dirs.push_back(v);
         const DeviceEnv d(e);
         cl::Buffer in(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, dirs.size() * sizeof(cl_float4),
                       dirs.data());
@@ -284,11 +281,7 @@ TEST(Environment, RotationAndConvention) {
     // world -> map -> world and world -> (u, v) -> world
     DeviceEnv d(e);
     ClContext& ctx = test::context();
-    std::vector<cl_float4> rand_dirs;
-    for (int i = 0; i < 4096; ++i) {
-        const double z = 1.0 - 2.0 * (i + 0.5) / 4096.0, ph = 2.399963 * i, s = std::sqrt(1.0 - z * z);
-        rand_dirs.push_back({{float(s * std::cos(ph)), float(s * std::sin(ph)), float(z), 0.0f}});
-    }
+    std::vector<cl_float4> rand_dirs = spiral_directions(4096);
     cl::Buffer in(ctx.context(), CL_MEM_READ_ONLY | CL_MEM_COPY_HOST_PTR, rand_dirs.size() * sizeof(cl_float4),
                   rand_dirs.data());
     cl::Buffer out(ctx.context(), CL_MEM_WRITE_ONLY, rand_dirs.size() * sizeof(float));

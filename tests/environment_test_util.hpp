@@ -58,6 +58,16 @@ inline cl_float4 to_world(const FcEnvironment& p, const glm::dvec3& m) {
     return cl_float4{{float(w[0]), float(w[1]), float(w[2]), 0.0f}};
 }
 
+// n unit directions spread evenly over the sphere (a Fibonacci spiral about z).
+inline std::vector<cl_float4> spiral_directions(int n) {
+    std::vector<cl_float4> dirs;
+    for (int i = 0; i < n; ++i) {
+        const double z = 1.0 - 2.0 * (i + 0.5) / n, ph = 2.399963 * i, s = std::sqrt(1.0 - z * z);
+        dirs.push_back({{float(s * std::cos(ph)), float(s * std::sin(ph)), float(z), 0.0f}});
+    }
+    return dirs;
+}
+
 // A smooth map: a bright lobe, a band and a gradient (values > 0), w x h texels.
 inline std::vector<float> smooth_map(int w, int h) {
     std::vector<float> rgb(std::size_t(w) * h * 3);

@@ -132,11 +132,7 @@ TEST(GlassChoice, RowBoundLeavesTheChoiceUnchanged) {
         const glm::vec3 wo = 2.0f * glm::dot(r, n) * n - r;
         wos.push_back(cl_float4{{wo.x, wo.y, wo.z, 0.0f}});
     };
-    for (int i = 0; i < 16384; ++i) {  // the sphere, Fibonacci spiral
-        const float z = 1.0f - 2.0f * (float(i) + 0.5f) / 16384.0f, ph = 2.399963f * float(i),
-                    s = std::sqrt(1.0f - z * z);
-        mirror_of(glm::vec3(s * std::cos(ph), z, s * std::sin(ph)));
-    }
+    for (const cl_float4& v : spiral_directions(16384)) mirror_of(glm::vec3(v.s[0], v.s[1], v.s[2]));
     const glm::vec3 a = glm::normalize(glm::cross(sun, glm::vec3(0.0f, 0.0f, 1.0f))), b = glm::cross(sun, a);
     for (int i = 0; i < 16384; ++i) {  // within 3 degrees of the sun
         const float r = 0.052f * std::sqrt((float(i) + 0.5f) / 16384.0f), ph = 2.399963f * float(i);
