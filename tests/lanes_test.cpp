@@ -194,6 +194,23 @@ TEST(Lanes, PlainBaseSameBitsAtWidths1And8) {
     EXPECT_GT(made, int(out.size() * 8) / 2);
 }
 
+TEST(Lanes, RoughDielectricSameBitsAsTheMaterialsFunctions) {
+    // dielectric.cl's scalar functions of a material against the lanes' rough dielectric at
+    // W = 8 (the packet paths' route): each vector mixes GGX and Beckmann lanes, separable and
+    // height-correlated masking, F's own and the widened choice, compensated lanes, wo above and
+    // below, indices above and below 1, reflections and refractions
+    const std::vector<LanesIn> in = microfacet_inputs();
+    EXPECT_EQ(mismatches("lanes_rough_dielectric", in, 4), 0);
+    // most elements make a sample, and the second directions are evaluated on both sides
+    std::vector<LanesOut> out =
+        test::run_elementwise<LanesIn, LanesOut>("kernels/test/lanes_kernels.cl", "lanes_rough_dielectric", in);
+    int made = 0, valued = 0;
+    for (const LanesOut& o : out)
+        for (int j = 0; j < 8; ++j) made += o.one[0][j] != -1.0f, valued += o.one[3][j] > 0.0f;
+    EXPECT_GT(made, int(out.size() * 8) / 2);
+    EXPECT_GT(valued, int(out.size() * 8) / 4);
+}
+
 TEST(Lanes, SphereSameBitsAtWidths1And8) {
     // a, b, c: the ray's origin and direction; d: the radius; with rays through the centre,
     // grazing, starting on the sphere and of zero length

@@ -334,7 +334,7 @@ TEST(PacketRender, SameImageAsTheScalarKernelWithEveryModel) {
 // Refraction per lane: glass_metal_sky's smooth, rough, tinted and Beckmann dielectrics and
 // rough conductors under the sun and sky (light found through glass by next-event estimation,
 // rays leaving from the far side, roulette's eta_scale), then its water absorbing inside
-// (Beer-Lambert on the segments that run through it).
+// (Beer-Lambert on the segments that run through it), then every dielectric rough (in lanes).
 TEST(PacketRender, SameImageAsTheScalarKernelWithGlass) {
     Scene scene = load_scene(test::scenes_dir() + "/glass_metal_sky.json");
     ASSERT_NE(scene_features(scene) & feature::kDIELECTRIC, 0u);
@@ -355,6 +355,20 @@ TEST(PacketRender, SameImageAsTheScalarKernelWithGlass) {
         }
     ASSERT_NE(scene_features(scene) & feature::kVOLUME, 0u);
     expect_packets_match_the_scalar_kernel(scene, "glass_metal_sky, absorbing glass", "16");
+    // Every dielectric rough, GGX and Beckmann in turn, one anisotropic: most packets meet rough
+    // glass in several lanes at once, and evaluate and sample it in lanes
+    // (kernels/bsdf/dielectric_lanes.cl) rather than lane by lane
+    Scene rough = load_scene(test::scenes_dir() + "/glass_metal_sky.json");
+    int k = 0;
+    for (Material& m : rough.materials)
+        if (m.specular_model == FC_SPECULAR_DIELECTRIC) {
+            m.ndf = k % 2 ? FC_NDF_BECKMANN : FC_NDF_GGX;
+            m.alpha_x = 0.1f + 0.05f * float(k);
+            m.alpha_y = k == 2 ? 0.3f : m.alpha_x;
+            ++k;
+        }
+    ASSERT_GE(k, 4);
+    for (const char* w : {"8", "16"}) expect_packets_match_the_scalar_kernel(rough, "glass_metal_sky, rough glass", w);
 }
 
 // glTF's layers, metal and anisotropy per lane: material_grid's models with a clearcoat, a

@@ -37,7 +37,11 @@
  * albedo scaling, energy_compensation.cl); not reciprocal.
  *
  * Every output is finite and >= 0; degenerate half vectors (|n_i wi + n_o wo| = 0, as
- * wi = -wo at eta ~ 1) and wo or wi on the surface (z = 0) give f = 0 and pdf = 0. */
+ * wi = -wo at eta ~ 1) and wo or wi on the surface (z = 0) give f = 0 and pdf = 0.
+ *
+ * The rough interface's formulas are written once, over lanes, in dielectric_lanes.cl: these
+ * functions are its W = 1 calls with any NDF of ndf.cl, and the packet paths run its GGX and
+ * Beckmann visible-normal forms at W = 8 or 16 (rough_dielectric_in_lanes). */
 #ifndef FACET_BSDF_DIELECTRIC_CL
 #define FACET_BSDF_DIELECTRIC_CL
 
@@ -47,6 +51,7 @@
 #include "kernels/bsdf/fresnel.cl"
 #include "kernels/bsdf/ndf.cl"
 #include "kernels/bsdf/refraction.cl"
+#include "kernels/lanes/scalar.cl" /* the W = 1 forms of kernels/bsdf/dielectric_lanes.cl */
 #include "kernels/util/math.cl"
 
 /* An index-matched interface (|ior - 1| below FC_IOR_MATCHED) does not scatter: the
@@ -64,76 +69,34 @@ inline bool dielectric_is_smooth(const FcMaterial* m) {
 inline float3 dielectric_tint(const FcMaterial* m) { return load3p(m->specular); }
 
 /* w turned to the +z side. */
-inline float3 dielectric_upper(float3 w) { return w.z < 0.0f ? -w : w; }
+inline float3 dielectric_upper(float3 w) { return dielectric_upper_l1(w); }
 
-/* Shadowing-masking for both sides, Lambda of |w.z|: 1 + Lambda(w) as the projected area
- * seen from w turned up over |w.z| (geometry.cl), with area_o = ndf_projected_area(m,
- * dielectric_upper(wo)), which the visible normals' density divides by too. */
-inline float dielectric_G_area(const FcMaterial* m, float3 wo, float3 wi, float area_o) {
-    float lo = area_o / fabs(wo.z);
-    float li = ndf_projected_area(m, dielectric_upper(wi)) / fabs(wi.z);
-    if (m->geometry == FC_G_SMITH_SEPARABLE) return 1.0f / (lo * li);
-    return 1.0f / (lo + li - 1.0f);
+/* The material's parameters as dielectric_lanes.cl takes them at W = 1, with the projected
+ * area seen from wo and the compensation's albedo read at wo where it is on. */
+inline RoughDielectric_l1 rough_dielectric_of(const FcMaterial* m, float3 wo) {
+    RoughDielectric_l1 b;
+    const float2 a = ndf_alpha(m);
+    b.tint = dielectric_tint(m);
+    b.ax = a.x;
+    b.ay = a.y;
+    b.ior = m->ior;
+    b.ggx = m->ndf == FC_NDF_GGX;
+    b.beckmann = m->ndf == FC_NDF_BECKMANN;
+    b.correlated = m->geometry != FC_G_SMITH_SEPARABLE;
+    b.wide = (m->flags & FC_MAT_WIDE_CHOICE) != 0u;
+    b.ec = ec_enabled(m);
+    b.ec_e = b.ec ? ec_dielectric_albedo(m, wo) : 1.0f;
+    b.area_o = ndf_projected_area(m, dielectric_upper(wo));
+    return b;
 }
 
-/* The (generalised) half vector of wo and wi, on the +z side, and etap = n_i / n_o
- * (1 for a reflection) and |wo + etap wi|; false when degenerate or when wo or wi sees
- * the back of h. */
-typedef struct {
-    float3 h;
-    float etap;
-    float len;
-    bool reflect;
-} DielectricPair;
-
-inline bool dielectric_pair(const FcMaterial* m, float3 wo, float3 wi, DielectricPair* p) {
-    float co = wo.z, ci = wi.z;
-    if (!(fabs(co) > 0.0f) || !(fabs(ci) > 0.0f)) return false;
-    p->reflect = co * ci > 0.0f;
-    p->etap = p->reflect ? 1.0f : relative_eta(m->ior, co);
-    float3 v = wo + p->etap * wi;
-    p->len = length(v);
-    if (!(p->len > 0.0f) || !isfinite(p->len)) return false;
-    p->h = v / p->len;
-    if (p->h.z < 0.0f) p->h = -p->h;
-    return dot(p->h, wi) * ci > 0.0f && dot(p->h, wo) * co > 0.0f;
-}
-
-/* The Fresnel factor of the pair's lobe: F for a reflection; for a refraction 1 - F,
- * as the transmittance of the pair's two cosines (well conditioned near the critical
- * angle, and reciprocal). */
-inline float dielectric_lobe_fresnel(const FcMaterial* m, const DielectricPair* p, float oh, float ih) {
-    if (p->reflect) return fresnel_dielectric(oh, m->ior);
-    return fresnel_dielectric_transmittance(fabs(oh), fabs(ih), p->etap);
-}
-
-/* The density of h seen from wo (either side): the NDF's, for wo turned to +z; d = D(h) and
- * area_o = ndf_projected_area(m, dielectric_upper(wo)) are read for visible normals only. */
-inline float dielectric_pdf_h_at(const FcMaterial* m, float3 wo, float3 h, float d, float area_o) {
-    float3 wv = dielectric_upper(wo);
-    if (ndf_samples_visible(m)) return d * fmax(dot(wv, h), 0.0f) / area_o;
-    return ndf_pdf(m, wv, h);
-}
-
-/* The BSDF of the pair p (oh = wo.h, ih = wi.h, fl its lobe's Fresnel factor) where D(h) = d,
- * area_o as dielectric_G_area takes it. */
-inline float3 dielectric_eval_at(const FcMaterial* m, float3 wo, float3 wi, const DielectricPair* p, float d, float oh,
-                                 float ih, float fl, float area_o) {
-    if (!(d > 0.0f)) return (float3)(0.0f);
-    float g = dielectric_G_area(m, wo, wi, area_o);
-    float3 f;
-    if (p->reflect) {
-        f = (float3)(d * g * fl / (4.0f * fabs(wo.z) * fabs(wi.z)));
-    } else {
-        /* Eq. 21 as the BTDF of importance (no scaling, pbrt-v4's Importance mode),
-         * (1 - F) D G |wi.h| |wo.h| etap^2 / (|cos_i| |cos_o| |wo + etap wi|^2), times the
-         * radiance scaling 1 / etap^2 (|wo + etap wi| = |n_i wi.h + n_o wo.h| / n_o). */
-        float importance =
-            fl * d * g * fabs(ih * oh) / (fabs(wi.z) * fabs(wo.z)) * (p->etap * p->etap) / (p->len * p->len);
-        f = dielectric_tint(m) * (importance / (p->etap * p->etap));
-    }
-    if (ec_enabled(m)) f /= ec_dielectric_albedo(m, wo); /* Turquin 2019 (energy_compensation.cl) */
-    return all_finite(f) ? fmax(f, (float3)(0.0f)) : (float3)(0.0f);
+/* Whether the packet paths evaluate and sample material m in lanes (dielectric_lanes.cl's
+ * rough_dielectric_*): a rough dielectric of GGX or Beckmann visible normals, as
+ * ndf_sample_two_sided draws them. */
+inline bool rough_dielectric_in_lanes(const FcMaterial* m) {
+    if (m->specular_model != FC_SPECULAR_DIELECTRIC || dielectric_is_smooth(m)) return false;
+    if (m->ndf == FC_NDF_GGX) return m->sampling == FC_SAMPLE_VISIBLE;
+    return m->ndf == FC_NDF_BECKMANN && m->sampling != FC_SAMPLE_ALL;
 }
 
 /* The probability of choosing the lobe whose Fresnel factor is fl (F for the reflection, 1 - F for
@@ -144,60 +107,49 @@ inline float3 dielectric_eval_at(const FcMaterial* m, float3 wo, float3 wi, cons
  * the sun once in 25 at normal incidence, each time carrying the sun's whole radiance: once the caustics are sampled,
  * the brightest fireflies of glass_metal_sky (docs/sampling.md, "Sampling toward glass"). F's own choice stays where
  * the light is uniform (a constant environment alone, the white furnace), where it is exact: every sample weighs 1. */
-#ifndef FC_DIELECTRIC_MIN_CHOICE
-#define FC_DIELECTRIC_MIN_CHOICE 0.25f
-#endif
 inline float dielectric_choice(const FcMaterial* m, float fl) {
-    fl = clamp(fl, 0.0f, 1.0f);
-    if (!(m->flags & FC_MAT_WIDE_CHOICE)) return fl;
-    return clamp(fl, fmin(FC_DIELECTRIC_MIN_CHOICE, 4.0f * fl),
-                 1.0f - fmin(FC_DIELECTRIC_MIN_CHOICE, 4.0f * (1.0f - fl)));
+    return dielectric_choice_l1((m->flags & FC_MAT_WIDE_CHOICE) != 0u, fl);
 }
 
-/* The density of wi for the pair p, from h's density pdf_h (fl: the lobe's Fresnel factor, which
- * dielectric_choice turns into the lobe's probability). */
-inline float dielectric_pdf_at(const FcMaterial* m, const DielectricPair* p, float oh, float ih, float fl,
-                               float pdf_h) {
-    const float q = dielectric_choice(m, fl);
-    float pdf =
-        p->reflect ? q * pdf_h / (4.0f * fabs(oh)) : q * pdf_h * (p->etap * p->etap) * fabs(ih) / (p->len * p->len);
-    return isfinite(pdf) ? fmax(pdf, 0.0f) : 0.0f;
+/* The density of the half vector h seen from wo: the visible normals' from d = D(h) and the
+ * projected area area_o seen from wo turned up, else the NDF's own (D cos). */
+inline float dielectric_pdf_h(const FcMaterial* m, float3 wo, float3 h, float d, float area_o) {
+    return ndf_samples_visible(m) ? dielectric_visible_pdf_h_l1(wo, h, d, area_o) : ndf_pdf(m, dielectric_upper(wo), h);
+}
+
+/* f(wo, wi) and, in *pdf, the density with which dielectric_sample draws wi: the pair, D(h),
+ * the Fresnel factor and the projected area seen from wo found once for both
+ * (dielectric_lanes.cl's formulas; the same bits as dielectric_eval and dielectric_pdf). */
+inline float3 dielectric_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, float* pdf) {
+    *pdf = 0.0f;
+    if (dielectric_is_smooth(m)) return (float3)(0.0f);
+    DielectricPair_l1 p;
+    dielectric_pair_l1(m->ior, wo, wi, &p);
+    if (!p.ok) return (float3)(0.0f);
+    const RoughDielectric_l1 b = rough_dielectric_of(m, wo);
+    const float d = ndf_D(m, p.h);
+    *pdf = dielectric_pdf_at_l1(&p, dielectric_choice_l1(b.wide, p.fl), dielectric_pdf_h(m, wo, p.h, d, b.area_o));
+    return dielectric_eval_at_l1(&b, wo, wi, &p, d, ndf_projected_area(m, dielectric_upper(wi)));
 }
 
 inline float3 dielectric_eval(const FcMaterial* m, float3 wo, float3 wi) {
-    DielectricPair p;
-    if (dielectric_is_smooth(m) || !dielectric_pair(m, wo, wi, &p)) return (float3)(0.0f);
-    float d = ndf_D(m, p.h);
-    if (!(d > 0.0f)) return (float3)(0.0f);
-    float oh = dot(wo, p.h), ih = dot(wi, p.h);
-    return dielectric_eval_at(m, wo, wi, &p, d, oh, ih, dielectric_lobe_fresnel(m, &p, oh, ih),
-                              ndf_projected_area(m, dielectric_upper(wo)));
+    if (dielectric_is_smooth(m)) return (float3)(0.0f);
+    DielectricPair_l1 p;
+    dielectric_pair_l1(m->ior, wo, wi, &p);
+    if (!p.ok) return (float3)(0.0f);
+    const RoughDielectric_l1 b = rough_dielectric_of(m, wo);
+    return dielectric_eval_at_l1(&b, wo, wi, &p, ndf_D(m, p.h), ndf_projected_area(m, dielectric_upper(wi)));
 }
 
 inline float dielectric_pdf(const FcMaterial* m, float3 wo, float3 wi) {
-    DielectricPair p;
-    if (dielectric_is_smooth(m) || !dielectric_pair(m, wo, wi, &p)) return 0.0f;
-    float oh = dot(wo, p.h), ih = dot(wi, p.h);
-    float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
+    if (dielectric_is_smooth(m)) return 0.0f;
+    DielectricPair_l1 p;
+    dielectric_pair_l1(m->ior, wo, wi, &p);
+    if (!p.ok) return 0.0f;
     const bool visible = ndf_samples_visible(m);
-    float d = visible ? ndf_D(m, p.h) : 0.0f;
-    float area_o = visible ? ndf_projected_area(m, dielectric_upper(wo)) : 0.0f;
-    return dielectric_pdf_at(m, &p, oh, ih, fl, dielectric_pdf_h_at(m, wo, p.h, d, area_o));
-}
-
-/* dielectric_eval's value and dielectric_pdf's in *pdf at once: the pair, D(h), the Fresnel
- * factor and the projected area seen from wo found once for both (the same bits as the two
- * calls). */
-inline float3 dielectric_eval_pdf(const FcMaterial* m, float3 wo, float3 wi, float* pdf) {
-    DielectricPair p;
-    *pdf = 0.0f;
-    if (dielectric_is_smooth(m) || !dielectric_pair(m, wo, wi, &p)) return (float3)(0.0f);
-    float d = ndf_D(m, p.h);
-    float oh = dot(wo, p.h), ih = dot(wi, p.h);
-    float fl = dielectric_lobe_fresnel(m, &p, oh, ih);
-    float area_o = ndf_projected_area(m, dielectric_upper(wo));
-    *pdf = dielectric_pdf_at(m, &p, oh, ih, fl, dielectric_pdf_h_at(m, wo, p.h, d, area_o));
-    return dielectric_eval_at(m, wo, wi, &p, d, oh, ih, fl, area_o);
+    const float d = visible ? ndf_D(m, p.h) : 0.0f;
+    const float area_o = visible ? ndf_projected_area(m, dielectric_upper(wo)) : 0.0f;
+    return dielectric_pdf_at_l1(&p, dielectric_choice(m, p.fl), dielectric_pdf_h(m, wo, p.h, d, area_o));
 }
 
 /* The smooth interface (delta lobes) whose Fresnel factor at wo is fr: reflect with
@@ -225,21 +177,14 @@ inline bool dielectric_sample_smooth(const FcMaterial* m, float3 wo, float u, Bs
     return dielectric_sample_smooth_by(m, wo, u, fr, dielectric_choice(m, fr), s);
 }
 
-/* u.xy draws the microfacet normal, u.z chooses reflection or refraction. */
+/* u.xy draws the microfacet normal, u.z chooses reflection or refraction (Walter 2007, eqs. 39
+ * and 40: dielectric_lanes.cl's dielectric_scatter). */
 inline bool dielectric_sample(const FcMaterial* m, float3 wo, float3 u, BsdfSample* s) {
     s->delta = 0;
     if (!(fabs(wo.z) > 0.0f)) return false;
     if (dielectric_is_smooth(m)) return dielectric_sample_smooth(m, wo, u.z, s);
-    float3 wv = wo.z < 0.0f ? -wo : wo;
-    float3 h = ndf_sample_two_sided(m, wv, u.xy);
-    float oh = dot(wo, h);
-    if (u.z < dielectric_choice(m, fresnel_dielectric(oh, m->ior))) {
-        s->wi = 2.0f * oh * h - wo; /* Walter 2007, eq. 39 */
-        if (!(s->wi.z * wo.z > 0.0f)) return false;
-    } else {
-        if (!refract_about(wo, h, m->ior, &s->wi)) return false; /* eq. 40 */
-        if (!(s->wi.z * wo.z < 0.0f)) return false;
-    }
+    const float3 h = ndf_sample_two_sided(m, dielectric_upper(wo), u.xy);
+    if (!dielectric_scatter_l1(m->ior, (m->flags & FC_MAT_WIDE_CHOICE) != 0u, wo, h, u.z, &s->wi)) return false;
     float pdf;
     const float3 f = dielectric_eval_pdf(m, wo, s->wi, &pdf);
     return finish_sample(s, f, pdf);

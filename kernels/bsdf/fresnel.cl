@@ -53,11 +53,7 @@ inline float fresnel_dielectric(float cos_i, float eta) { return fresnel_dielect
  * without the cancellation of 1 - F or of cos_t = sqrt(1 - sin^2_t) near the critical
  * angle; symmetric under (ci, ct, eta) -> (ct, ci, 1 / eta), as reciprocity demands. */
 inline float fresnel_dielectric_transmittance(float cos_i, float cos_t, float eta) {
-    float a = cos_i + eta * cos_t;
-    float b = eta * cos_i + cos_t;
-    if (!(a > 0.0f) || !(b > 0.0f)) return 0.0f;
-    float t = 2.0f * eta * cos_i * cos_t * (1.0f / (a * a) + 1.0f / (b * b));
-    return isfinite(t) ? clamp(t, 0.0f, 1.0f) : 0.0f;
+    return fresnel_dielectric_transmittance_l1(cos_i, cos_t, eta);
 }
 
 /* Exact conductor reflectance, index eta + i k per channel, from the outside: the lane form

@@ -20,6 +20,17 @@ inline LFLOAT LNAME(fresnel_dielectric)(LFLOAT cos_i, LFLOAT eta) {
     return select(r, (LFLOAT)(1.0f), sin2_t >= 1.0f);
 }
 
+/* The dielectric transmittance 1 - F of a refraction whose two cosines are known, cos_i on the
+ * incident side and cos_t on the far side (both > 0; eta = n_t / n_i), written as fresnel.cl
+ * gives it (without cancellation near the critical angle); 0 where a cosine sum is not positive
+ * or the result not finite. */
+inline LFLOAT LNAME(fresnel_dielectric_transmittance)(LFLOAT cos_i, LFLOAT cos_t, LFLOAT eta) {
+    const LFLOAT a = cos_i + eta * cos_t;
+    const LFLOAT b = eta * cos_i + cos_t;
+    const LFLOAT t = 2.0f * eta * cos_i * cos_t * (1.0f / (a * a) + 1.0f / (b * b));
+    return select((LFLOAT)(0.0f), clamp(t, 0.0f, 1.0f), (a > 0.0f) & (b > 0.0f) & isfinite(t));
+}
+
 /* The exact conductor reflectance of one channel, index eta + i k, from the outside (cos_i
  * clamped to [0, 1]); 1 wherever the result is not finite. */
 inline LFLOAT LNAME(fresnel_conductor_channel)(LFLOAT cos_i, LFLOAT eta, LFLOAT k) {

@@ -17,9 +17,12 @@
  * programs with other materials (FC_PACKET_BSDF_PER_LANE), a lane whose material is more than
  * a Lambertian lobe keeps a copy of it, oriented and framed by surface_orient, and its BSDF
  * is evaluated, weighed and sampled per lane by bsdf.cl's own functions, between the lanes'
- * light sample and roulette. Every sample is the scalar path's, up to the rounding of a few
- * operations written by component here and on float3 there, and the order in which a pixel's
- * samples are added: PacketRender.* demands each pixel within 1e-4 of render_pass's. */
+ * light sample and roulette; in lanes where it is a plain base (kernels/bsdf/plain_base_lanes.cl)
+ * or, where FC_PACKET_ROUGH_MIN lanes or more have one, a rough dielectric
+ * (kernels/bsdf/dielectric_lanes.cl), the same operations as bsdf.cl's at W = 1. Every sample
+ * is the scalar path's, up to the rounding of a few operations written by component here and on
+ * float3 there, and the order in which a pixel's samples are added: PacketRender.* demands each
+ * pixel within 1e-4 of render_pass's. */
 #ifndef FACET_INTEGRATOR_PACKET_PATHS_CL
 #define FACET_INTEGRATOR_PACKET_PATHS_CL
 
@@ -35,6 +38,12 @@
 /* whether each lane keeps its rays' origins (spheres offset their own; refraction leaves from
  * either side) */
 #define FC_PACKET_OWN_ORIGINS (FC_HAS_SPHERES || FC_HAS_DIELECTRIC)
+/* the fewest lanes with a rough dielectric that evaluate and sample it in lanes: fewer are
+ * cheaper one by one (glass_metal_sky at 16 lanes: 2.72 s with 1, 2.65 with 3, 2.63 with 4,
+ * 2.64 with 7; at 8, 3.04 with 1, 2.99 with 2; docs/performance.md) */
+#ifndef FC_PACKET_ROUGH_MIN
+#define FC_PACKET_ROUGH_MIN (FC_PACKET_W / 4)
+#endif
 #define PATH_ENDED 0xfffffffeu /* depth[j] of a lane whose path ended and is not yet added */
 
 /* The packet's lane types (LFLOAT, LINT, LUINT, LVEC2, LVEC3, LLOAD, LSTORE) and the lane
@@ -59,6 +68,7 @@ inline void set_lane3(float* a, int j, float3 v) {
     a[2 * FC_PACKET_W + j] = v.z;
 }
 #include "kernels/integrator/packet_plain.cl"
+#include "kernels/integrator/packet_dielectric.cl"
 #include "kernels/integrator/packet_scene_trace.cl"
 #include "kernels/integrator/packet_lights.cl"
 #if FC_HAS_DIELECTRIC
@@ -118,6 +128,13 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
      * conductor's Fresnel average is eight evaluations of its Fresnel term) */
     int pls_material[FC_PACKET_W];
 #endif
+#if FC_HAS_DIELECTRIC
+    /* lanes whose BSDF is a rough dielectric of visible GGX or Beckmann normals
+     * (rough_dielectric_in_lanes), evaluated and sampled in lanes
+     * (kernels/bsdf/dielectric_lanes.cl) from their parameters at the vertex */
+    PacketRough rds;
+    int rough[FC_PACKET_W];
+#endif
 #endif
 #if FC_HAS_TEXTURES
     float plen[FC_PACKET_W]; /* each path's length from the camera: its ray cone (texture filtering) */
@@ -145,6 +162,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         packet_plain_set(&pls, j, &unplain);
 #if !FC_HAS_TEXTURES
         pls_material[j] = -1;
+#endif
+#if FC_HAS_DIELECTRIC
+        rough[j] = 0;
+        packet_rough_clear(&rds, j);
 #endif
 #endif
     }
@@ -338,9 +359,19 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                         const PlainBase_l1 b = plain_base_of(&mats[j]);
                         packet_plain_set(&pls, j, &b);
                     }
+#if FC_HAS_DIELECTRIC
+                    rough[j] = rough_dielectric_in_lanes(&mats[j]);
+                    if (rough[j]) {
+                        const RoughDielectric_l1 b = rough_dielectric_of(&mats[j], wo_local);
+                        packet_rough_set(&rds, j, &b);
+                    }
+#endif
                 } else {
                     delta_bsdf[j] = 0;
                     plain[j] = 0;
+#if FC_HAS_DIELECTRIC
+                    rough[j] = 0;
+#endif
                 }
 #if FC_HAS_DIELECTRIC
                 trans[j] = gen[j] && bsdf_is_dielectric(&mats[j]);
@@ -577,6 +608,21 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             packet_plain_base(PL, &pls, &pb);
             LNAME(plain_base_view)(&pb, l3_load(wol), &pv);
         }
+#if FC_HAS_DIELECTRIC
+        /* lanes whose BSDF is a rough dielectric: evaluated and sampled in lanes where
+         * FC_PACKET_ROUGH_MIN lanes or more have one, else per lane (the same operations) */
+        LINT RD = G & (LLOAD(rough) != 0);
+        int rough_count = 0;
+        {
+            int rda[FC_PACKET_W];
+            LSTORE(RD, rda);
+            for (int j = 0; j < FC_PACKET_W; ++j) rough_count += rda[j] != 0;
+        }
+        const bool some_rough = rough_count >= FC_PACKET_ROUGH_MIN;
+        if (!some_rough) RD = (LINT)(0);
+        LNAME(RoughDielectric) rdb;
+        if (some_rough) packet_rough(RD, &rds, l3_load(wol), &rdb);
+#endif
         {
             float wil[3 * FC_PACKET_W], fa[3 * FC_PACKET_W], pa[FC_PACKET_W];
             int ga[FC_PACKET_W];
@@ -588,6 +634,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 if (!ga[j]) continue;
                 ga[j] = 0;
                 if (delta_bsdf[j] || plain[j]) continue;
+#if FC_HAS_DIELECTRIC
+                if (rough[j] && some_rough) continue;
+#endif
                 /* with MIS, f and its density at once (bsdf_eval_pdf: the same bits as the two) */
                 float pdf_j = 0.0f;
                 const float3 f = P->strategy == FC_STRATEGY_MIS
@@ -612,6 +661,19 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 const LINT mis = (LINT)(P->strategy == FC_STRATEGY_MIS ? -1 : 0);
                 pg = select(pg, select((LFLOAT)(0.0f), pp, nonzero & mis), PLok);
             }
+#if FC_HAS_DIELECTRIC
+            /* rough dielectrics in lanes: f and its density */
+            const LINT RDok = ok & RD;
+            if (some_rough && LNAME(lanes_any)(RDok)) {
+                LFLOAT pr;
+                const L3 fr = LNAME(rough_dielectric_eval_pdf)(&rdb, l3_load(wol), l3_load(wil), &pr);
+                const LINT nonzero = (fr.x != 0.0f) | (fr.y != 0.0f) | (fr.z != 0.0f);
+                okg = select(okg, nonzero, RDok);
+                Fg = LNAME(vec3_select)(Fg, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), fr, nonzero), RDok);
+                const LINT mis = (LINT)(P->strategy == FC_STRATEGY_MIS ? -1 : 0);
+                pg = select(pg, select((LFLOAT)(0.0f), pr, nonzero & mis), RDok);
+            }
+#endif
             ok = select(ok, okg, G);
             F = LNAME(vec3_select)(F, Fg, G);
             bsdf_pdf_l = select(bsdf_pdf_l, pg, G);
@@ -678,6 +740,12 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 below[j] = 0;
 #endif
                 if (!ga[j] || plain[j]) continue;
+#if FC_HAS_DIELECTRIC
+                if (rough[j] && some_rough) {
+                    ga[j] = 0; /* sampled in lanes below */
+                    continue;
+                }
+#endif
                 ga[j] = 0;
                 BsdfSample bs;
                 const Frame fr = {lane3(fs, j), lane3(ft, j), lane3(ns, j)};
@@ -704,6 +772,25 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             A = LNAME(vec3_select)(A, l3_load(gw), G);
 #if FC_HAS_DIELECTRIC
             so = LNAME(vec3_select)(so, l3_load(orgb), LLOAD(below));
+            if (some_rough) {
+                /* rough dielectrics in lanes: the direction, its weight in A, and a refraction's
+                 * origin on the far side and roulette's scale (the per-lane route's) */
+                L3 wl, fl, wt;
+                LFLOAT pl;
+                LINT okr = LNAME(rough_dielectric_sample)(&rdb, l3_load(wol), ub[0], ub[1], ub[2], &wl, &fl, &pl, &wt);
+                const L3 ww = LNAME(vec3_combine)(wl.x, S, wl.y, Tt, wl.z, N);
+                const LFLOAT wside = l3_dot(NG, ww);
+                okr &= RD & (wside * wl.z > 0.0f);
+                nwi = LNAME(vec3_select)(nwi, LNAME(vec3_select)(l3(0.0f, 0.0f, 1.0f), ww, okr), RD);
+                cont = select(cont, okr, RD);
+                next_pdf = select(next_pdf, select((LFLOAT)(0.0f), pl, okr), RD);
+                A = LNAME(vec3_select)(A, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), wt, okr), RD);
+                so = LNAME(vec3_select)(so, l3_load(orgb), okr & (wside < 0.0f));
+                int across[FC_PACKET_W];
+                LSTORE(okr & (wl.z < 0.0f), across);
+                for (int j = 0; j < FC_PACKET_W; ++j)
+                    if (across[j]) rr_scale[j] = roulette_scale_times(rr_scale[j], mats[j].ior * mats[j].ior);
+            }
 #endif
             /* plain bases in lanes, reflections only (the glossy guided lanes' choice of lobe
              * rescaled past the guide's share) */

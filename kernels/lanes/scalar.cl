@@ -25,6 +25,8 @@
 #include "kernels/bsdf/ggx_lanes.cl"
 #include "kernels/bsdf/beckmann_lanes.cl"
 #include "kernels/bsdf/energy_compensation_lanes.cl"
+#include "kernels/bsdf/refraction_lanes.cl"
+#include "kernels/bsdf/dielectric_lanes.cl"
 #include "kernels/bsdf/plain_base_lanes.cl"
 #include "kernels/trace/ray_lanes.cl"
 #include "kernels/trace/sphere_lanes.cl"

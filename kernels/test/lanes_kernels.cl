@@ -2,6 +2,7 @@
  * runs eight elements through the W = 1 form, one at a time, and through the W = 8 form in
  * float8 lanes, and writes both, up to four values an element. */
 #include "kernels/bsdf/albedo_tables_schlick.cl"
+#include "kernels/bsdf/dielectric.cl"
 #include "kernels/bsdf/lambert.cl"
 #include "kernels/lanes/packet.cl"
 #include "kernels/lights/area.cl"
@@ -476,6 +477,84 @@ __kernel void lanes_plain_base(__global const LanesIn* in, __global LanesOut* ou
     const int8 ok =
         plain_base_sample_l8(&b, &v, wo, vload8(0, u0), vload8(0, u1), vload8(0, u2), &wi, &f, &pdf, &weight);
     const FcVec3x8 fl = plain_base_eval_pdf_l8(&b, &v, wo, vec3_l8(vload8(0, lx), vload8(0, ly), vload8(0, lz)), &pl);
+    OUT8(0, select((float8)(-1.0f), wi.x + 2.0f * wi.y + 4.0f * wi.z, ok));
+    OUT8(1, select((float8)(-1.0f), pdf + f.x + 2.0f * f.y + 4.0f * f.z, ok));
+    OUT8(2, select((float8)(-1.0f), weight.x + 2.0f * weight.y + 4.0f * weight.z, ok));
+    OUT8(3, fl.x + 2.0f * fl.y + 4.0f * fl.z + 8.0f * pl);
+}
+
+/* The rough dielectric (kernels/bsdf/dielectric_lanes.cl): dielectric.cl's material functions
+ * (dielectric_sample, dielectric_eval_pdf) at W = 1 against rough_dielectric_sample and
+ * rough_dielectric_eval_pdf at W = 8, lanes of GGX and Beckmann normals, separable and
+ * height-correlated masking, F's own choice and the widened one, compensated or not, from above
+ * and below, in one vector: a, b: alpha_x, alpha_y - 2e-4; c, d: wo as lanes_ggx's, turned below
+ * by bit 4 of n; k, m: the sample's (u0, u1) and the tint, n: its u2, the NDF (bit 0), the
+ * masking (bit 1), the wide choice (bit 2), the compensation (bit 3), the second direction below
+ * (bit 5), an index below 1 (bit 6) and the index. The sample's direction, density and weight
+ * (-1 where none was made), and f and the density at the second direction. */
+__kernel void lanes_rough_dielectric(__global const LanesIn* in, __global LanesOut* out) {
+    uint i = get_global_id(0);
+    lanes_clear(out + i);
+    float pax[8], pay[8], pior[8], ece[8], tx[8], ty[8], tz[8], wx[8], wy[8], wz[8], lx[8], ly[8], lz[8], u0[8], u1[8],
+        u2[8];
+    int ggx[8], beck[8], cor[8], wide[8], ec[8];
+    for (int j = 0; j < 8; ++j) {
+        const uint n = in[i].n[j];
+        FcMaterial m;
+        m.diffuse_model = FC_DIFFUSE_NONE;
+        m.specular_model = FC_SPECULAR_DIELECTRIC;
+        m.ndf = (n & 1u) ? FC_NDF_GGX : FC_NDF_BECKMANN;
+        m.geometry = (n & 2u) ? FC_G_SMITH_CORRELATED : FC_G_SMITH_SEPARABLE;
+        m.sampling = FC_SAMPLE_VISIBLE;
+        m.flags = ((n & 4u) ? FC_MAT_WIDE_CHOICE : 0u) | ((n & 8u) ? FC_MAT_ENERGY_COMPENSATION : 0u);
+        m.alpha_x = in[i].a[j] + 2e-4f;
+        m.alpha_y = in[i].b[j] + 2e-4f;
+        const float eta = 1.05f + (float)((n >> 7) % 100u) * 0.03f;
+        m.ior = (n & 64u) ? 1.0f / eta : eta;
+        const float3 tint = (float3)((float)(in[i].m[j] & 255u), (float)(in[i].k[j] & 255u), 200.0f) / 255.0f;
+        m.specular[0] = tint.x;
+        m.specular[1] = tint.y;
+        m.specular[2] = tint.z;
+        float3 wo = lanes_ggx_wo(in[i].c[j], in[i].d[j]);
+        if (n & 16u) wo = -wo;
+        float3 wl = lanes_ggx_wo(1.1f - in[i].c[j], in[i].d[j] + 0.37f);
+        if (n & 32u) wl = -wl;
+        const float3 u = (float3)((float)(in[i].k[j] >> 8) * 0x1p-24f, (float)(in[i].m[j] >> 8) * 0x1p-24f,
+                                  (float)(n % 1000u) * 1e-3f);
+        BsdfSample bs;
+        const bool ok = dielectric_sample(&m, wo, u, &bs);
+        float pl;
+        const float3 fl = dielectric_eval_pdf(&m, wo, wl, &pl);
+        out[i].one[0][j] = ok ? bs.wi.x + 2.0f * bs.wi.y + 4.0f * bs.wi.z : -1.0f;
+        out[i].one[1][j] = ok ? bs.pdf + bs.f.x + 2.0f * bs.f.y + 4.0f * bs.f.z : -1.0f;
+        out[i].one[2][j] = ok ? bs.weight.x + 2.0f * bs.weight.y + 4.0f * bs.weight.z : -1.0f;
+        out[i].one[3][j] = fl.x + 2.0f * fl.y + 4.0f * fl.z + 8.0f * pl;
+        const RoughDielectric_l1 b = rough_dielectric_of(&m, wo);
+        pax[j] = b.ax, pay[j] = b.ay, pior[j] = b.ior, ece[j] = b.ec_e;
+        tx[j] = b.tint.x, ty[j] = b.tint.y, tz[j] = b.tint.z;
+        ggx[j] = b.ggx ? -1 : 0, beck[j] = b.beckmann ? -1 : 0, cor[j] = b.correlated ? -1 : 0;
+        wide[j] = b.wide ? -1 : 0, ec[j] = b.ec ? -1 : 0;
+        wx[j] = wo.x, wy[j] = wo.y, wz[j] = wo.z, lx[j] = wl.x, ly[j] = wl.y, lz[j] = wl.z;
+        u0[j] = u.x, u1[j] = u.y, u2[j] = u.z;
+    }
+    RoughDielectric_l8 b;
+    b.tint = vec3_l8(vload8(0, tx), vload8(0, ty), vload8(0, tz));
+    b.ax = vload8(0, pax);
+    b.ay = vload8(0, pay);
+    b.ior = vload8(0, pior);
+    b.ec_e = vload8(0, ece);
+    b.ggx = vload8(0, ggx);
+    b.beckmann = vload8(0, beck);
+    b.correlated = vload8(0, cor);
+    b.wide = vload8(0, wide);
+    b.ec = vload8(0, ec);
+    const FcVec3x8 wo = vec3_l8(vload8(0, wx), vload8(0, wy), vload8(0, wz));
+    b.area_o = rough_dielectric_area_l8(&b, wo);
+    FcVec3x8 wi, f, weight;
+    float8 pdf, pl;
+    const int8 ok =
+        rough_dielectric_sample_l8(&b, wo, vload8(0, u0), vload8(0, u1), vload8(0, u2), &wi, &f, &pdf, &weight);
+    const FcVec3x8 fl = rough_dielectric_eval_pdf_l8(&b, wo, vec3_l8(vload8(0, lx), vload8(0, ly), vload8(0, lz)), &pl);
     OUT8(0, select((float8)(-1.0f), wi.x + 2.0f * wi.y + 4.0f * wi.z, ok));
     OUT8(1, select((float8)(-1.0f), pdf + f.x + 2.0f * f.y + 4.0f * f.z, ok));
     OUT8(2, select((float8)(-1.0f), weight.x + 2.0f * weight.y + 4.0f * weight.z, ok));
