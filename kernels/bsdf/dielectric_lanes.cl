@@ -98,11 +98,11 @@ inline LFLOAT LNAME(dielectric_pdf_at)(const LNAME(DielectricPair) * p, LFLOAT q
 }
 
 /* The BSDF of the pair p where D(h) = d, from the microsurface's projected areas seen from wo
- * and wi turned up (b->area_o, area_i): Smith's G of both sides,
+ * and wi turned up (b->area_o, area_i; 1 + Lambda(w) = area / |w.z|): Smith's G of both sides,
  * separable or height-correlated; D G F / (4 |cos_o| |cos_i|) for the reflection (eq. 20), eq.
  * 21 times the radiance scaling 1 / etap^2 and the tint for the refraction; divided by ec_e on
- * the compensated lanes; 0 where d is not positive, where not finite and where the pair does not
- * scatter, at 0 at least. */
+ * the compensated lanes (Turquin 2019's albedo scaling, energy_compensation.cl); 0 where d is
+ * not positive, where not finite and where the pair does not scatter, at 0 at least. */
 inline LVEC3 LNAME(dielectric_eval_at)(const LNAME(RoughDielectric) * b, LVEC3 wo, LVEC3 wi,
                                        const LNAME(DielectricPair) * p, LFLOAT d, LFLOAT area_i) {
     const LFLOAT lo = b->area_o / fabs(wo.z), li = area_i / fabs(wi.z);
@@ -113,8 +113,9 @@ inline LVEC3 LNAME(dielectric_eval_at)(const LNAME(RoughDielectric) * b, LVEC3 w
         f = LNAME(vec3)(fr, fr, fr);
     }
     if (LNAME(lanes_any)(p->refract)) {
-        /* eq. 21 as the BTDF of importance, (1 - F) D G |wi.h| |wo.h| etap^2 / (|cos_i| |cos_o|
-         * |wo + etap wi|^2), times 1 / etap^2 */
+        /* eq. 21 as the BTDF of importance (pbrt-v4's Importance mode), (1 - F) D G |wi.h| |wo.h|
+         * etap^2 / (|cos_i| |cos_o| |wo + etap wi|^2), |wo + etap wi| = |n_i wi.h + n_o wo.h| /
+         * n_o, times the radiance scaling 1 / etap^2 */
         const LFLOAT importance =
             p->fl * d * g * fabs(p->ih * p->oh) / (fabs(wi.z) * fabs(wo.z)) * (p->etap * p->etap) / (p->len * p->len);
         const LFLOAT ft = importance / (p->etap * p->etap);
