@@ -38,12 +38,6 @@
 /* whether each lane keeps its rays' origins (spheres offset their own; refraction leaves from
  * either side) */
 #define FC_PACKET_OWN_ORIGINS (FC_HAS_SPHERES || FC_HAS_DIELECTRIC)
-/* the fewest lanes with a rough dielectric that evaluate and sample it in lanes: fewer are
- * cheaper one by one (glass_metal_sky at 16 lanes: 2.72 s with 1, 2.65 with 3, 2.63 with 4,
- * 2.64 with 7; at 8, 3.04 with 1, 2.99 with 2; docs/performance.md) */
-#ifndef FC_PACKET_ROUGH_MIN
-#define FC_PACKET_ROUGH_MIN (FC_PACKET_W / 4)
-#endif
 #define PATH_ENDED 0xfffffffeu /* depth[j] of a lane whose path ended and is not yet added */
 
 /* The packet's lane types (LFLOAT, LINT, LUINT, LVEC2, LVEC3, LLOAD, LSTORE) and the lane
@@ -68,6 +62,7 @@ inline void set_lane3(float* a, int j, float3 v) {
     a[2 * FC_PACKET_W + j] = v.z;
 }
 #include "kernels/integrator/packet_plain.cl"
+#include "kernels/integrator/packet_bsdf_merge.cl"
 #include "kernels/integrator/packet_dielectric.cl"
 #include "kernels/integrator/packet_scene_trace.cl"
 #include "kernels/integrator/packet_lights.cl"
@@ -129,9 +124,8 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
     int pls_material[FC_PACKET_W];
 #endif
 #if FC_HAS_DIELECTRIC
-    /* lanes whose BSDF is a rough dielectric of visible GGX or Beckmann normals
-     * (rough_dielectric_in_lanes), evaluated and sampled in lanes
-     * (kernels/bsdf/dielectric_lanes.cl) from their parameters at the vertex */
+    /* lanes whose BSDF is a rough dielectric of the lanes, and their parameters at the vertex
+     * (packet_dielectric.cl) */
     PacketRough rds;
     int rough[FC_PACKET_W];
 #endif
@@ -360,11 +354,7 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                         packet_plain_set(&pls, j, &b);
                     }
 #if FC_HAS_DIELECTRIC
-                    rough[j] = rough_dielectric_in_lanes(&mats[j]);
-                    if (rough[j]) {
-                        const RoughDielectric_l1 b = rough_dielectric_of(&mats[j], wo_local);
-                        packet_rough_set(&rds, j, &b);
-                    }
+                    rough[j] = packet_rough_at(&rds, j, &mats[j], wo_local);
 #endif
                 } else {
                     delta_bsdf[j] = 0;
@@ -609,19 +599,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             LNAME(plain_base_view)(&pb, l3_load(wol), &pv);
         }
 #if FC_HAS_DIELECTRIC
-        /* lanes whose BSDF is a rough dielectric: evaluated and sampled in lanes where
-         * FC_PACKET_ROUGH_MIN lanes or more have one, else per lane (the same operations) */
-        LINT RD = G & (LLOAD(rough) != 0);
-        int rough_count = 0;
-        {
-            int rda[FC_PACKET_W];
-            LSTORE(RD, rda);
-            for (int j = 0; j < FC_PACKET_W; ++j) rough_count += rda[j] != 0;
-        }
-        const bool some_rough = rough_count >= FC_PACKET_ROUGH_MIN;
-        if (!some_rough) RD = (LINT)(0);
+        /* rough dielectrics in lanes where enough lanes have one (else per lane) */
         LNAME(RoughDielectric) rdb;
-        if (some_rough) packet_rough(RD, &rds, l3_load(wol), &rdb);
+        const LINT RD = packet_rough_lanes(G, rough, &rds, l3_load(wol), &rdb);
+        const bool some_rough = LNAME(lanes_any)(RD);
 #endif
         {
             float wil[3 * FC_PACKET_W], fa[3 * FC_PACKET_W], pa[FC_PACKET_W];
@@ -652,27 +633,15 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             LFLOAT pg = LLOAD(pa);
             /* plain bases in lanes: f and its density */
             const LINT PLok = ok & PL;
+            const bool mis = P->strategy == FC_STRATEGY_MIS;
             if (some_plain && LNAME(lanes_any)(PLok)) {
                 LFLOAT pp;
                 const L3 fp = LNAME(plain_base_eval_pdf)(&pb, &pv, l3_load(wol), l3_load(wil), &pp);
-                const LINT nonzero = (fp.x != 0.0f) | (fp.y != 0.0f) | (fp.z != 0.0f);
-                okg = select(okg, nonzero, PLok);
-                Fg = LNAME(vec3_select)(Fg, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), fp, nonzero), PLok);
-                const LINT mis = (LINT)(P->strategy == FC_STRATEGY_MIS ? -1 : 0);
-                pg = select(pg, select((LFLOAT)(0.0f), pp, nonzero & mis), PLok);
+                packet_bsdf_merge_eval(PLok, fp, pp, mis, &okg, &Fg, &pg);
             }
 #if FC_HAS_DIELECTRIC
             /* rough dielectrics in lanes: f and its density */
-            const LINT RDok = ok & RD;
-            if (some_rough && LNAME(lanes_any)(RDok)) {
-                LFLOAT pr;
-                const L3 fr = LNAME(rough_dielectric_eval_pdf)(&rdb, l3_load(wol), l3_load(wil), &pr);
-                const LINT nonzero = (fr.x != 0.0f) | (fr.y != 0.0f) | (fr.z != 0.0f);
-                okg = select(okg, nonzero, RDok);
-                Fg = LNAME(vec3_select)(Fg, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), fr, nonzero), RDok);
-                const LINT mis = (LINT)(P->strategy == FC_STRATEGY_MIS ? -1 : 0);
-                pg = select(pg, select((LFLOAT)(0.0f), pr, nonzero & mis), RDok);
-            }
+            if (some_rough) packet_rough_eval(&rdb, ok & RD, mis, l3_load(wol), l3_load(wil), &okg, &Fg, &pg);
 #endif
             ok = select(ok, okg, G);
             F = LNAME(vec3_select)(F, Fg, G);
@@ -739,13 +708,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #if FC_HAS_DIELECTRIC
                 below[j] = 0;
 #endif
-                if (!ga[j] || plain[j]) continue;
 #if FC_HAS_DIELECTRIC
-                if (rough[j] && some_rough) {
-                    ga[j] = 0; /* sampled in lanes below */
-                    continue;
-                }
+                if (rough[j] && some_rough) ga[j] = 0; /* sampled in lanes below */
 #endif
+                if (!ga[j] || plain[j]) continue;
                 ga[j] = 0;
                 BsdfSample bs;
                 const Frame fr = {lane3(fs, j), lane3(ft, j), lane3(ns, j)};
@@ -772,25 +738,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
             A = LNAME(vec3_select)(A, l3_load(gw), G);
 #if FC_HAS_DIELECTRIC
             so = LNAME(vec3_select)(so, l3_load(orgb), LLOAD(below));
-            if (some_rough) {
-                /* rough dielectrics in lanes: the direction, its weight in A, and a refraction's
-                 * origin on the far side and roulette's scale (the per-lane route's) */
-                L3 wl, fl, wt;
-                LFLOAT pl;
-                LINT okr = LNAME(rough_dielectric_sample)(&rdb, l3_load(wol), ub[0], ub[1], ub[2], &wl, &fl, &pl, &wt);
-                const L3 ww = LNAME(vec3_combine)(wl.x, S, wl.y, Tt, wl.z, N);
-                const LFLOAT wside = l3_dot(NG, ww);
-                okr &= RD & (wside * wl.z > 0.0f);
-                nwi = LNAME(vec3_select)(nwi, LNAME(vec3_select)(l3(0.0f, 0.0f, 1.0f), ww, okr), RD);
-                cont = select(cont, okr, RD);
-                next_pdf = select(next_pdf, select((LFLOAT)(0.0f), pl, okr), RD);
-                A = LNAME(vec3_select)(A, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), wt, okr), RD);
-                so = LNAME(vec3_select)(so, l3_load(orgb), okr & (wside < 0.0f));
-                int across[FC_PACKET_W];
-                LSTORE(okr & (wl.z < 0.0f), across);
-                for (int j = 0; j < FC_PACKET_W; ++j)
-                    if (across[j]) rr_scale[j] = roulette_scale_times(rr_scale[j], mats[j].ior * mats[j].ior);
-            }
+            if (some_rough) /* rough dielectrics in lanes */
+                packet_rough_sample(&rdb, RD, l3_load(wol), ub, S, Tt, N, NG, orgb, mats, rr_scale, &nwi, &cont,
+                                    &next_pdf, &A, &so);
 #endif
             /* plain bases in lanes, reflections only (the glossy guided lanes' choice of lobe
              * rescaled past the guide's share) */
@@ -802,13 +752,10 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
 #else
                 const LFLOAT u2p = ub[2];
 #endif
-                LINT okp = LNAME(plain_base_sample)(&pb, &pv, l3_load(wol), ub[0], ub[1], u2p, &wl, &fl, &pl, &wt);
-                const L3 ww = LNAME(vec3_combine)(wl.x, S, wl.y, Tt, wl.z, N);
-                okp &= l3_dot(NG, ww) * wl.z > 0.0f;
-                nwi = LNAME(vec3_select)(nwi, LNAME(vec3_select)(l3(0.0f, 0.0f, 1.0f), ww, okp), PL);
-                cont = select(cont, okp, PL);
-                next_pdf = select(next_pdf, select((LFLOAT)(0.0f), pl, okp), PL);
-                A = LNAME(vec3_select)(A, LNAME(vec3_select)(l3(0.0f, 0.0f, 0.0f), wt, okp), PL);
+                LFLOAT plain_side;
+                const LINT okp =
+                    LNAME(plain_base_sample)(&pb, &pv, l3_load(wol), ub[0], ub[1], u2p, &wl, &fl, &pl, &wt);
+                packet_bsdf_merge_sample(PL, okp, wl, pl, wt, S, Tt, N, NG, &nwi, &cont, &next_pdf, &A, &plain_side);
 #if FC_HAS_DIELECTRIC
                 /* the glossy guided lanes: the mixture's density and the guide's directions */
                 if (own)
