@@ -707,8 +707,6 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
                 gp[j] = 0.0f;
 #if FC_HAS_DIELECTRIC
                 below[j] = 0;
-#endif
-#if FC_HAS_DIELECTRIC
                 if (rough[j] && some_rough) ga[j] = 0; /* sampled in lanes below */
 #endif
                 if (!ga[j] || plain[j]) continue;
