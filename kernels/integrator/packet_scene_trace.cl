@@ -16,6 +16,19 @@
 #if FC_PACKET_TRACE && FC_W == 8 && !FC_HAS_ALPHA
 #define FC_PACKET_TRACE_ON 1
 #include "kernels/trace/packet_trace.cl"
+/* The fewest rays a call traces as a packet, whatever the tree: fewer go ray by ray. A call of
+ * one to three rays is most often the camera rays of the paths just begun in lanes whose paths
+ * escaped (packet_paths.cl's step A), and a packet's box and triangle tests cost as much for
+ * one ray as for sixteen (the Cornell box at 256 x 256, whose tree is traced to the leaves in
+ * packets: 1.6 % faster; docs/performance.md). */
+#ifndef FC_PACKET_CALL_MIN
+#define FC_PACKET_CALL_MIN 4
+#endif
+#if FC_PACKET_TRACE_MIN > FC_PACKET_CALL_MIN
+#define FC_PACKET_CALL_RAYS FC_PACKET_TRACE_MIN
+#else
+#define FC_PACKET_CALL_RAYS FC_PACKET_CALL_MIN
+#endif
 #else
 #define FC_PACKET_TRACE_ON 0
 #endif
@@ -29,13 +42,13 @@
 #endif
 
 /* The nearest hits of lanes `need` of the rays (o, d: lane arrays), scene_trace_closest's
- * for each lane, in hits[j]; the bits of the lanes that hit. With few lanes, or without
- * packet traversal, lane by lane. */
+ * for each lane, in hits[j]; the bits of the lanes that hit. With fewer lanes than
+ * FC_PACKET_CALL_RAYS, or without packet traversal, lane by lane. */
 inline uint packet_trace_closest(const SceneView* sc, const float* o, const float* d, uint need, const uint* seed,
                                  const uint* irev, const uint* depth, Hit* hits) {
     uint met = 0u;
 #if FC_PACKET_TRACE_ON
-    if (popcount(need) >= FC_PACKET_TRACE_MIN) {
+    if (popcount(need) >= FC_PACKET_CALL_RAYS) {
         for (uint rest = need; rest; rest &= rest - 1u) {
             const uint j = lowest_bit(rest);
             hits[j].t = INFINITY; /* trace_closest_alpha's start */
@@ -90,7 +103,7 @@ inline uint packet_trace_any(const SceneView* sc, const float* o, const float* d
                              const uint* seed, const uint* irev, const uint* depth) {
     uint blocked = 0u;
 #if FC_PACKET_TRACE_ON
-    if (popcount(bits) >= FC_PACKET_TRACE_MIN) {
+    if (popcount(bits) >= FC_PACKET_CALL_RAYS) {
         Hit hits[FC_PACKET_W]; /* scratch where rays finish a subtree alone */
         blocked = packet_trace_bvh(sc->nodes, o, d, bits, true, LLOAD(tmax), hits);
 #if FC_HAS_INSTANCES
