@@ -40,6 +40,8 @@ TEST(Limits, RenderSettingsOutOfRange) {
         {R"("render": {"max_depth": 0})", "render.max_depth"},
         {R"("render": {"max_depth": -3})", "render.max_depth"},
         {R"("render": {"rr_depth": -1})", "render.rr_depth"},
+        {R"("render": {"roulette_gain": 0})", "render.roulette_gain"},
+        {R"("render": {"roulette_gain": 2e6})", "render.roulette_gain"},
         {R"("render": {"seed": -1})", "render.seed"},
         {R"("render": {"seed": 1e12})", "render.seed"},
         {R"("render": {"width": 1e400})", "render.width"},  // the parser overflows it to inf: "must be finite"

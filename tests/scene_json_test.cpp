@@ -23,7 +23,7 @@ TEST(SceneJson, JsonFullSceneLoads) {
     const auto p = scene(d, "s.json", R"(
   "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0], "fov": 30,
              "projection": "orthographic", "height": 3},
-  "render": {"width": 64, "height": 32, "spp": 4, "max_depth": 5, "rr_depth": 2, "seed": 7},
+  "render": {"width": 64, "height": 32, "spp": 4, "max_depth": 5, "rr_depth": 2, "seed": 7, "roulette_gain": 3},
   "materials": {"lamp": {"model": "lambert", "diffuse": [0, 0, 0], "emission": [2, 2, 2],
                          "two_sided_emission": true},
                 "blue": {"diffuse": [0, 0, 1], "roughness": 0.3, "ior": 1.4}},
@@ -43,6 +43,7 @@ TEST(SceneJson, JsonFullSceneLoads) {
     EXPECT_EQ(s.settings.height, 32);
     EXPECT_EQ(s.settings.seed, 7u);
     EXPECT_EQ(s.settings.rr_depth, 2);
+    EXPECT_EQ(s.settings.roulette_gain, 3.0f);
     // Scale 2, then 90 degrees about z, then +10 in x: (1,0,0) -> (2,0,0) -> (0,2,0) -> (10,2,0).
     EXPECT_NEAR(glm::length(s.vertices[1] - glm::vec3(10, 2, 0)), 0.0f, 1e-5f);
     EXPECT_EQ(s.material_names[static_cast<std::size_t>(s.shading[0].material)], "red");

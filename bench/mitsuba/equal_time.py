@@ -623,7 +623,9 @@ def main():
                     help="agreement in mean: the two references compared region by region")
     ap.add_argument("--programs", default="facet,facet_independent,mitsuba,mitsuba_best",
                     help="which programs to run, of facet, facet_independent, facet_unguided (--caustic-guide 0: "
-                         "no sampling toward glass, Mitsuba's strategies), mitsuba (its default sampler) and "
+                         "no sampling toward glass, Mitsuba's strategies), facet_roulette1 (--roulette-gain 1: "
+                         "Mitsuba's Russian roulette, so paths as long as its, for samples per second at equal "
+                         "work), mitsuba (its default sampler) and "
                          "mitsuba_best (default: facet, facet_independent, mitsuba, mitsuba_best)")
     ap.add_argument("--threads", type=int, default=2, help="Mitsuba threads (default 2, as facet's PoCL here)")
     ap.add_argument("--facet", default=os.path.join(ROOT, "build", "facet"), help="the facet binary")
@@ -641,6 +643,7 @@ def main():
     scenes = [Scene(n, a.scale) for n in a.scenes.split(",")]
     progs = {"facet": Facet(a.facet, None, work), "facet_independent": Facet(a.facet, "independent", work),
              "facet_unguided": Facet(a.facet, None, work, ("--caustic-guide", "0")),
+             "facet_roulette1": Facet(a.facet, None, work, ("--roulette-gain", "1")),
              "mitsuba": Mitsuba("independent", assets)}
     best_auto = a.mitsuba_best == "auto"
     if best_auto and (a.equal_spp or a.per_sample):
@@ -660,7 +663,7 @@ def main():
     unknown = [k for k in wanted if k not in set(progs) | {"mitsuba_best"}]
     if unknown or "facet" not in wanted:
         raise SystemExit(f"equal_time.py: --programs {a.programs}: needs facet, and only facet, "
-                         "facet_independent, facet_unguided, mitsuba, mitsuba_best")
+                         "facet_independent, facet_unguided, facet_roulette1, mitsuba, mitsuba_best")
     refs_progs = dict(progs)   # both renderers' references are made whatever runs
     progs = {k: p for k, p in progs.items() if k in wanted}
     info = {"mitsuba": mi.__version__, "variant": mi.variant(), "threads": a.threads,

@@ -282,6 +282,14 @@ int run_cli(int argc, char** argv) {
                                  limits::kMaxCausticGuide))
         ->option_text("F")
         ->check(kFinite & CLI::Range(0.0, limits::kMaxCausticGuide));
+    render
+        ->add_option("--roulette-gain", opt.roulette_gain,
+                     "Russian roulette's survival per unit of throughput: after the scene's rr_depth bounces a path "
+                     "goes on with probability min(X * its throughput's largest channel, 0.95); higher keeps more "
+                     "paths (longer samples, less noise each); unbiased at any value (default: the scene's, else 2; "
+                     "1: pbrt-v4's and Mitsuba 3's rule; docs/sampling.md)")
+        ->option_text("X")
+        ->check(kFinite & positive_up_to(limits::kMaxRouletteGain, "gain"));
     render->add_option("--camera", opt.camera, "A glTF file's camera by name (default: the first one)")
         ->option_text("NAME");
     render->add_option("--eye", opt.eye, "Camera position X,Y,Z (default: the scene's; a bare mesh is framed to fit)")

@@ -26,6 +26,7 @@ struct RenderOptions {
     std::optional<float> smooth_normals;  // --smooth-normals [ANGLE]: crease angle (host/scene/smooth_normals.hpp)
     std::optional<float> clamp;           // the largest contribution of one sample (biased; off by default)
     std::optional<float> caustic_guide;   // the share of Lambertian directions drawn toward glass
+    std::optional<float> roulette_gain;   // Russian roulette's survival per unit of throughput
     // The camera: --eye, --target, --up (3 numbers each), --fov, --aperture, --focus-distance.
     std::vector<float> eye, target, up;
     std::string camera;  // --camera NAME: a glTF file's camera by name

@@ -37,6 +37,7 @@ void apply_overrides(const RenderOptions& opt, Scene& scene) {
     if (opt.filter_radius) s.filter_radius = *opt.filter_radius;
     if (opt.clamp) s.clamp = *opt.clamp;
     if (opt.caustic_guide) s.caustic_guide = *opt.caustic_guide;
+    if (opt.roulette_gain) s.roulette_gain = *opt.roulette_gain;
     CameraDesc& c = scene.camera;
     auto vec = [](const std::vector<float>& v) { return glm::vec3(v[0], v[1], v[2]); };
     if (opt.eye.size() == 3) c.eye = vec(opt.eye);

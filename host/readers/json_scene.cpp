@@ -53,7 +53,7 @@ void JsonLoader::camera(const Json& v, const std::string& path) {
 void JsonLoader::render(const Json& v, const std::string& path) {
     r.object(v, path,
              {"width", "height", "spp", "max_depth", "rr_depth", "seed", "strategy", "sampler", "filter", "clamp",
-              "caustic_guide"});
+              "caustic_guide", "roulette_gain"});
     RenderSettings& s = scene.settings;
     auto k = [&](const char* name) { return JsonReader::key(path, name); };
     auto get = [&](const char* name, SettingRange range, auto& out) {
@@ -82,6 +82,9 @@ void JsonLoader::render(const Json& v, const std::string& path) {
     if (v.contains("clamp")) s.clamp = r.number_in(v["clamp"], k("clamp"), 0, double(FC_MAX_RADIANCE), true);
     if (v.contains("caustic_guide"))
         s.caustic_guide = r.number_in(v["caustic_guide"], k("caustic_guide"), 0, double(limits::kMaxCausticGuide));
+    if (v.contains("roulette_gain"))
+        s.roulette_gain =
+            r.number_in(v["roulette_gain"], k("roulette_gain"), 0, double(limits::kMaxRouletteGain), true);
 }
 
 // "filter": "tent" or {"type": "tent", "radius": 1.5} (scene/pixel_filter.hpp).

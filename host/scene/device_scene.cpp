@@ -31,6 +31,7 @@ FcRenderParams render_params(const Scene& scene) {
     p.filter = std::uint32_t(s.filter);
     p.filter_radius = pixel_filter_radius(s.filter, s.filter_radius);
     p.clamp = s.clamp > 0.0f ? s.clamp : FC_MAX_RADIANCE;
+    p.roulette_gain = s.roulette_gain;
     return p;
 }
 

@@ -46,6 +46,11 @@ struct RenderSettings {
     // The share of a Lambertian vertex's directions drawn toward the glass objects' bounds
     // (kernels/integrator/caustic_guide.cl); 0: the BSDF alone. Unbiased at any value.
     float caustic_guide = 0.25f;
+    // Russian roulette's survival per unit of throughput: a path survives with probability
+    // min(roulette_gain * max(throughput) * eta-scale, 0.95) (kernels/integrator/path_lanes.cl).
+    // 1 is pbrt-v4's and Mitsuba 3's rule; 2 measured better at equal time (docs/sampling.md).
+    // Unbiased at any value > 0.
+    float roulette_gain = 2.0f;
 };
 
 // A point, spot or directional light as the scene file gives it (docs/lights.md).

@@ -771,9 +771,9 @@ __kernel void packet_pass(FC_SCENE_KERNEL_PARAMS, __global float4* accum) {
         L3 T2 = l3(T.x * A.x, T.y * A.y, T.z * A.z);
         LINT rr = LCONVERT_INT(dep + 1u >= P->rr_depth);
 #if FC_HAS_DIELECTRIC
-        LFLOAT survive = LNAME(roulette_survival)(T2, LLOAD(rr_scale));
+        LFLOAT survive = LNAME(roulette_survival)(T2, LLOAD(rr_scale), P->roulette_gain);
 #else
-        LFLOAT survive = LNAME(roulette_survival)(T2, 1.0f); /* no refraction, no guide: rr_scale 1 */
+        LFLOAT survive = LNAME(roulette_survival)(T2, 1.0f, P->roulette_gain); /* no refraction, no guide: rr_scale 1 */
 #endif
         cont &= select((LINT)(-1), ub[3] < survive, rr);
         T2 = l3(select(T2.x, T2.x / survive, rr), select(T2.y, T2.y / survive, rr), select(T2.z, T2.z / survive, rr));

@@ -214,7 +214,7 @@ inline float3 path_radiance(const SceneView* sc, float3 o, float3 d, Sampler* sa
         if (bs.wi.z < 0.0f) rr_scale = roulette_scale_times(rr_scale, mat.ior * mat.ior);
 
         if (depth + 1u >= P->rr_depth) {
-            float survive = roulette_survival_l1(throughput, rr_scale);
+            float survive = roulette_survival_l1(throughput, rr_scale, P->roulette_gain);
             if (ub.w >= survive) break;
             throughput /= survive;
         }

@@ -23,10 +23,12 @@ inline LFLOAT LNAME(bsdf_strategy_weight)(uint strategy, LFLOAT bsdf_pdf, LFLOAT
 }
 
 /* Russian roulette's survival probability for a path of this throughput (rr_scale: what the
- * throughput understates of the path's worth, path.cl's): the largest channel times rr_scale,
- * at most 0.95. */
-inline LFLOAT LNAME(roulette_survival)(LVEC3 throughput, LFLOAT rr_scale) {
-    return fmin(fmax(throughput.x, fmax(throughput.y, throughput.z)) * rr_scale, 0.95f);
+ * throughput understates of the path's worth, path.cl's): the largest channel times rr_scale
+ * times the render's gain (FcRenderParams.roulette_gain, 2 by default), at most 0.95. pbrt-v4
+ * and Mitsuba 3 take gain 1; on the demo scenes gain 2 gave 1.08-1.25 times the inverse of
+ * MSE times time (docs/sampling.md, "Russian roulette"). */
+inline LFLOAT LNAME(roulette_survival)(LVEC3 throughput, LFLOAT rr_scale, float gain) {
+    return fmin(fmax(throughput.x, fmax(throughput.y, throughput.z)) * rr_scale * gain, 0.95f);
 }
 
 #undef FACET_INTEGRATOR_PATH_LANES_PASS

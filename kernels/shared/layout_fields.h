@@ -54,7 +54,7 @@
     F(FcRenderParams, sample_count) F(FcRenderParams, seed) F(FcRenderParams, max_depth) F(FcRenderParams, rr_depth)        \
     F(FcRenderParams, light_count) F(FcRenderParams, row_begin) F(FcRenderParams, row_count) F(FcRenderParams, environment) \
     F(FcRenderParams, environment_light) F(FcRenderParams, strategy) F(FcRenderParams, sampler)                             \
-    F(FcRenderParams, filter) F(FcRenderParams, filter_radius) F(FcRenderParams, clamp)                                     \
+    F(FcRenderParams, filter) F(FcRenderParams, filter_radius) F(FcRenderParams, clamp) F(FcRenderParams, roulette_gain)                                     \
     F(FcEnvironment, width) F(FcEnvironment, height) F(FcEnvironment, enabled) F(FcEnvironment, scale)                      \
     F(FcEnvironment, total) F(FcEnvironment, to_map)                                                                        \
     F(FcTexture, offset) F(FcTexture, width) F(FcTexture, height) F(FcTexture, levels) F(FcTexture, wrap_u)                 \

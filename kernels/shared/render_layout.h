@@ -116,7 +116,8 @@ typedef struct FcRenderParams {
     float clamp;              /* the largest contribution of one sample (its largest channel) */
     fc_uint caster_count;     /* glass bounds to sample toward (kernels/integrator/caustic_guide.cl) */
     float caster_fraction;    /* the share of Lambertian vertices' directions drawn toward them */
-    fc_uint pad3[2];
+    float roulette_gain; /* Russian roulette's survival per unit of throughput (kernels/integrator/path_lanes.cl) */
+    fc_uint pad3[1];
     FcEnvironment environment;
 } FcRenderParams;
 

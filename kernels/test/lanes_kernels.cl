@@ -260,11 +260,12 @@ __kernel void lanes_path_weights(__global const LanesIn* in, __global LanesOut* 
     for (int j = 0; j < 8; ++j) {
         out[i].one[0][j] = light_strategy_weight_l1(strategy, in[i].a[j], in[i].b[j]);
         out[i].one[1][j] = bsdf_strategy_weight_l1(strategy, in[i].a[j], in[i].b[j]);
-        out[i].one[2][j] = roulette_survival_l1((float3)(in[i].a[j], in[i].b[j], in[i].c[j]), in[i].d[j]);
+        out[i].one[2][j] =
+            roulette_survival_l1((float3)(in[i].a[j], in[i].b[j], in[i].c[j]), in[i].d[j], 1.0f + (float)(i % 4u));
     }
     OUT8(0, light_strategy_weight_l8(strategy, IN8(a), IN8(b)));
     OUT8(1, bsdf_strategy_weight_l8(strategy, IN8(a), IN8(b)));
-    OUT8(2, roulette_survival_l8(vec3_l8(IN8(a), IN8(b), IN8(c)), IN8(d)));
+    OUT8(2, roulette_survival_l8(vec3_l8(IN8(a), IN8(b), IN8(c)), IN8(d), 1.0f + (float)(i % 4u)));
 }
 
 /* GGX (kernels/bsdf/ggx_lanes.cl): a: alpha_x - 1e-4, b: alpha_y - 1e-4, c: wo's cosine (from
