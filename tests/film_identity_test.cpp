@@ -75,6 +75,35 @@ TEST(FilmIdentity, RefusesAnotherSphereTextureOrUvScale) {
     }
 }
 
+// Settings the film does not list (it names size, seed, depths, strategy and sampler) are in the
+// parameter block the identity hashes: a film of another Russian roulette gain, clamp or pixel
+// filter is refused, and the message names such settings as a cause.
+TEST(FilmIdentity, RefusesOtherRouletteGainClampOrFilter) {
+    const Scene base = textured_scene();
+    std::vector<std::pair<const char*, Scene>> changes;
+    Scene gain = base;
+    gain.settings.roulette_gain = 1.0f;
+    changes.push_back({"roulette gain", gain});
+    Scene clamp = base;
+    clamp.settings.clamp = 10.0f;
+    changes.push_back({"clamp", clamp});
+    Scene filter = base;
+    filter.settings.filter = FC_FILTER_TENT;
+    changes.push_back({"filter", filter});
+    const std::uint64_t id = identity(base);
+    const std::vector<float> sums(film_floats(36), 1.0f);
+    const FilmState film = make_film(base, id, SampleRanges{{0, 4}}, 1.0, sums);
+    for (const auto& [what, changed] : changes) {
+        const std::uint64_t other = identity(changed);
+        EXPECT_NE(other, id) << what;
+        const std::string msg = error_of([&] { check_film_matches(film, "g.film", changed, other); });
+        EXPECT_NE(msg.find("or with other settings than its size, seed, depths, strategy and sampler"),
+                  std::string::npos)
+            << what << ": " << msg;
+        EXPECT_NE(msg.find("--roulette-gain"), std::string::npos) << what << ": " << msg;
+    }
+}
+
 // The identity covers the render kernels' code: the digest of the render program's sources
 // (every file path.cl includes) ignores where they were read from (#line directives) and
 // changes with any other line; a film of the same scene and settings whose identity differs
@@ -108,7 +137,7 @@ TEST(FilmIdentity, CoversTheRenderKernelsCode) {
     const FilmState other_kernels = make_film(s, id ^ 1u, SampleRanges{{0, 4}}, 1.0, sums);
     const std::string msg = error_of([&] { check_film_matches(other_kernels, "k.film", s, id); });
     EXPECT_NE(msg.find("--resume k.film: the film was rendered from another scene, or by a facet whose render kernels "
-                       "differ from this one's"),
+                       "differ from this one's, or with other settings"),
               std::string::npos)
         << msg;
 }

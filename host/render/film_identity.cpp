@@ -92,13 +92,15 @@ void check_film_matches(const FilmState& film, const std::string& film_path, con
                         "the film's scene file: {}, this one: {}): samples of different scenes cannot be combined",
                         film_path, film.scene_hash, identity, film.scene_path, scene.source_path));
     };
-    // The same file and settings: its contents changed, or the film comes from a facet with
-    // other render kernels.
+    // The same file and the settings above: its contents changed, a setting the film does not
+    // list differs, or the film comes from a facet with other render kernels.
     auto refuse_contents = [&] {
         throw Error(fmt::format(
             "--resume {}: the film was rendered from another scene, or by a facet whose render kernels differ from "
-            "this one's (identity {:016x}, this render {:016x}; scene file {}): samples of different scenes or "
-            "kernels cannot be combined; render it again, or resume it with the facet that rendered it",
+            "this one's, or with other settings than its size, seed, depths, strategy and sampler (the pixel "
+            "filter, the environment, --clamp, --caustic-guide, --roulette-gain) (identity {:016x}, this render "
+            "{:016x}; scene file {}): samples of different scenes, settings or kernels cannot be combined; render "
+            "it again, or resume it with the facet and the options that rendered it",
             film_path, film.scene_hash, identity, scene.source_path));
     };
     // Another scene file: said first; else the setting that differs, else the scene's contents.
