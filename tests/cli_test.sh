@@ -234,6 +234,11 @@ if [ -s "$tmp/meta.exr" ] && grep -q '"clamp": 10' "$tmp/meta.json" && grep -q '
     grep -aq "facet:clamp" "$tmp/meta.exr" && grep -aq "facet:filter" "$tmp/meta.exr"; then
     ok "filter-and-clamp-recorded"; else bad "filter-and-clamp-recorded"; fi
 expect clamp-negative 2 "--clamp: Value -1 is not a number in \(0, " -- "$FACET" render "$SCENES/cornell_box.json" --clamp -1
+"$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --roulette-gain 1 --out "$tmp/gain.exr" >"$tmp/err" 2>&1
+if [ -s "$tmp/gain.exr" ] && grep -aq "facet:roulette_gain" "$tmp/gain.exr" && grep -aq "facet:rr_depth" "$tmp/gain.exr"; then
+    ok "roulette-gain-recorded"; else bad "roulette-gain-recorded"; fi
+expect roulette-gain-zero 2 "--roulette-gain: Value 0 is not a number in \(0, " -- "$FACET" render \
+    "$SCENES/cornell_box.json" --roulette-gain 0
 expect camera-options 0 "wrote" -- "$FACET" render "$SCENES/cornell_box.json" "${small[@]}" --eye 278,273,-600 \
     --target 278,273,0 --up 0,1,0 --fov 50 --aperture 5 --focus-distance 600 --out "$tmp/cam.exr"
 cmp -s "$tmp/cam.exr" "$tmp/cb.exr" && bad "camera-options-change-the-image" || ok "camera-options-change-the-image"

@@ -156,6 +156,26 @@ TEST(SceneObj, ObjTransformAndMirror) {
     EXPECT_NEAR(glm::dot(vec(m.shading[0].n0), n), 1.0f, 1e-6f);  // front face kept consistent
 }
 
+// A UTF-8 byte-order mark (Windows editors write one) is skipped in the OBJ and its MTL: it glued
+// itself to the first keyword, and the OBJ's first vertex was dropped ("position index 3 is out of
+// range"). UTF-16 text is refused, naming the file and the encoding.
+TEST(SceneObj, Utf8ByteOrderMarkSkippedUtf16Refused) {
+    TempDir d;
+    const std::string bom = "\xEF\xBB\xBF";
+    d.write("m.mtl", bom + "newmtl red\nKd 0.8 0.1 0.1\n");
+    const auto p = d.write("bom.obj", bom + "v 0 0 0\nv 1 0 0\nv 0 1 0\nmtllib m.mtl\nusemtl red\nf 1 2 3\n");
+    const Scene s = load(p);
+    EXPECT_TRUE(s.warnings.empty());
+    ASSERT_EQ(s.triangle_count(), 1u);
+    EXPECT_FLOAT_EQ(s.materials[static_cast<std::size_t>(s.shading[0].material)].diffuse[0], 0.8f);
+    std::string utf16 = "\xFF\xFE";
+    for (char c : std::string("v 0 0 0\n")) utf16 += std::string{c, '\0'};
+    expect_error([&] { load(d.write("wide.obj", utf16)); }, {"wide.obj", "UTF-16"});
+    d.write("wide.mtl", std::string("\xFE\xFF\0n", 4));
+    expect_error([&] { load(d.write("lib.obj", "mtllib wide.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")); },
+                 {"wide.mtl", "UTF-16"});
+}
+
 TEST(SceneObj, MtlMaterialsMapped) {
     TempDir d;
     d.write("m.mtl",

@@ -65,6 +65,8 @@ void write_image(const RenderJob& job, const std::string& out, const std::vector
     meta.ints.push_back({"facet:spp", int(r.stats().samples_per_pixel)});
     meta.ints.push_back({"facet:seed", int(s.seed)});
     meta.ints.push_back({"facet:max_depth", s.max_depth});
+    meta.ints.push_back({"facet:rr_depth", s.rr_depth});
+    meta.floats.push_back({"facet:roulette_gain", s.roulette_gain});
     meta.strings.push_back({"facet:sampler", setting_name(kSamplerNames, s.sampler)});
     meta.strings.push_back({"facet:filter", pixel_filter_info(s.filter).name});
     meta.floats.push_back({"facet:filter_radius", pixel_filter_radius(s.filter, s.filter_radius)});

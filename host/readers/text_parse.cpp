@@ -14,7 +14,16 @@
 namespace facet::text {
 
 std::string read_file(const std::string& path, const char* what) {
-    return read_input_file(path, what);  // regular files only, size-capped, errno named
+    std::string text = read_input_file(path, what);  // regular files only, size-capped, errno named
+    // UTF-8's byte-order mark, which Windows editors write, is not text: left in, it glued
+    // itself to the first line's keyword (an OBJ's first vertex was dropped).
+    if (text.size() >= 3 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+    else if (text.size() >= 2 && ((text[0] == '\xFF' && text[1] == '\xFE') || (text[0] == '\xFE' && text[1] == '\xFF')))
+        throw Error(
+            fmt::format("{} '{}': UTF-16 text (it begins with a UTF-16 byte-order mark); it is read as ASCII "
+                        "or UTF-8: save it as UTF-8",
+                        what, path));
+    return text;
 }
 
 std::vector<std::string_view> split_lines(std::string_view text) {

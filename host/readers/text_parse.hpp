@@ -8,8 +8,9 @@
 
 namespace facet::text {
 
-// The whole file (read_input_file: a regular file within kMaxInputFileBytes); throws
-// facet::Error "<what> '<path>': <reason>" when it cannot be read.
+// The whole file (read_input_file: a regular file within kMaxInputFileBytes) without a UTF-8
+// byte-order mark; throws facet::Error "<what> '<path>': <reason>" when it cannot be read or
+// is UTF-16 (it begins with a UTF-16 byte-order mark).
 std::string read_file(const std::string& path, const char* what);
 
 // Lines without their terminators ("\n", "\r\n" or a lone "\r"); lines[i] is line i + 1.
