@@ -28,8 +28,8 @@ inline constexpr const char* kTimeWords = "a finite number of seconds > 0";
 // The share of Lambertian vertices' directions drawn toward glass (caustic_guide): at most
 // 0.9, so that the BSDF keeps sampling every direction often.
 inline constexpr double kMaxCausticGuide = 0.9;
-// Russian roulette's gain (roulette_gain): in (0, kMaxRouletteGain]; past about 20 roulette
-// only ever keeps 0.95 of the paths.
+// Russian roulette's gain (roulette_gain): in (0, kMaxRouletteGain]. A large gain is nearly no
+// roulette: survival 0.95 wherever gain times the throughput reaches it.
 inline constexpr double kMaxRouletteGain = 1e6;
 }  // namespace limits
 
